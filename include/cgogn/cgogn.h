@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: MIT
+// Everything cgogn provides. Each layer also has its own header.
+#pragma once
+
+#include <cgogn/core.h>

@@ -1,0 +1,416 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/container/chunk_array.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <mutex>
+
+namespace cgogn
+{
+
+/// A set of attributes that all have the same lines. One attribute, the key
+/// (an Attribute<uint32>), tells which lines are live: a line is free when its
+/// key is INVALID_INDEX. For a map's dart container the key is phi1; for a cell
+/// container it is the representative dart of each cell. Free lines are kept
+/// in a list and reused first. Mark attributes (a bit per line) are reserved
+/// from a pool: reservation is thread-safe and lock-free for the first 64.
+class AttributeContainer
+{
+public:
+	explicit AttributeContainer(const std::string& key_name)
+	{
+		key_ = add_attribute<uint32>(key_name, INVALID_INDEX).get();
+	}
+	~AttributeContainer()
+	{
+		for (auto& a : attributes_)
+			a->container_ = nullptr;
+	}
+	AttributeContainer(const AttributeContainer&) = delete;
+	AttributeContainer& operator=(const AttributeContainer&) = delete;
+
+	/// Adds an attribute; nullptr when one with this name exists already.
+	template <typename T>
+	std::shared_ptr<Attribute<T>> add_attribute(const std::string& name, T default_value = T())
+	{
+		if (find(name) != nullptr)
+			return nullptr;
+		auto a = std::make_shared<Attribute<T>>(this, name, std::move(default_value));
+		a->set_nb_chunks(nb_chunks_);
+		attributes_.push_back(a);
+		return a;
+	}
+
+	/// The attribute of this name and type; nullptr when absent or of another type.
+	template <typename T>
+	std::shared_ptr<Attribute<T>> get_attribute(const std::string& name) const
+	{
+		auto a = find(name);
+		if (a == nullptr || a->type() != typeid(T))
+			return nullptr;
+		return std::static_pointer_cast<Attribute<T>>(a);
+	}
+
+	std::shared_ptr<AttributeBase> find(const std::string& name) const
+	{
+		auto it = std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a->name() == name; });
+		return it == attributes_.end() ? nullptr : *it;
+	}
+
+	/// Removes the attribute (not the key); returns false when it is not here.
+	bool remove_attribute(const AttributeBase* attr)
+	{
+		if (attr == key_)
+			return false;
+		auto it = std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a.get() == attr; });
+		if (it == attributes_.end())
+			return false;
+		(*it)->container_ = nullptr;
+		attributes_.erase(it);
+		return true;
+	}
+
+	const std::vector<std::shared_ptr<AttributeBase>>& attributes() const
+	{
+		return attributes_;
+	}
+
+	Attribute<uint32>& key()
+	{
+		return *key_;
+	}
+	const Attribute<uint32>& key() const
+	{
+		return *key_;
+	}
+
+	/// A new line (a freed one first) with every attribute at its default
+	/// value but the key, set to `key_value`. O(number of attributes).
+	uint32 new_line(uint32 key_value)
+	{
+		uint32 i;
+		if (!free_lines_.empty())
+		{
+			i = free_lines_.back();
+			free_lines_.pop_back();
+			for (auto& a : attributes_)
+				a->reset_line(i);
+		}
+		else
+		{
+			if (size_ == nb_chunks_ * CHUNK_SIZE)
+				set_nb_chunks(nb_chunks_ + 1);
+			i = size_++;
+		}
+		(*key_)[i] = key_value;
+		return i;
+	}
+
+	/// `n` new consecutive lines at the end of the container (free lines are
+	/// left for later); returns the first. Their keys are INVALID_INDEX: the
+	/// caller sets them (or releases the lines it does not use).
+	uint32 new_lines_at_end(uint32 n)
+	{
+		uint32 first = size_;
+		uint64 needed = (uint64(size_) + n + CHUNK_SIZE - 1) / CHUNK_SIZE;
+		if (needed > nb_chunks_)
+			set_nb_chunks(uint32(needed));
+		size_ += n;
+		return first;
+	}
+
+	/// Frees a line: its key becomes INVALID_INDEX and it will be reused.
+	void release_line(uint32 i)
+	{
+		assert(i < size_ && (*key_)[i] != INVALID_INDEX);
+		(*key_)[i] = INVALID_INDEX;
+		free_lines_.push_back(i);
+	}
+	/// Frees a line whose key is already INVALID_INDEX (see new_lines_at_end).
+	void release_unkeyed_line(uint32 i)
+	{
+		assert(i < size_ && (*key_)[i] == INVALID_INDEX);
+		free_lines_.push_back(i);
+	}
+
+	bool is_live(uint32 i) const
+	{
+		return i < size_ && (*key_)[i] != INVALID_INDEX;
+	}
+	/// Number of live lines, O(1).
+	uint32 nb_lines() const
+	{
+		return size_ - uint32(free_lines_.size());
+	}
+	/// One past the highest line ever used: iterate [0, end_index()) and skip
+	/// the lines that are not live.
+	uint32 end_index() const
+	{
+		return size_;
+	}
+	uint32 first_index() const
+	{
+		uint32 i = 0;
+		while (i < size_ && (*key_)[i] == INVALID_INDEX)
+			++i;
+		return i;
+	}
+	uint32 next_index(uint32 i) const
+	{
+		do
+			++i;
+		while (i < size_ && (*key_)[i] == INVALID_INDEX);
+		return i;
+	}
+	const std::vector<uint32>& free_lines() const
+	{
+		return free_lines_;
+	}
+
+	/// Allocates room for n lines in total, so that building does not grow
+	/// chunk by chunk.
+	void reserve(uint32 n)
+	{
+		uint32 needed = (n + CHUNK_SIZE - 1) / CHUNK_SIZE;
+		if (needed > nb_chunks_)
+			set_nb_chunks(needed);
+	}
+
+	/// Removes every line (keeps the attributes, frees their memory).
+	void clear()
+	{
+		size_ = 0;
+		free_lines_.clear();
+		set_nb_chunks(0);
+	}
+
+	/// Reserves a cleared mark attribute. Thread-safe. Give it back with
+	/// release_mark() after clearing it.
+	MarkAttribute* acquire_mark()
+	{
+		uint64 used = used_slots_.load(std::memory_order_relaxed);
+		while (~used != 0)
+		{
+			uint32 s = uint32(std::countr_zero(~used));
+			if (used_slots_.compare_exchange_weak(used, used | (uint64(1) << s), std::memory_order_acquire,
+												  std::memory_order_relaxed))
+			{
+				if (!slots_[s])
+				{
+					std::lock_guard lock(mutex_);
+					slots_[s] = std::make_unique<MarkAttribute>();
+					slots_[s]->set_nb_chunks(nb_chunks_);
+					slots_[s]->pool_slot = s;
+				}
+				return slots_[s].get();
+			}
+		}
+		std::lock_guard lock(mutex_);
+		if (overflow_free_.empty())
+		{
+			overflow_.push_back(std::make_unique<MarkAttribute>());
+			overflow_.back()->set_nb_chunks(nb_chunks_);
+			return overflow_.back().get();
+		}
+		MarkAttribute* m = overflow_free_.back();
+		overflow_free_.pop_back();
+		return m;
+	}
+	/// Gives back a mark reserved by acquire_mark(); it must be cleared.
+	void release_mark(MarkAttribute* m)
+	{
+		if (m->pool_slot != INVALID_INDEX)
+		{
+			used_slots_.fetch_and(~(uint64(1) << m->pool_slot), std::memory_order_release);
+			return;
+		}
+		std::lock_guard lock(mutex_);
+		overflow_free_.push_back(m);
+	}
+	/// A mark attribute owned by the container for its whole life (e.g. the
+	/// boundary mark of the darts).
+	MarkAttribute* add_persistent_mark()
+	{
+		persistent_marks_.push_back(std::make_unique<MarkAttribute>());
+		persistent_marks_.back()->set_nb_chunks(nb_chunks_);
+		return persistent_marks_.back().get();
+	}
+
+	/// Bytes held by attributes and marks (allocated chunks, live or not).
+	std::size_t memory_bytes() const
+	{
+		std::size_t b = 0;
+		for (const auto& a : attributes_)
+			b += a->memory_bytes();
+		for (const auto& m : persistent_marks_)
+			b += m->memory_bytes();
+		return b + free_lines_.capacity() * sizeof(uint32);
+	}
+
+	/// Lets every attribute and mark swap two lines (used by compaction and
+	/// reordering; the caller keeps the key and the free list consistent).
+	void swap_lines(uint32 a, uint32 b)
+	{
+		for (auto& at : attributes_)
+			at->swap_lines(a, b);
+		for (auto& m : persistent_marks_)
+			m->swap_lines(a, b);
+	}
+	/// After lines were moved so that the live ones are [0, n): forget the rest.
+	void truncate(uint32 n)
+	{
+		size_ = n;
+		free_lines_.clear();
+		set_nb_chunks((n + CHUNK_SIZE - 1) / CHUNK_SIZE);
+	}
+
+private:
+	void set_nb_chunks(uint32 n)
+	{
+		for (auto& a : attributes_)
+			a->set_nb_chunks(n);
+		for (auto& m : persistent_marks_)
+			m->set_nb_chunks(n);
+		for (auto& m : slots_)
+			if (m)
+				m->set_nb_chunks(n);
+		for (auto& m : overflow_)
+			m->set_nb_chunks(n);
+		nb_chunks_ = n;
+	}
+
+	std::vector<std::shared_ptr<AttributeBase>> attributes_;
+	Attribute<uint32>* key_ = nullptr;
+	uint32 size_ = 0;
+	uint32 nb_chunks_ = 0;
+	std::vector<uint32> free_lines_;
+
+	std::vector<std::unique_ptr<MarkAttribute>> persistent_marks_;
+	std::atomic<uint64> used_slots_{0};
+	std::array<std::unique_ptr<MarkAttribute>, 64> slots_;
+	std::mutex mutex_;
+	std::vector<std::unique_ptr<MarkAttribute>> overflow_;
+	std::vector<MarkAttribute*> overflow_free_;
+};
+
+/// Iterates the values of the live lines of an attribute.
+template <typename T>
+class Attribute<T>::iterator
+{
+public:
+	using value_type = T;
+	using difference_type = std::ptrdiff_t;
+	using reference = T&;
+	using iterator_category = std::forward_iterator_tag;
+
+	iterator() = default;
+	iterator(Attribute<T>* a, uint32 i) : attr_(a), index_(i)
+	{
+	}
+	T& operator*() const
+	{
+		return (*attr_)[index_];
+	}
+	T* operator->() const
+	{
+		return &(*attr_)[index_];
+	}
+	iterator& operator++()
+	{
+		index_ = attr_->container()->next_index(index_);
+		return *this;
+	}
+	iterator operator++(int)
+	{
+		iterator t = *this;
+		++*this;
+		return t;
+	}
+	bool operator==(const iterator& o) const
+	{
+		return index_ == o.index_;
+	}
+	/// The line of the current value.
+	uint32 index() const
+	{
+		return index_;
+	}
+
+private:
+	Attribute<T>* attr_ = nullptr;
+	uint32 index_ = 0;
+};
+
+template <typename T>
+class Attribute<T>::const_iterator
+{
+public:
+	using value_type = T;
+	using difference_type = std::ptrdiff_t;
+	using reference = const T&;
+	using iterator_category = std::forward_iterator_tag;
+
+	const_iterator() = default;
+	const_iterator(const Attribute<T>* a, uint32 i) : attr_(a), index_(i)
+	{
+	}
+	const T& operator*() const
+	{
+		return (*attr_)[index_];
+	}
+	const T* operator->() const
+	{
+		return &(*attr_)[index_];
+	}
+	const_iterator& operator++()
+	{
+		index_ = attr_->container()->next_index(index_);
+		return *this;
+	}
+	const_iterator operator++(int)
+	{
+		const_iterator t = *this;
+		++*this;
+		return t;
+	}
+	bool operator==(const const_iterator& o) const
+	{
+		return index_ == o.index_;
+	}
+	uint32 index() const
+	{
+		return index_;
+	}
+
+private:
+	const Attribute<T>* attr_ = nullptr;
+	uint32 index_ = 0;
+};
+
+// A removed attribute (no container) iterates over nothing.
+template <typename T>
+typename Attribute<T>::iterator Attribute<T>::begin()
+{
+	return container_ ? iterator(this, container_->first_index()) : iterator(this, 0);
+}
+template <typename T>
+typename Attribute<T>::iterator Attribute<T>::end()
+{
+	return container_ ? iterator(this, container_->end_index()) : iterator(this, 0);
+}
+template <typename T>
+typename Attribute<T>::const_iterator Attribute<T>::begin() const
+{
+	return container_ ? const_iterator(this, container_->first_index()) : const_iterator(this, 0);
+}
+template <typename T>
+typename Attribute<T>::const_iterator Attribute<T>::end() const
+{
+	return container_ ? const_iterator(this, container_->end_index()) : const_iterator(this, 0);
+}
+
+} // namespace cgogn

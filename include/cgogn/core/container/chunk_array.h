@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/types/numeric.h>
+
+#include <cassert>
+#include <memory>
+#include <string>
+#include <typeindex>
+#include <vector>
+
+namespace cgogn
+{
+
+/// Chunk size of every attribute: 2^12 lines. Access is a shift and a mask;
+/// elements never move when a container grows. See bench/README.md for the
+/// measurement behind the choice.
+inline constexpr uint32 CHUNK_SHIFT = 12;
+inline constexpr uint32 CHUNK_SIZE = 1u << CHUNK_SHIFT;
+inline constexpr uint32 CHUNK_MASK = CHUNK_SIZE - 1u;
+
+class AttributeContainer;
+
+/// Type-erased part of an attribute: what a container needs to grow it, reset
+/// or copy lines, and find it by name and type.
+class AttributeBase
+{
+public:
+	AttributeBase(AttributeContainer* container, std::string name) : container_(container), name_(std::move(name))
+	{
+	}
+	virtual ~AttributeBase() = default;
+	AttributeBase(const AttributeBase&) = delete;
+	AttributeBase& operator=(const AttributeBase&) = delete;
+
+	const std::string& name() const
+	{
+		return name_;
+	}
+	/// The container that owns the attribute; nullptr once the attribute was
+	/// removed (a removed attribute keeps its values until its last handle dies).
+	AttributeContainer* container() const
+	{
+		return container_;
+	}
+
+	virtual std::type_index type() const = 0;
+	virtual void set_nb_chunks(uint32 nb_chunks) = 0;
+	virtual void reset_line(uint32 i) = 0;
+	virtual void copy_line(uint32 dst, uint32 src) = 0;
+	virtual void copy_line_from(uint32 dst, const AttributeBase& other, uint32 src) = 0;
+	virtual void swap_lines(uint32 a, uint32 b) = 0;
+	virtual std::size_t memory_bytes() const = 0;
+
+protected:
+	friend class AttributeContainer;
+	AttributeContainer* container_;
+	std::string name_;
+};
+
+/// A typed attribute: one value of type T per line of its container, stored in
+/// fixed-size chunks. `(*attr)[i]` is the value of line i; a range-for visits
+/// the values of the live lines.
+template <typename T>
+class Attribute : public AttributeBase
+{
+public:
+	using value_type = T;
+
+	Attribute(AttributeContainer* container, std::string name, T default_value = T())
+		: AttributeBase(container, std::move(name)), default_value_(std::move(default_value))
+	{
+	}
+
+	T& operator[](uint32 i)
+	{
+		assert((i >> CHUNK_SHIFT) < chunks_.size());
+		return chunks_[i >> CHUNK_SHIFT][i & CHUNK_MASK];
+	}
+	const T& operator[](uint32 i) const
+	{
+		assert((i >> CHUNK_SHIFT) < chunks_.size());
+		return chunks_[i >> CHUNK_SHIFT][i & CHUNK_MASK];
+	}
+
+	/// The value given to lines when they are created.
+	const T& default_value() const
+	{
+		return default_value_;
+	}
+
+	std::type_index type() const override
+	{
+		return typeid(T);
+	}
+	void set_nb_chunks(uint32 nb_chunks) override
+	{
+		while (chunks_.size() < nb_chunks)
+		{
+			auto chunk = std::make_unique<T[]>(CHUNK_SIZE);
+			for (uint32 i = 0; i < CHUNK_SIZE; ++i)
+				chunk[i] = default_value_;
+			chunks_.push_back(std::move(chunk));
+		}
+		chunks_.resize(nb_chunks);
+	}
+	void reset_line(uint32 i) override
+	{
+		(*this)[i] = default_value_;
+	}
+	void copy_line(uint32 dst, uint32 src) override
+	{
+		(*this)[dst] = (*this)[src];
+	}
+	void copy_line_from(uint32 dst, const AttributeBase& other, uint32 src) override
+	{
+		assert(other.type() == type());
+		(*this)[dst] = static_cast<const Attribute<T>&>(other)[src];
+	}
+	void swap_lines(uint32 a, uint32 b) override
+	{
+		using std::swap;
+		swap((*this)[a], (*this)[b]);
+	}
+	std::size_t memory_bytes() const override
+	{
+		return chunks_.size() * CHUNK_SIZE * sizeof(T);
+	}
+
+	/// Sets every allocated line (live or not) to v.
+	void fill(const T& v)
+	{
+		for (auto& c : chunks_)
+			for (uint32 i = 0; i < CHUNK_SIZE; ++i)
+				c[i] = v;
+	}
+
+	class iterator;
+	class const_iterator;
+	iterator begin();
+	iterator end();
+	const_iterator begin() const;
+	const_iterator end() const;
+
+private:
+	std::vector<std::unique_ptr<T[]>> chunks_;
+	T default_value_;
+};
+
+/// A bit per line, in chunks of the same line count as attributes. Used for
+/// markers and the persistent boundary mark. Not safe for concurrent writes
+/// to the same 64-line word; parallel traversals give each thread its own.
+class MarkAttribute
+{
+public:
+	static constexpr uint32 WORDS_PER_CHUNK = CHUNK_SIZE / 64;
+
+	bool test(uint32 i) const
+	{
+		return (chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] >> (i & 63u)) & 1u;
+	}
+	void set(uint32 i)
+	{
+		chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] |= (uint64(1) << (i & 63u));
+	}
+	void reset(uint32 i)
+	{
+		chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] &= ~(uint64(1) << (i & 63u));
+	}
+	void set_value(uint32 i, bool b)
+	{
+		if (b)
+			set(i);
+		else
+			reset(i);
+	}
+	void clear_all()
+	{
+		for (auto& c : chunks_)
+			for (uint32 w = 0; w < WORDS_PER_CHUNK; ++w)
+				c[w] = 0;
+	}
+	bool all_clear() const
+	{
+		for (const auto& c : chunks_)
+			for (uint32 w = 0; w < WORDS_PER_CHUNK; ++w)
+				if (c[w] != 0)
+					return false;
+		return true;
+	}
+	void set_nb_chunks(uint32 nb_chunks)
+	{
+		while (chunks_.size() < nb_chunks)
+			chunks_.push_back(std::make_unique<uint64[]>(WORDS_PER_CHUNK)); // zeroed
+		chunks_.resize(nb_chunks);
+	}
+	void swap_lines(uint32 a, uint32 b)
+	{
+		bool ta = test(a), tb = test(b);
+		set_value(a, tb);
+		set_value(b, ta);
+	}
+	std::size_t memory_bytes() const
+	{
+		return chunks_.size() * WORDS_PER_CHUNK * sizeof(uint64);
+	}
+
+	/// Slot of the container's lock-free pool that owns this mark, if any.
+	uint32 pool_slot = INVALID_INDEX;
+
+private:
+	std::vector<std::unique_ptr<uint64[]>> chunks_;
+};
+
+} // namespace cgogn

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/types/function_traits.h>
+#include <cgogn/core/types/maps/mesh_traits.h>
+
+#include <cassert>
+
+namespace cgogn
+{
+
+/// Next dart in the face cycle. O(1).
+inline Dart phi1(const CMap1& m, Dart d)
+{
+	return Dart((*m.phi1_)[d.index]);
+}
+
+/// Previous dart in the face cycle. phi_1 is not stored (see bench/README.md:
+/// it would cost 4 bytes per dart): O(degree of the face).
+inline Dart phi_1(const CMap1& m, Dart d)
+{
+	Dart it = d;
+	for (Dart n = phi1(m, it); n != d; n = phi1(m, it))
+		it = n;
+	return it;
+}
+
+/// The dart of the adjacent face along the same edge, opposite direction. O(1).
+inline Dart phi2(const CMap2& m, Dart d)
+{
+	return Dart((*m.phi2_)[d.index]);
+}
+
+/// The dart of the adjacent volume along the same face, opposite direction. O(1).
+inline Dart phi3(const CMap3& m, Dart d)
+{
+	return Dart((*m.phi3_)[d.index]);
+}
+
+/// Composition of relations applied left to right: phi<1, 2>(m, d) is
+/// phi2(m, phi1(m, d)); -1 stands for phi_1.
+template <int... N, typename MAP>
+Dart phi(const MAP& m, Dart d)
+{
+	auto apply = [&](int n) {
+		if (n == 1)
+			d = phi1(m, d);
+		else if (n == -1)
+			d = phi_1(m, d);
+		else if (n == 2)
+		{
+			if constexpr (MAP::dimension >= 2)
+				d = phi2(m, d);
+		}
+		else if (n == 3)
+		{
+			if constexpr (MAP::dimension >= 3)
+				d = phi3(m, d);
+		}
+	};
+	static_assert(((N == 1 || N == -1 || (N == 2 && MAP::dimension >= 2) || (N == 3 && MAP::dimension >= 3)) && ...),
+				  "phi<...>: relation not available in this map");
+	(apply(N), ...);
+	return d;
+}
+
+/// Number of live darts, boundary darts included. O(1).
+inline uint32 nb_darts(const CMapBase& m)
+{
+	return m.darts_->nb_lines();
+}
+
+/// True when the dart belongs to a boundary cell (a boundary face of a 2-map,
+/// a boundary volume of a 3-map). O(1).
+inline bool is_boundary(const CMapBase& m, Dart d)
+{
+	return m.boundary_->test(d.index);
+}
+
+/// True when d is a live dart of m. O(1).
+inline bool is_dart_valid(const CMapBase& m, Dart d)
+{
+	return d.is_valid() && m.darts_->is_live(d.index);
+}
+
+/// Calls f(Dart) on every live dart, boundary darts included; f may return
+/// false to stop. O(number of darts).
+template <typename FUNC>
+void foreach_dart(const CMapBase& m, const FUNC& f)
+{
+	const AttributeContainer& c = *m.darts_;
+	const Attribute<uint32>& key = c.key();
+	for (uint32 i = 0, end = c.end_index(); i < end; ++i)
+		if (key[i] != INVALID_INDEX)
+			if (!call_and_continue(f, Dart(i)))
+				return;
+}
+
+namespace detail
+{
+
+inline Dart add_dart(CMapBase& m)
+{
+	uint32 i = m.darts_->new_line(0);
+	for (Attribute<uint32>* r : m.relations_)
+		(*r)[i] = i;
+	return Dart(i);
+}
+
+inline void remove_dart(CMapBase& m, Dart d)
+{
+	m.boundary_->reset(d.index);
+	m.darts_->release_line(d.index);
+}
+
+inline void set_boundary(CMapBase& m, Dart d, bool b)
+{
+	m.boundary_->set_value(d.index, b);
+}
+
+inline void set_phi1(CMap1& m, Dart d, Dart e)
+{
+	(*m.phi1_)[d.index] = e.index;
+}
+inline void set_phi2(CMap2& m, Dart d, Dart e)
+{
+	(*m.phi2_)[d.index] = e.index;
+}
+inline void set_phi3(CMap3& m, Dart d, Dart e)
+{
+	(*m.phi3_)[d.index] = e.index;
+}
+
+} // namespace detail
+
+/// Exchanges phi1(d) and phi1(e): joins two cycles into one, or splits one
+/// cycle into two (the CMap1 sew/unsew primitive). Low level: no indexing.
+inline void phi1_sew(CMap1& m, Dart d, Dart e)
+{
+	Dart f = phi1(m, d);
+	Dart g = phi1(m, e);
+	detail::set_phi1(m, d, g);
+	detail::set_phi1(m, e, f);
+}
+
+/// Detaches phi1(d) from its cycle, which it leaves as a fixed point. Low level.
+inline void phi1_unsew(CMap1& m, Dart d)
+{
+	Dart e = phi1(m, d);
+	Dart f = phi1(m, e);
+	detail::set_phi1(m, d, f);
+	detail::set_phi1(m, e, e);
+}
+
+/// Links d and e by phi2; both must be phi2 fixed points. Low level: the map is
+/// not closed while fixed points remain (builders use it; operators keep maps closed).
+inline void phi2_sew(CMap2& m, Dart d, Dart e)
+{
+	assert(phi2(m, d) == d && phi2(m, e) == e);
+	detail::set_phi2(m, d, e);
+	detail::set_phi2(m, e, d);
+}
+
+/// Unlinks d and phi2(d), leaving two fixed points. Low level.
+inline void phi2_unsew(CMap2& m, Dart d)
+{
+	Dart e = phi2(m, d);
+	detail::set_phi2(m, d, d);
+	detail::set_phi2(m, e, e);
+}
+
+/// Links d and e by phi3; both must be phi3 fixed points. Low level.
+inline void phi3_sew(CMap3& m, Dart d, Dart e)
+{
+	assert(phi3(m, d) == d && phi3(m, e) == e);
+	detail::set_phi3(m, d, e);
+	detail::set_phi3(m, e, d);
+}
+
+/// Unlinks d and phi3(d). Low level.
+inline void phi3_unsew(CMap3& m, Dart d)
+{
+	Dart e = phi3(m, d);
+	detail::set_phi3(m, d, d);
+	detail::set_phi3(m, e, e);
+}
+
+} // namespace cgogn

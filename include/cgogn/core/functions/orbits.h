@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/dart_buffer.h>
+#include <cgogn/core/functions/darts.h>
+
+namespace cgogn
+{
+
+namespace detail
+{
+
+/// Breadth-first visit of the darts reachable from d through the given
+/// relations, with a pooled mark and work list: allocation-free once warm.
+/// Returns false when f stopped the traversal.
+template <typename MAP, typename FUNC, typename... NEXT>
+bool foreach_dart_flood(const MAP& m, Dart d, const FUNC& f, NEXT... next)
+{
+	MarkAttribute* mark = m.darts_->acquire_mark();
+	DartBuffer buffer;
+	std::vector<Dart>& darts = *buffer;
+	darts.push_back(d);
+	mark->set(d.index);
+	bool go_on = true;
+	for (std::size_t i = 0; i < darts.size(); ++i)
+	{
+		Dart x = darts[i];
+		if (!call_and_continue(f, x))
+		{
+			go_on = false;
+			break;
+		}
+		auto visit = [&](Dart y) {
+			if (!mark->test(y.index))
+			{
+				mark->set(y.index);
+				darts.push_back(y);
+			}
+		};
+		(visit(next(x)), ...);
+	}
+	for (Dart x : darts)
+		mark->reset(x.index);
+	m.darts_->release_mark(mark);
+	return go_on;
+}
+
+} // namespace detail
+
+/// Calls f(Dart) on each dart of the orbit of cell c; f may return false to
+/// stop. Returns false when stopped. O(size of the orbit). Faces, 2-D vertices
+/// and edges are visited in their cyclic order; volumes and 3-D vertices by a
+/// flood with a pooled mark (no allocation once warm).
+template <typename MAP, Orbit O, typename FUNC>
+	requires std::derived_from<MAP, CMapBase>
+bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
+{
+	const Dart d = c.dart;
+	if constexpr (O == Orbit::DART)
+		return call_and_continue(f, d);
+	else if constexpr (O == Orbit::PHI1)
+	{
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			it = phi1(m, it);
+		} while (it != d);
+		return true;
+	}
+	else if constexpr (O == Orbit::PHI2)
+	{
+		static_assert(MAP::dimension >= 2);
+		return call_and_continue(f, d) && call_and_continue(f, phi2(m, d));
+	}
+	else if constexpr (O == Orbit::PHI21)
+	{
+		static_assert(MAP::dimension >= 2);
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			it = phi1(m, phi2(m, it));
+		} while (it != d);
+		return true;
+	}
+	else if constexpr (O == Orbit::PHI1_PHI2)
+	{
+		static_assert(MAP::dimension >= 2);
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return phi1(m, x); }, [&](Dart x) { return phi2(m, x); });
+	}
+	else if constexpr (O == Orbit::PHI1_PHI3)
+	{
+		static_assert(MAP::dimension >= 3);
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			it = phi1(m, it);
+		} while (it != d);
+		const Dart e = phi3(m, d);
+		it = e;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			it = phi1(m, it);
+		} while (it != e);
+		return true;
+	}
+	else if constexpr (O == Orbit::PHI2_PHI3)
+	{
+		static_assert(MAP::dimension >= 3);
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			const Dart it2 = phi2(m, it);
+			if (!call_and_continue(f, it2))
+				return false;
+			it = phi3(m, it2);
+		} while (it != d);
+		return true;
+	}
+	else if constexpr (O == Orbit::PHI21_PHI31)
+	{
+		static_assert(MAP::dimension >= 3);
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return phi1(m, phi2(m, x)); }, [&](Dart x) { return phi1(m, phi3(m, x)); });
+	}
+	else if constexpr (O == Orbit::PHI1_PHI2_PHI3)
+	{
+		static_assert(MAP::dimension >= 3);
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return phi1(m, x); }, [&](Dart x) { return phi2(m, x); },
+			[&](Dart x) { return phi3(m, x); });
+	}
+	else
+	{
+		static_assert(O == Orbit::DART, "orbit not available in combinatorial maps");
+		return false;
+	}
+}
+
+/// True when cells of orbit O lie inside one top-dimension cell of MAP (a face
+/// of a 2-map, a volume of a 3-map): such cells are boundary cells when their
+/// darts are boundary darts. Other orbits straddle the boundary and are always
+/// real cells.
+template <typename MAP, Orbit O>
+inline constexpr bool orbit_inside_top_cell_v = !orbit_uses_phi(O, MAP::dimension);
+
+/// True when c is a boundary cell (not part of the mesh; skipped by traversals). O(1).
+template <typename MAP, Orbit O>
+	requires std::derived_from<MAP, CMapBase>
+bool is_boundary_cell(const MAP& m, Cell<O> c)
+{
+	if constexpr (MAP::dimension >= 2 && orbit_inside_top_cell_v<MAP, O>)
+		return is_boundary(m, c.dart);
+	else
+		return false;
+}
+
+/// True when c1 and c2 are the same cell. O(1) when the orbit is indexed,
+/// O(size of the orbit) otherwise.
+template <typename MAP, Orbit O>
+	requires std::derived_from<MAP, CMapBase>
+bool same_cell(const MAP& m, Cell<O> c1, Cell<O> c2)
+{
+	if constexpr (O != Orbit::DART)
+	{
+		if (const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+		{
+			uint32 i1 = (*idx)[c1.dart.index];
+			if (i1 != INVALID_INDEX)
+				return i1 == (*idx)[c2.dart.index];
+		}
+	}
+	bool found = false;
+	foreach_dart_of_orbit(m, c1, [&](Dart d) {
+		found = d == c2.dart;
+		return !found;
+	});
+	return found;
+}
+
+} // namespace cgogn

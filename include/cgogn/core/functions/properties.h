@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/traversals/local_cmap3.h>
+
+namespace cgogn
+{
+
+// ---- degree: number of incident cells of the next dimension (non-boundary)
+
+/// Number of edges incident to v. O(degree).
+inline uint32 degree(const CMap2& m, CMap2::Vertex v)
+{
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, v, [&](Dart) { ++n; });
+	return n;
+}
+/// Number of non-boundary faces incident to e (1 or 2). O(1).
+inline uint32 degree(const CMap2& m, CMap2::Edge e)
+{
+	return uint32(!is_boundary(m, e.dart)) + uint32(!is_boundary(m, phi2(m, e.dart)));
+}
+/// Number of edges incident to v. O(size of the vertex orbit).
+inline uint32 degree(const CMap3& m, CMap3::Vertex v)
+{
+	uint32 n = 0;
+	foreach_incident_edge(m, v, [&](CMap3::Edge) { ++n; });
+	return n;
+}
+/// Number of faces incident to e. O(degree).
+inline uint32 degree(const CMap3& m, CMap3::Edge e)
+{
+	uint32 n = 0;
+	foreach_incident_face(m, e, [&](CMap3::Face) { ++n; });
+	return n;
+}
+/// Number of non-boundary volumes incident to f (1 or 2). O(1).
+inline uint32 degree(const CMap3& m, CMap3::Face f)
+{
+	return uint32(!is_boundary(m, f.dart)) + uint32(!is_boundary(m, phi3(m, f.dart)));
+}
+
+// ---- codegree: number of incident cells of the previous dimension
+
+/// Number of vertices (= edges) of a face. O(codegree).
+inline uint32 codegree(const CMap1& m, CMap1::Face f)
+{
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, f, [&](Dart) { ++n; });
+	return n;
+}
+/// 2: the vertices of an edge.
+inline uint32 codegree(const CMap2&, CMap2::Edge)
+{
+	return 2;
+}
+/// Number of edges of face f. O(codegree).
+inline uint32 codegree(const CMap3& m, CMap3::Face f)
+{
+	return codegree(static_cast<const CMap1&>(m), CMap1::Face(f.dart));
+}
+/// Number of faces of volume w. O(number of darts of w).
+inline uint32 codegree(const CMap3& m, CMap3::Volume w)
+{
+	uint32 n = 0;
+	foreach_incident_face(m, w, [&](CMap3::Face) { ++n; });
+	return n;
+}
+
+// ---- boundary
+
+/// True when vertex v touches a boundary face. O(degree).
+inline bool is_incident_to_boundary(const CMap2& m, CMap2::Vertex v)
+{
+	bool b = false;
+	foreach_dart_of_orbit(m, v, [&](Dart d) { return !(b = is_boundary(m, d)); });
+	return b;
+}
+/// True when edge e borders a boundary face. O(1).
+inline bool is_incident_to_boundary(const CMap2& m, CMap2::Edge e)
+{
+	return is_boundary(m, e.dart) || is_boundary(m, phi2(m, e.dart));
+}
+/// True when face f has an edge on the boundary. O(codegree).
+inline bool is_incident_to_boundary(const CMap2& m, CMap2::Face f)
+{
+	bool b = false;
+	foreach_dart_of_orbit(m, f, [&](Dart d) { return !(b = is_boundary(m, phi2(m, d))); });
+	return b;
+}
+/// True when vertex v touches a boundary volume. O(size of the vertex orbit).
+inline bool is_incident_to_boundary(const CMap3& m, CMap3::Vertex v)
+{
+	bool b = false;
+	foreach_dart_of_orbit(m, v, [&](Dart d) { return !(b = is_boundary(m, d)); });
+	return b;
+}
+/// True when edge e touches a boundary volume. O(degree).
+inline bool is_incident_to_boundary(const CMap3& m, CMap3::Edge e)
+{
+	bool b = false;
+	foreach_dart_of_orbit(m, e, [&](Dart d) { return !(b = is_boundary(m, d)); });
+	return b;
+}
+/// True when face f is on the boundary (one side is a boundary volume). O(1).
+inline bool is_incident_to_boundary(const CMap3& m, CMap3::Face f)
+{
+	return is_boundary(m, f.dart) || is_boundary(m, phi3(m, f.dart));
+}
+/// True when volume w has a face on the boundary. O(number of darts of w).
+inline bool is_incident_to_boundary(const CMap3& m, CMap3::Volume w)
+{
+	bool b = false;
+	foreach_dart_of_orbit(m, w, [&](Dart d) { return !(b = is_boundary(m, phi3(m, d))); });
+	return b;
+}
+
+// ---- global
+
+/// Number of connected components. O(number of darts).
+inline uint32 nb_connected_components(const CMap2& m)
+{
+	return nb_cells<CMap2::Volume>(m);
+}
+inline uint32 nb_connected_components(const CMap3& m)
+{
+	return nb_cells<CMap3::CC>(m);
+}
+
+/// Number of boundary components (boundary faces of a 2-map, boundary volumes
+/// of a 3-map). O(number of darts).
+template <typename MAP>
+	requires std::derived_from<MAP, CMapBase>
+uint32 nb_boundary_components(const MAP& m)
+{
+	using Top = std::conditional_t<MAP::dimension == 3, Cell<Orbit::PHI1_PHI2>, Cell<Orbit::PHI1>>;
+	DartMarker<MAP> dm(m);
+	uint32 n = 0;
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d) && !dm.is_marked(d))
+		{
+			dm.mark_orbit(Top(d));
+			++n;
+		}
+	});
+	return n;
+}
+
+} // namespace cgogn

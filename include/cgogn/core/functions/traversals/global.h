@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/indexing.h>
+#include <cgogn/core/functions/mesh_access.h>
+#include <cgogn/core/types/marker.h>
+
+namespace cgogn
+{
+
+namespace detail
+{
+
+/// Visits every real cell of type CELL of map m (see foreach_cell).
+template <typename CELL, typename MAP, typename FUNC>
+void foreach_cell_of_map(const MAP& m, const FUNC& f)
+{
+	constexpr Orbit O = CELL::ORBIT;
+	if constexpr (O == Orbit::DART)
+	{
+		foreach_dart(m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, CELL(d)); });
+	}
+	else
+	{
+		if (is_indexed<CELL>(m))
+		{
+			// walk the cell container: one representative dart per live line
+			const Attribute<uint32>& rep = m.cells_[orbit_index(O)]->key();
+			for (uint32 i = 0, end = m.cells_[orbit_index(O)]->end_index(); i < end; ++i)
+			{
+				const uint32 d = rep[i];
+				if (d != INVALID_INDEX && !call_and_continue(f, CELL(Dart(d))))
+					return;
+			}
+		}
+		else if constexpr (O == Orbit::PHI2)
+		{
+			// an edge is visited from its smaller dart, or from its only non-boundary one
+			foreach_dart(m, [&](Dart d) {
+				if (is_boundary(m, d))
+					return true;
+				const Dart e = phi2(m, d);
+				if (d.index < e.index || is_boundary(m, e))
+					return call_and_continue(f, CELL(d));
+				return true;
+			});
+		}
+		else
+		{
+			DartMarker<MAP> dm(m);
+			foreach_dart(m, [&](Dart d) {
+				if (is_boundary(m, d) || dm.is_marked(d))
+					return true;
+				dm.mark_orbit(CELL(d));
+				return call_and_continue(f, CELL(d));
+			});
+		}
+	}
+}
+
+} // namespace detail
+
+/// Calls f on every cell of the type of f's parameter (e.g. `[](Vertex v)`),
+/// boundary cells excluded. f may return false to stop. O(number of cells)
+/// when the orbit is indexed (the cell container is walked), O(number of
+/// darts) otherwise. No assumption can be made on the dart representing each
+/// cell. Works on maps and on views (CellFilter, CellCache).
+template <typename MESH, typename FUNC>
+void foreach_cell(const MESH& m, const FUNC& f)
+{
+	using CELL = func_parameter_type<FUNC>;
+	static_assert(CellType<CELL>, "foreach_cell: the callable must take a cell (e.g. Vertex) by value");
+	if constexpr (std::is_base_of_v<CMapBase, MESH>)
+		detail::foreach_cell_of_map<CELL>(m, f);
+	else
+		m.template foreach_cell<CELL>(f);
+}
+
+/// Number of cells of type CELL (boundary cells excluded). O(1) when the orbit
+/// is indexed, O(number of darts) otherwise.
+template <typename CELL, typename MESH>
+uint32 nb_cells(const MESH& m)
+{
+	if constexpr (std::is_base_of_v<CMapBase, MESH>)
+	{
+		if constexpr (CELL::ORBIT != Orbit::DART)
+			if (is_indexed<CELL>(m))
+				return m.cells_[orbit_index(CELL::ORBIT)]->nb_lines();
+	}
+	uint32 n = 0;
+	foreach_cell(m, [&](CELL) { ++n; });
+	return n;
+}
+
+} // namespace cgogn

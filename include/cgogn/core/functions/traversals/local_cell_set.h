@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/dart_buffer.h>
+#include <cgogn/core/types/marker.h>
+
+namespace cgogn::detail
+{
+
+/// The set of cells met by a local traversal, to report each once. With an
+/// indexed orbit it marks one bit per cell in the cell container; otherwise it
+/// marks the darts of each met cell. Borrows pooled marks and buffers: no
+/// allocation once warm. Thread-safe to use from several threads at once.
+template <typename MAP, typename CELL>
+class LocalCellSet
+{
+public:
+	explicit LocalCellSet(const MAP& m)
+		: map_(m), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(m)),
+		  container_(indexed_ ? &container_of<CELL::ORBIT>(m) : m.darts_.get()), mark_(container_->acquire_mark())
+	{
+	}
+	~LocalCellSet()
+	{
+		for (Dart d : *marked_)
+			mark_->reset(d.index);
+		container_->release_mark(mark_);
+	}
+	LocalCellSet(const LocalCellSet&) = delete;
+	LocalCellSet& operator=(const LocalCellSet&) = delete;
+
+	/// Adds c; true when it was not in the set.
+	bool insert(CELL c)
+	{
+		if (indexed_)
+		{
+			const uint32 i = index_of(map_, c);
+			if (mark_->test(i))
+				return false;
+			mark_->set(i);
+			marked_->push_back(Dart(i));
+			return true;
+		}
+		if (mark_->test(c.dart.index))
+			return false;
+		foreach_dart_of_orbit(map_, c, [&](Dart d) {
+			mark_->set(d.index);
+			marked_->push_back(d);
+		});
+		return true;
+	}
+
+private:
+	const MAP& map_;
+	bool indexed_;
+	AttributeContainer* container_;
+	MarkAttribute* mark_;
+	DartBuffer marked_;
+};
+
+} // namespace cgogn::detail

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/traversals/local_cell_set.h>
+#include <cgogn/core/functions/traversals/local_cmap2.h>
+
+namespace cgogn
+{
+
+// Local traversals of 3-maps. f may return false to stop. Boundary volumes
+// are never reported. Around an edge and around a face the order is defined
+// (the cyclic order of the volumes around the edge, phi1 order along the
+// face); around a vertex and in a volume no order can be assumed (they are
+// flooded with pooled marks: allocation-free once warm). Adjacencies report
+// each cell once and never the starting cell.
+
+namespace detail
+{
+
+// Calls f once per cell of type CELL incident to vertex v, with `inner` the
+// orbit of the intersection of v with such a cell (used to mark it as seen).
+template <typename CELL, Orbit INNER, typename FUNC>
+void foreach_cell_around_vertex3(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	DartMarkerStore<CMap3> seen(m);
+	foreach_dart_of_orbit(m, v, [&](Dart d) {
+		if (seen.is_marked(d))
+			return true;
+		if constexpr (INNER == Orbit::DART)
+			seen.mark(d);
+		else if constexpr (INNER == Orbit::PHI21)
+			seen.mark_orbit(Cell<Orbit::PHI21>(d));
+		else if constexpr (INNER == Orbit::PHI1_PHI3) // vertex of a face: d and phi3 o phi1
+		{
+			seen.mark(d);
+			seen.mark(phi1(m, phi3(m, d)));
+		}
+		else // PHI2_PHI3: darts of an edge leaving v: cycle of phi3 o phi2
+		{
+			Dart it = d;
+			do
+			{
+				seen.mark(it);
+				it = phi2(m, phi3(m, it));
+			} while (it != d);
+		}
+		return is_boundary_cell(m, CELL(d)) || call_and_continue(f, CELL(d));
+	});
+}
+
+} // namespace detail
+
+// ---- incidences of a vertex
+
+/// Edges incident to vertex v.
+template <typename FUNC>
+void foreach_incident_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	detail::foreach_cell_around_vertex3<CMap3::Edge, Orbit::PHI2_PHI3>(m, v, f);
+}
+/// Faces incident to vertex v.
+template <typename FUNC>
+void foreach_incident_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	detail::foreach_cell_around_vertex3<CMap3::Face, Orbit::PHI1_PHI3>(m, v, f);
+}
+/// Volumes incident to vertex v (boundary volumes skipped).
+template <typename FUNC>
+void foreach_incident_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	detail::foreach_cell_around_vertex3<CMap3::Volume, Orbit::PHI21>(m, v, f);
+}
+
+// ---- incidences of an edge
+
+/// The two vertices of edge e: the origin of e.dart first.
+template <typename FUNC>
+void foreach_incident_vertex(const CMap3& m, CMap3::Edge e, const FUNC& f)
+{
+	if (call_and_continue(f, CMap3::Vertex(e.dart)))
+		call_and_continue(f, CMap3::Vertex(phi1(m, e.dart)));
+}
+/// Faces around edge e, in cyclic order.
+template <typename FUNC>
+void foreach_incident_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
+{
+	Dart it = e.dart;
+	do
+	{
+		if (!call_and_continue(f, CMap3::Face(it)))
+			return;
+		it = phi3(m, phi2(m, it));
+	} while (it != e.dart);
+}
+/// Volumes around edge e, in cyclic order (boundary volumes skipped).
+template <typename FUNC>
+void foreach_incident_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
+{
+	Dart it = e.dart;
+	do
+	{
+		if (!is_boundary(m, it) && !call_and_continue(f, CMap3::Volume(it)))
+			return;
+		it = phi3(m, phi2(m, it));
+	} while (it != e.dart);
+}
+
+// ---- incidences of a face
+
+/// Vertices of face f in phi1 order.
+template <typename FUNC>
+void foreach_incident_vertex(const CMap3& m, CMap3::Face f, const FUNC& fn)
+{
+	foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) { return call_and_continue(fn, CMap3::Vertex(d)); });
+}
+/// Edges of face f in phi1 order.
+template <typename FUNC>
+void foreach_incident_edge(const CMap3& m, CMap3::Face f, const FUNC& fn)
+{
+	foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) { return call_and_continue(fn, CMap3::Edge(d)); });
+}
+/// The one or two volumes of face f (boundary volumes skipped).
+template <typename FUNC>
+void foreach_incident_volume(const CMap3& m, CMap3::Face f, const FUNC& fn)
+{
+	if (!is_boundary(m, f.dart) && !call_and_continue(fn, CMap3::Volume(f.dart)))
+		return;
+	const Dart d3 = phi3(m, f.dart);
+	if (!is_boundary(m, d3))
+		call_and_continue(fn, CMap3::Volume(d3));
+}
+
+// ---- incidences of a volume
+
+/// Vertices of volume w.
+template <typename FUNC>
+void foreach_incident_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
+{
+	detail::foreach_cell_of_volume<CMap3::Vertex>(m, w.dart, f);
+}
+/// Edges of volume w.
+template <typename FUNC>
+void foreach_incident_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
+{
+	detail::foreach_cell_of_volume<CMap3::Edge>(m, w.dart, f);
+}
+/// Faces of volume w.
+template <typename FUNC>
+void foreach_incident_face(const CMap3& m, CMap3::Volume w, const FUNC& f)
+{
+	detail::foreach_cell_of_volume<CMap3::Face>(m, w.dart, f);
+}
+
+/// Generic form of the incidences above: calls f on each cell of type TARGET
+/// incident to c.
+template <typename TARGET, typename CELL, typename FUNC>
+void foreach_incident_cell3(const CMap3& m, CELL c, const FUNC& f)
+{
+	if constexpr (std::is_same_v<TARGET, CMap3::Vertex>)
+		foreach_incident_vertex(m, c, [&](CMap3::Vertex x) { return call_and_continue(f, x); });
+	else if constexpr (std::is_same_v<TARGET, CMap3::Edge>)
+		foreach_incident_edge(m, c, [&](CMap3::Edge x) { return call_and_continue(f, x); });
+	else if constexpr (std::is_same_v<TARGET, CMap3::Face>)
+		foreach_incident_face(m, c, [&](CMap3::Face x) { return call_and_continue(f, x); });
+	else
+		foreach_incident_volume(m, c, [&](CMap3::Volume x) { return call_and_continue(f, x); });
+}
+
+// ---- adjacencies: X adjacent to x through a common Y, each once, x excluded
+
+namespace detail
+{
+template <typename X, typename Y, typename FUNC>
+void foreach_adjacent3(const CMap3& m, X x, const FUNC& f)
+{
+	LocalCellSet<CMap3, X> seen(m);
+	seen.insert(x);
+	bool go_on = true;
+	auto visit_y = [&](Y y) {
+		foreach_incident_cell3<X>(m, y, [&](X x2) {
+			if (seen.insert(x2))
+				go_on = call_and_continue(f, x2);
+			return go_on;
+		});
+		return go_on;
+	};
+	foreach_incident_cell3<Y>(m, x, visit_y);
+}
+} // namespace detail
+
+template <typename FUNC>
+void foreach_adjacent_vertex_through_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	foreach_incident_edge(m, v, [&](CMap3::Edge e) {
+		// e.dart leaves v (see foreach_cell_around_vertex3): its phi1 starts at the other end
+		return call_and_continue(f, CMap3::Vertex(phi1(m, e.dart)));
+	});
+}
+template <typename FUNC>
+void foreach_adjacent_vertex_through_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Vertex, CMap3::Face>(m, v, f);
+}
+template <typename FUNC>
+void foreach_adjacent_vertex_through_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Vertex, CMap3::Volume>(m, v, f);
+}
+template <typename FUNC>
+void foreach_adjacent_edge_through_vertex(const CMap3& m, CMap3::Edge e, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Edge, CMap3::Vertex>(m, e, f);
+}
+template <typename FUNC>
+void foreach_adjacent_edge_through_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Edge, CMap3::Face>(m, e, f);
+}
+template <typename FUNC>
+void foreach_adjacent_edge_through_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Edge, CMap3::Volume>(m, e, f);
+}
+template <typename FUNC>
+void foreach_adjacent_face_through_vertex(const CMap3& m, CMap3::Face fc, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Face, CMap3::Vertex>(m, fc, f);
+}
+template <typename FUNC>
+void foreach_adjacent_face_through_edge(const CMap3& m, CMap3::Face fc, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Face, CMap3::Edge>(m, fc, f);
+}
+template <typename FUNC>
+void foreach_adjacent_face_through_volume(const CMap3& m, CMap3::Face fc, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Face, CMap3::Volume>(m, fc, f);
+}
+template <typename FUNC>
+void foreach_adjacent_volume_through_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Volume, CMap3::Vertex>(m, w, f);
+}
+template <typename FUNC>
+void foreach_adjacent_volume_through_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Volume, CMap3::Edge>(m, w, f);
+}
+template <typename FUNC>
+void foreach_adjacent_volume_through_face(const CMap3& m, CMap3::Volume w, const FUNC& f)
+{
+	detail::foreach_adjacent3<CMap3::Volume, CMap3::Face>(m, w, f);
+}
+
+} // namespace cgogn

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/container/attribute_container.h>
+#include <cgogn/core/types/cell.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace cgogn
+{
+
+/// What every combinatorial map holds: a dart container whose attributes are
+/// the phi relations, the per-orbit index attributes and the boundary mark,
+/// and one attribute container per orbit for cell data.
+///
+/// Members ending in `_` are the library's internals: use the free functions
+/// (phi1(m, d), index_of(m, c), add_attribute<T, CELL>(m, name), ...).
+/// Maps can be moved, not copied (use merge(), from the operators, to copy one
+/// map into another).
+class CMapBase
+{
+public:
+	CMapBase()
+	{
+		darts_ = std::make_unique<AttributeContainer>("__phi1");
+		phi1_ = &darts_->key();
+		relations_.push_back(phi1_);
+		boundary_ = darts_->add_persistent_mark();
+		for (auto& c : cells_)
+			c = std::make_unique<AttributeContainer>("__dart");
+		cell_index_.fill(nullptr);
+	}
+	CMapBase(CMapBase&&) = default;
+	CMapBase& operator=(CMapBase&&) = default;
+	CMapBase(const CMapBase&) = delete;
+	CMapBase& operator=(const CMapBase&) = delete;
+
+	std::unique_ptr<AttributeContainer> darts_;
+	std::array<std::unique_ptr<AttributeContainer>, NB_ORBITS> cells_;
+	/// Per-orbit dart attribute holding each dart's cell index (nullptr while
+	/// the orbit is not indexed).
+	std::array<Attribute<uint32>*, NB_ORBITS> cell_index_;
+	/// phi1 is the key of the dart container: a dart is live when its phi1 is valid.
+	Attribute<uint32>* phi1_ = nullptr;
+	/// phi1, phi2, ... phin in this order.
+	std::vector<Attribute<uint32>*> relations_;
+	MarkAttribute* boundary_ = nullptr;
+
+protected:
+	Attribute<uint32>* add_relation(const std::string& name)
+	{
+		auto a = darts_->add_attribute<uint32>(name, INVALID_INDEX);
+		relations_.push_back(a.get());
+		return a.get();
+	}
+};
+
+} // namespace cgogn

@@ -1,0 +1,266 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/dart_buffer.h>
+#include <cgogn/core/functions/indexing.h>
+#include <cgogn/core/functions/mesh_access.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace cgogn
+{
+
+/// Marks darts with a bit reserved from the map's pool; the bits are cleared
+/// and the reservation given back when the marker dies. Any number of markers
+/// may be alive at once. Clearing (unmark_all, destruction) is O(number of
+/// darts / 64); use DartMarkerStore when few darts are marked.
+template <typename MESH>
+class DartMarker
+{
+public:
+	using MapType = typename mesh_traits<MESH>::MapType;
+
+	explicit DartMarker(const MESH& m) : map_(map_of(m)), mark_(map_.darts_->acquire_mark())
+	{
+	}
+	~DartMarker()
+	{
+		mark_->clear_all();
+		map_.darts_->release_mark(mark_);
+	}
+	DartMarker(const DartMarker&) = delete;
+	DartMarker& operator=(const DartMarker&) = delete;
+
+	void mark(Dart d)
+	{
+		mark_->set(d.index);
+	}
+	void unmark(Dart d)
+	{
+		mark_->reset(d.index);
+	}
+	bool is_marked(Dart d) const
+	{
+		return mark_->test(d.index);
+	}
+	template <Orbit O>
+	void mark_orbit(Cell<O> c)
+	{
+		foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set(d.index); });
+	}
+	template <Orbit O>
+	void unmark_orbit(Cell<O> c)
+	{
+		foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->reset(d.index); });
+	}
+	void unmark_all()
+	{
+		mark_->clear_all();
+	}
+
+protected:
+	const MapType& map_;
+	MarkAttribute* mark_;
+};
+
+/// A DartMarker that also records the marked darts, so that clearing is
+/// O(number of marked darts). unmark(d) is O(number of marked darts).
+template <typename MESH>
+class DartMarkerStore
+{
+public:
+	using MapType = typename mesh_traits<MESH>::MapType;
+
+	explicit DartMarkerStore(const MESH& m) : map_(map_of(m)), mark_(map_.darts_->acquire_mark())
+	{
+	}
+	~DartMarkerStore()
+	{
+		unmark_all();
+		map_.darts_->release_mark(mark_);
+	}
+	DartMarkerStore(const DartMarkerStore&) = delete;
+	DartMarkerStore& operator=(const DartMarkerStore&) = delete;
+
+	void mark(Dart d)
+	{
+		if (!mark_->test(d.index))
+		{
+			mark_->set(d.index);
+			marked_->push_back(d);
+		}
+	}
+	void unmark(Dart d)
+	{
+		if (mark_->test(d.index))
+		{
+			mark_->reset(d.index);
+			marked_->erase(std::find(marked_->begin(), marked_->end(), d));
+		}
+	}
+	bool is_marked(Dart d) const
+	{
+		return mark_->test(d.index);
+	}
+	template <Orbit O>
+	void mark_orbit(Cell<O> c)
+	{
+		foreach_dart_of_orbit(map_, c, [&](Dart d) { mark(d); });
+	}
+	template <Orbit O>
+	void unmark_orbit(Cell<O> c)
+	{
+		foreach_dart_of_orbit(map_, c, [&](Dart d) { unmark(d); });
+	}
+	void unmark_all()
+	{
+		for (Dart d : *marked_)
+			mark_->reset(d.index);
+		marked_->clear();
+	}
+	const std::vector<Dart>& marked_darts() const
+	{
+		return *marked_;
+	}
+
+private:
+	const MapType& map_;
+	MarkAttribute* mark_;
+	// borrowed from a per-thread pool: no allocation once warm
+	mutable detail::DartBuffer marked_;
+};
+
+/// Marks cells of type CELL. When the orbit is indexed, a bit per cell in the
+/// cell container is used (mark/is_marked O(1)); otherwise the darts of the
+/// cell are marked (mark O(size of the orbit), is_marked O(1)). Cleared on
+/// destruction; unmark_all is O(number of cells / 64) or O(darts / 64).
+template <typename MESH, typename CELL>
+class CellMarker
+{
+	static_assert(CellType<CELL>);
+
+public:
+	using MapType = typename mesh_traits<MESH>::MapType;
+
+	explicit CellMarker(const MESH& m)
+		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
+		  container_(indexed_ ? &container_of<CELL::ORBIT>(map_) : map_.darts_.get()),
+		  mark_(container_->acquire_mark())
+	{
+	}
+	~CellMarker()
+	{
+		mark_->clear_all();
+		container_->release_mark(mark_);
+	}
+	CellMarker(const CellMarker&) = delete;
+	CellMarker& operator=(const CellMarker&) = delete;
+
+	void mark(CELL c)
+	{
+		if (indexed_)
+			mark_->set(index_of(map_, c));
+		else
+			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set(d.index); });
+	}
+	void unmark(CELL c)
+	{
+		if (indexed_)
+			mark_->reset(index_of(map_, c));
+		else
+			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->reset(d.index); });
+	}
+	bool is_marked(CELL c) const
+	{
+		return mark_->test(indexed_ ? index_of(map_, c) : c.dart.index);
+	}
+	void unmark_all()
+	{
+		mark_->clear_all();
+	}
+
+protected:
+	const MapType& map_;
+	bool indexed_;
+	AttributeContainer* container_;
+	MarkAttribute* mark_;
+};
+
+/// A CellMarker that records the marked cells: unmark_all is O(number of
+/// marked cells), unmark(c) O(number of marked cells). Best when few cells are
+/// marked and the marker is cleared often.
+template <typename MESH, typename CELL>
+class CellMarkerStore
+{
+	static_assert(CellType<CELL>);
+
+public:
+	using MapType = typename mesh_traits<MESH>::MapType;
+
+	explicit CellMarkerStore(const MESH& m)
+		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
+		  container_(indexed_ ? &container_of<CELL::ORBIT>(map_) : map_.darts_.get()),
+		  mark_(container_->acquire_mark())
+	{
+	}
+	~CellMarkerStore()
+	{
+		unmark_all();
+		container_->release_mark(mark_);
+	}
+	CellMarkerStore(const CellMarkerStore&) = delete;
+	CellMarkerStore& operator=(const CellMarkerStore&) = delete;
+
+	void mark(CELL c)
+	{
+		if (is_marked(c))
+			return;
+		set(c, true);
+		marked_.push_back(c);
+	}
+	void unmark(CELL c)
+	{
+		if (!is_marked(c))
+			return;
+		set(c, false);
+		auto it = std::find_if(marked_.begin(), marked_.end(), [&](CELL x) { return is_same(x, c); });
+		if (it != marked_.end())
+			marked_.erase(it);
+	}
+	bool is_marked(CELL c) const
+	{
+		return mark_->test(indexed_ ? index_of(map_, c) : c.dart.index);
+	}
+	void unmark_all()
+	{
+		for (CELL c : marked_)
+			set(c, false);
+		marked_.clear();
+	}
+	const std::vector<CELL>& marked_cells() const
+	{
+		return marked_;
+	}
+
+private:
+	void set(CELL c, bool b)
+	{
+		if (indexed_)
+			mark_->set_value(index_of(map_, c), b);
+		else
+			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set_value(d.index, b); });
+	}
+	bool is_same(CELL a, CELL b) const
+	{
+		return indexed_ ? index_of(map_, a) == index_of(map_, b) : same_cell(map_, a, b);
+	}
+
+	const MapType& map_;
+	bool indexed_;
+	AttributeContainer* container_;
+	MarkAttribute* mark_;
+	std::vector<CELL> marked_;
+};
+
+} // namespace cgogn

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+namespace cgogn
+{
+
+using int8 = std::int8_t;
+using int32 = std::int32_t;
+using int64 = std::int64_t;
+using uint8 = std::uint8_t;
+using uint16 = std::uint16_t;
+using uint32 = std::uint32_t;
+using uint64 = std::uint64_t;
+
+/// The value of an index (dart, cell line) that designates nothing.
+inline constexpr uint32 INVALID_INDEX = std::numeric_limits<uint32>::max();
+
+} // namespace cgogn

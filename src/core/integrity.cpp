@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/core/functions/integrity.h>
+#include <cgogn/core/functions/orbits.h>
+
+#include <sstream>
+
+namespace cgogn
+{
+
+namespace
+{
+
+class Checker
+{
+public:
+	explicit Checker(IntegrityReport& r) : report_(r)
+	{
+	}
+	void add(IntegrityError::Kind k, Orbit o, uint32 dart, uint32 index, const std::string& what)
+	{
+		++report_.nb_errors;
+		if (report_.errors.size() >= 1000)
+			return;
+		std::ostringstream s;
+		s << what;
+		if (dart != INVALID_INDEX)
+			s << " (dart " << dart << ")";
+		if (index != INVALID_INDEX)
+			s << " (line " << index << " of orbit " << orbit_name(o) << ")";
+		report_.errors.push_back({k, o, dart, index, s.str()});
+	}
+
+private:
+	IntegrityReport& report_;
+};
+
+using Kind = IntegrityError::Kind;
+
+void check_container_free_list(const AttributeContainer& c, Orbit o, Checker& ck)
+{
+	for (uint32 i : c.free_lines())
+		if (c.key()[i] != INVALID_INDEX)
+			ck.add(Kind::FreeLineLive, o, INVALID_INDEX, i, "a line of the free list is live");
+}
+
+template <typename MAP>
+void check_relations(const MAP& m, Checker& ck)
+{
+	const AttributeContainer& darts = *m.darts_;
+	check_container_free_list(darts, Orbit::DART, ck);
+	std::vector<uint8> phi1_preimages(darts.end_index(), 0);
+	bool relations_ok = true;
+	foreach_dart(m, [&](Dart d) {
+		for (std::size_t r = 0; r < m.relations_.size(); ++r)
+		{
+			const Dart e((*m.relations_[r])[d.index]);
+			if (!is_dart_valid(m, e))
+			{
+				ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
+					   "phi" + std::to_string(r + 1) + " points to a dart that is not live");
+				relations_ok = false;
+				continue;
+			}
+			if (r == 0)
+			{
+				if (phi1_preimages[e.index]++ == 1)
+					ck.add(Kind::Phi1NotPermutation, Orbit::DART, e.index, INVALID_INDEX,
+						   "phi1 is not a permutation: two darts have this dart as phi1");
+			}
+			else
+			{
+				const std::string name = "phi" + std::to_string(r + 1);
+				if (e == d)
+					ck.add(Kind::PhiFixedPoint, Orbit::DART, d.index, INVALID_INDEX,
+						   name + " has a fixed point: the map is not closed");
+				else if (Dart((*m.relations_[r])[e.index]) != d)
+					ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX,
+						   name + " is not an involution");
+			}
+		}
+	});
+	if (!relations_ok)
+		return;
+	if constexpr (MAP::dimension == 3)
+	{
+		foreach_dart(m, [&](Dart d) {
+			if (phi3(m, phi1(m, phi3(m, phi1(m, d)))) != d)
+				ck.add(Kind::Phi1Phi3NotInvolution, Orbit::DART, d.index, INVALID_INDEX,
+					   "phi3 o phi1 is not an involution");
+		});
+	}
+	if constexpr (MAP::dimension >= 2)
+	{
+		foreach_dart(m, [&](Dart d) {
+			const bool b = is_boundary(m, d);
+			Dart top;
+			if constexpr (MAP::dimension == 2)
+				top = phi2(m, d);
+			else
+				top = phi3(m, d);
+			if (b && is_boundary(m, top))
+				ck.add(Kind::BoundaryLinked, Orbit::DART, d.index, INVALID_INDEX,
+					   "phi" + std::to_string(MAP::dimension) + " links two boundary darts");
+			bool constant = is_boundary(m, phi1(m, d)) == b;
+			if constexpr (MAP::dimension == 3)
+				constant = constant && is_boundary(m, phi2(m, d)) == b;
+			if (!constant)
+				ck.add(Kind::BoundaryMarkNotConstant, Orbit::DART, d.index, INVALID_INDEX,
+					   "the boundary mark is not constant on a boundary cell");
+		});
+	}
+}
+
+// Local generators of orbit O: if all of them keep the index, the whole orbit does.
+template <Orbit O, typename MAP, typename FUNC>
+void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
+{
+	if constexpr (O == Orbit::PHI1)
+		f(phi1(m, d));
+	else if constexpr (O == Orbit::PHI2)
+		f(phi2(m, d));
+	else if constexpr (O == Orbit::PHI21)
+		f(phi1(m, phi2(m, d)));
+	else if constexpr (O == Orbit::PHI1_PHI2)
+	{
+		f(phi1(m, d));
+		f(phi2(m, d));
+	}
+	else if constexpr (O == Orbit::PHI1_PHI3)
+	{
+		f(phi1(m, d));
+		f(phi3(m, d));
+	}
+	else if constexpr (O == Orbit::PHI2_PHI3)
+	{
+		f(phi2(m, d));
+		f(phi3(m, d));
+	}
+	else if constexpr (O == Orbit::PHI21_PHI31)
+	{
+		f(phi1(m, phi2(m, d)));
+		f(phi1(m, phi3(m, d)));
+	}
+	else if constexpr (O == Orbit::PHI1_PHI2_PHI3)
+	{
+		f(phi1(m, d));
+		f(phi2(m, d));
+		f(phi3(m, d));
+	}
+}
+
+template <typename MAP, Orbit O>
+void check_orbit_indexing(const MAP& m, Checker& ck)
+{
+	const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)];
+	if (idx == nullptr)
+		return;
+	const AttributeContainer& cells = *m.cells_[orbit_index(O)];
+	check_container_free_list(cells, O, ck);
+	std::vector<uint32> count(cells.end_index(), 0);
+	foreach_dart(m, [&](Dart d) {
+		const uint32 i = (*idx)[d.index];
+		const bool boundary_cell = is_boundary_cell(m, Cell<O>(d));
+		if (boundary_cell)
+		{
+			if (i != INVALID_INDEX)
+				ck.add(Kind::BoundaryCellIndexed, O, d.index, i, "a boundary cell has an index");
+			return;
+		}
+		if (i == INVALID_INDEX)
+		{
+			ck.add(Kind::MissingIndex, O, d.index, INVALID_INDEX, "a cell of an indexed orbit has no index");
+			return;
+		}
+		if (!cells.is_live(i))
+		{
+			ck.add(Kind::DeadIndex, O, d.index, i, "a dart refers to a free line");
+			return;
+		}
+		++count[i];
+		foreach_orbit_neighbour<O>(m, d, [&](Dart e) {
+			if ((*idx)[e.index] != i)
+				ck.add(Kind::IndexNotConstant, O, d.index, i, "two darts of one cell have different indices");
+		});
+	});
+	for (uint32 i = 0; i < cells.end_index(); ++i)
+	{
+		if (!cells.is_live(i))
+			continue;
+		const Dart rep(cells.key()[i]);
+		if (!is_dart_valid(m, rep) || (*idx)[rep.index] != i)
+		{
+			ck.add(Kind::BadRepresentative, O, rep.index, i, "the representative dart of a line is not in its cell");
+			continue;
+		}
+		uint32 orbit_size = 0;
+		foreach_dart_of_orbit(m, Cell<O>(rep), [&](Dart) { ++orbit_size; });
+		if (orbit_size != count[i])
+			ck.add(Kind::IndexShared, O, rep.index, i,
+				   "a line is used by " + std::to_string(count[i]) + " darts but its cell has " +
+					   std::to_string(orbit_size) + ": several cells share it");
+	}
+}
+
+template <typename MAP, Orbit... O>
+IntegrityReport check_map(const MAP& m)
+{
+	IntegrityReport r;
+	Checker ck(r);
+	check_relations(m, ck);
+	if (r.ok())
+		(check_orbit_indexing<MAP, O>(m, ck), ...);
+	return r;
+}
+
+} // namespace
+
+std::string IntegrityReport::to_string() const
+{
+	std::string s;
+	for (const auto& e : errors)
+		s += e.message + "\n";
+	if (nb_errors > errors.size())
+		s += "... and " + std::to_string(nb_errors - errors.size()) + " more\n";
+	return s;
+}
+
+IntegrityReport check_integrity(const CMap1& m)
+{
+	return check_map<CMap1, Orbit::PHI1>(m);
+}
+
+IntegrityReport check_integrity(const CMap2& m)
+{
+	return check_map<CMap2, Orbit::PHI1, Orbit::PHI2, Orbit::PHI21, Orbit::PHI1_PHI2>(m);
+}
+
+IntegrityReport check_integrity(const CMap3& m)
+{
+	return check_map<CMap3, Orbit::PHI1, Orbit::PHI2, Orbit::PHI21, Orbit::PHI1_PHI2, Orbit::PHI1_PHI3,
+					 Orbit::PHI2_PHI3, Orbit::PHI21_PHI31, Orbit::PHI1_PHI2_PHI3>(m);
+}
+
+} // namespace cgogn

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/core/builder/map_builder.h>
+#include <cgogn/core/functions/indexing.h>
+#include <cgogn/core/operators/index_helpers.h>
+#include <cgogn/core/types/marker.h>
+
+#include "builder_common.h"
+
+#include <algorithm>
+
+namespace cgogn
+{
+
+namespace
+{
+
+// Soup ids of the darts leaving each vertex, as a CSR table.
+struct OutgoingDarts
+{
+	std::vector<uint32> offsets;
+	std::vector<Dart> darts;
+
+	OutgoingDarts(const std::vector<Dart>& all, const Attribute<uint32>& vidx, uint32 offset, uint32 nb_vertices)
+		: offsets(nb_vertices + 1, 0), darts(all.size())
+	{
+		for (Dart d : all)
+			++offsets[vidx[d.index] - offset + 1];
+		for (uint32 v = 0; v < nb_vertices; ++v)
+			offsets[v + 1] += offsets[v];
+		std::vector<uint32> pos(offsets.begin(), offsets.end() - 1);
+		for (Dart d : all)
+			darts[pos[vidx[d.index] - offset]++] = d;
+	}
+	template <typename F>
+	void foreach_from(uint32 v, const F& f) const
+	{
+		for (uint32 i = offsets[v]; i < offsets[v + 1]; ++i)
+			if (!f(darts[i]))
+				return;
+	}
+};
+
+} // namespace
+
+BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> face_sizes,
+						  std::span<const uint32> face_vertices)
+{
+	BuildReport report;
+	report.nb_cells_read = uint32(face_sizes.size());
+
+	if (!is_indexed<CMap2::Vertex>(m))
+		index_cells<CMap2::Vertex>(m);
+	Attribute<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21)];
+	AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21)];
+	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
+	report.vertex_offset = offset;
+
+	// 1. one phi1 cycle per valid face, each dart indexed by its origin vertex
+	std::vector<Dart> darts;
+	std::size_t total = 0;
+	for (uint32 s : face_sizes)
+		total += s;
+	darts.reserve(std::min(total, face_vertices.size()));
+	m.darts_->reserve(uint32(std::min<std::size_t>(uint64(m.darts_->end_index()) + 2 * darts.capacity(), INVALID_INDEX - 1)));
+	std::size_t first = 0;
+	std::vector<uint32> sorted;
+	for (uint32 n : face_sizes)
+	{
+		if (first + n > face_vertices.size())
+		{
+			report.nb_cells_invalid += 1;
+			first = face_vertices.size();
+			continue;
+		}
+		std::span<const uint32> fv = face_vertices.subspan(first, n);
+		first += n;
+		if (std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }))
+		{
+			++report.nb_cells_invalid;
+			continue;
+		}
+		if (n < 3 || detail::has_repeated_vertex(fv, sorted))
+		{
+			++report.nb_cells_degenerate;
+			continue;
+		}
+		const Dart d0 = detail::add_dart(m);
+		Dart prev = d0;
+		vidx[d0.index] = offset + fv[0];
+		darts.push_back(d0);
+		for (uint32 i = 1; i < n; ++i)
+		{
+			const Dart d = detail::add_dart(m);
+			vidx[d.index] = offset + fv[i];
+			detail::set_phi1(m, prev, d);
+			darts.push_back(d);
+			prev = d;
+		}
+		detail::set_phi1(m, prev, d0);
+		++report.nb_cells_built;
+	}
+
+	// 2. sew opposite half-edges: a->b with a free b->a
+	OutgoingDarts out(darts, vidx, offset, nb_vertices);
+	auto origin = [&](Dart d) { return vidx[d.index] - offset; };
+	auto target = [&](Dart d) { return vidx[phi1(m, d).index] - offset; };
+	for (Dart d : darts)
+	{
+		if (phi2(m, d) != d)
+			continue;
+		const uint32 a = origin(d), b = target(d);
+		out.foreach_from(b, [&](Dart e) {
+			if (phi2(m, e) == e && target(e) == a)
+			{
+				phi2_sew(m, d, e);
+				return false;
+			}
+			return true;
+		});
+	}
+	for (Dart d : darts)
+	{
+		if (phi2(m, d) != d)
+			continue;
+		// a free half-edge whose edge has other half-edges: a detached face
+		const uint32 a = origin(d), b = target(d);
+		bool shared = false;
+		out.foreach_from(b, [&](Dart e) { return !(shared = target(e) == a); });
+		if (!shared)
+			out.foreach_from(a, [&](Dart e) { return !(shared = e != d && target(e) == b); });
+		report.nb_nonmanifold_edges += shared;
+	}
+
+	// 3. close every hole with a boundary face
+	std::vector<Dart> hole;
+	std::vector<Dart> boundary_darts;
+	for (Dart d : darts)
+	{
+		if (phi2(m, d) != d)
+			continue;
+		hole.clear();
+		Dart it = d;
+		do
+		{
+			hole.push_back(it);
+			// next free half-edge along the hole: turn around the origin of it
+			Dart e = phi_1(m, it);
+			while (phi2(m, e) != e)
+				e = phi_1(m, phi2(m, e));
+			it = e;
+		} while (it != d && hole.size() <= darts.size());
+		const std::size_t k = hole.size();
+		const std::size_t b0 = boundary_darts.size();
+		for (std::size_t j = 0; j < k; ++j)
+		{
+			const Dart b = detail::add_dart(m);
+			detail::set_boundary(m, b, true);
+			vidx[b.index] = vidx[phi1(m, hole[j]).index];
+			boundary_darts.push_back(b);
+		}
+		for (std::size_t j = 0; j < k; ++j)
+		{
+			detail::set_phi1(m, boundary_darts[b0 + j], boundary_darts[b0 + (j + 1) % k]);
+			phi2_sew(m, hole[j], boundary_darts[b0 + j]);
+		}
+		++report.nb_boundary_cells;
+	}
+	darts.insert(darts.end(), boundary_darts.begin(), boundary_darts.end());
+
+	// 4. one vertex line per vertex orbit: extra fans of a soup vertex are split
+	detail::assign_vertex_lines<CMap2::Vertex>(m, darts, vertices, vidx, offset, nb_vertices, report);
+
+	detail::index_new_darts(m, darts);
+	return report;
+}
+
+} // namespace cgogn

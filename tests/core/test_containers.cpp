@@ -1,0 +1,129 @@
+#include <cgogn/core/container/attribute_container.h>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <set>
+#include <thread>
+
+using namespace cgogn;
+
+TEST(AttributeContainer, GrowsAcrossChunksWithoutMovingElements)
+{
+	AttributeContainer c("key");
+	auto a = c.add_attribute<int>("a");
+	const uint32 n = 3 * CHUNK_SIZE + 5;
+	c.new_line(0);
+	(*a)[0] = 42;
+	const int* first = &(*a)[0];
+	for (uint32 i = 1; i < n; ++i)
+		(*a)[c.new_line(0)] = int(i);
+	EXPECT_EQ(c.nb_lines(), n);
+	EXPECT_EQ(&(*a)[0], first); // chunks never move
+	EXPECT_EQ((*a)[0], 42);
+	for (uint32 i = 1; i < n; ++i)
+		ASSERT_EQ((*a)[i], int(i));
+	EXPECT_EQ(a->memory_bytes(), 4 * CHUNK_SIZE * sizeof(int));
+}
+
+TEST(AttributeContainer, RemovedLinesAreSkippedAndReusedFirstWithDefaultValues)
+{
+	AttributeContainer c("key");
+	auto a = c.add_attribute<double>("a", 1.5);
+	for (uint32 i = 0; i < 10; ++i)
+		(*a)[c.new_line(i)] = double(i);
+	c.release_line(3);
+	c.release_line(7);
+	EXPECT_EQ(c.nb_lines(), 8u);
+	EXPECT_FALSE(c.is_live(3));
+	double sum = 0;
+	uint32 count = 0;
+	for (double v : *a)
+	{
+		sum += v;
+		++count;
+	}
+	EXPECT_EQ(count, 8u);
+	EXPECT_DOUBLE_EQ(sum, 45.0 - 3.0 - 7.0);
+	// last released first, reset to the default value
+	EXPECT_EQ(c.new_line(0), 7u);
+	EXPECT_DOUBLE_EQ((*a)[7], 1.5);
+	EXPECT_EQ(c.new_line(0), 3u);
+	EXPECT_EQ(c.new_line(0), 10u);
+	EXPECT_EQ(c.end_index(), 11u);
+}
+
+TEST(AttributeContainer, AttributesByNameAndType)
+{
+	AttributeContainer c("key");
+	auto a = c.add_attribute<float>("weight");
+	ASSERT_NE(a, nullptr);
+	EXPECT_EQ(c.add_attribute<float>("weight"), nullptr); // exists
+	EXPECT_EQ(c.add_attribute<int>("weight"), nullptr);   // exists, other type
+	EXPECT_EQ(c.get_attribute<float>("weight"), a);
+	EXPECT_EQ(c.get_attribute<double>("weight"), nullptr); // other type
+	EXPECT_EQ(c.get_attribute<float>("nothing"), nullptr);
+	c.new_line(0);
+	(*a)[0] = 2.0f;
+	EXPECT_TRUE(c.remove_attribute(a.get()));
+	EXPECT_EQ(c.get_attribute<float>("weight"), nullptr);
+	EXPECT_EQ(a->container(), nullptr);
+	EXPECT_FLOAT_EQ((*a)[0], 2.0f); // the handle keeps its values
+	EXPECT_EQ(a->begin(), a->end()); // but iterates over nothing
+	EXPECT_FALSE(c.remove_attribute(a.get()));
+	EXPECT_FALSE(c.remove_attribute(&c.key())); // the key stays
+	// a new attribute starts with the container's lines at their default
+	auto b = c.add_attribute<int>("b", 7);
+	EXPECT_EQ((*b)[0], 7);
+}
+
+TEST(AttributeContainer, ManyMarksAtOnceAreIndependentAndComeBackCleared)
+{
+	AttributeContainer c("key");
+	for (uint32 i = 0; i < 200; ++i)
+		c.new_line(0);
+	std::vector<MarkAttribute*> marks;
+	for (uint32 k = 0; k < 100; ++k) // more than the 64 lock-free slots
+		marks.push_back(c.acquire_mark());
+	EXPECT_EQ(std::set<MarkAttribute*>(marks.begin(), marks.end()).size(), 100u);
+	for (uint32 k = 0; k < 100; ++k)
+		marks[k]->set(k);
+	for (uint32 k = 0; k < 100; ++k)
+		for (uint32 i = 0; i < 100; ++i)
+			ASSERT_EQ(marks[k]->test(i), i == k);
+	for (auto* m : marks)
+	{
+		m->clear_all();
+		c.release_mark(m);
+	}
+	MarkAttribute* m = c.acquire_mark();
+	EXPECT_TRUE(m->all_clear());
+	c.release_mark(m);
+}
+
+TEST(AttributeContainer, MarkReservationIsThreadSafe)
+{
+	AttributeContainer c("key");
+	for (uint32 i = 0; i < 100; ++i)
+		c.new_line(0);
+	std::atomic<int> clashes{0};
+	std::vector<std::thread> threads;
+	for (int t = 0; t < 8; ++t)
+		threads.emplace_back([&, t] {
+			for (int i = 0; i < 2000; ++i)
+			{
+				MarkAttribute* m = c.acquire_mark();
+				// a mark held by one thread only: nobody else may see our bit
+				if (m->test(uint32(t)))
+					++clashes;
+				m->set(uint32(t));
+				if (m->test(uint32((t + 1) % 8)))
+					++clashes;
+				m->reset(uint32(t));
+				c.release_mark(m);
+			}
+		});
+	for (auto& th : threads)
+		th.join();
+	EXPECT_EQ(clashes.load(), 0);
+}

@@ -1,0 +1,201 @@
+// check_integrity must catch every kind of corruption it claims to catch.
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+using namespace cgogn;
+using Kind = IntegrityError::Kind;
+
+namespace
+{
+CMap2 indexed_grid()
+{
+	CMap2 m;
+	build_surface(m, grid_soup(3, 3, true));
+	add_attribute<int, CMap2::Face>(m, "f");
+	add_attribute<int, CMap2::Edge>(m, "e");
+	add_attribute<int, CMap2::Volume>(m, "w");
+	return m;
+}
+Dart inner_dart(const CMap2& m)
+{
+	Dart r;
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d) || is_boundary(m, phi2(m, d)))
+			return true;
+		r = d;
+		return false;
+	});
+	return r;
+}
+Attribute<uint32>& index_attr(CMap2& m, Orbit o)
+{
+	return *m.cell_index_[orbit_index(o)];
+}
+} // namespace
+
+TEST(Integrity, CleanMapsAreClean)
+{
+	CMap2 m = indexed_grid();
+	IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.ok()) << r.to_string();
+	EXPECT_EQ(r.nb_errors, 0u);
+}
+
+TEST(Integrity, Phi2NotInvolution)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	Dart other = phi1(m, d);
+	detail::set_phi2(m, d, phi2(m, other)); // d -> phi2(other), but phi2(phi2(other)) = other
+	EXPECT_TRUE(check_integrity(m).has(Kind::PhiNotInvolution));
+}
+
+TEST(Integrity, Phi2FixedPoint)
+{
+	CMap2 m = indexed_grid();
+	phi2_unsew(m, inner_dart(m));
+	EXPECT_TRUE(check_integrity(m).has(Kind::PhiFixedPoint));
+}
+
+TEST(Integrity, Phi1NotPermutation)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	detail::set_phi1(m, d, phi1(m, phi1(m, d))); // two darts now share a phi1
+	EXPECT_TRUE(check_integrity(m).has(Kind::Phi1NotPermutation));
+}
+
+TEST(Integrity, RelationToARemovedDart)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	detail::remove_dart(m, phi1(m, d));
+	EXPECT_TRUE(check_integrity(m).has(Kind::DeadRelation));
+}
+
+TEST(Integrity, BoundaryMarks)
+{
+	{
+		CMap2 m = indexed_grid();
+		detail::set_boundary(m, inner_dart(m), true); // one dart of a real face
+		const IntegrityReport r = check_integrity(m);
+		EXPECT_TRUE(r.has(Kind::BoundaryMarkNotConstant));
+	}
+	{
+		CMap2 m;
+		add_face(m, 3);
+		// mark the real face too: phi2 now links two boundary darts
+		foreach_dart(m, [&](Dart d) { detail::set_boundary(m, d, true); });
+		EXPECT_TRUE(check_integrity(m).has(Kind::BoundaryLinked));
+	}
+}
+
+TEST(Integrity, IndexNotConstantOnAnOrbit)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	Attribute<uint32>& f = index_attr(m, Orbit::PHI1);
+	f[d.index] = f[phi2(m, d).index]; // one dart of a face takes the neighbour's index
+	const IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.has(Kind::IndexNotConstant));
+	EXPECT_TRUE(r.has(Kind::IndexShared));
+}
+
+TEST(Integrity, MissingIndex)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	foreach_dart_of_orbit(m, CMap2::Edge(d), [&](Dart x) { index_attr(m, Orbit::PHI2)[x.index] = INVALID_INDEX; });
+	EXPECT_TRUE(check_integrity(m).has(Kind::MissingIndex));
+}
+
+TEST(Integrity, BoundaryCellIndexed)
+{
+	CMap2 m = indexed_grid();
+	Dart b;
+	foreach_dart(m, [&](Dart d) {
+		if (!is_boundary(m, d))
+			return true;
+		b = d;
+		return false;
+	});
+	const uint32 line = container_of<Orbit::PHI1>(m).new_line(b.index);
+	foreach_dart_of_orbit(m, CMap2::Face(b), [&](Dart x) { index_attr(m, Orbit::PHI1)[x.index] = line; });
+	EXPECT_TRUE(check_integrity(m).has(Kind::BoundaryCellIndexed));
+}
+
+TEST(Integrity, DeadIndex)
+{
+	CMap2 m = indexed_grid();
+	container_of<Orbit::PHI2>(m).release_line(index_of(m, CMap2::Edge(inner_dart(m))));
+	EXPECT_TRUE(check_integrity(m).has(Kind::DeadIndex));
+}
+
+TEST(Integrity, BadRepresentative)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	container_of<Orbit::PHI21>(m).key()[index_of(m, CMap2::Vertex(d))] = phi1(m, d).index;
+	EXPECT_TRUE(check_integrity(m).has(Kind::BadRepresentative));
+}
+
+TEST(Integrity, TwoCellsShareALine)
+{
+	CMap2 m = indexed_grid();
+	Dart d = inner_dart(m);
+	const uint32 shared = index_of(m, CMap2::Vertex(d));
+	const CMap2::Vertex other(phi1(m, d));
+	const uint32 old = index_of(m, other);
+	foreach_dart_of_orbit(m, other, [&](Dart x) { index_attr(m, Orbit::PHI21)[x.index] = shared; });
+	container_of<Orbit::PHI21>(m).release_line(old);
+	const IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.has(Kind::IndexShared));
+	EXPECT_FALSE(r.has(Kind::IndexNotConstant));
+}
+
+TEST(Integrity, LiveLineInTheFreeList)
+{
+	CMap2 m = indexed_grid();
+	AttributeContainer& faces = container_of<Orbit::PHI1>(m);
+	const uint32 i = index_of(m, CMap2::Face(inner_dart(m)));
+	const uint32 rep = faces.key()[i];
+	faces.release_line(i);
+	faces.key()[i] = rep; // live again, but still in the free list
+	EXPECT_TRUE(check_integrity(m).has(Kind::FreeLineLive));
+}
+
+TEST(Integrity, Phi3Phi1NotInvolution)
+{
+	CMap3 m;
+	build_volume(m, tet_grid_soup(1, 1, 1));
+	// re-pair phi3 inside an inner face: still an involution, but not face-compatible
+	Dart d;
+	foreach_dart(m, [&](Dart x) {
+		if (is_boundary(m, x) || is_boundary(m, phi3(m, x)))
+			return true;
+		d = x;
+		return false;
+	});
+	ASSERT_TRUE(d.is_valid());
+	const Dart e = phi1(m, d);
+	const Dart d3 = phi3(m, d), e3 = phi3(m, e);
+	phi3_unsew(m, d);
+	phi3_unsew(m, e);
+	phi3_sew(m, d, e3);
+	phi3_sew(m, e, d3);
+	const IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.has(Kind::Phi1Phi3NotInvolution));
+}
+
+TEST(Integrity, ReportCountsBeyondTheDescribedOnes)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(40, 40));
+	// break every edge: thousands of fixed points
+	foreach_dart(m, [&](Dart d) { detail::set_phi2(m, d, d); });
+	const IntegrityReport r = check_integrity(m);
+	EXPECT_EQ(r.nb_errors, nb_darts(m));
+	EXPECT_EQ(r.errors.size(), 1000u);
+	EXPECT_NE(r.to_string().find("more"), std::string::npos);
+}

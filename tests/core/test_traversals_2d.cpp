@@ -1,0 +1,262 @@
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+using namespace cgogn;
+using Vertex = CMap2::Vertex;
+using Edge = CMap2::Edge;
+using Face = CMap2::Face;
+using Volume = CMap2::Volume;
+
+namespace
+{
+// 3x3 quads, vertex (i, j) has id 4j + i.
+struct Grid : ::testing::Test
+{
+	CMap2 m;
+	void SetUp() override
+	{
+		build_surface(m, grid_soup(3, 3));
+	}
+	uint32 id(Vertex v) const
+	{
+		return index_of(m, v);
+	}
+	Vertex vertex(uint32 id) const
+	{
+		Vertex r;
+		foreach_cell(m, [&](Vertex v) {
+			if (index_of(m, v) != id)
+				return true;
+			r = v;
+			return false;
+		});
+		return r;
+	}
+	// the face of quad (i, j): the one whose vertex ids sum to the expected value and contain (i, j)
+	Face face(uint32 i, uint32 j) const
+	{
+		const std::set<uint32> want = {4 * j + i, 4 * j + i + 1, 4 * (j + 1) + i, 4 * (j + 1) + i + 1};
+		Face r;
+		foreach_cell(m, [&](Face f) {
+			std::set<uint32> got;
+			foreach_incident_vertex(m, f, [&](Vertex v) { got.insert(id(v)); });
+			if (got != want)
+				return true;
+			r = f;
+			return false;
+		});
+		return r;
+	}
+	Edge edge(uint32 a, uint32 b) const
+	{
+		Edge r;
+		foreach_incident_edge(m, vertex(a), [&](Edge e) {
+			if (id(Vertex(phi2(m, e.dart))) != b)
+				return true;
+			r = e;
+			return false;
+		});
+		return r;
+	}
+	template <typename CELL, typename F>
+	std::multiset<uint32> ids(F traversal) const
+	{
+		std::multiset<uint32> s;
+		traversal([&](CELL c) { s.insert(id(c)); });
+		return s;
+	}
+};
+} // namespace
+
+TEST_F(Grid, GlobalCounts)
+{
+	EXPECT_EQ(nb_cells<Vertex>(m), 16u);
+	EXPECT_EQ(nb_cells<Edge>(m), 24u);
+	EXPECT_EQ(nb_cells<Face>(m), 9u);
+	EXPECT_EQ(nb_cells<Volume>(m), 1u);
+	uint32 darts = 0;
+	foreach_dart(m, [&](Dart) { ++darts; });
+	EXPECT_EQ(darts, 2u * 24u); // 36 in faces + 12 on the boundary
+	EXPECT_EQ(nb_cells<CMap2::HalfEdge>(m), 36u);
+}
+
+TEST_F(Grid, EarlyStop)
+{
+	uint32 visited = 0;
+	foreach_cell(m, [&](Vertex) { return ++visited < 5; });
+	EXPECT_EQ(visited, 5u);
+	visited = 0;
+	foreach_cell(m, [&](Edge) { return ++visited < 3; });
+	EXPECT_EQ(visited, 3u);
+	visited = 0;
+	foreach_dart(m, [&](Dart) { return ++visited < 7; });
+	EXPECT_EQ(visited, 7u);
+	visited = 0;
+	foreach_incident_edge(m, vertex(5), [&](Edge) { return ++visited < 2; });
+	EXPECT_EQ(visited, 2u);
+}
+
+TEST_F(Grid, AroundAnInteriorVertex)
+{
+	const Vertex v = vertex(5);
+	std::vector<Face> faces;
+	foreach_incident_face(m, v, [&](Face f) { faces.push_back(f); });
+	ASSERT_EQ(faces.size(), 4u);
+	// cyclic order: consecutive faces share an edge
+	for (std::size_t k = 0; k < 4; ++k)
+	{
+		bool shared = false;
+		foreach_adjacent_face_through_edge(m, faces[k], [&](Face g) {
+			shared = shared || same_cell(m, g, faces[(k + 1) % 4]);
+		});
+		EXPECT_TRUE(shared);
+	}
+	uint32 edges = 0;
+	foreach_incident_edge(m, v, [&](Edge) { ++edges; });
+	EXPECT_EQ(edges, 4u);
+	EXPECT_EQ(ids<Vertex>([&](auto f) { foreach_adjacent_vertex_through_edge(m, v, f); }),
+			  (std::multiset<uint32>{1, 4, 6, 9}));
+	EXPECT_EQ(ids<Vertex>([&](auto f) { foreach_adjacent_vertex_through_face(m, v, f); }),
+			  (std::multiset<uint32>{0, 1, 2, 4, 6, 8, 9, 10}));
+	uint32 volumes = 0;
+	foreach_incident_volume(m, v, [&](Volume) { ++volumes; });
+	EXPECT_EQ(volumes, 1u);
+}
+
+TEST_F(Grid, AroundBoundaryVertices)
+{
+	uint32 n = 0;
+	foreach_incident_face(m, vertex(0), [&](Face) { ++n; });
+	EXPECT_EQ(n, 1u); // the boundary face is not reported
+	EXPECT_EQ(degree(m, vertex(0)), 2u);
+	EXPECT_EQ(ids<Vertex>([&](auto f) { foreach_adjacent_vertex_through_face(m, vertex(0), f); }),
+			  (std::multiset<uint32>{1, 4, 5}));
+	EXPECT_EQ(ids<Vertex>([&](auto f) { foreach_adjacent_vertex_through_face(m, vertex(1), f); }),
+			  (std::multiset<uint32>{0, 2, 4, 5, 6}));
+	n = 0;
+	foreach_incident_face(m, vertex(1), [&](Face) { ++n; });
+	EXPECT_EQ(n, 2u);
+}
+
+TEST_F(Grid, FaceCyclesFollowTheSoupOrder)
+{
+	const Face f = face(0, 0);
+	ASSERT_TRUE(f.is_valid());
+	std::vector<uint32> cycle;
+	foreach_incident_vertex(m, f, [&](Vertex v) { cycle.push_back(id(v)); });
+	ASSERT_EQ(cycle.size(), 4u);
+	std::rotate(cycle.begin(), std::find(cycle.begin(), cycle.end(), 0u), cycle.end());
+	EXPECT_EQ(cycle, (std::vector<uint32>{0, 1, 5, 4}));
+	std::vector<uint32> edge_starts;
+	foreach_incident_edge(m, f, [&](Edge e) { edge_starts.push_back(id(Vertex(e.dart))); });
+	std::rotate(edge_starts.begin(), std::find(edge_starts.begin(), edge_starts.end(), 0u), edge_starts.end());
+	EXPECT_EQ(edge_starts, (std::vector<uint32>{0, 1, 5, 4}));
+}
+
+TEST_F(Grid, FaceAdjacencies)
+{
+	auto count = [&](Face f, bool through_edge) {
+		uint32 n = 0;
+		if (through_edge)
+			foreach_adjacent_face_through_edge(m, f, [&](Face) { ++n; });
+		else
+			foreach_adjacent_face_through_vertex(m, f, [&](Face g) {
+				EXPECT_FALSE(same_cell(m, g, f));
+				++n;
+			});
+		return n;
+	};
+	EXPECT_EQ(count(face(1, 1), true), 4u);
+	EXPECT_EQ(count(face(1, 1), false), 8u);
+	EXPECT_EQ(count(face(0, 0), true), 2u);
+	EXPECT_EQ(count(face(0, 0), false), 3u);
+	EXPECT_EQ(count(face(1, 0), false), 5u);
+}
+
+TEST_F(Grid, EdgeIncidencesAndAdjacencies)
+{
+	const Edge inner = edge(5, 6), border = edge(0, 1);
+	ASSERT_TRUE(inner.is_valid() && border.is_valid());
+	EXPECT_EQ(ids<Vertex>([&](auto f) { foreach_incident_vertex(m, inner, f); }), (std::multiset<uint32>{5, 6}));
+	uint32 n = 0;
+	foreach_incident_face(m, inner, [&](Face) { ++n; });
+	EXPECT_EQ(n, 2u);
+	n = 0;
+	foreach_incident_face(m, border, [&](Face) { ++n; });
+	EXPECT_EQ(n, 1u);
+	n = 0;
+	foreach_adjacent_edge_through_vertex(m, inner, [&](Edge) { ++n; });
+	EXPECT_EQ(n, 6u);
+	n = 0;
+	foreach_adjacent_edge_through_face(m, inner, [&](Edge) { ++n; });
+	EXPECT_EQ(n, 6u);
+	n = 0;
+	foreach_adjacent_edge_through_face(m, border, [&](Edge) { ++n; });
+	EXPECT_EQ(n, 3u);
+	n = 0;
+	foreach_adjacent_edge_through_vertex(m, border, [&](Edge) { ++n; });
+	EXPECT_EQ(n, 1u + 2u);
+}
+
+TEST_F(Grid, VolumeIncidences)
+{
+	const Volume w(vertex(0).dart);
+	uint32 v = 0, e = 0, f = 0;
+	foreach_incident_vertex(m, w, [&](Vertex) { ++v; });
+	foreach_incident_edge(m, w, [&](Edge) { ++e; });
+	foreach_incident_face(m, w, [&](Face) { ++f; });
+	EXPECT_EQ(v, 16u);
+	EXPECT_EQ(e, 24u);
+	EXPECT_EQ(f, 9u);
+}
+
+TEST_F(Grid, GuideEarlyStopLookup)
+{
+	// the API guide's example: the first vertex with a negative x
+	auto position = add_attribute<std::array<double, 3>, Vertex>(m, "position");
+	foreach_cell(m, [&](Vertex v) { value<std::array<double, 3>>(m, position, v) = {double(id(v) % 4) - 2.5, 0, 0}; });
+	Vertex looked_up_v;
+	foreach_cell(m, [&](Vertex v) -> bool {
+		if (value<std::array<double, 3>>(m, position, v)[0] < 0.0)
+		{
+			looked_up_v = v;
+			return false;
+		}
+		return true;
+	});
+	ASSERT_TRUE(looked_up_v.is_valid());
+	EXPECT_LT(id(looked_up_v) % 4, 3u);
+	Vertex none;
+	foreach_cell(m, [&](Vertex v) -> bool {
+		if (value<std::array<double, 3>>(m, position, v)[0] > 100.0)
+		{
+			none = v;
+			return false;
+		}
+		return true;
+	});
+	EXPECT_FALSE(none.is_valid());
+}
+
+TEST(Traversals2D, TrianglesOfASphere)
+{
+	CMap2 m;
+	build_surface(m, sphere_soup(10, 6, true));
+	// sum of degrees = 2E, sum of face sizes = 2E, incidences vertex->face = face->vertex
+	uint64 deg = 0, vf = 0, fv = 0, vv_face = 0;
+	foreach_cell(m, [&](Vertex v) {
+		deg += degree(m, v);
+		foreach_incident_face(m, v, [&](Face) { ++vf; });
+		foreach_adjacent_vertex_through_face(m, v, [&](Vertex) { ++vv_face; });
+	});
+	foreach_cell(m, [&](Face f) { foreach_incident_vertex(m, f, [&](Vertex) { ++fv; }); });
+	const uint32 E = nb_cells<Edge>(m);
+	EXPECT_EQ(deg, 2u * E);
+	EXPECT_EQ(vf, fv);
+	EXPECT_EQ(vv_face, 2u * E); // triangles: the neighbours through faces are the edge neighbours
+	EXPECT_EQ(int64(nb_cells<Vertex>(m)) - E + nb_cells<Face>(m), 2);
+}
