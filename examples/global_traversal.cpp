@@ -2,11 +2,9 @@
 // cell type from the callable, and a callable returning bool can stop early.
 #include <cgogn/cgogn.h>
 
-#include <array>
 #include <iostream>
 
 using namespace cgogn;
-using Vec3 = std::array<double, 3>;
 
 int main()
 {
@@ -19,7 +17,7 @@ int main()
 	BuildReport report = build_surface(m, soup);
 	auto position = add_attribute<Vec3, Vertex>(m, "position");
 	for (uint32 i = 0; i < soup.nb_vertices; ++i)
-		(*position)[report.vertex_offset + i] = soup.positions[i];
+		(*position)[report.vertex_offset + i] = Vec3(soup.positions[i][0], soup.positions[i][1], soup.positions[i][2]);
 
 	uint32 nv = 0, ne = 0, nf = 0;
 	foreach_cell(m, [&](Vertex) { ++nv; });

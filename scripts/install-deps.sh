@@ -2,7 +2,10 @@
 # Installs what cgogn needs to build, test and benchmark on Debian 12 (as root).
 # Does nothing when everything is there already.
 set -euo pipefail
-packages=(cmake ninja-build g++ clang libgtest-dev libgmock-dev libbenchmark-dev)
+packages=(cmake ninja-build g++ clang libclang-rt-14-dev python3
+          libgtest-dev libgmock-dev libbenchmark-dev
+          libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
+          libopenmesh-dev libcgal-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

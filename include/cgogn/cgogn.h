@@ -3,3 +3,4 @@
 #pragma once
 
 #include <cgogn/core.h>
+#include <cgogn/geometry.h>

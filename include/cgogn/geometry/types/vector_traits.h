@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+
+namespace cgogn
+{
+
+/// The geometry layer's vector types (Eigen). Positions are Vec3 vertex
+/// attributes, conventionally named "position".
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Vec4 = Eigen::Vector4d;
+using Mat3 = Eigen::Matrix3d;
+
+} // namespace cgogn
