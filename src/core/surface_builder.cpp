@@ -5,6 +5,7 @@
 #include <cgogn/core/types/marker.h>
 
 #include "builder_common.h"
+#include "cmap2_close.h"
 
 #include <algorithm>
 
@@ -132,39 +133,13 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	}
 
 	// 3. close every hole with a boundary face
-	std::vector<Dart> hole;
 	std::vector<Dart> boundary_darts;
 	for (Dart d : darts)
-	{
-		if (phi2(m, d) != d)
-			continue;
-		hole.clear();
-		Dart it = d;
-		do
+		if (phi2(m, d) == d)
 		{
-			hole.push_back(it);
-			// next free half-edge along the hole: turn around the origin of it
-			Dart e = phi_1(m, it);
-			while (phi2(m, e) != e)
-				e = phi_1(m, phi2(m, e));
-			it = e;
-		} while (it != d && hole.size() <= darts.size());
-		const std::size_t k = hole.size();
-		const std::size_t b0 = boundary_darts.size();
-		for (std::size_t j = 0; j < k; ++j)
-		{
-			const Dart b = detail::add_dart(m);
-			detail::set_boundary(m, b, true);
-			vidx[b.index] = vidx[phi1(m, hole[j]).index];
-			boundary_darts.push_back(b);
+			detail::close_hole_topology(m, d, true, boundary_darts);
+			++report.nb_boundary_cells;
 		}
-		for (std::size_t j = 0; j < k; ++j)
-		{
-			detail::set_phi1(m, boundary_darts[b0 + j], boundary_darts[b0 + (j + 1) % k]);
-			phi2_sew(m, hole[j], boundary_darts[b0 + j]);
-		}
-		++report.nb_boundary_cells;
-	}
 	darts.insert(darts.end(), boundary_darts.begin(), boundary_darts.end());
 
 	// 4. one vertex line per vertex orbit: extra fans of a soup vertex are split

@@ -297,6 +297,12 @@ private:
 	std::vector<MarkAttribute*> overflow_free_;
 };
 
+template <typename T>
+std::shared_ptr<AttributeBase> Attribute<T>::clone_empty(AttributeContainer& to) const
+{
+	return to.add_attribute<T>(name_, default_value_);
+}
+
 /// Iterates the values of the live lines of an attribute.
 template <typename T>
 class Attribute<T>::iterator

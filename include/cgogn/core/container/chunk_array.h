@@ -51,6 +51,9 @@ public:
 	virtual void copy_line_from(uint32 dst, const AttributeBase& other, uint32 src) = 0;
 	virtual void swap_lines(uint32 a, uint32 b) = 0;
 	virtual std::size_t memory_bytes() const = 0;
+	/// A new attribute of the same type, name and default value in container
+	/// `to` (nullptr when the name is taken there).
+	virtual std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const = 0;
 
 protected:
 	friend class AttributeContainer;
@@ -126,6 +129,7 @@ public:
 	{
 		return chunks_.size() * CHUNK_SIZE * sizeof(T);
 	}
+	std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const override;
 
 	/// Sets every allocated line (live or not) to v.
 	void fill(const T& v)

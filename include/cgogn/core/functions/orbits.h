@@ -165,6 +165,21 @@ bool is_boundary_cell(const MAP& m, Cell<O> c)
 		return false;
 }
 
+/// True when the darts of c1 and c2 are in the same orbit, by traversal (does
+/// not look at indices: operators use it while indices are being rewritten).
+/// O(size of the orbit).
+template <typename MAP, Orbit O>
+	requires std::derived_from<MAP, CMapBase>
+bool same_orbit(const MAP& m, Cell<O> c1, Cell<O> c2)
+{
+	bool found = false;
+	foreach_dart_of_orbit(m, c1, [&](Dart d) {
+		found = d == c2.dart;
+		return !found;
+	});
+	return found;
+}
+
 /// True when c1 and c2 are the same cell. O(1) when the orbit is indexed,
 /// O(size of the orbit) otherwise.
 template <typename MAP, Orbit O>
@@ -180,12 +195,7 @@ bool same_cell(const MAP& m, Cell<O> c1, Cell<O> c2)
 				return i1 == (*idx)[c2.dart.index];
 		}
 	}
-	bool found = false;
-	foreach_dart_of_orbit(m, c1, [&](Dart d) {
-		found = d == c2.dart;
-		return !found;
-	});
-	return found;
+	return same_orbit(m, c1, c2);
 }
 
 } // namespace cgogn

@@ -31,3 +31,49 @@ void index_new_darts(MAP& m, const std::vector<Dart>& darts)
 }
 
 } // namespace cgogn::detail
+
+namespace cgogn::detail
+{
+
+/// The index of d's cell of orbit O, or INVALID_INDEX when O is not indexed.
+template <Orbit O>
+uint32 index_or_invalid(const CMapBase& m, Dart d)
+{
+	const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)];
+	return idx ? (*idx)[d.index] : INVALID_INDEX;
+}
+
+/// Gives dart dst the index of dart src in orbit O (when O is indexed).
+template <Orbit O>
+void copy_dart_index(CMapBase& m, Dart dst, Dart src)
+{
+	if (Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+		(*idx)[dst.index] = (*idx)[src.index];
+}
+
+/// Sets the index of dart d in orbit O (when O is indexed).
+template <Orbit O>
+void set_dart_index(CMapBase& m, Dart d, uint32 i)
+{
+	if (Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+		(*idx)[d.index] = i;
+}
+
+/// Merges two cells of orbit O that became one: the line of `keep` is written
+/// on all darts of the merged cell (which contains `keep`), the other line is
+/// released. No-op when O is not indexed or both lines are the same.
+template <typename MAP, Orbit O>
+void merge_cell_indices(MAP& m, Cell<O> merged, uint32 keep, uint32 other)
+{
+	if (m.cell_index_[orbit_index(O)] == nullptr)
+		return;
+	if (keep == INVALID_INDEX)
+		std::swap(keep, other);
+	if (keep == INVALID_INDEX)
+		return;
+	write_index(m, merged, keep);
+	if (other != INVALID_INDEX && other != keep)
+		m.cells_[orbit_index(O)]->release_line(other);
+}
+
+} // namespace cgogn::detail

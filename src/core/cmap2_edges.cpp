@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: MIT
+// Edge operators of 2-maps: cut, collapse, flip.
+#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/index_helpers.h>
+
+namespace cgogn
+{
+
+namespace
+{
+constexpr Orbit V = Orbit::PHI21;
+constexpr Orbit E = Orbit::PHI2;
+constexpr Orbit F = Orbit::PHI1;
+constexpr Orbit W = Orbit::PHI1_PHI2;
+
+// Inserts a new dart after d in its face; it takes d's face, volume and boundary.
+Dart insert_after(CMap2& m, Dart d, bool set_indices)
+{
+	const Dart nd = detail::add_dart(m);
+	detail::set_phi1(m, nd, phi1(m, d));
+	detail::set_phi1(m, d, nd);
+	detail::set_boundary(m, nd, is_boundary(m, d));
+	if (set_indices)
+	{
+		detail::copy_dart_index<F>(m, nd, d);
+		detail::copy_dart_index<W>(m, nd, d);
+	}
+	return nd;
+}
+
+uint32 face_degree(const CMap2& m, Dart d)
+{
+	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d));
+}
+} // namespace
+
+CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices)
+{
+	const Dart d = e.dart;
+	const Dart d2 = phi2(m, d);
+	const Dart n1 = insert_after(m, d, set_indices);  // new vertex -> end of d
+	const Dart n2 = insert_after(m, d2, set_indices); // new vertex -> origin of d
+	phi2_unsew(m, d);
+	phi2_sew(m, d, n2);
+	phi2_sew(m, d2, n1);
+	if (set_indices)
+	{
+		detail::index_new_cell(m, CMap2::Vertex(n1));
+		// the half {d, n2} keeps the edge's line, {n1, d2} gets a new one
+		detail::copy_dart_index<E>(m, n2, d);
+		detail::set_dart_index<E>(m, n1, INVALID_INDEX);
+		detail::set_dart_index<E>(m, d2, INVALID_INDEX);
+		detail::index_new_cell(m, CMap2::Edge(n1));
+		detail::set_representative<E>(m, d);
+	}
+	return CMap2::Vertex(n1);
+}
+
+bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
+{
+	const Dart d = e.dart;
+	const Dart d2 = phi2(m, d);
+	if (same_orbit(m, CMap2::Face(d), CMap2::Face(d2)))
+		return false;
+	const uint32 deg1 = face_degree(m, d), deg2 = face_degree(m, d2);
+	if (deg1 < 3 || deg2 < 3)
+		return false;
+	// vertices opposite to e in its triangles (the outside counts as a vertex)
+	const Dart opp1 = deg1 == 3 ? phi_1(m, d) : Dart();
+	const Dart opp2 = deg2 == 3 ? phi_1(m, d2) : Dart();
+	if (opp1.is_valid() && opp2.is_valid() && same_orbit(m, CMap2::Vertex(opp1), CMap2::Vertex(opp2)))
+		return false; // two triangles (or a triangle and a triangular hole) on the same three vertices
+	const bool a_boundary = is_incident_to_boundary(m, CMap2::Vertex(d));
+	const bool b_boundary = is_incident_to_boundary(m, CMap2::Vertex(d2));
+	if (a_boundary && b_boundary && !is_boundary(m, d) && !is_boundary(m, d2))
+		return false; // would pinch two boundary parts together
+	// neighbours of a, marked; every neighbour of b among them must be opposite
+	DartMarkerStore<CMap2> around_a(m);
+	foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
+		around_a.mark_orbit(CMap2::Vertex(phi2(m, x)));
+	});
+	bool ok = true;
+	foreach_dart_of_orbit(m, CMap2::Vertex(d2), [&](Dart y) {
+		const Dart w = phi2(m, y); // a dart of a neighbour of b
+		if (w == d || !around_a.is_marked(w))
+			return true;
+		const bool opposite = (opp1.is_valid() && !is_boundary(m, d) && same_orbit(m, CMap2::Vertex(w), CMap2::Vertex(opp1))) ||
+							  (opp2.is_valid() && !is_boundary(m, d2) && same_orbit(m, CMap2::Vertex(w), CMap2::Vertex(opp2)));
+		ok = opposite;
+		return ok;
+	});
+	return ok;
+}
+
+CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
+{
+	assert(edge_can_collapse(m, e));
+	const Dart d = e.dart;   // a -> b, a disappears
+	const Dart d2 = phi2(m, d); // b -> a
+	const uint32 a_line = detail::index_or_invalid<V>(m, d);
+	const uint32 b_line = detail::index_or_invalid<V>(m, d2);
+	const Dart p1 = phi_1(m, d), n1 = phi1(m, d);
+	const Dart p2 = phi_1(m, d2), n2 = phi1(m, d2);
+	// 1. take the edge out of both faces
+	detail::set_phi1(m, p1, n1);
+	detail::set_phi1(m, p2, n2);
+	if (set_indices)
+	{
+		detail::release_index<E>(m, detail::index_or_invalid<E>(m, d));
+		detail::set_representative<F>(m, n1);
+		detail::set_representative<F>(m, n2);
+		detail::set_representative<W>(m, n1);
+	}
+	detail::remove_dart(m, d);
+	detail::remove_dart(m, d2);
+	// the surviving vertex: n1 starts at b (and so does n2 now)
+	Dart keep = n1;
+	// 2. remove the faces reduced to 2 edges: their two edges become one
+	for (Dart p : {p1, p2})
+	{
+		const Dart n = phi1(m, p);
+		if (phi1(m, n) != p)
+			continue;
+		// the 2-gon {p, n}: sew phi2(p) with phi2(n), keep n's edge line
+		const Dart pp = phi2(m, p), nn = phi2(m, n);
+		if (set_indices)
+		{
+			detail::release_index<F>(m, detail::index_or_invalid<F>(m, p));
+			const uint32 edge_line = detail::index_or_invalid<E>(m, n);
+			detail::release_index<E>(m, detail::index_or_invalid<E>(m, p));
+			detail::set_dart_index<E>(m, pp, edge_line);
+			detail::set_representative<E>(m, nn);
+			detail::set_representative<V>(m, pp);
+			detail::set_representative<V>(m, nn);
+			detail::set_representative<W>(m, pp);
+		}
+		if (keep == n || keep == p)
+			keep = pp; // pp leaves the merged vertex
+		detail::remove_dart(m, p);
+		detail::remove_dart(m, n);
+		detail::set_phi2(m, pp, nn);
+		detail::set_phi2(m, nn, pp);
+	}
+	if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
+		detail::merge_cell_indices(m, CMap2::Vertex(keep), b_line, a_line);
+	return CMap2::Vertex(keep);
+}
+
+bool edge_can_flip(const CMap2& m, CMap2::Edge e)
+{
+	const Dart d = e.dart;
+	const Dart d2 = phi2(m, d);
+	if (is_boundary(m, d) || is_boundary(m, d2) || same_orbit(m, CMap2::Face(d), CMap2::Face(d2)))
+		return false;
+	if (face_degree(m, d) < 3 || face_degree(m, d2) < 3)
+		return false;
+	if (degree(m, CMap2::Vertex(d)) < 3 || degree(m, CMap2::Vertex(d2)) < 3)
+		return false;
+	// the new edge joins the end of phi1(d2) and the end of phi1(d)
+	const CMap2::Vertex c(phi<1, 1>(m, d)), y(phi<1, 1>(m, d2));
+	if (same_orbit(m, c, y))
+		return false;
+	bool adjacent = false;
+	foreach_dart_of_orbit(m, c, [&](Dart x) { return !(adjacent = same_orbit(m, CMap2::Vertex(phi2(m, x)), y)); });
+	return !adjacent;
+}
+
+namespace
+{
+// Indices after a flip: two darts changed faces, d and d2 changed origins.
+void fix_after_flip(CMap2& m, Dart d, Dart d2, Dart moved_to_f2, Dart moved_to_f1, Dart origin_of_d,
+					Dart origin_of_d2, Dart rep_old_origin_d, Dart rep_old_origin_d2)
+{
+	// faces: the dart that moved takes the index of its new face
+	detail::copy_dart_index<F>(m, moved_to_f2, d2);
+	detail::copy_dart_index<F>(m, moved_to_f1, d);
+	detail::set_representative<F>(m, d);
+	detail::set_representative<F>(m, d2);
+	// vertices: d and d2 have new origins; their old vertices need another representative
+	detail::set_representative<V>(m, rep_old_origin_d);
+	detail::set_representative<V>(m, rep_old_origin_d2);
+	detail::copy_dart_index<V>(m, d, origin_of_d);
+	detail::copy_dart_index<V>(m, d2, origin_of_d2);
+}
+} // namespace
+
+void flip_edge(CMap2& m, CMap2::Edge e, bool set_indices)
+{
+	assert(edge_can_flip(m, e));
+	const Dart d = e.dart, d2 = phi2(m, d);
+	const Dart d1 = phi1(m, d), d11 = phi1(m, d1), dp = phi_1(m, d);
+	const Dart e1 = phi1(m, d2), e11 = phi1(m, e1), ep = phi_1(m, d2);
+	// face of d: (d, d1, d11, ..., dp) -> (d, d11, ..., dp, e1)
+	// face of d2: (d2, e1, e11, ..., ep) -> (d2, e11, ..., ep, d1)
+	detail::set_phi1(m, d, d11);
+	detail::set_phi1(m, dp, e1);
+	detail::set_phi1(m, e1, d);
+	detail::set_phi1(m, d2, e11);
+	detail::set_phi1(m, ep, d1);
+	detail::set_phi1(m, d1, d2);
+	if (set_indices)
+		fix_after_flip(m, d, d2, d1, e1, e11, d11, e1, d1);
+}
+
+void flip_back_edge(CMap2& m, CMap2::Edge e, bool set_indices)
+{
+	assert(edge_can_flip(m, e));
+	const Dart d = e.dart, d2 = phi2(m, d);
+	const Dart d1 = phi1(m, d), dp = phi_1(m, d), dpp = phi_1(m, dp);
+	const Dart e1 = phi1(m, d2), ep = phi_1(m, d2), epp = phi_1(m, ep);
+	// face of d: (d, d1, ..., dpp, dp) -> (d, ep, d1, ..., dpp)
+	// face of d2: (d2, e1, ..., epp, ep) -> (d2, dp, e1, ..., epp)
+	detail::set_phi1(m, dpp, d);
+	detail::set_phi1(m, d, ep);
+	detail::set_phi1(m, ep, d1);
+	detail::set_phi1(m, epp, d2);
+	detail::set_phi1(m, d2, dp);
+	detail::set_phi1(m, dp, e1);
+	if (set_indices)
+		// d now starts where dp starts, d2 where ep starts
+		fix_after_flip(m, d, d2, dp, ep, dp, ep, e1, d1);
+}
+
+} // namespace cgogn

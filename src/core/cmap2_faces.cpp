@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: MIT
+// Face and vertex operators of 2-maps: cut and merge faces, merge edges,
+// split vertices, triangulate and remove faces.
+#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/index_helpers.h>
+
+#include <algorithm>
+
+namespace cgogn
+{
+
+namespace
+{
+constexpr Orbit V = Orbit::PHI21;
+constexpr Orbit E = Orbit::PHI2;
+constexpr Orbit F = Orbit::PHI1;
+constexpr Orbit W = Orbit::PHI1_PHI2;
+
+// A new edge {x, y}: x inserted before dx in its face, y before dy in its face.
+// x starts where dy starts... no: x goes from the origin of dy's vertex chosen by
+// the caller; callers set vertex indices themselves.
+std::pair<Dart, Dart> insert_edge_before(CMap2& m, Dart dx, Dart dy)
+{
+	const Dart px = phi_1(m, dx), py = phi_1(m, dy);
+	const Dart x = detail::add_dart(m), y = detail::add_dart(m);
+	detail::set_phi1(m, px, x);
+	detail::set_phi1(m, x, dx);
+	detail::set_phi1(m, py, y);
+	detail::set_phi1(m, y, dy);
+	phi2_sew(m, x, y);
+	detail::set_boundary(m, x, is_boundary(m, dx));
+	detail::set_boundary(m, y, is_boundary(m, dy));
+	return {x, y};
+}
+} // namespace
+
+bool can_cut_face(const CMap2& m, CMap2::Vertex v1, CMap2::Vertex v2)
+{
+	const Dart d = v1.dart, e = v2.dart;
+	if (d == e || is_boundary(m, d) || phi1(m, d) == e || phi1(m, e) == d)
+		return false;
+	return same_orbit(m, CMap2::Face(d), CMap2::Face(e));
+}
+
+CMap2::Edge cut_face(CMap2& m, CMap2::Vertex v1, CMap2::Vertex v2, bool set_indices)
+{
+	assert(can_cut_face(m, v1, v2));
+	const Dart d = v1.dart, e = v2.dart;
+	// x: origin(e) -> origin(d), before d (stays in d's part)
+	// y: origin(d) -> origin(e), before e (in the new face)
+	// the face (d, ..., pe, e, ..., pd) becomes (d, ..., pe, x) and (e, ..., pd, y)
+	const Dart pd = phi_1(m, d), pe = phi_1(m, e);
+	const Dart x = detail::add_dart(m), y = detail::add_dart(m);
+	detail::set_phi1(m, pe, x);
+	detail::set_phi1(m, x, d);
+	detail::set_phi1(m, pd, y);
+	detail::set_phi1(m, y, e);
+	phi2_sew(m, x, y);
+	if (set_indices)
+	{
+		detail::copy_dart_index<V>(m, x, e);
+		detail::copy_dart_index<V>(m, y, d);
+		detail::copy_dart_index<W>(m, x, d);
+		detail::copy_dart_index<W>(m, y, d);
+		detail::index_new_cell(m, CMap2::Edge(x));
+		detail::copy_dart_index<F>(m, x, d);
+		detail::set_representative<F>(m, d);
+		if (m.cell_index_[orbit_index(F)] != nullptr)
+			detail::new_index(m, CMap2::Face(y));
+	}
+	return CMap2::Edge(y);
+}
+
+bool can_merge_incident_faces(const CMap2& m, CMap2::Edge e)
+{
+	const Dart d = e.dart, d2 = phi2(m, d);
+	return !is_boundary(m, d) && !is_boundary(m, d2) && !same_orbit(m, CMap2::Face(d), CMap2::Face(d2));
+}
+
+CMap2::Face merge_incident_faces(CMap2& m, CMap2::Edge e, bool set_indices)
+{
+	assert(can_merge_incident_faces(m, e));
+	const Dart d = e.dart, d2 = phi2(m, d);
+	const Dart pd = phi_1(m, d), pd2 = phi_1(m, d2);
+	const Dart nd = phi1(m, d), nd2 = phi1(m, d2);
+	if (set_indices)
+	{
+		detail::release_index<E>(m, detail::index_or_invalid<E>(m, d));
+		const uint32 kept = detail::index_or_invalid<F>(m, d);
+		const uint32 gone = detail::index_or_invalid<F>(m, d2);
+		for (Dart x = nd2; x != d2; x = phi1(m, x))
+			detail::set_dart_index<F>(m, x, kept);
+		detail::release_index<F>(m, gone);
+		detail::set_representative<F>(m, nd);
+		detail::set_representative<V>(m, nd);  // origin of d2's end... nd starts at the end of d
+		detail::set_representative<V>(m, nd2); // nd2 starts at the origin of d
+		detail::set_representative<W>(m, nd);
+	}
+	detail::set_phi1(m, pd, nd2);
+	detail::set_phi1(m, pd2, nd);
+	detail::remove_dart(m, d);
+	detail::remove_dart(m, d2);
+	return CMap2::Face(nd);
+}
+
+bool can_merge_incident_faces(const CMap2& m, CMap2::Vertex v)
+{
+	if (is_incident_to_boundary(m, v) || degree(m, v) < 2)
+		return false;
+	DartMarkerStore<CMap2> faces(m);
+	bool ok = true;
+	foreach_dart_of_orbit(m, v, [&](Dart d) {
+		// distinct faces, none reduced to 2 edges
+		if (faces.is_marked(d) || phi1(m, phi1(m, d)) == d)
+			return ok = false;
+		faces.mark_orbit(CMap2::Face(d));
+		return true;
+	});
+	return ok;
+}
+
+CMap2::Face merge_incident_faces(CMap2& m, CMap2::Vertex v, bool set_indices)
+{
+	assert(can_merge_incident_faces(m, v));
+	std::vector<Dart> around; // d_i: v -> w_i, d_i+1 = phi1(phi2(d_i))
+	foreach_dart_of_orbit(m, v, [&](Dart d) { around.push_back(d); });
+	const std::size_t k = around.size();
+	// r_i = phi1(d_i) leaves w_i; q_i = phi_1(phi2(d_i-1)) arrives at w_i-1... in face i
+	std::vector<Dart> r(k), q(k);
+	for (std::size_t i = 0; i < k; ++i)
+	{
+		r[i] = phi1(m, around[i]);
+		q[i] = phi_1(m, phi2(m, around[(i + k - 1) % k]));
+	}
+	const uint32 kept_face = detail::index_or_invalid<F>(m, around[0]);
+	if (set_indices)
+	{
+		detail::release_index<V>(m, detail::index_or_invalid<V>(m, around[0]));
+		for (std::size_t i = 0; i < k; ++i)
+		{
+			detail::release_index<E>(m, detail::index_or_invalid<E>(m, around[i]));
+			if (i > 0)
+				detail::release_index<F>(m, detail::index_or_invalid<F>(m, around[i]));
+			detail::set_representative<V>(m, r[i]); // r_i starts at w_i, which loses phi2(d_i)
+		}
+		detail::set_representative<W>(m, r[0]);
+	}
+	// the merged face runs q_i -> r_i-1: face i's path from w_i to w_i-1, then face i-1's
+	for (std::size_t i = 0; i < k; ++i)
+		detail::set_phi1(m, q[i], r[(i + k - 1) % k]);
+	for (Dart d : around)
+	{
+		detail::remove_dart(m, phi2(m, d));
+		detail::remove_dart(m, d);
+	}
+	if (set_indices && kept_face != INVALID_INDEX)
+		detail::write_index(m, CMap2::Face(r[0]), kept_face);
+	return CMap2::Face(r[0]);
+}
+
+bool can_merge_incident_edges(const CMap2& m, CMap2::Vertex v)
+{
+	const Dart x = v.dart;
+	const Dart y = phi1(m, phi2(m, x));
+	if (phi1(m, phi2(m, y)) != x || x == y)
+		return false; // degree != 2
+	// the two edges must be distinct and both faces keep at least 3 edges
+	auto at_least_4 = [&](Dart d) { return phi<1, 1, 1>(m, d) != d && phi<1, 1>(m, d) != d && phi1(m, d) != d; };
+	return !same_orbit(m, CMap2::Edge(x), CMap2::Edge(y)) && at_least_4(x) && at_least_4(y);
+}
+
+CMap2::Edge merge_incident_edges(CMap2& m, CMap2::Vertex v, bool set_indices)
+{
+	assert(can_merge_incident_edges(m, v));
+	// v = {x: v -> b, y: v -> a}; d = phi2(y): a -> v, e2 = phi2(x): b -> v
+	const Dart x = v.dart;
+	const Dart e2 = phi2(m, x);
+	const Dart y = phi1(m, e2);
+	const Dart d = phi2(m, y);
+	if (set_indices)
+	{
+		detail::release_index<V>(m, detail::index_or_invalid<V>(m, x));
+		detail::release_index<E>(m, detail::index_or_invalid<E>(m, x));
+		detail::copy_dart_index<E>(m, e2, d);
+		detail::set_representative<E>(m, d);
+		detail::set_representative<F>(m, d);
+		detail::set_representative<F>(m, e2);
+		detail::set_representative<W>(m, d);
+	}
+	detail::set_phi1(m, d, phi1(m, x));
+	detail::set_phi1(m, e2, phi1(m, y));
+	detail::remove_dart(m, x);
+	detail::remove_dart(m, y);
+	detail::set_phi2(m, d, e2);
+	detail::set_phi2(m, e2, d);
+	return CMap2::Edge(d);
+}
+
+CMap2::Edge split_vertex(CMap2& m, Dart d1, Dart d2, bool set_indices)
+{
+	assert(d1 != d2 && same_orbit(m, CMap2::Vertex(d1), CMap2::Vertex(d2)));
+	// x: old vertex -> new vertex, before d1; y: new -> old, before d2
+	auto [x, y] = insert_edge_before(m, d1, d2);
+	if (set_indices)
+	{
+		detail::copy_dart_index<F>(m, x, d1);
+		detail::copy_dart_index<F>(m, y, d2);
+		detail::copy_dart_index<W>(m, x, d1);
+		detail::copy_dart_index<W>(m, y, d1);
+		detail::index_new_cell(m, CMap2::Edge(x));
+		// the old vertex keeps its line on {d2, ..., x}; the new one gets d1's side
+		const uint32 old = detail::index_or_invalid<V>(m, d2);
+		detail::set_dart_index<V>(m, x, old);
+		detail::set_representative<V>(m, d2);
+		if (m.cell_index_[orbit_index(V)] != nullptr)
+			detail::new_index(m, CMap2::Vertex(d1));
+	}
+	return CMap2::Edge(x);
+}
+
+CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices)
+{
+	assert(!is_boundary(m, f.dart));
+	std::vector<Dart> sides; // d_i: v_i -> v_i+1
+	foreach_dart_of_orbit(m, f, [&](Dart d) { sides.push_back(d); });
+	const std::size_t k = sides.size();
+	std::vector<Dart> to_centre(k), from_centre(k); // x_i: v_i+1 -> c, y_i: c -> v_i
+	for (std::size_t i = 0; i < k; ++i)
+	{
+		to_centre[i] = detail::add_dart(m);
+		from_centre[i] = detail::add_dart(m);
+	}
+	for (std::size_t i = 0; i < k; ++i)
+	{
+		detail::set_phi1(m, sides[i], to_centre[i]);
+		detail::set_phi1(m, to_centre[i], from_centre[i]);
+		detail::set_phi1(m, from_centre[i], sides[i]);
+		phi2_sew(m, to_centre[i], from_centre[(i + 1) % k]);
+	}
+	if (set_indices)
+	{
+		for (std::size_t i = 0; i < k; ++i)
+		{
+			detail::copy_dart_index<V>(m, to_centre[i], sides[(i + 1) % k]);
+			detail::copy_dart_index<W>(m, to_centre[i], sides[i]);
+			detail::copy_dart_index<W>(m, from_centre[i], sides[i]);
+			detail::index_new_cell(m, CMap2::Edge(to_centre[i]));
+		}
+		detail::index_new_cell(m, CMap2::Vertex(from_centre[0]));
+		const bool faces_indexed = m.cell_index_[orbit_index(F)] != nullptr;
+		for (std::size_t i = 0; i < k; ++i)
+		{
+			if (i == 0)
+			{
+				detail::copy_dart_index<F>(m, to_centre[0], sides[0]);
+				detail::copy_dart_index<F>(m, from_centre[0], sides[0]);
+				detail::set_representative<F>(m, sides[0]);
+			}
+			else if (faces_indexed)
+			{
+				detail::set_dart_index<F>(m, sides[i], INVALID_INDEX);
+				detail::new_index(m, CMap2::Face(sides[i]));
+			}
+		}
+	}
+	return CMap2::Vertex(from_centre[0]);
+}
+
+void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
+{
+	assert(!is_boundary(m, f.dart));
+	std::vector<Dart> darts;
+	foreach_dart_of_orbit(m, f, [&](Dart d) { darts.push_back(d); });
+	// the vertices of f with their darts, before anything changes
+	std::vector<std::vector<Dart>> vertex_darts(darts.size());
+	for (std::size_t i = 0; i < darts.size(); ++i)
+		foreach_dart_of_orbit(m, CMap2::Vertex(darts[i]), [&](Dart x) { vertex_darts[i].push_back(x); });
+	if (set_indices)
+		detail::release_index<F>(m, detail::index_or_invalid<F>(m, f.dart));
+	for (Dart d : darts)
+	{
+		detail::set_boundary(m, d, true);
+		detail::set_dart_index<F>(m, d, INVALID_INDEX);
+	}
+	// edges between two boundary darts disappear: their boundary faces merge
+	std::vector<Dart> removed;
+	for (Dart d : darts)
+	{
+		const Dart d2 = phi2(m, d);
+		if (!is_boundary(m, d2))
+			continue;
+		if (set_indices)
+			detail::release_index<E>(m, detail::index_or_invalid<E>(m, d));
+		const Dart pd = phi_1(m, d), pd2 = phi_1(m, d2);
+		const Dart nd = phi1(m, d), nd2 = phi1(m, d2);
+		if (nd == d2) // d then d2: a dangling edge end
+			detail::set_phi1(m, pd, nd2);
+		else if (nd2 == d)
+			detail::set_phi1(m, pd2, nd);
+		else
+		{
+			detail::set_phi1(m, pd, nd2);
+			detail::set_phi1(m, pd2, nd);
+		}
+		detail::set_phi1(m, d, d);
+		detail::set_phi1(m, d2, d2);
+		removed.push_back(d);
+		removed.push_back(d2);
+	}
+	auto is_removed = [&](Dart x) { return std::find(removed.begin(), removed.end(), x) != removed.end(); };
+	Dart survivor;
+	for (std::size_t i = 0; i < darts.size(); ++i)
+	{
+		auto it = std::find_if(vertex_darts[i].begin(), vertex_darts[i].end(), [&](Dart x) { return !is_removed(x); });
+		if (it == vertex_darts[i].end())
+		{
+			if (set_indices)
+				detail::release_index<V>(m, detail::index_or_invalid<V>(m, darts[i]));
+		}
+		else
+		{
+			if (set_indices)
+				detail::set_representative<V>(m, *it);
+			survivor = *it;
+		}
+	}
+	if (set_indices)
+		for (Dart d : darts)
+			if (!is_removed(d))
+				detail::set_representative<E>(m, d);
+	const uint32 w = detail::index_or_invalid<W>(m, f.dart);
+	for (Dart d : removed)
+		detail::remove_dart(m, d);
+	if (!survivor.is_valid())
+	{
+		// nothing left of the component but boundary: remove it
+		if (set_indices)
+			detail::release_index<W>(m, w);
+		return;
+	}
+	if (set_indices)
+		detail::set_representative<W>(m, survivor);
+	// a component left with boundary darts only is removed entirely
+	bool real = false;
+	foreach_dart_of_orbit(m, CMap2::Volume(survivor), [&](Dart x) { return !(real = !is_boundary(m, x)); });
+	if (!real)
+		remove_volume(m, CMap2::Volume(survivor));
+}
+
+} // namespace cgogn
