@@ -16,6 +16,7 @@
 #include <cgogn/core/functions/traversals/local_cmap3.h>
 #include <cgogn/core/operators/cmap1.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/operators/creation.h>
 #include <cgogn/core/types/error.h>
 #include <cgogn/core/types/maps/mesh_traits.h>

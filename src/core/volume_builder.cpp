@@ -4,42 +4,12 @@
 #include <cgogn/core/operators/index_helpers.h>
 
 #include "builder_common.h"
+#include "cmap3_build.h"
 
 #include <array>
 
 namespace cgogn
 {
-
-namespace
-{
-
-using FaceList = std::vector<std::vector<uint32>>;
-
-// Faces of each supported cell kind, as local vertex numbers, oriented so that
-// they are seen counterclockwise from outside the cell (see map_builder.h for
-// the vertex conventions).
-const FaceList* cell_faces(uint32 nb_vertices)
-{
-	static const FaceList tet = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-	static const FaceList pyramid = {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
-	static const FaceList prism = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}};
-	static const FaceList hexa = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-	switch (nb_vertices)
-	{
-	case 4:
-		return &tet;
-	case 5:
-		return &pyramid;
-	case 6:
-		return &prism;
-	case 8:
-		return &hexa;
-	default:
-		return nullptr;
-	}
-}
-
-} // namespace
 
 BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
 						 std::span<const uint32> cell_vertices)
@@ -58,7 +28,7 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 
 	// 1. each cell as a closed 2-map (faces sewn by phi2)
 	std::vector<Dart> darts;
-	std::vector<Dart> cell_darts;
+	std::vector<uint32> labels;
 	std::vector<uint32> scratch;
 	std::size_t first = 0;
 	for (uint32 n : cell_sizes)
@@ -71,7 +41,7 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 		}
 		std::span<const uint32> cv = cell_vertices.subspan(first, n);
 		first += n;
-		const FaceList* faces = cell_faces(n);
+		const detail::FaceList* faces = detail::cell_faces(n);
 		if (faces == nullptr || std::any_of(cv.begin(), cv.end(), [&](uint32 v) { return v >= nb_vertices; }))
 		{
 			++report.nb_cells_invalid;
@@ -82,31 +52,10 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 			++report.nb_cells_degenerate;
 			continue;
 		}
-		cell_darts.clear();
-		for (const auto& f : *faces)
-		{
-			const std::size_t k = f.size();
-			const std::size_t b = cell_darts.size();
-			for (std::size_t i = 0; i < k; ++i)
-			{
-				const Dart d = detail::add_dart(m);
-				vidx[d.index] = offset + cv[f[i]];
-				cell_darts.push_back(d);
-			}
-			for (std::size_t i = 0; i < k; ++i)
-				detail::set_phi1(m, cell_darts[b + i], cell_darts[b + (i + 1) % k]);
-		}
-		for (Dart d : cell_darts)
-		{
-			if (phi2(m, d) != d)
-				continue;
-			for (Dart e : cell_darts)
-				if (phi2(m, e) == e && origin(e) == target(d) && target(e) == origin(d))
-				{
-					phi2_sew(m, d, e);
-					break;
-				}
-		}
+		labels.clear();
+		std::vector<Dart> cell_darts = detail::add_volume_topology(m, *faces, cv, labels);
+		for (std::size_t i = 0; i < cell_darts.size(); ++i)
+			vidx[cell_darts[i].index] = offset + labels[i];
 		darts.insert(darts.end(), cell_darts.begin(), cell_darts.end());
 		++report.nb_cells_built;
 	}
@@ -161,47 +110,19 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 		} while (x != d);
 	}
 
-	// 3. close: a boundary face on each free face, then sew boundary faces by phi2
+	// 3. close: a boundary face on each free face, sewn into boundary volumes
+	{
+		// a free face whose vertices match a face already sewn: shared by a third cell
+		DartMarkerStore<CMap3> counted(m);
+		for (Dart d : darts)
+			if (phi3(m, d) == d && !counted.is_marked(d))
+			{
+				counted.mark_orbit(CMap3::Face2(d));
+				report.nb_nonmanifold_faces += find_mate(d, false).is_valid();
+			}
+	}
 	std::vector<Dart> boundary_darts;
-	std::vector<Dart> face;
-	for (Dart d : darts)
-	{
-		if (phi3(m, d) != d)
-			continue;
-		// (once per face: the other darts of the face are sewn below)
-		if (find_mate(d, false).is_valid())
-			++report.nb_nonmanifold_faces;
-		face.clear();
-		Dart it = d;
-		do
-		{
-			face.push_back(it);
-			it = phi1(m, it);
-		} while (it != d);
-		const std::size_t k = face.size();
-		const std::size_t b0 = boundary_darts.size();
-		for (std::size_t i = 0; i < k; ++i)
-		{
-			const Dart b = detail::add_dart(m);
-			detail::set_boundary(m, b, true);
-			vidx[b.index] = vidx[phi1(m, face[i]).index];
-			boundary_darts.push_back(b);
-			phi3_sew(m, face[i], b);
-		}
-		// face[i] goes v_i -> v_i+1; its mate b_i goes v_i+1 -> v_i, followed by b_i-1
-		for (std::size_t i = 0; i < k; ++i)
-			detail::set_phi1(m, boundary_darts[b0 + i], boundary_darts[b0 + (i + k - 1) % k]);
-	}
-	for (Dart b : boundary_darts)
-	{
-		if (phi2(m, b) != b)
-			continue;
-		// turn around the edge inside the cells until the next boundary face
-		Dart it = phi2(m, phi3(m, b));
-		while (!is_boundary(m, phi3(m, it)))
-			it = phi2(m, phi3(m, it));
-		phi2_sew(m, b, phi3(m, it));
-	}
+	detail::close_phi3_holes(m, darts, boundary_darts);
 	{
 		DartMarker<CMap3> dm(m);
 		for (Dart b : boundary_darts)

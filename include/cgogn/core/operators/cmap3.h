@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/types/maps/cmap3.h>
+
+#include <vector>
+
+namespace cgogn
+{
+
+// Operators of 3-maps. Each keeps the map closed (the outside is made of
+// boundary volumes) and, with set_indices (the default), every indexed orbit
+// correctly indexed: cells of the changed region claim back their lines (a
+// split cell keeps its line on the part containing the given dart), new cells
+// get new lines, lines of vanished cells are released. Attribute values are
+// never touched. With set_indices = false only the topology changes.
+
+// ---- creation
+
+/// A tetrahedron (with its boundary volume). Returns it. O(1).
+CMap3::Volume add_tetra(CMap3& m, bool set_indices = true);
+/// A pyramid on an n-gon (n >= 3), with its boundary volume. O(n).
+CMap3::Volume add_pyramid(CMap3& m, uint32 n, bool set_indices = true);
+/// A prism on an n-gon (n >= 3), with its boundary volume. O(n).
+CMap3::Volume add_prism(CMap3& m, uint32 n, bool set_indices = true);
+/// A hexahedron (prism on a quad), with its boundary volume. O(1).
+CMap3::Volume add_hexa(CMap3& m, bool set_indices = true);
+
+/// Closes every hole left by low-level phi3 sewing (phi3 fixed points) with
+/// boundary volumes; returns the number of boundary volumes created. O(darts).
+uint32 close(CMap3& m, bool set_indices = true);
+
+/// True when f1 and f2 are boundary faces (their phi3 side is boundary) of the
+/// same degree, in distinct faces. O(degree).
+bool can_sew_volumes(const CMap3& m, CMap3::Face f1, CMap3::Face f2);
+/// Glues two volumes along boundary faces: phi3(f1.dart) becomes f2.dart (f2
+/// is walked in the opposite direction). The boundary faces in between
+/// disappear; the cells brought together merge. Precondition:
+/// can_sew_volumes(m, f1, f2). O(degree x sizes of the merged cells).
+void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices = true);
+
+/// Removes volume w: its faces shared with other volumes become boundary,
+/// the rest disappears with the cells left without darts. O(size of w).
+void remove_volume(CMap3& m, CMap3::Volume w, bool set_indices = true);
+
+// ---- cuts and merges
+
+/// Inserts a vertex in the middle of edge e (in every face around it).
+/// Returns the new vertex. O(degree of e).
+CMap3::Vertex cut_edge(CMap3& m, CMap3::Edge e, bool set_indices = true);
+
+/// True when d and e are distinct, non-consecutive darts of one face of a
+/// volume (the face may be on the boundary of the mesh). O(degree).
+bool can_cut_face(const CMap3& m, Dart d, Dart e);
+/// Cuts the face of d and e by a new edge between their origins (on both
+/// sides of the face). The part containing d keeps the face's line. Returns
+/// the new edge (its dart goes from the origin of d to the origin of e).
+CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices = true);
+
+/// Cuts the volume of the darts of `path` by a new face: `path` is a closed
+/// chain of darts of one volume (each starts where the previous one ends), not
+/// crossing itself. The part on the phi2 side of the path gets a new line.
+/// Returns the new face (its dart is phi2 of path[0]). O(size of the path).
+CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices = true);
+
+/// True when the face separates two distinct non-boundary volumes. O(1).
+bool can_merge_incident_volumes(const CMap3& m, CMap3::Face f);
+/// Removes face f, merging its two volumes into one (which keeps the line of
+/// the volume of f.dart). Returns it. O(degree of f).
+CMap3::Volume merge_incident_volumes(CMap3& m, CMap3::Face f, bool set_indices = true);
+
+/// True when edge e has exactly two incident faces, distinct, and... i.e. it
+/// can be removed by merging them (each face keeps at least 3 edges). O(degree).
+bool can_merge_incident_faces(const CMap3& m, CMap3::Edge e);
+/// Removes edge e, merging its two incident faces into one. Returns it.
+CMap3::Face merge_incident_faces(CMap3& m, CMap3::Edge e, bool set_indices = true);
+
+// ---- tetrahedral meshes
+
+/// Splits tetrahedron w into 4 tetrahedra around a new vertex (1-to-4).
+/// Returns the new vertex. Precondition: w is a tetrahedron. O(1).
+CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices = true);
+
+/// True when edge e of a tetrahedral region can be contracted: every volume
+/// around its ends is a tetrahedron, and the link condition holds (the common
+/// vertices, edges and triangles of the links of its two ends are exactly
+/// those of the link of e, the outside counting as a vertex). Pure topology.
+/// O(size of the stars of the two ends).
+bool edge_can_collapse(const CMap3& m, CMap3::Edge e);
+/// Contracts edge e: the origin of e.dart disappears, the other end survives
+/// with its line; the tetrahedra around e vanish, the others around the
+/// removed vertex re-attach to the survivor. Returns the surviving vertex.
+/// Precondition: edge_can_collapse(m, e). O(size of the star of the origin).
+CMap3::Vertex collapse_edge(CMap3& m, CMap3::Edge e, bool set_indices = true);
+
+/// True when the face between two tetrahedra can be flipped 2-3: both sides
+/// are tetrahedra (not boundary) and their apexes are not already joined by
+/// an edge. O(degree of the apexes).
+bool face_can_flip(const CMap3& m, CMap3::Face f);
+/// 2-3 flip: the two tetrahedra of face f become three around the edge joining
+/// their apexes. Returns that edge. Precondition: face_can_flip(m, f).
+CMap3::Edge flip_face(CMap3& m, CMap3::Face f, bool set_indices = true);
+
+/// True when edge e is an interior edge of 3 or 4 tetrahedra that can be
+/// flipped: 3-2 (its 3 surrounding vertices do not form a face already) or 4-4
+/// (the diagonal through the origin of the edge's ring is not an edge already).
+bool edge_can_flip(const CMap3& m, CMap3::Edge e);
+/// 3-2 flip (degree 3: the three tetrahedra become two on the surrounding
+/// triangle) or 4-4 flip (degree 4: the four tetrahedra become four around the
+/// diagonal of the surrounding quad that starts at the third vertex of the
+/// face of e.dart). Returns a dart of the new face (3-2) or of the new edge
+/// (4-4). Precondition: edge_can_flip(m, e). O(1).
+Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices = true);
+
+} // namespace cgogn

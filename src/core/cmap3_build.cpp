@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/core/functions/darts.h>
+#include <cgogn/core/operators/index_helpers.h>
+
+#include "cmap3_build.h"
+
+#include <map>
+#include <unordered_map>
+
+namespace cgogn::detail
+{
+
+const FaceList* cell_faces(uint32 nb_vertices)
+{
+	static const FaceList tet = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+	static const FaceList pyramid = pyramid_faces(4);
+	static const FaceList prism = prism_faces(3);
+	static const FaceList hexa = prism_faces(4);
+	switch (nb_vertices)
+	{
+	case 4:
+		return &tet;
+	case 5:
+		return &pyramid;
+	case 6:
+		return &prism;
+	case 8:
+		return &hexa;
+	default:
+		return nullptr;
+	}
+}
+
+FaceList pyramid_faces(uint32 n)
+{
+	// base 0..n-1 seen from the apex side counterclockwise; apex n
+	FaceList f;
+	std::vector<uint32> base;
+	for (uint32 i = n; i-- > 0;)
+		base.push_back(i);
+	f.push_back(base);
+	for (uint32 i = 0; i < n; ++i)
+		f.push_back({i, (i + 1) % n, n});
+	return f;
+}
+
+FaceList prism_faces(uint32 n)
+{
+	// bottom 0..n-1, top n..2n-1 above it
+	FaceList f;
+	std::vector<uint32> bottom, top;
+	for (uint32 i = n; i-- > 0;)
+		bottom.push_back(i);
+	for (uint32 i = 0; i < n; ++i)
+		top.push_back(n + i);
+	f.push_back(bottom);
+	f.push_back(top);
+	for (uint32 i = 0; i < n; ++i)
+		f.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
+	return f;
+}
+
+std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span<const uint32> labels,
+									  std::vector<uint32>& dart_labels)
+{
+	std::vector<Dart> darts;
+	const std::size_t first_label = dart_labels.size();
+	for (const auto& f : faces)
+	{
+		const std::size_t b = darts.size();
+		for (uint32 v : f)
+		{
+			darts.push_back(add_dart(m));
+			dart_labels.push_back(labels[v]);
+		}
+		for (std::size_t i = 0; i < f.size(); ++i)
+			set_phi1(m, darts[b + i], darts[b + (i + 1) % f.size()]);
+	}
+	// sew each half-edge a -> b with the free b -> a
+	std::map<std::pair<uint32, uint32>, std::vector<Dart>> free_half_edges;
+	std::unordered_map<uint32, uint32> label_of_dart;
+	for (std::size_t i = 0; i < darts.size(); ++i)
+		label_of_dart[darts[i].index] = dart_labels[first_label + i];
+	for (Dart d : darts)
+	{
+		const uint32 a = label_of_dart[d.index], b = label_of_dart[phi1(m, d).index];
+		auto it = free_half_edges.find({b, a});
+		if (it != free_half_edges.end() && !it->second.empty())
+		{
+			phi2_sew(m, d, it->second.back());
+			it->second.pop_back();
+		}
+		else
+			free_half_edges[{a, b}].push_back(d);
+	}
+	return darts;
+}
+
+void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created)
+{
+	const std::size_t first = created.size();
+	std::vector<Dart> face;
+	for (Dart d : darts)
+	{
+		if (phi3(m, d) != d)
+			continue;
+		face.clear();
+		Dart it = d;
+		do
+		{
+			face.push_back(it);
+			it = phi1(m, it);
+		} while (it != d);
+		const std::size_t k = face.size(), b0 = created.size();
+		for (std::size_t i = 0; i < k; ++i)
+		{
+			const Dart b = add_dart(m);
+			set_boundary(m, b, true);
+			copy_dart_index<Orbit::PHI21_PHI31>(m, b, phi1(m, face[i]));
+			created.push_back(b);
+			phi3_sew(m, face[i], b);
+		}
+		// face[i] goes v_i -> v_i+1; its mate b_i goes v_i+1 -> v_i, followed by b_i-1
+		for (std::size_t i = 0; i < k; ++i)
+			set_phi1(m, created[b0 + i], created[b0 + (i + k - 1) % k]);
+	}
+	for (std::size_t i = first; i < created.size(); ++i)
+	{
+		const Dart b = created[i];
+		if (phi2(m, b) != b)
+			continue;
+		// turn around the edge inside the volumes until the next boundary face;
+		// if that face was already there (the hole reaches the old boundary), its
+		// old phi2 partner will be found from the other side of the hole
+		Dart it = phi2(m, phi3(m, b));
+		while (!is_boundary(m, phi3(m, it)))
+			it = phi2(m, phi3(m, it));
+		const Dart z = phi3(m, it);
+		if (phi2(m, z) != z)
+			phi2_unsew(m, z);
+		phi2_sew(m, b, z);
+	}
+}
+
+} // namespace cgogn::detail

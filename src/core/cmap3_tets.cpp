@@ -1,0 +1,288 @@
+// SPDX-License-Identifier: MIT
+// Operators of tetrahedral 3-maps: 1-to-4 split, edge collapse, flips.
+#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/operators/cmap3.h>
+
+#include "cmap3_cavity.h"
+
+#include <algorithm>
+#include <set>
+#include <unordered_map>
+
+namespace cgogn
+{
+
+namespace
+{
+using Vertex = CMap3::Vertex;
+using Volume = CMap3::Volume;
+
+// Vertex identities for predicates, by flooding vertex orbits on demand.
+class VertexLabels
+{
+public:
+	explicit VertexLabels(const CMap3& m) : m_(m)
+	{
+	}
+	uint32 operator()(Dart d)
+	{
+		auto it = labels_.find(d.index);
+		if (it != labels_.end())
+			return it->second;
+		const uint32 l = next_++;
+		foreach_dart_of_orbit(m_, Vertex(d), [&](Dart x) { labels_[x.index] = l; });
+		return l;
+	}
+
+private:
+	const CMap3& m_;
+	std::unordered_map<uint32, uint32> labels_;
+	uint32 next_ = 0;
+};
+
+bool is_tetra(const CMap3& m, Dart w)
+{
+	uint32 darts = 0;
+	bool triangles = true;
+	foreach_dart_of_orbit(m, Volume(w), [&](Dart d) {
+		++darts;
+		triangles = triangles && phi<1, 1, 1>(m, d) == d;
+		return triangles && darts <= 12;
+	});
+	return triangles && darts == 12;
+}
+
+std::vector<Dart> volumes_around(const CMap3& m, Vertex v)
+{
+	std::vector<Dart> w;
+	foreach_incident_volume(m, v, [&](Volume x) { w.push_back(x.dart); });
+	return w;
+}
+
+using Tet = std::array<uint32, 4>;
+
+// the four corner labels of the tet of dart w (any order)
+Tet corners(const CMap3& m, Dart w, VertexLabels& label)
+{
+	return {label(w), label(phi1(m, w)), label(phi_1(m, w)), label(phi_1(m, phi2(m, w)))};
+}
+} // namespace
+
+Vertex split_tetra(CMap3& m, Volume w, bool set_indices)
+{
+	assert(!is_boundary(m, w.dart) && is_tetra(m, w.dart));
+	detail::Cavity cavity(m, {w.dart});
+	const auto [p, q, r, s] = cavity.tetra_labels(w.dart);
+	const uint32 c = cavity.new_vertex();
+	cavity.fill({{c, q, r, s}, {p, c, r, s}, {p, q, c, s}, {p, q, r, c}}, set_indices);
+	return Vertex(cavity.vertex_dart(c));
+}
+
+bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
+{
+	const Dart d = e.dart;
+	const Vertex a(d), b(phi1(m, d));
+	VertexLabels label(m);
+	const uint32 la = label(d), lb = label(phi1(m, d));
+	if (la == lb)
+		return false;
+	std::set<uint32> va, vb, vab;
+	std::set<std::pair<uint32, uint32>> ea, eb, eab, ba, bb;
+	std::set<std::array<uint32, 3>> ta, tb;
+	auto pair_of = [](uint32 x, uint32 y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
+	bool tets_only = true;
+	auto link = [&](Vertex v, uint32 lv, std::set<uint32>& vs, std::set<std::pair<uint32, uint32>>& es,
+					std::set<std::array<uint32, 3>>& ts) {
+		for (Dart w : volumes_around(m, v))
+		{
+			if (!is_tetra(m, w))
+			{
+				tets_only = false;
+				return;
+			}
+			Tet t = corners(m, w, label);
+			std::vector<uint32> others;
+			for (uint32 x : t)
+				if (x != lv)
+					others.push_back(x);
+			std::sort(others.begin(), others.end());
+			vs.insert(others.begin(), others.end());
+			es.insert({others[0], others[1]});
+			es.insert({others[1], others[2]});
+			es.insert({others[0], others[2]});
+			ts.insert({others[0], others[1], others[2]});
+			if (lv == la && std::find(t.begin(), t.end(), lb) != t.end())
+			{
+				std::vector<uint32> cd;
+				for (uint32 x : t)
+					if (x != la && x != lb)
+						cd.push_back(x);
+				vab.insert(cd.begin(), cd.end());
+				eab.insert(pair_of(cd[0], cd[1]));
+			}
+		}
+	};
+	link(a, la, va, ea, ta);
+	link(b, lb, vb, eb, tb);
+	if (!tets_only)
+		return false;
+	for (uint32 c : va)
+		if (c != lb && vb.count(c) && !vab.count(c))
+			return false;
+	for (const auto& x : ea)
+		if (eb.count(x) && !eab.count(x))
+			return false;
+	for (const auto& x : ta)
+		if (tb.count(x))
+			return false;
+	// the outside as a vertex: boundary faces around a and b
+	auto boundary_faces = [&](Vertex v, std::set<std::pair<uint32, uint32>>& bs) {
+		foreach_dart_of_orbit(m, v, [&](Dart x) {
+			if (is_boundary(m, x))
+				bs.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x))));
+		});
+	};
+	boundary_faces(a, ba);
+	boundary_faces(b, bb);
+	if (ba.empty() || bb.empty())
+		return true;
+	bool ab_on_boundary = false;
+	std::set<uint32> bva, bvb;
+	for (auto [x, y] : ba)
+	{
+		bva.insert({x, y});
+		ab_on_boundary = ab_on_boundary || x == lb || y == lb;
+	}
+	for (auto [x, y] : bb)
+		bvb.insert({x, y});
+	if (!ab_on_boundary)
+		return false; // would pinch two parts of the boundary together
+	for (uint32 c : bva)
+		if (c != la && c != lb && bvb.count(c) && !ba.count(pair_of(lb, c)))
+			return false;
+	for (const auto& x : ba)
+		if (x.first != lb && x.second != lb && bb.count(x))
+			return false;
+	return true;
+}
+
+Vertex collapse_edge(CMap3& m, CMap3::Edge e, bool set_indices)
+{
+	assert(edge_can_collapse(m, e));
+	const Dart d = e.dart;
+	detail::Cavity cavity(m, volumes_around(m, Vertex(d)));
+	const uint32 la = cavity.label(d), lb = cavity.label(phi1(m, d));
+	std::vector<Tet> tets;
+	for (Dart w : volumes_around(m, Vertex(d)))
+	{
+		Tet t = cavity.tetra_labels(w);
+		if (std::find(t.begin(), t.end(), lb) != t.end())
+			continue; // the tets around the edge vanish
+		std::replace(t.begin(), t.end(), la, lb);
+		tets.push_back(t);
+	}
+	cavity.merge_vertices(lb, la);
+	cavity.fill(tets, set_indices);
+	return Vertex(cavity.vertex_dart(lb));
+}
+
+bool face_can_flip(const CMap3& m, CMap3::Face f)
+{
+	const Dart d = f.dart, d3 = phi3(m, d);
+	if (is_boundary(m, d) || is_boundary(m, d3) || !is_tetra(m, d) || !is_tetra(m, d3))
+		return false;
+	const Vertex apex_a(phi_1(m, phi2(m, d))), apex_b(phi_1(m, phi2(m, d3)));
+	if (same_orbit(m, apex_a, apex_b))
+		return false;
+	bool joined = false;
+	foreach_adjacent_vertex_through_edge(m, apex_a, [&](Vertex v) { return !(joined = same_orbit(m, v, apex_b)); });
+	return !joined;
+}
+
+CMap3::Edge flip_face(CMap3& m, CMap3::Face f, bool set_indices)
+{
+	assert(face_can_flip(m, f));
+	const Dart d = f.dart, d3 = phi3(m, d);
+	detail::Cavity cavity(m, {d, d3});
+	const uint32 a = cavity.label(d), b = cavity.label(phi1(m, d)), c = cavity.label(phi_1(m, d));
+	const uint32 s = cavity.label(phi_1(m, phi2(m, d))), t = cavity.label(phi_1(m, phi2(m, d3)));
+	cavity.fill({{a, b, s, t}, {b, c, s, t}, {c, a, s, t}}, set_indices);
+	return CMap3::Edge(cavity.dart_between(s, t));
+}
+
+namespace
+{
+// the vertices around edge e in cyclic order (third vertex of each face), if
+// every volume around it is a non-boundary tetrahedron
+bool ring_of(const CMap3& m, CMap3::Edge e, std::vector<Dart>& faces)
+{
+	Dart it = e.dart;
+	do
+	{
+		if (is_boundary(m, it) || !is_tetra(m, it))
+			return false;
+		faces.push_back(it);
+		it = phi3(m, phi2(m, it));
+	} while (it != e.dart);
+	return true;
+}
+} // namespace
+
+bool edge_can_flip(const CMap3& m, CMap3::Edge e)
+{
+	std::vector<Dart> faces;
+	if (!ring_of(m, e, faces) || (faces.size() != 3 && faces.size() != 4))
+		return false;
+	VertexLabels label(m);
+	std::vector<uint32> ring;
+	for (Dart x : faces)
+		ring.push_back(label(phi_1(m, x)));
+	if (faces.size() == 3)
+	{
+		// no face (c1, c2, c3) already: look at the faces around the edge c1 c2
+		bool exists = false;
+		Dart c1c2;
+		foreach_incident_edge(m, Vertex(phi_1(m, faces[0])), [&](CMap3::Edge x) {
+			if (label(phi1(m, x.dart)) != ring[1])
+				return true;
+			c1c2 = x.dart;
+			return false;
+		});
+		if (!c1c2.is_valid())
+			return false;
+		// a face around the edge c1 c2 whose third vertex is c3
+		foreach_dart_of_orbit(m, CMap3::Edge(c1c2), [&](Dart x) { return !(exists = label(phi_1(m, x)) == ring[2]); });
+		std::set<uint32> distinct(ring.begin(), ring.end());
+		return distinct.size() == 3 && !exists;
+	}
+	// 4-4: the diagonal c1 c3 must not be an edge already
+	bool joined = false;
+	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])), [&](Vertex v) {
+		return !(joined = label(v.dart) == ring[2]);
+	});
+	std::set<uint32> distinct(ring.begin(), ring.end());
+	return distinct.size() == 4 && !joined;
+}
+
+Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices)
+{
+	assert(edge_can_flip(m, e));
+	std::vector<Dart> faces;
+	ring_of(m, e, faces);
+	std::vector<Dart> volumes(faces.begin(), faces.end());
+	detail::Cavity cavity(m, volumes);
+	const uint32 a = cavity.label(e.dart), b = cavity.label(phi1(m, e.dart));
+	std::vector<uint32> c;
+	for (Dart x : faces)
+		c.push_back(cavity.label(phi_1(m, x)));
+	if (faces.size() == 3)
+	{
+		cavity.fill({{c[0], c[1], c[2], a}, {c[0], c[1], c[2], b}}, set_indices);
+		return cavity.dart_between(c[0], c[1]);
+	}
+	cavity.fill({{a, c[0], c[1], c[2]}, {a, c[0], c[2], c[3]}, {b, c[0], c[1], c[2]}, {b, c[0], c[2], c[3]}},
+				set_indices);
+	return cavity.dart_between(c[0], c[2]);
+}
+
+} // namespace cgogn
