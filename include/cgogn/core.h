@@ -18,6 +18,7 @@
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/operators/creation.h>
+#include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/types/error.h>
 #include <cgogn/core/types/maps/mesh_traits.h>
 #include <cgogn/core/types/marker.h>

@@ -268,6 +268,53 @@ public:
 		set_nb_chunks((n + CHUNK_SIZE - 1) / CHUNK_SIZE);
 	}
 
+	/// Moves the live lines to [0, nb_lines()) keeping their order, frees the
+	/// rest and returns old line -> new line (INVALID_INDEX for free lines).
+	/// Values follow their lines; callers remap what refers to lines.
+	/// Precondition: no mark is reserved. O(lines x attributes).
+	std::vector<uint32> compact()
+	{
+		std::vector<uint32> old_to_new(size_, INVALID_INDEX);
+		uint32 n = 0;
+		for (uint32 i = 0; i < size_; ++i)
+			if ((*key_)[i] != INVALID_INDEX)
+			{
+				if (n != i)
+					swap_lines(n, i); // line n is free (or already moved): its old values do not matter
+				old_to_new[i] = n++;
+			}
+		truncate(n);
+		return old_to_new;
+	}
+
+	/// Permutes the lines: the line at i goes to new_position[i]. Every line
+	/// below end_index() must have a distinct position below end_index().
+	/// O(lines x attributes).
+	void permute(const std::vector<uint32>& new_position)
+	{
+		std::vector<uint32> at(new_position.size()); // at[p] = old line now at p during the cycles
+		std::vector<uint32> where(new_position.size());
+		for (uint32 i = 0; i < at.size(); ++i)
+			at[i] = where[i] = i;
+		for (uint32 i = 0; i < new_position.size(); ++i)
+		{
+			// bring old line i to new_position[i]
+			const uint32 from = where[i], to = new_position[i];
+			if (from == to)
+				continue;
+			swap_lines(from, to);
+			const uint32 other = at[to];
+			at[to] = i;
+			at[from] = other;
+			where[i] = to;
+			where[other] = from;
+		}
+		std::vector<uint32> free_lines;
+		for (uint32 i : free_lines_)
+			free_lines.push_back(new_position[i]);
+		free_lines_ = std::move(free_lines);
+	}
+
 private:
 	void set_nb_chunks(uint32 n)
 	{

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/types/maps/cmap3.h>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace cgogn
+{
+
+/// What compact() did: for the darts and for each orbit, old index -> new
+/// index (INVALID_INDEX for lines that were free).
+struct CompactMaps
+{
+	std::vector<uint32> darts;
+	std::array<std::vector<uint32>, NB_ORBITS> cells;
+};
+
+/// Renumbers the darts and the lines of every orbit container densely (live
+/// lines first, in their order), so that a long editing session recovers
+/// contiguous memory; attribute values follow their cells, relations and
+/// indices are remapped, free memory chunks are released. Invalidates Dart
+/// and Cell values held by the caller (use the returned maps) and incidence
+/// caches. Precondition: no marker alive. O(darts + cells).
+CompactMaps compact(CMap1& m);
+
+/// Permutes darts and cells so that memory order follows `key`, given per
+/// vertex (e.g. a Morton code of its position): vertices sorted by key, the
+/// darts of each vertex stored together in that order, other cells sorted by
+/// their first dart. Neighbourhood traversals then walk memory nearly in
+/// order. Compacts first. Invalidates Dart and Cell values held by the caller.
+/// O(n log n).
+void reorder(CMap2& m, const std::function<uint64(CMap2::Vertex)>& key);
+void reorder(CMap3& m, const std::function<uint64(CMap3::Vertex)>& key);
+
+} // namespace cgogn

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/operators/maintenance.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace cgogn
+{
+
+namespace
+{
+// darts moved: relations and representative darts follow
+void remap_darts(CMapBase& m, const std::vector<uint32>& dart_map)
+{
+	const AttributeContainer& darts = *m.darts_;
+	for (Attribute<uint32>* r : m.relations_)
+		for (uint32 i = 0; i < darts.end_index(); ++i)
+			if (darts.is_live(i) || r == m.phi1_)
+				if ((*r)[i] != INVALID_INDEX && (*r)[i] < dart_map.size())
+					(*r)[i] = dart_map[(*r)[i]];
+	for (auto& c : m.cells_)
+		for (uint32 i = 0; i < c->end_index(); ++i)
+			if (c->is_live(i))
+				c->key()[i] = dart_map[c->key()[i]];
+}
+
+// lines of orbit o moved: dart indices follow
+void remap_cells(CMapBase& m, uint32 o, const std::vector<uint32>& line_map)
+{
+	Attribute<uint32>* idx = m.cell_index_[o];
+	if (idx == nullptr)
+		return;
+	const AttributeContainer& darts = *m.darts_;
+	for (uint32 i = 0; i < darts.end_index(); ++i)
+		if (darts.is_live(i) && (*idx)[i] != INVALID_INDEX)
+			(*idx)[i] = line_map[(*idx)[i]];
+}
+
+// new_position[i] for lines in `order` (given in their new order); free lines go last
+std::vector<uint32> positions_from_order(const std::vector<uint32>& order, uint32 size)
+{
+	std::vector<uint32> pos(size, INVALID_INDEX);
+	uint32 p = 0;
+	for (uint32 i : order)
+		pos[i] = p++;
+	for (uint32 i = 0; i < size; ++i)
+		if (pos[i] == INVALID_INDEX)
+			pos[i] = p++;
+	return pos;
+}
+
+template <typename MAP>
+void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
+{
+	using Vertex = typename MAP::Vertex;
+	compact(m);
+	// 1. vertices in key order, their darts together
+	std::vector<std::pair<uint64, Dart>> vertices;
+	{
+		DartMarker<MAP> seen(m);
+		foreach_dart(m, [&](Dart d) {
+			if (seen.is_marked(d))
+				return;
+			seen.mark_orbit(Vertex(d));
+			vertices.emplace_back(key(Vertex(d)), d);
+		});
+	}
+	std::stable_sort(vertices.begin(), vertices.end(),
+					 [](const auto& a, const auto& b) { return a.first < b.first; });
+	std::vector<uint32> dart_order;
+	dart_order.reserve(nb_darts(m));
+	for (const auto& [k, d] : vertices)
+		foreach_dart_of_orbit(m, Vertex(d), [&](Dart x) { dart_order.push_back(x.index); });
+	const uint32 nd = m.darts_->end_index();
+	const std::vector<uint32> dart_pos = positions_from_order(dart_order, nd);
+	m.darts_->permute(dart_pos);
+	remap_darts(m, dart_pos);
+	// 2. cells: vertices in key order, other orbits by their representative's new place
+	for (uint32 o = 0; o < NB_ORBITS; ++o)
+	{
+		if (m.cell_index_[o] == nullptr)
+			continue;
+		AttributeContainer& c = *m.cells_[o];
+		std::vector<uint32> lines;
+		for (uint32 i = 0; i < c.end_index(); ++i)
+			if (c.is_live(i))
+				lines.push_back(i);
+		if (o == orbit_index(Vertex::ORBIT))
+		{
+			std::vector<uint32> rank(c.end_index(), 0);
+			// vertices were listed in key order: the dart of rank r belongs to the r-th vertex
+			for (uint32 r = 0; r < vertices.size(); ++r)
+			{
+				const uint32 line = (*m.cell_index_[o])[dart_pos[vertices[r].second.index]];
+				if (line != INVALID_INDEX)
+					rank[line] = r;
+			}
+			std::stable_sort(lines.begin(), lines.end(), [&](uint32 a, uint32 b) { return rank[a] < rank[b]; });
+		}
+		else
+		{
+			// the first dart of each cell in the new dart order
+			std::vector<uint32> first(c.end_index(), INVALID_INDEX);
+			const Attribute<uint32>& idx = *m.cell_index_[o];
+			for (uint32 i = 0; i < m.darts_->end_index(); ++i)
+				if (m.darts_->is_live(i) && idx[i] != INVALID_INDEX)
+					first[idx[i]] = std::min(first[idx[i]], i);
+			std::stable_sort(lines.begin(), lines.end(), [&](uint32 a, uint32 b) { return first[a] < first[b]; });
+		}
+		const std::vector<uint32> pos = positions_from_order(lines, c.end_index());
+		c.permute(pos);
+		remap_cells(m, o, pos);
+	}
+}
+} // namespace
+
+CompactMaps compact(CMap1& m)
+{
+	CompactMaps maps;
+	maps.darts = m.darts_->compact();
+	remap_darts(m, maps.darts);
+	for (uint32 o = 0; o < NB_ORBITS; ++o)
+	{
+		if (m.cells_[o]->end_index() == 0)
+			continue;
+		maps.cells[o] = m.cells_[o]->compact();
+		remap_cells(m, o, maps.cells[o]);
+	}
+	return maps;
+}
+
+void reorder(CMap2& m, const std::function<uint64(CMap2::Vertex)>& key)
+{
+	reorder_map(m, key);
+}
+
+void reorder(CMap3& m, const std::function<uint64(CMap3::Vertex)>& key)
+{
+	reorder_map(m, key);
+}
+
+} // namespace cgogn
