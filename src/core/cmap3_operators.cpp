@@ -81,6 +81,57 @@ uint32 close(CMap3& m, bool set_indices)
 	return n;
 }
 
+CMap3::Volume close_hole(CMap3& m, Dart d, bool set_indices)
+{
+	assert(phi3(m, d) == d);
+	// the free faces reachable from d across edges
+	std::vector<Dart> hole;
+	DartMarkerStore<CMap3> seen(m);
+	std::vector<Dart> todo{d};
+	while (!todo.empty())
+	{
+		const Dart x = todo.back();
+		todo.pop_back();
+		if (seen.is_marked(x))
+			continue;
+		for (Dart y : face_darts(m, x))
+		{
+			seen.mark(y);
+			hole.push_back(y);
+			Dart it = phi2(m, y); // turn around the edge of y to the next free face
+			while (phi3(m, it) != it)
+				it = phi2(m, phi3(m, it));
+			if (!seen.is_marked(it))
+				todo.push_back(it);
+		}
+	}
+	std::vector<Dart> created;
+	detail::close_phi3_holes(m, hole, created);
+	if (set_indices)
+		detail::RegionReindexer<CMap3>().apply(m, created);
+	return CMap3::Volume(created.front());
+}
+
+void unsew_volumes(CMap3& m, CMap3::Face f, bool set_indices)
+{
+	assert(!is_boundary(m, f.dart) && !is_boundary(m, phi3(m, f.dart)));
+	std::vector<Dart> side = face_darts(m, f.dart);
+	for (Dart x : face_darts(m, phi3(m, f.dart)))
+		side.push_back(x);
+	detail::RegionReindexer<CMap3> reindexer;
+	if (set_indices)
+		reindexer.record(m, side);
+	for (std::size_t i = 0; i < side.size() / 2; ++i)
+		phi3_unsew(m, side[i]);
+	std::vector<Dart> created;
+	detail::close_phi3_holes(m, side, created);
+	if (set_indices)
+	{
+		side.insert(side.end(), created.begin(), created.end());
+		reindexer.apply(m, side);
+	}
+}
+
 bool can_sew_volumes(const CMap3& m, CMap3::Face f1, CMap3::Face f2)
 {
 	const Dart d1 = f1.dart, d2 = f2.dart;

@@ -140,6 +140,53 @@ TEST(Operators3, CloseAfterLowLevelUnsew)
 	EXPECT_INTEGRITY(m); // only vertices are indexed: they are unchanged
 }
 
+TEST(Operators3, UnsewAndSewVolumesBack)
+{
+	CMap3 m = indexed(hex_grid_soup(3, 3, 3));
+	const Counts before = counts(m);
+	// an inner face with interior edges: the slit is a closed pocket
+	Face f = find<Face>(m, [&](Face x) {
+		bool interior = degree(m, x) == 2;
+		foreach_incident_edge(m, x, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
+		return interior;
+	});
+	ASSERT_TRUE(f.is_valid());
+	const Dart a = f.dart, b = phi3(m, f.dart);
+	unsew_volumes(m, f);
+	EXPECT_EQ(counts(m), (Counts{before.v, before.e, before.f + 1, before.w}));
+	EXPECT_EQ(nb_boundary_components(m), 2u);
+	EXPECT_INTEGRITY(m);
+	sew_volumes(m, Face(a), Face(b));
+	EXPECT_EQ(counts(m), before);
+	EXPECT_EQ(nb_boundary_components(m), 1u);
+	EXPECT_INTEGRITY(m);
+	// two hexes sharing a face whose edges are on the boundary come apart
+	CMap3 two = indexed(hex_grid_soup(2, 1, 1));
+	Face mid = find<Face>(two, [&](Face x) { return degree(two, x) == 2; });
+	unsew_volumes(two, mid);
+	EXPECT_EQ(counts(two), (Counts{16, 24, 12, 2}));
+	EXPECT_EQ(nb_connected_components(two), 2u);
+	EXPECT_INTEGRITY(two);
+}
+
+TEST(Operators3, CloseOneHole)
+{
+	CMap3 m;
+	build_volume(m, hex_grid_soup(3, 3, 3));
+	Face inner = find<Face>(m, [&](Face f) {
+		bool interior = degree(m, f) == 2;
+		foreach_incident_edge(m, f, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
+		return interior;
+	});
+	std::vector<Dart> face;
+	foreach_dart_of_orbit(m, CMap3::Face2(inner.dart), [&](Dart d) { face.push_back(d); });
+	for (Dart d : face)
+		phi3_unsew(m, d);
+	close_hole(m, face[0]);
+	EXPECT_INTEGRITY(m);
+	EXPECT_EQ(nb_boundary_components(m), 2u);
+}
+
 TEST(Operators3, RemoveVolume)
 {
 	CMap3 m = indexed(tet_grid_soup(1, 1, 1));

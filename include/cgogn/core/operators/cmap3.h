@@ -27,8 +27,13 @@ CMap3::Volume add_prism(CMap3& m, uint32 n, bool set_indices = true);
 CMap3::Volume add_hexa(CMap3& m, bool set_indices = true);
 
 /// Closes every hole left by low-level phi3 sewing (phi3 fixed points) with
-/// boundary volumes; returns the number of boundary volumes created. O(darts).
+/// boundary faces, sewn into boundary volumes; returns the number of boundary
+/// volumes they belong to. O(darts).
 uint32 close(CMap3& m, bool set_indices = true);
+
+/// Closes the hole of d (a phi3 fixed point): the free faces connected to it
+/// around edges get boundary faces; returns the boundary volume. O(hole size).
+CMap3::Volume close_hole(CMap3& m, Dart d, bool set_indices = true);
 
 /// True when f1 and f2 are boundary faces (their phi3 side is boundary) of the
 /// same degree, in distinct faces. O(degree).
@@ -38,6 +43,12 @@ bool can_sew_volumes(const CMap3& m, CMap3::Face f1, CMap3::Face f2);
 /// disappear; the cells brought together merge. Precondition:
 /// can_sew_volumes(m, f1, f2). O(degree x sizes of the merged cells).
 void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices = true);
+
+/// Separates the two volumes of face f: each side gets a boundary face; edges
+/// and vertices that no longer connect the two sides split in two (new lines
+/// for the parts without f.dart). Precondition: f is an inner face (both sides
+/// non-boundary). O(degree of f x size of the cells around it).
+void unsew_volumes(CMap3& m, CMap3::Face f, bool set_indices = true);
 
 /// Removes volume w: its faces shared with other volumes become boundary,
 /// the rest disappears with the cells left without darts. O(size of w).
