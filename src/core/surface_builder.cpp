@@ -62,7 +62,8 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	for (uint32 s : face_sizes)
 		total += s;
 	darts.reserve(std::min(total, face_vertices.size()));
-	m.darts_->reserve(uint32(std::min<std::size_t>(uint64(m.darts_->end_index()) + 2 * darts.capacity(), INVALID_INDEX - 1)));
+	// room for the faces' darts only: boundary darts (none on a closed mesh) grow as needed
+	m.darts_->reserve(uint32(std::min<std::size_t>(uint64(m.darts_->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
 	std::size_t first = 0;
 	std::vector<uint32> sorted;
 	for (uint32 n : face_sizes)
