@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <sys/resource.h>
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -65,24 +66,43 @@ void run(Mode mode, const MESH& m, const FUNC& f)
 		parallel_foreach_cell(m, f);
 }
 
-// sets the number of workers for one benchmark and restores the default
+double process_cpu_ms()
+{
+	rusage u;
+	getrusage(RUSAGE_SELF, &u);
+	return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3;
+}
+
+// Sets the number of workers for one benchmark and restores the default.
+// Also reports the CPU time of the whole process per iteration (all threads):
+// on a loaded machine wall time says little, but seq CPU / par CPU tells how
+// much extra work the parallel split costs.
 struct Workers
 {
-	explicit Workers(Mode mode)
+	Workers(benchmark::State& state, Mode mode) : state_(state), mode_(mode), cpu0_(process_cpu_ms())
 	{
 		set_nb_workers(mode == Mode::par1 ? 1 : 0);
 	}
 	~Workers()
 	{
+		state_.counters["proc_cpu_ms"] = (process_cpu_ms() - cpu0_) / double(std::max<int64>(1, state_.iterations()));
+		state_.counters["workers"] = mode_ == Mode::seq ? 1 : thread_pool()->nb_workers();
 		set_nb_workers(0);
 	}
+	Workers(const Workers&) = delete;
+	Workers& operator=(const Workers&) = delete;
+
+private:
+	benchmark::State& state_;
+	Mode mode_;
+	double cpu0_;
 };
 
 void vertex_normals(benchmark::State& state, Mode mode)
 {
 	Surface& s = surface();
 	const CMap2& m = s.map;
-	Workers w(mode);
+	Workers w(state, mode);
 	for (auto _ : state)
 		run(mode, m, [&](Vertex v) {
 			Vec3 n = Vec3::Zero();
@@ -102,7 +122,7 @@ void smoothing(benchmark::State& state, Mode mode)
 {
 	Surface& s = surface();
 	const CMap2& m = s.map;
-	Workers w(mode);
+	Workers w(state, mode);
 	for (auto _ : state)
 		run(mode, m, [&](Vertex v) {
 			Vec3 sum = Vec3::Zero();
@@ -121,7 +141,7 @@ void compute_heavy(benchmark::State& state, Mode mode)
 {
 	Surface& s = surface();
 	const CMap2& m = s.map;
-	Workers w(mode);
+	Workers w(state, mode);
 	for (auto _ : state)
 		run(mode, m, [&](Vertex v) {
 			double x = value(m, s.position, v)[0];
@@ -138,7 +158,7 @@ void face_areas_unindexed(benchmark::State& state, Mode mode)
 {
 	Surface& s = surface();
 	const CMap2& m = s.map;
-	Workers w(mode);
+	Workers w(state, mode);
 	for (auto _ : state)
 	{
 		std::vector<double> sum(thread_pool()->nb_workers(), 0.0);
@@ -217,7 +237,7 @@ void cache_build_volume(benchmark::State& state, Mode mode)
 	CMap3& m = volume().map;
 	using V = CMap3::Vertex;
 	using W = CMap3::Volume;
-	Workers w(mode == Mode::seq ? Mode::par1 : mode);
+	Workers w(state, mode);
 	for (auto _ : state)
 		IncidenceCache<CMap3, V, W>::build(m);
 	IncidenceCache<CMap3, V, W>::remove(m);

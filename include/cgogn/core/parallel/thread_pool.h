@@ -15,6 +15,8 @@ namespace cgogn
 class ThreadPool
 {
 public:
+	/// A pool with the default number of workers (thread_pool() makes the
+	/// process' one; other pools are not used by the library).
 	ThreadPool();
 	~ThreadPool();
 	ThreadPool(const ThreadPool&) = delete;

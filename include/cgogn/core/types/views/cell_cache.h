@@ -26,6 +26,7 @@ public:
 	using MeshViewTag = void;
 	using ViewedMesh = MESH;
 
+	/// An empty cache of m (build or add cells). O(1).
 	explicit CellCache(const MESH& m) : mesh_(m)
 	{
 	}

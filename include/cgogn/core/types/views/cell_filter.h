@@ -24,6 +24,7 @@ public:
 	using MeshViewTag = void;
 	using ViewedMesh = MESH;
 
+	/// A filter of m without any predicate (every cell passes). O(1).
 	explicit CellFilter(const MESH& m) : mesh_(m)
 	{
 	}
