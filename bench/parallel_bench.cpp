@@ -232,6 +232,31 @@ void circulator_volume(benchmark::State& state, bool cached)
 	IncidenceCache<CMap3, V, V, W>::remove(m);
 }
 
+// 3-D edges are not indexed: cyclic orbits split by darts without marks;
+// 3-D volumes are not indexed either: flooded orbits split with per-chunk marks
+void edge_degrees_volume_unindexed(benchmark::State& state, Mode mode)
+{
+	const CMap3& m = volume().map;
+	Workers w(state, mode);
+	for (auto _ : state)
+	{
+		std::vector<uint64> sum(thread_pool()->nb_workers(), 0);
+		run(mode, m, [&](CMap3::Edge e) { sum[current_thread_index()] += degree(m, e); });
+		benchmark::DoNotOptimize(sum.data());
+	}
+}
+void volume_sizes_unindexed(benchmark::State& state, Mode mode)
+{
+	const CMap3& m = volume().map;
+	Workers w(state, mode);
+	for (auto _ : state)
+	{
+		std::vector<uint64> sum(thread_pool()->nb_workers(), 0);
+		run(mode, m, [&](CMap3::Volume v) { sum[current_thread_index()] += v.dart.index; });
+		benchmark::DoNotOptimize(sum.data());
+	}
+}
+
 void cache_build_volume(benchmark::State& state, Mode mode)
 {
 	CMap3& m = volume().map;
@@ -254,6 +279,8 @@ CGOGN_PAR_BENCH(vertex_normals)
 CGOGN_PAR_BENCH(smoothing)
 CGOGN_PAR_BENCH(compute_heavy)
 CGOGN_PAR_BENCH(face_areas_unindexed)
+CGOGN_PAR_BENCH(edge_degrees_volume_unindexed)
+CGOGN_PAR_BENCH(volume_sizes_unindexed)
 BENCHMARK_CAPTURE(circulator_surface, dart_walk, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(circulator_surface, cached, true)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(circulator_volume, dart_walk, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);

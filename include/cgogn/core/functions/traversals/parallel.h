@@ -17,44 +17,75 @@ namespace detail
 inline constexpr uint32 PARALLEL_LINE_GRAIN = 1024;
 inline constexpr uint32 PARALLEL_DART_BLOCKS_GRAIN = 16; // blocks of 64 darts
 
+/// True for the orbits that foreach_dart_of_orbit walks as one or two cycles
+/// (no mark): faces, edges, 2-D vertices, 3-D faces and edges. The others
+/// (volumes, 3-D vertices, connected components) are flooded with a mark.
+constexpr bool orbit_is_cyclic(Orbit o)
+{
+	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 ||
+		   o == Orbit::PHI2_PHI3;
+}
+
 /// Parallel traversal of the cells of a non-indexed orbit. The dart range is
-/// cut into chunks of whole 64-dart blocks. A cell is reported by the chunk
-/// that holds its smallest non-boundary dart (its owner): a chunk scans its
-/// darts in increasing order; at the first unseen non-boundary dart d of a cell
-/// it walks the orbit once, marks the cell's darts that lie in the chunk (so
-/// that the cell is not walked again from this chunk) and reports the cell
-/// when d is the smallest non-boundary dart of the whole orbit. Each cell is
-/// thus walked once per chunk it meets (about once in total for cells smaller
-/// than a chunk) and no thread waits for another or for a sequential pass. The
-/// one mark is shared: a chunk only touches the bits of its own blocks, which
-/// are whole 64-bit words, and clears them when done.
+/// cut into chunks of whole 64-dart blocks, scheduled by work stealing. A cell
+/// is reported from its smallest non-boundary dart (its owner), by whichever
+/// chunk holds that dart; no thread waits for another or for a sequential pass.
+/// - Cyclic orbits (see orbit_is_cyclic): from each non-boundary dart d, walk
+///   the orbit until a smaller non-boundary dart shows up (d is not the owner:
+///   stop) or the walk ends (d is the owner: report). Read-only, no mark.
+/// - Flooded orbits: a chunk scans its darts in increasing order; at the first
+///   unseen non-boundary dart d of a cell it floods the orbit once, marks the
+///   cell's darts that lie in the chunk (so that the chunk does not flood it
+///   again) and reports the cell when d is the smallest non-boundary dart of
+///   the orbit. Each cell is flooded once per chunk it meets (about once in
+///   total for cells smaller than a chunk). The one mark is shared: a chunk
+///   only touches the bits of its own blocks, which are whole 64-bit words,
+///   and clears them when done.
 template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {
 	const uint32 end = m.darts_->end_index();
 	const uint32 nb_blocks = (end + 63) / 64;
 	const Attribute<uint32>& key = m.darts_->key();
-	MarkAttribute* seen = m.darts_->acquire_mark();
-	parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-		const uint32 b = bb * 64, e = std::min(be * 64, end);
-		for (uint32 i = b; i < e; ++i)
-		{
-			if (key[i] == INVALID_INDEX || seen->test(i) || is_boundary(m, Dart(i)))
-				continue;
-			uint32 smallest = i;
-			foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
-				if (x.index >= b && x.index < e)
-					seen->set(x.index);
-				if (x.index < smallest && !is_boundary(m, x))
-					smallest = x.index;
-			});
-			if (smallest == i)
-				f(CELL(Dart(i)));
-		}
-		for (uint32 i = b; i < e; ++i)
-			seen->reset(i);
-	}));
-	m.darts_->release_mark(seen);
+	if constexpr (orbit_is_cyclic(CELL::ORBIT))
+	{
+		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+			for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+			{
+				if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
+					continue;
+				const bool owner = foreach_dart_of_orbit(
+					m, CELL(Dart(i)), [&](Dart x) { return x.index >= i || is_boundary(m, x); });
+				if (owner)
+					f(CELL(Dart(i)));
+			}
+		}));
+		return;
+	}
+	else
+	{
+		MarkAttribute* seen = m.darts_->acquire_mark();
+		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+			const uint32 b = bb * 64, e = std::min(be * 64, end);
+			for (uint32 i = b; i < e; ++i)
+			{
+				if (key[i] == INVALID_INDEX || seen->test(i) || is_boundary(m, Dart(i)))
+					continue;
+				uint32 smallest = i;
+				foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
+					if (x.index >= b && x.index < e)
+						seen->set(x.index);
+					if (x.index < smallest && !is_boundary(m, x))
+						smallest = x.index;
+				});
+				if (smallest == i)
+					f(CELL(Dart(i)));
+			}
+			for (uint32 i = b; i < e; ++i)
+				seen->reset(i);
+		}));
+		m.darts_->release_mark(seen);
+	}
 }
 
 /// Parallel traversal of the cells of type CELL of a map (see parallel_foreach_cell).
