@@ -189,6 +189,7 @@ void circulator_surface(benchmark::State& state, bool cached)
 		benchmark::DoNotOptimize(c);
 	}
 	state.SetItemsProcessed(int64(state.iterations()) * 3000000);
+	state.counters["cache_MB"] = double(VF::memory_bytes(m)) / 1e6;
 	VF::remove(m);
 }
 
@@ -228,6 +229,8 @@ void circulator_volume(benchmark::State& state, bool cached)
 		benchmark::DoNotOptimize(c);
 	}
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<V>(m));
+	state.counters["cache_MB"] =
+		double(IncidenceCache<CMap3, V, W>::memory_bytes(m) + IncidenceCache<CMap3, V, V, W>::memory_bytes(m)) / 1e6;
 	IncidenceCache<CMap3, V, W>::remove(m);
 	IncidenceCache<CMap3, V, V, W>::remove(m);
 }
