@@ -202,6 +202,30 @@ void check_orbit_indexing(const MAP& m, Checker& ck)
 	}
 }
 
+// Each quick incidence cache against the relation recomputed from the darts.
+void check_incidence_tables(const CMapBase& m, Checker& ck)
+{
+	for (const auto& t : m.incidence_tables_)
+	{
+		const AttributeContainer& from = *m.cells_[orbit_index(t->from)];
+		const std::string what = std::string("incidence cache ") + std::string(orbit_name(t->from)) + " -> " +
+								 std::string(orbit_name(t->to)) +
+								 (t->through < NB_ORBITS
+									  ? std::string(" through ") + std::string(orbit_name(Orbit(t->through)))
+									  : std::string());
+		if (m.cell_index_[orbit_index(t->from)] == nullptr || t->offsets.size() != std::size_t(from.end_index()) + 1)
+		{
+			ck.add(Kind::IncidenceCacheStale, t->from, INVALID_INDEX, INVALID_INDEX,
+				   what + ": the cells changed since it was built (call update)");
+			continue;
+		}
+		for (uint32 r = 0; r + 1 < t->offsets.size(); ++r)
+			if (!t->row_is_valid(m, *t, r))
+				ck.add(Kind::IncidenceCacheStale, t->from, INVALID_INDEX, r,
+					   what + ": the stored neighbours differ from the map's (call update)");
+	}
+}
+
 template <typename MAP, Orbit... O>
 IntegrityReport check_map(const MAP& m)
 {
@@ -209,7 +233,11 @@ IntegrityReport check_map(const MAP& m)
 	Checker ck(r);
 	check_relations(m, ck);
 	if (r.ok())
+	{
 		(check_orbit_indexing<MAP, O>(m, ck), ...);
+		if (r.ok())
+			check_incidence_tables(m, ck);
+	}
 	return r;
 }
 

@@ -16,6 +16,19 @@ inline bool is_reserved_name(const std::string& name)
 {
 	return name.rfind("__", 0) == 0;
 }
+/// The value of new lines: zero for types with a static Zero() (Eigen vectors
+/// and matrices, whose default constructor leaves them uninitialized: g++ -O3
+/// then warns, -Werror fails), T() otherwise.
+template <typename T>
+T default_attribute_value()
+{
+	if constexpr (requires {
+					  { T::Zero() } -> std::convertible_to<T>;
+				  })
+		return T::Zero();
+	else
+		return T();
+}
 } // namespace detail
 
 /// Adds an attribute of type T on cells of type CELL. The first attribute of an
@@ -33,7 +46,7 @@ std::shared_ptr<Attribute<T>> add_attribute(MESH& m, const std::string& name)
 		return nullptr;
 	if (!is_indexed<CELL>(map))
 		index_cells<CELL>(map);
-	return container_of<CELL::ORBIT>(map).template add_attribute<T>(name);
+	return container_of<CELL::ORBIT>(map).template add_attribute<T>(name, detail::default_attribute_value<T>());
 }
 
 /// The attribute of type T on CELL named `name`; nullptr when there is none or

@@ -101,6 +101,8 @@ namespace detail
 
 inline Dart add_dart(CMapBase& m)
 {
+	if (!m.incidence_tables_.empty())
+		m.incidence_tables_.clear(); // see drop_incidence_caches
 	uint32 i = m.darts_->new_line(0);
 	for (Attribute<uint32>* r : m.relations_)
 		(*r)[i] = i;
@@ -118,16 +120,27 @@ inline void set_boundary(CMapBase& m, Dart d, bool b)
 	m.boundary_->set_value(d.index, b);
 }
 
+/// Every change of a relation goes through these: a topological change makes
+/// the quick incidence caches wrong, so they are dropped (one test of an empty
+/// vector when there are none).
+inline void drop_incidence_caches(CMapBase& m)
+{
+	if (!m.incidence_tables_.empty())
+		m.incidence_tables_.clear();
+}
 inline void set_phi1(CMap1& m, Dart d, Dart e)
 {
+	drop_incidence_caches(m);
 	(*m.phi1_)[d.index] = e.index;
 }
 inline void set_phi2(CMap2& m, Dart d, Dart e)
 {
+	drop_incidence_caches(m);
 	(*m.phi2_)[d.index] = e.index;
 }
 inline void set_phi3(CMap3& m, Dart d, Dart e)
 {
+	drop_incidence_caches(m);
 	(*m.phi3_)[d.index] = e.index;
 }
 

@@ -28,6 +28,7 @@ struct IntegrityError
 		BadRepresentative,     // a line's representative dart is not a dart of its cell
 		IndexShared,           // two cells use the same line
 		FreeLineLive,          // the free list holds a live line
+		IncidenceCacheStale,   // a quick incidence cache disagrees with the map (see IncidenceCache)
 	};
 	Kind kind;
 	Orbit orbit = Orbit::DART; // for indexing errors
@@ -64,7 +65,9 @@ struct IntegrityReport
 /// on each boundary cell, and for every indexed orbit: all darts of a cell
 /// share one live index, boundary cells have none, no line is shared by two
 /// cells, every live line's representative dart belongs to its cell, the free
-/// lists hold only free lines. O(number of darts x number of indexed orbits).
+/// lists hold only free lines; every quick incidence cache present
+/// (IncidenceCache) matches the relation recomputed from the darts. O(number
+/// of darts x number of indexed orbits + size of the cached relations).
 IntegrityReport check_integrity(const CMap1& m);
 IntegrityReport check_integrity(const CMap2& m);
 IntegrityReport check_integrity(const CMap3& m);

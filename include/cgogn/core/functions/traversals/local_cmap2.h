@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/functions/traversals/incidence_lookup.h>
 
 namespace cgogn
 {
@@ -16,6 +17,8 @@ namespace cgogn
 template <typename FUNC>
 void foreach_incident_edge(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Edge, void>(m, v, f))
+		return;
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, CMap2::Edge(d)); });
 }
 
@@ -23,6 +26,8 @@ void foreach_incident_edge(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_face(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Face, void>(m, v, f))
+		return;
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, CMap2::Face(d)); });
 }
 
@@ -37,6 +42,8 @@ void foreach_incident_volume(const CMap2&, CMap2::Vertex v, const FUNC& f)
 template <typename FUNC>
 void foreach_adjacent_vertex_through_edge(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Vertex, CMap2::Edge>(m, v, f))
+		return;
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, CMap2::Vertex(phi2(m, d))); });
 }
 
@@ -46,6 +53,8 @@ void foreach_adjacent_vertex_through_edge(const CMap2& m, CMap2::Vertex v, const
 template <typename FUNC>
 void foreach_adjacent_vertex_through_face(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Vertex, CMap2::Face>(m, v, f))
+		return;
 	foreach_dart_of_orbit(m, v, [&](Dart d) {
 		if (!call_and_continue(f, CMap2::Vertex(phi2(m, d))))
 			return false;
@@ -89,6 +98,8 @@ void foreach_incident_volume(const CMap2&, CMap2::Edge e, const FUNC& f)
 template <typename FUNC>
 void foreach_adjacent_edge_through_vertex(const CMap2& m, CMap2::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Edge, CMap2::Vertex>(m, e, f))
+		return;
 	for (Dart start : {e.dart, phi2(m, e.dart)})
 	{
 		for (Dart it = phi1(m, phi2(m, start)); it != start; it = phi1(m, phi2(m, it)))
@@ -101,6 +112,8 @@ void foreach_adjacent_edge_through_vertex(const CMap2& m, CMap2::Edge e, const F
 template <typename FUNC>
 void foreach_adjacent_edge_through_face(const CMap2& m, CMap2::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Edge, CMap2::Face>(m, e, f))
+		return;
 	for (Dart start : {e.dart, phi2(m, e.dart)})
 	{
 		if (is_boundary(m, start))
@@ -115,6 +128,8 @@ void foreach_adjacent_edge_through_face(const CMap2& m, CMap2::Edge e, const FUN
 template <typename FUNC>
 void foreach_incident_vertex(const CMap2& m, CMap2::Face f, const FUNC& fn)
 {
+	if (detail::foreach_cached<CMap2::Vertex, void>(m, f, fn))
+		return;
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, CMap2::Vertex(d)); });
 }
 
@@ -122,6 +137,8 @@ void foreach_incident_vertex(const CMap2& m, CMap2::Face f, const FUNC& fn)
 template <typename FUNC>
 void foreach_incident_edge(const CMap2& m, CMap2::Face f, const FUNC& fn)
 {
+	if (detail::foreach_cached<CMap2::Edge, void>(m, f, fn))
+		return;
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, CMap2::Edge(d)); });
 }
 
@@ -136,6 +153,8 @@ void foreach_incident_volume(const CMap2&, CMap2::Face f, const FUNC& fn)
 template <typename FUNC>
 void foreach_adjacent_face_through_edge(const CMap2& m, CMap2::Face f, const FUNC& fn)
 {
+	if (detail::foreach_cached<CMap2::Face, CMap2::Edge>(m, f, fn))
+		return;
 	foreach_dart_of_orbit(m, f, [&](Dart d) {
 		const Dart d2 = phi2(m, d);
 		return is_boundary(m, d2) || call_and_continue(fn, CMap2::Face(d2));
@@ -147,6 +166,8 @@ void foreach_adjacent_face_through_edge(const CMap2& m, CMap2::Face f, const FUN
 template <typename FUNC>
 void foreach_adjacent_face_through_vertex(const CMap2& m, CMap2::Face f, const FUNC& fn)
 {
+	if (detail::foreach_cached<CMap2::Face, CMap2::Vertex>(m, f, fn))
+		return;
 	foreach_dart_of_orbit(m, f, [&](Dart d) {
 		// faces around the origin of d, from the one across d to the one before
 		// the face across phi_1(d) (that one is reported by the previous vertex)
@@ -189,18 +210,24 @@ void foreach_cell_of_volume(const MAP& m, Dart start, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_vertex(const CMap2& m, CMap2::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Vertex, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_volume<CMap2::Vertex>(m, w.dart, f);
 }
 /// Edges of connected component w (no defined order).
 template <typename FUNC>
 void foreach_incident_edge(const CMap2& m, CMap2::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Edge, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_volume<CMap2::Edge>(m, w.dart, f);
 }
 /// Faces of connected component w, boundary faces skipped (no defined order).
 template <typename FUNC>
 void foreach_incident_face(const CMap2& m, CMap2::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap2::Face, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_volume<CMap2::Face>(m, w.dart, f);
 }
 

@@ -56,18 +56,24 @@ void foreach_cell_around_vertex3(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Edge, void>(m, v, f))
+		return;
 	detail::foreach_cell_around_vertex3<CMap3::Edge, Orbit::PHI2_PHI3>(m, v, f);
 }
 /// Faces incident to vertex v.
 template <typename FUNC>
 void foreach_incident_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Face, void>(m, v, f))
+		return;
 	detail::foreach_cell_around_vertex3<CMap3::Face, Orbit::PHI1_PHI3>(m, v, f);
 }
 /// Volumes incident to vertex v (boundary volumes skipped).
 template <typename FUNC>
 void foreach_incident_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Volume, void>(m, v, f))
+		return;
 	detail::foreach_cell_around_vertex3<CMap3::Volume, Orbit::PHI21>(m, v, f);
 }
 
@@ -84,6 +90,8 @@ void foreach_incident_vertex(const CMap3& m, CMap3::Edge e, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Face, void>(m, e, f))
+		return;
 	Dart it = e.dart;
 	do
 	{
@@ -96,6 +104,8 @@ void foreach_incident_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Volume, void>(m, e, f))
+		return;
 	Dart it = e.dart;
 	do
 	{
@@ -111,12 +121,16 @@ void foreach_incident_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_vertex(const CMap3& m, CMap3::Face f, const FUNC& fn)
 {
+	if (detail::foreach_cached<CMap3::Vertex, void>(m, f, fn))
+		return;
 	foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) { return call_and_continue(fn, CMap3::Vertex(d)); });
 }
 /// Edges of face f in phi1 order.
 template <typename FUNC>
 void foreach_incident_edge(const CMap3& m, CMap3::Face f, const FUNC& fn)
 {
+	if (detail::foreach_cached<CMap3::Edge, void>(m, f, fn))
+		return;
 	foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) { return call_and_continue(fn, CMap3::Edge(d)); });
 }
 /// The one or two volumes of face f (boundary volumes skipped).
@@ -136,18 +150,24 @@ void foreach_incident_volume(const CMap3& m, CMap3::Face f, const FUNC& fn)
 template <typename FUNC>
 void foreach_incident_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Vertex, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_volume<CMap3::Vertex>(m, w.dart, f);
 }
 /// Edges of volume w.
 template <typename FUNC>
 void foreach_incident_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Edge, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_volume<CMap3::Edge>(m, w.dart, f);
 }
 /// Faces of volume w.
 template <typename FUNC>
 void foreach_incident_face(const CMap3& m, CMap3::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Face, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_volume<CMap3::Face>(m, w.dart, f);
 }
 
@@ -191,6 +211,8 @@ void foreach_adjacent3(const CMap3& m, X x, const FUNC& f)
 template <typename FUNC>
 void foreach_adjacent_vertex_through_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Vertex, CMap3::Edge>(m, v, f))
+		return;
 	foreach_incident_edge(m, v, [&](CMap3::Edge e) {
 		// e.dart leaves v (see foreach_cell_around_vertex3): its phi1 starts at the other end
 		return call_and_continue(f, CMap3::Vertex(phi1(m, e.dart)));
@@ -199,56 +221,78 @@ void foreach_adjacent_vertex_through_edge(const CMap3& m, CMap3::Vertex v, const
 template <typename FUNC>
 void foreach_adjacent_vertex_through_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Vertex, CMap3::Face>(m, v, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Vertex, CMap3::Face>(m, v, f);
 }
 template <typename FUNC>
 void foreach_adjacent_vertex_through_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Vertex, CMap3::Volume>(m, v, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Vertex, CMap3::Volume>(m, v, f);
 }
 template <typename FUNC>
 void foreach_adjacent_edge_through_vertex(const CMap3& m, CMap3::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Edge, CMap3::Vertex>(m, e, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Edge, CMap3::Vertex>(m, e, f);
 }
 template <typename FUNC>
 void foreach_adjacent_edge_through_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Edge, CMap3::Face>(m, e, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Edge, CMap3::Face>(m, e, f);
 }
 template <typename FUNC>
 void foreach_adjacent_edge_through_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Edge, CMap3::Volume>(m, e, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Edge, CMap3::Volume>(m, e, f);
 }
 template <typename FUNC>
 void foreach_adjacent_face_through_vertex(const CMap3& m, CMap3::Face fc, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Face, CMap3::Vertex>(m, fc, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Face, CMap3::Vertex>(m, fc, f);
 }
 template <typename FUNC>
 void foreach_adjacent_face_through_edge(const CMap3& m, CMap3::Face fc, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Face, CMap3::Edge>(m, fc, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Face, CMap3::Edge>(m, fc, f);
 }
 template <typename FUNC>
 void foreach_adjacent_face_through_volume(const CMap3& m, CMap3::Face fc, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Face, CMap3::Volume>(m, fc, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Face, CMap3::Volume>(m, fc, f);
 }
 template <typename FUNC>
 void foreach_adjacent_volume_through_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Volume, CMap3::Vertex>(m, w, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Volume, CMap3::Vertex>(m, w, f);
 }
 template <typename FUNC>
 void foreach_adjacent_volume_through_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Volume, CMap3::Edge>(m, w, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Volume, CMap3::Edge>(m, w, f);
 }
 template <typename FUNC>
 void foreach_adjacent_volume_through_face(const CMap3& m, CMap3::Volume w, const FUNC& f)
 {
+	if (detail::foreach_cached<CMap3::Volume, CMap3::Face>(m, w, f))
+		return;
 	detail::foreach_adjacent3<CMap3::Volume, CMap3::Face>(m, w, f);
 }
 

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/container/attribute_container.h>
 #include <cgogn/core/types/cell.h>
+#include <cgogn/core/types/incidence_table.h>
 
 #include <array>
 #include <memory>
@@ -47,6 +48,8 @@ public:
 	/// phi1, phi2, ... phin in this order.
 	std::vector<Attribute<uint32>*> relations_;
 	MarkAttribute* boundary_ = nullptr;
+	/// Quick incidence caches (see IncidenceCache); empty unless enabled.
+	std::vector<std::unique_ptr<IncidenceTable>> incidence_tables_;
 
 protected:
 	Attribute<uint32>* add_relation(const std::string& name)

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/indexing.h>
+
+namespace cgogn::detail
+{
+
+/// Key of the relation FROM -> TO (through THROUGH for adjacencies; void for
+/// incidences) in a map's incidence tables.
+template <typename FROM, typename TO, typename THROUGH>
+constexpr uint32 incidence_key()
+{
+	constexpr uint32 N = NB_ORBITS + 1;
+	uint32 through = NB_ORBITS;
+	if constexpr (!std::is_void_v<THROUGH>)
+		through = orbit_index(THROUGH::ORBIT);
+	return (orbit_index(FROM::ORBIT) * N + orbit_index(TO::ORBIT)) * N + through;
+}
+
+/// Depth of "compute without caches" requests on this thread (builders and
+/// check_integrity set it to get the relation from the darts).
+inline thread_local uint32 incidence_cache_bypass = 0;
+
+/// While alive, local traversals on this thread ignore incidence caches.
+struct IncidenceCacheBypass
+{
+	IncidenceCacheBypass()
+	{
+		++incidence_cache_bypass;
+	}
+	~IncidenceCacheBypass()
+	{
+		--incidence_cache_bypass;
+	}
+	IncidenceCacheBypass(const IncidenceCacheBypass&) = delete;
+	IncidenceCacheBypass& operator=(const IncidenceCacheBypass&) = delete;
+};
+
+/// The table of relation `key` in m, nullptr when absent or bypassed.
+inline const IncidenceTable* find_incidence_table(const CMapBase& m, uint32 key)
+{
+	if (incidence_cache_bypass != 0)
+		return nullptr;
+	for (const auto& t : m.incidence_tables_)
+		if (t->key == key)
+			return t.get();
+	return nullptr;
+}
+
+/// The hook of the local traversals: when m holds a cache of FROM -> TO
+/// (through THROUGH) that covers c, calls f on the cached neighbours (f may
+/// stop by returning false) and returns true; otherwise returns false and the
+/// caller traverses the darts. One test of an empty vector when no cache is
+/// enabled.
+template <typename TO, typename THROUGH, typename FROM, typename FUNC>
+bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
+{
+	if (m.incidence_tables_.empty())
+		return false;
+	const IncidenceTable* t = find_incidence_table(m, incidence_key<FROM, TO, THROUGH>());
+	if (t == nullptr)
+		return false;
+	const uint32 r = index_of(m, c);
+	if (r == INVALID_INDEX || std::size_t(r) + 1 >= t->offsets.size())
+		return false; // a cell created after the cache was built
+	for (uint32 i = t->offsets[r], e = t->offsets[r + 1]; i < e; ++i)
+		if (!call_and_continue(f, TO(t->targets[i])))
+			break;
+	return true;
+}
+
+} // namespace cgogn::detail

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/parallel/thread_pool.h>
+
+#include <algorithm>
+
+namespace cgogn
+{
+
+namespace detail
+{
+
+/// Container lines per chunk of an indexed traversal, darts per chunk of the
+/// others: large enough to amortise the scheduling, small enough to balance.
+inline constexpr uint32 PARALLEL_LINE_GRAIN = 1024;
+inline constexpr uint32 PARALLEL_DART_BLOCKS_GRAIN = 16; // blocks of 64 darts
+
+/// True for the orbits that foreach_dart_of_orbit walks as one or two cycles
+/// (no mark): faces, edges, 2-D vertices, 3-D faces and edges. The others
+/// (volumes, 3-D vertices, connected components) are flooded with a mark.
+constexpr bool orbit_is_cyclic(Orbit o)
+{
+	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 ||
+		   o == Orbit::PHI2_PHI3;
+}
+
+/// Parallel traversal of the cells of a non-indexed orbit. The dart range is
+/// cut into chunks of whole 64-dart blocks, scheduled by work stealing. A cell
+/// is reported from its smallest non-boundary dart (its owner), by whichever
+/// chunk holds that dart; no thread waits for another or for a sequential pass.
+/// - Cyclic orbits (see orbit_is_cyclic): from each non-boundary dart d, walk
+///   the orbit until a smaller non-boundary dart shows up (d is not the owner:
+///   stop) or the walk ends (d is the owner: report). Read-only, no mark.
+/// - Flooded orbits: a chunk scans its darts in increasing order; at the first
+///   unseen non-boundary dart d of a cell it floods the orbit once, marks the
+///   cell's darts that lie in the chunk (so that the chunk does not flood it
+///   again) and reports the cell when d is the smallest non-boundary dart of
+///   the orbit. Each cell is flooded once per chunk it meets (about once in
+///   total for cells smaller than a chunk). The one mark is shared: a chunk
+///   only touches the bits of its own blocks, which are whole 64-bit words,
+///   and clears them when done.
+template <typename CELL, typename MAP, typename FUNC>
+void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
+{
+	const uint32 end = m.darts_->end_index();
+	const uint32 nb_blocks = (end + 63) / 64;
+	const Attribute<uint32>& key = m.darts_->key();
+	if constexpr (orbit_is_cyclic(CELL::ORBIT))
+	{
+		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+			for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+			{
+				if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
+					continue;
+				const bool owner = foreach_dart_of_orbit(
+					m, CELL(Dart(i)), [&](Dart x) { return x.index >= i || is_boundary(m, x); });
+				if (owner)
+					f(CELL(Dart(i)));
+			}
+		}));
+		return;
+	}
+	else
+	{
+		MarkAttribute* seen = m.darts_->acquire_mark();
+		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+			const uint32 b = bb * 64, e = std::min(be * 64, end);
+			for (uint32 i = b; i < e; ++i)
+			{
+				if (key[i] == INVALID_INDEX || seen->test(i) || is_boundary(m, Dart(i)))
+					continue;
+				uint32 smallest = i;
+				foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
+					if (x.index >= b && x.index < e)
+						seen->set(x.index);
+					if (x.index < smallest && !is_boundary(m, x))
+						smallest = x.index;
+				});
+				if (smallest == i)
+					f(CELL(Dart(i)));
+			}
+			for (uint32 i = b; i < e; ++i)
+				seen->reset(i);
+		}));
+		m.darts_->release_mark(seen);
+	}
+}
+
+/// Parallel traversal of the cells of type CELL of a map (see parallel_foreach_cell).
+template <typename CELL, typename MAP, typename FUNC>
+void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
+{
+	constexpr Orbit O = CELL::ORBIT;
+	if constexpr (O == Orbit::DART)
+	{
+		const uint32 end = m.darts_->end_index();
+		const Attribute<uint32>& key = m.darts_->key();
+		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+			for (uint32 i = b; i < e; ++i)
+				if (key[i] != INVALID_INDEX && !is_boundary(m, Dart(i)))
+					f(CELL(Dart(i)));
+		}));
+	}
+	else if (is_indexed<CELL>(m))
+	{
+		// split the cell container's line range: one representative dart per live line
+		const AttributeContainer& c = *m.cells_[orbit_index(O)];
+		const Attribute<uint32>& rep = c.key();
+		parallel_for_chunks(c.end_index(), PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+			for (uint32 i = b; i < e; ++i)
+			{
+				const uint32 d = rep[i];
+				if (d != INVALID_INDEX)
+					f(CELL(Dart(d)));
+			}
+		}));
+	}
+	else if constexpr (O == Orbit::PHI2)
+	{
+		// as in the sequential traversal: an edge belongs to its smaller dart,
+		// or to its only non-boundary one; no mark needed
+		const uint32 end = m.darts_->end_index();
+		const Attribute<uint32>& key = m.darts_->key();
+		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+			for (uint32 i = b; i < e; ++i)
+			{
+				const Dart d(i);
+				if (key[i] == INVALID_INDEX || is_boundary(m, d))
+					continue;
+				const Dart d2 = phi2(m, d);
+				if (d.index < d2.index || is_boundary(m, d2))
+					f(CELL(d));
+			}
+		}));
+	}
+	else
+		parallel_foreach_cell_by_darts<CELL>(m, f);
+}
+
+} // namespace detail
+
+/// Calls f on every cell of the type of f's parameter (boundary cells
+/// excluded), spread over thread_pool()->nb_workers() threads; returns when
+/// all are done. f is called concurrently from several threads: it may write
+/// to the cell it is given (its attribute values) and read anything, but must
+/// synchronise other writes (or use per-thread slots indexed by
+/// current_thread_index()). f must return void: early stop is not available.
+/// Markers, local traversals and value() are safe inside f; topological
+/// changes are not. With one worker (or when called from inside f) it runs
+/// sequentially on the calling thread. Indexed orbits split their cell
+/// container; other orbits split the darts (see
+/// detail::parallel_foreach_cell_by_darts). O(cells / workers) when indexed,
+/// O(darts / workers) otherwise. Works on maps and views.
+template <typename MESH, typename FUNC>
+void parallel_foreach_cell(const MESH& m, const FUNC& f)
+{
+	using CELL = func_parameter_type<FUNC>;
+	static_assert(CellType<CELL>, "parallel_foreach_cell: the callable must take a cell (e.g. Vertex) by value");
+	static_assert(std::is_void_v<func_result_type<FUNC>>,
+				  "parallel_foreach_cell: the callable must return void (early stop is not available in parallel)");
+	if constexpr (std::is_base_of_v<CMapBase, MESH>)
+	{
+		if (detail::run_sequentially())
+			detail::foreach_cell_of_map<CELL>(m, f);
+		else
+			detail::parallel_foreach_cell_of_map<CELL>(m, f);
+	}
+	else
+		m.template parallel_foreach_cell<CELL>(f);
+}
+
+} // namespace cgogn

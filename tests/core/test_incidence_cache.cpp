@@ -1,0 +1,163 @@
+// Quick incidence caches: the cached traversals report exactly what the dart
+// walks report, in the same order; update, removal, staleness detection.
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+using namespace cgogn;
+
+namespace
+{
+// Every neighbour reported by trav from every FROM cell, in order.
+template <typename FROM, typename TO, typename MESH, typename TRAV>
+std::vector<uint32> neighbours(const MESH& m, TRAV trav)
+{
+	std::vector<uint32> r;
+	foreach_cell(m, [&](FROM c) {
+		r.push_back(INVALID_INDEX); // row separator
+		trav(c, [&](TO x) { r.push_back(x.dart.index); });
+	});
+	return r;
+}
+} // namespace
+
+TEST(IncidenceCache, SurfaceVertexFaceAndVertexVertex)
+{
+	CMap2 m;
+	build_surface(m, grid_soup(6, 5, true));
+	using V = CMap2::Vertex;
+	using E = CMap2::Edge;
+	using F = CMap2::Face;
+	auto vf = [&](V v, auto f) { foreach_incident_face(m, v, f); };
+	auto vve = [&](V v, auto f) { foreach_adjacent_vertex_through_edge(m, v, f); };
+	auto vvf = [&](V v, auto f) { foreach_adjacent_vertex_through_face(m, v, f); };
+	const auto vf0 = neighbours<V, F>(m, vf);
+	const auto vve0 = neighbours<V, V>(m, vve);
+	const auto vvf0 = neighbours<V, V>(m, vvf);
+
+	using VF = IncidenceCache<CMap2, V, F>;
+	using VVE = IncidenceCache<CMap2, V, V, E>;
+	using VVF = IncidenceCache<CMap2, V, V, F>;
+	EXPECT_FALSE(VF::is_built(m));
+	VF::build(m);
+	VVE::build(m);
+	VVF::build(m);
+	EXPECT_TRUE(VF::is_built(m));
+	EXPECT_GT(VF::memory_bytes(m), 0u);
+	EXPECT_EQ(m.incidence_tables_.size(), 3u);
+	EXPECT_EQ((neighbours<V, F>(m, vf)), vf0);
+	EXPECT_EQ((neighbours<V, V>(m, vve)), vve0);
+	EXPECT_EQ((neighbours<V, V>(m, vvf)), vvf0);
+	// 60 triangles: 180 vertex-face incidences
+	EXPECT_EQ(vf0.size() - nb_cells<V>(m), 180u);
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+
+	// early stop through the cache
+	uint32 n = 0;
+	foreach_cell(m, [&](V v) {
+		foreach_incident_face(m, v, [&](F) { return ++n % 2 != 0; });
+		return false;
+	});
+	EXPECT_LE(n, 2u);
+
+	// the table really is read: a corrupted row is reported and traversed
+	auto& t = *m.incidence_tables_.front();
+	ASSERT_GT(t.targets.size(), 1u);
+	std::swap(t.targets[0], t.targets[1]);
+	IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.has(IntegrityError::Kind::IncidenceCacheStale));
+	EXPECT_NE((neighbours<V, F>(m, vf)), vf0);
+	VF::update(m);
+	EXPECT_EQ((neighbours<V, F>(m, vf)), vf0);
+	EXPECT_TRUE(check_integrity(m).ok());
+
+	// a topological change drops every table (none can be read stale)
+	F added = add_face(m, 3);
+	EXPECT_TRUE(m.incidence_tables_.empty());
+	EXPECT_FALSE(VF::is_built(m));
+	EXPECT_TRUE(check_integrity(m).ok());
+	uint32 faces_of_new_vertex = 0;
+	foreach_incident_face(m, V(added.dart), [&](F) { ++faces_of_new_vertex; });
+	EXPECT_EQ(faces_of_new_vertex, 1u);
+	VF::update(m);
+	VVE::update(m);
+	VVF::update(m);
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+	VF::remove(m);
+	EXPECT_FALSE(VF::is_built(m));
+	EXPECT_EQ(m.incidence_tables_.size(), 2u);
+}
+
+TEST(IncidenceCache, FromCellsGetIndexed)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(5, 4, true));
+	using F = CMap2::Face;
+	using V = CMap2::Vertex;
+	EXPECT_FALSE(is_indexed<F>(m));
+	auto ff = [&](F f, auto fn) { foreach_adjacent_face_through_vertex(m, f, fn); };
+	const auto before = neighbours<F, F>(m, ff);
+	IncidenceCache<CMap2, F, F, V>::build(m);
+	EXPECT_TRUE(is_indexed<F>(m));
+	EXPECT_EQ((neighbours<F, F>(m, ff)), before);
+	// a torus: every triangle has 12 neighbours through its vertices
+	EXPECT_EQ(before.size(), 40u * 13);
+	EXPECT_TRUE(check_integrity(m).ok());
+}
+
+TEST(IncidenceCache, VolumeVertexVolumeAndVertexThroughVolume)
+{
+	CMap3 m;
+	build_volume(m, hex_grid_soup(2, 2, 2));
+	using V = CMap3::Vertex;
+	using W = CMap3::Volume;
+	using E = CMap3::Edge;
+	using F = CMap3::Face;
+	auto vw = [&](V v, auto f) { foreach_incident_volume(m, v, f); };
+	auto vvw = [&](V v, auto f) { foreach_adjacent_vertex_through_volume(m, v, f); };
+	auto wv = [&](W w, auto f) { foreach_incident_vertex(m, w, f); };
+	auto ve = [&](V v, auto f) { foreach_incident_edge(m, v, f); };
+	auto ef = [&](E e, auto f) { foreach_incident_face(m, e, f); };
+	const auto vw0 = neighbours<V, W>(m, vw);
+	const auto vvw0 = neighbours<V, V>(m, vvw);
+	const auto wv0 = neighbours<W, V>(m, wv);
+	const auto ve0 = neighbours<V, E>(m, ve);
+	const auto ef0 = neighbours<E, F>(m, ef);
+	EXPECT_EQ(vw0.size() - 27, 64u); // 8 hexahedra x 8 vertices
+	EXPECT_EQ(wv0.size() - 8, 64u);
+
+	IncidenceCache<CMap3, V, W>::build(m);
+	IncidenceCache<CMap3, W, V>::build(m);
+	IncidenceCache<CMap3, V, V, W>::build(m); // built from the two caches above
+	IncidenceCache<CMap3, V, E>::build(m);
+	IncidenceCache<CMap3, E, F>::build(m);
+	EXPECT_EQ((neighbours<V, W>(m, vw)), vw0);
+	EXPECT_EQ((neighbours<V, V>(m, vvw)), vvw0);
+	EXPECT_EQ((neighbours<W, V>(m, wv)), wv0);
+	EXPECT_EQ((neighbours<V, E>(m, ve)), ve0);
+	EXPECT_EQ((neighbours<E, F>(m, ef)), ef0);
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+
+	// the centre vertex sees the 26 other vertices through its 8 volumes
+	uint32 best = 0;
+	foreach_cell(m, [&](V v) {
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_volume(m, v, [&](V) { ++n; });
+		best = std::max(best, n);
+	});
+	EXPECT_EQ(best, 26u);
+	// without its own table, the adjacency walks the cached incidences: the
+	// same vertices (maybe through other darts)
+	IncidenceCache<CMap3, V, V, W>::remove(m);
+	auto ids = [&](const std::vector<uint32>& darts) {
+		std::vector<uint32> r;
+		for (uint32 d : darts)
+			r.push_back(d == INVALID_INDEX ? d : index_of(m, V(Dart(d))));
+		std::sort(r.begin(), r.end());
+		return r;
+	};
+	EXPECT_EQ(ids(neighbours<V, V>(m, vvw)), ids(vvw0));
+}
