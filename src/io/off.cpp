@@ -53,6 +53,7 @@ MeshData read_off(std::string_view text, const std::string& path)
 	r.check_count(nf, 2, "faces");      // "0\n" at least
 	d.positions.reserve(3 * std::size_t(nv));
 
+	d.vertex_columns.reserve(3); // the pointers below stay valid
 	Column* normal = nullptr;
 	Column* color = nullptr;
 	Column* tex = nullptr;
