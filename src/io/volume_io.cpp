@@ -86,6 +86,9 @@ void save_volume(const CMap3& m, const std::string& path, const SaveOptions& opt
 		break;
 	default:
 	{
+		for (uint32 n : d.cell_sizes)
+			if (n != 4)
+				throw Error(path, "TetGen files hold tetrahedra only; the map has other volumes");
 		auto [node, ele] = detail::write_tetgen(d);
 		detail::write_file(with_extension(path, ".node"), node);
 		detail::write_file(with_extension(path, ".ele"), ele);
