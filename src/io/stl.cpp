@@ -99,6 +99,8 @@ MeshData read_ascii_stl(std::string_view text, const std::string& path)
 	Column normal{"normal", 3, {}};
 	auto expect = [&](std::string_view word) {
 		std::string_view t = r.token();
+		if (t.empty())
+			r.fail("unexpected end of file, expected '" + std::string(word) + "'");
 		if (t != word)
 			r.fail("expected '" + std::string(word) + "', found '" + TextReader::printable(t) + "'");
 	};
@@ -126,6 +128,8 @@ MeshData read_ascii_stl(std::string_view text, const std::string& path)
 			std::string_view v = r.token();
 			if (v == "endloop")
 				break;
+			if (v.empty())
+				r.fail("unexpected end of file, expected 'vertex' or 'endloop'");
 			if (v != "vertex")
 				r.fail("expected 'vertex' or 'endloop', found '" + TextReader::printable(v) + "'");
 			const double x = r.read_double("a vertex coordinate");

@@ -148,7 +148,10 @@ public:
 				else if (section == "Cells")
 				{
 					if (name == "connectivity")
+					{
 						connectivity = integers(t, content_end, 0);
+						cells_byte_ = t.begin;
+					}
 					else if (name == "offsets")
 						offsets = integers(t, content_end, nb_cells_);
 					else if (name == "types")
@@ -164,10 +167,10 @@ public:
 			}
 		}
 		if (!have_piece || !have_points)
-			fail_at(0, "no Piece with Points");
+			fail_at(data_.size(), "no Piece with Points");
 		offsets.insert(offsets.begin(), 0);
 		vtk_cells_to_mesh(d, offsets, connectivity, types, cell_data,
-						  [&](const std::string& m) { fail_at(0, m); });
+						  [&](const std::string& m) { fail_at(cells_byte_, m); });
 		return d;
 	}
 
@@ -398,6 +401,7 @@ private:
 	bool compressed_ = false;
 	uint32 nb_points_ = 0;
 	uint32 nb_cells_ = 0;
+	std::size_t cells_byte_ = 0; // where cell errors are reported
 };
 
 } // namespace
