@@ -29,13 +29,16 @@ std::string read_file(const std::string& path)
 	if (!f)
 		throw Error(path, std::string("cannot open for reading: ") + std::strerror(errno));
 	std::string data;
+	std::size_t size = 0;
 	if (std::fseek(f.get(), 0, SEEK_END) == 0)
 	{
-		const long size = std::ftell(f.get());
-		if (size > 0)
-			data.reserve(std::size_t(size));
+		const long s = std::ftell(f.get());
+		size = s > 0 ? std::size_t(s) : 0;
 		std::fseek(f.get(), 0, SEEK_SET);
 	}
+	// one read of the whole file, then whatever a growing or unseekable file adds
+	data.resize(size);
+	data.resize(std::fread(data.data(), 1, size, f.get()));
 	char buf[1 << 16];
 	std::size_t n;
 	while ((n = std::fread(buf, 1, sizeof(buf), f.get())) > 0)

@@ -84,11 +84,11 @@ public:
 					// 5.x: OFFSETS type <a values> CONNECTIVITY type <b values>
 					std::vector<double> v;
 					read_array(a, t_.token(), v, false);
-					offsets.assign(v.begin(), v.end());
+					offsets = to_int64(v);
 					if (t_.token() != "CONNECTIVITY")
 						t_.fail("expected CONNECTIVITY after OFFSETS");
 					read_array(b, t_.token(), v, false);
-					connectivity.assign(v.begin(), v.end());
+					connectivity = to_int64(v);
 					if (offsets.empty() || offsets.front() != 0 || offsets.back() != int64(b))
 						t_.fail("inconsistent OFFSETS");
 				}
@@ -104,8 +104,8 @@ public:
 						if (i >= v.size() || v[i] < 0 || v[i] > double(v.size() - i - 1))
 							t_.fail("cell " + std::to_string(c) + " runs past the CELLS list");
 						const std::size_t n = std::size_t(v[i]);
-						connectivity.insert(connectivity.end(), v.begin() + std::ptrdiff_t(i + 1),
-											v.begin() + std::ptrdiff_t(i + 1 + n));
+						for (std::size_t j = i + 1; j < i + 1 + n; ++j)
+							connectivity.push_back(to_int64(v[j]));
 						i += n + 1;
 						offsets.push_back(int64(connectivity.size()));
 					}
@@ -119,7 +119,7 @@ public:
 				const uint32 n = t_.read_uint("a cell count");
 				std::vector<double> v;
 				read_array(n, "int", v, false);
-				types.assign(v.begin(), v.end());
+				types = to_int64(v);
 				have_types = true;
 			}
 			else if (k == "POINT_DATA" || k == "CELL_DATA")

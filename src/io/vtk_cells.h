@@ -19,6 +19,20 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 					   const std::vector<int64>& types, const std::vector<Column>& cell_data,
 					   const std::function<void(const std::string&)>& fail);
 
+/// An integer read as a double, converted without overflow: values out of
+/// the int64 range (or NaN) become -1, which every consumer rejects.
+inline int64 to_int64(double v)
+{
+	return (v >= -4.0e18 && v <= 4.0e18) ? int64(v) : -1;
+}
+inline std::vector<int64> to_int64(const std::vector<double>& v)
+{
+	std::vector<int64> out(v.size());
+	for (std::size_t i = 0; i < v.size(); ++i)
+		out[i] = to_int64(v[i]);
+	return out;
+}
+
 /// The VTK type of a cell of n vertices (4, 5, 6 or 8).
 inline int32 vtk_cell_type(uint32 n)
 {

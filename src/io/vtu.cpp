@@ -388,8 +388,7 @@ private:
 				out.push_back(r.read_int("an index"));
 			return out;
 		}
-		const std::vector<double> v = values(t, content_end, count, true);
-		return std::vector<int64>(v.begin(), v.end());
+		return to_int64(values(t, content_end, count, true));
 	}
 
 	std::string_view data_;
