@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <set>
 
 using namespace cgogn;
 
@@ -238,4 +239,36 @@ TEST(DataVolumeDetails, MixedMeshCellKinds)
 	EXPECT_EQ(j["cell_kinds"]["hexahedra"].get<int64>(), 5520);
 	EXPECT_EQ(j["cell_kinds"]["prisms"].get<int64>(), 908);
 	EXPECT_EQ(j["cell_kinds"]["pyramids"].get<int64>(), 317);
+}
+
+TEST(DataFolder, EveryMeshFileIsCoveredAboveOrNamedHere)
+{
+	const std::string dir = CGOGN_DATA_DIR;
+	if (!std::filesystem::exists(dir))
+		GTEST_SKIP() << "data folder " << dir << " not found (set CGOGN_DATA_DIR)";
+	const std::set<std::string> known_surface = {
+		"nefertiti.obj", "refined_elephant.off", "stanford-bunny.obj", "hemisphere.off", "elephant-with-holes.off",
+		"spot_quadrangulated.obj", "spot_control_mesh.obj", "fandisk_quads.off", "suzanne.obj", "torus_quad.off",
+		"polygon_mesh.off", "Wuson.off", "geomview_cam.off", "geomview_simplex_2skeleton.off",
+		"geomview_orthoplex_2skeleton.off", "geomview_tetraplex_2skeleton.off", "geomview_hypercube_2skeleton.off",
+		"tetrahedron.off", "cube_quad.off", "triangle.off", "L.off", "vertex_onering.off", "edge_onering.off"};
+	const std::set<std::string> known_volume = {
+		"armadillo_tet_461k.mesh", "heart_tet_205k.mesh", "elephant_tet_27k.mesh", "elephant_tet_8k.mesh",
+		"armadillo_tet_4k.mesh",   "elephant_hex_110k.mesh", "liver_hex_624.mesh",  "hex_dominant_11k.mesh",
+		// OpenVolumeMesh polyhedra: no reader for .ovm, and the builder takes
+		// tetrahedra, pyramids, prisms and hexahedra only
+		"elephant_poly_4k.ovm"};
+	for (const char* sub : {"surface", "volume"})
+	{
+		if (!std::filesystem::exists(dir + "/" + sub))
+			continue;
+		for (const auto& e : std::filesystem::directory_iterator(dir + "/" + sub))
+		{
+			const std::string name = e.path().filename().string();
+			if (name == "README.md" || name == "SHA256SUMS")
+				continue;
+			const bool known = std::string(sub) == "surface" ? known_surface.count(name) : known_volume.count(name);
+			EXPECT_TRUE(known) << sub << "/" << name << " is a new data file: add it to the tables above";
+		}
+	}
 }

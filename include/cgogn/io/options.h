@@ -79,11 +79,13 @@ struct LoadReport
 	uint32 nb_cells_reoriented = 0;
 	BuildReport build;
 
-	/// True when the input needed no repair (no non-manifold vertex or edge
-	/// or face, no degenerate cell).
+	/// True when the input needed no repair: no non-manifold vertex, edge or
+	/// face, and no degenerate cell (a face with a repeated vertex is not
+	/// manifold either).
 	bool manifold() const
 	{
-		return nb_nonmanifold_vertices == 0 && nb_nonmanifold_edges == 0 && nb_nonmanifold_faces == 0;
+		return nb_nonmanifold_vertices == 0 && nb_nonmanifold_edges == 0 && nb_nonmanifold_faces == 0 &&
+			   nb_cells_skipped == 0;
 	}
 };
 
