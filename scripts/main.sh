@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds (release), and runs the
-# hello_mesh example, which builds meshes in code and reports what it made.
+# `cgogn` tool on the mesh the project ships: `info` (counts, topology,
+# geometry), then a conversion OBJ -> binary PLY, and `check` of the result.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release -j 2
-./build/release/examples/hello_mesh
+cgogn=./build/release/tools/cgogn
+mesh=examples/data/spot_control_mesh.obj
+"$cgogn" info "$mesh"
+"$cgogn" convert --binary "$mesh" build/release/spot_control_mesh.ply
+"$cgogn" check build/release/spot_control_mesh.ply

@@ -4,3 +4,4 @@
 
 #include <cgogn/core.h>
 #include <cgogn/geometry.h>
+#include <cgogn/io.h>

@@ -565,3 +565,42 @@ TEST(Operators2, SplitEveryFaceThenCollapseRestores)
 	EXPECT_EQ(counts(m), before);
 	EXPECT_INTEGRITY(m);
 }
+
+TEST(Operators2, PureTopologyWithoutIndices)
+{
+	// nothing indexed: every operator with set_indices = false changes the
+	// topology only, and the map stays valid
+	CMap2 m;
+	add_hexa(m, false);
+	add_prism(m, 5, false);
+	const int64 chi = counts(m).euler();
+	Vertex v = cut_edge(m, all<Edge>(m)[0], false);
+	merge_incident_edges(m, v, false);
+	Face f = all<Face>(m)[0];
+	Edge cut = cut_face(m, Vertex(f.dart), Vertex(phi<1, 1>(m, f.dart)), false);
+	merge_incident_faces(m, cut, false);
+	Vertex c = triangulate_face(m, all<Face>(m)[1], false);
+	Edge e = all<Edge>(m)[4];
+	if (edge_can_flip(m, e))
+	{
+		flip_edge(m, e, false);
+		flip_back_edge(m, e, false);
+	}
+	merge_incident_faces(m, c, false);
+	Vertex w = all<Vertex>(m)[2];
+	split_vertex(m, w.dart, phi<2, 1, 2, 1>(m, w.dart), false);
+	Edge col = find<Edge>(m, [&](Edge x) { return edge_can_collapse(m, x); });
+	ASSERT_TRUE(col.is_valid());
+	collapse_edge(m, col, false);
+	EXPECT_EQ(counts(m).euler(), chi);
+	unsew_faces(m, all<Edge>(m)[0], false);
+	remove_face(m, all<Face>(m)[0], false);
+	reverse_orientation(m);
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+	EXPECT_FALSE(is_indexed<Vertex>(m));
+	EXPECT_FALSE(is_indexed<Face>(m));
+	// indices given afterwards are consistent
+	index_cells<Vertex>(m);
+	index_cells<Face>(m);
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+}

@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/io/error.h>
+
+#include <cgogn/core/builder/map_builder.h>
+#include <cgogn/core/functions/attributes.h>
+#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include "map_transfer.h"
+
+#include <algorithm>
+
+namespace cgogn::io::detail
+{
+
+namespace
+{
+
+template <typename CELL, typename MAP>
+void check_free_name(const MAP& m, const std::string& name, std::type_index type, const std::string& path)
+{
+	auto a = container_of<CELL::ORBIT>(m).find(name);
+	if (a != nullptr && a->type() != type)
+		throw Error(path, "the map already has a " + std::string(orbit_name(CELL::ORBIT)) + " attribute '" + name +
+							  "' of another type: cannot load the file's '" + name + "' into it");
+}
+
+std::type_index column_type(const Column& c)
+{
+	return c.dim == 1 ? std::type_index(typeid(double)) : c.dim == 2 ? typeid(Vec2) : typeid(Vec3);
+}
+
+bool usable(const Column& c)
+{
+	return c.dim >= 1 && c.dim <= 3 && !c.name.empty() && c.name.rfind("__", 0) != 0 && c.name != "position";
+}
+
+template <typename T, typename CELL, typename MAP>
+std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name)
+{
+	auto a = get_attribute<T, CELL>(m, name);
+	return a ? a : add_attribute<T, CELL>(m, name);
+}
+
+// Writes column c (element i) into line `line` of attribute of CELL.
+template <typename CELL, typename MAP, typename LINES>
+void fill_column(MAP& m, const Column& c, const LINES& lines)
+{
+	auto put = [&]<typename T>(std::shared_ptr<Attribute<T>> a) {
+		lines([&](uint32 line, std::size_t i) {
+			const double* v = &c.values[i * c.dim];
+			if constexpr (std::is_same_v<T, double>)
+				(*a)[line] = v[0];
+			else if constexpr (std::is_same_v<T, Vec2>)
+				(*a)[line] = Vec2(v[0], v[1]);
+			else
+				(*a)[line] = Vec3(v[0], v[1], v[2]);
+		});
+	};
+	if (c.dim == 1)
+		put(get_or_add<double, CELL>(m, c.name));
+	else if (c.dim == 2)
+		put(get_or_add<Vec2, CELL>(m, c.name));
+	else
+		put(get_or_add<Vec3, CELL>(m, c.name));
+}
+
+// The dart ids add_dart will hand out next: free lines last-in first-out, then new ones.
+class DartPredictor
+{
+public:
+	explicit DartPredictor(const CMapBase& m) : free_(m.darts_->free_lines()), end_(m.darts_->end_index())
+	{
+	}
+	Dart operator()(uint64 k) const
+	{
+		if (k < free_.size())
+			return Dart(free_[free_.size() - 1 - k]);
+		return Dart(uint32(end_ + (k - free_.size())));
+	}
+
+private:
+	std::vector<uint32> free_;
+	uint64 end_;
+};
+
+uint32 darts_of_cell(uint32 size, uint32 dimension)
+{
+	if (dimension == 2)
+		return size;
+	switch (size)
+	{
+	case 4:
+		return 12;
+	case 5:
+		return 16;
+	case 6:
+		return 18;
+	case 8:
+		return 24;
+	default:
+		return 0;
+	}
+}
+
+template <typename MAP>
+LoadReport build(MAP& m, const MeshData& d, const std::string& path)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Top = std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face,
+								   typename mesh_traits<MAP>::Volume>;
+	constexpr uint32 dim = MAP::dimension;
+
+	// 1. everything that can fail, before touching m
+	check_free_name<Vertex>(m, "position", typeid(Vec3), path);
+	check_free_name<Vertex>(m, "original_vertex", typeid(uint32), path);
+	for (const auto& c : d.vertex_columns)
+		if (usable(c))
+			check_free_name<Vertex>(m, c.name, column_type(c), path);
+	for (const auto& c : d.cell_columns)
+		if (usable(c))
+			check_free_name<Top>(m, c.name, column_type(c), path);
+	if (uint64(d.nb_vertices()) + container_of<Vertex::ORBIT>(m).end_index() >= INVALID_INDEX ||
+		uint64(d.cell_vertices.size()) * 6 + m.darts_->end_index() >= INVALID_INDEX)
+		throw Error(path, "the mesh is too large for 32-bit indices");
+
+	// which cells the builder will build (same rules as build_surface/build_volume)
+	std::vector<uint8> built(d.nb_cells(), 0);
+	{
+		std::size_t k = 0;
+		std::vector<uint32> tmp;
+		for (uint32 c = 0; c < d.nb_cells(); ++c)
+		{
+			const uint32 n = d.cell_sizes[c];
+			tmp.assign(d.cell_vertices.begin() + std::ptrdiff_t(k), d.cell_vertices.begin() + std::ptrdiff_t(k + n));
+			k += n;
+			std::sort(tmp.begin(), tmp.end());
+			const bool ok_size = dim == 2 ? n >= 3 : darts_of_cell(n, 3) != 0;
+			built[c] = ok_size && std::adjacent_find(tmp.begin(), tmp.end()) == tmp.end();
+		}
+	}
+	const DartPredictor predict(m);
+
+	// 2. build
+	LoadReport rep;
+	if constexpr (dim == 2)
+		rep.build = build_surface(m, d.nb_vertices(), d.cell_sizes, d.cell_vertices);
+	else
+		rep.build = build_volume(m, d.nb_vertices(), d.cell_sizes, d.cell_vertices);
+	const BuildReport& br = rep.build;
+
+	// 3. vertex data: soup vertex i is line offset + i (when used), split copies too
+	const AttributeContainer& vc = container_of<Vertex::ORBIT>(m);
+	auto vertex_lines = [&](const auto& f) {
+		for (uint32 i = 0; i < d.nb_vertices(); ++i)
+			if (vc.is_live(br.vertex_offset + i))
+				f(br.vertex_offset + i, std::size_t(i));
+		for (const auto& [line, orig] : br.split_vertices)
+			f(line, std::size_t(orig));
+	};
+	auto pos = get_or_add<Vec3, Vertex>(m, "position");
+	vertex_lines([&](uint32 line, std::size_t i) {
+		(*pos)[line] = Vec3(d.positions[3 * i], d.positions[3 * i + 1], d.positions[3 * i + 2]);
+	});
+	if (br.nb_nonmanifold_vertices > 0)
+	{
+		auto orig = get_or_add<uint32, Vertex>(m, "original_vertex");
+		vertex_lines([&](uint32 line, std::size_t i) { (*orig)[line] = uint32(i); });
+	}
+	for (const auto& c : d.vertex_columns)
+		if (usable(c))
+			fill_column<Vertex>(m, c, vertex_lines);
+
+	// 4. cell data: cell c's first dart is predictable from the dart container's state
+	bool any_cell_column = false;
+	for (const auto& c : d.cell_columns)
+		any_cell_column = any_cell_column || usable(c);
+	if (any_cell_column)
+	{
+		std::vector<std::pair<Dart, uint32>> firsts; // (first dart, cell)
+		uint64 k = 0;
+		for (uint32 c = 0; c < d.nb_cells(); ++c)
+			if (built[c])
+			{
+				firsts.emplace_back(predict(k), c);
+				k += darts_of_cell(d.cell_sizes[c], dim);
+			}
+		for (const auto& c : d.cell_columns)
+		{
+			if (!usable(c))
+				continue;
+			// creating the attribute indexes the orbit if needed
+			if (c.dim == 1)
+				get_or_add<double, Top>(m, c.name);
+			else if (c.dim == 2)
+				get_or_add<Vec2, Top>(m, c.name);
+			else
+				get_or_add<Vec3, Top>(m, c.name);
+			fill_column<Top>(m, c, [&](const auto& f) {
+				for (const auto& [dart, cell] : firsts)
+				{
+					assert(is_dart_valid(m, dart) && !is_boundary(m, dart));
+					f(index_of(m, Top(dart)), std::size_t(cell));
+				}
+			});
+		}
+	}
+
+	rep.nb_vertices_read = d.nb_vertices();
+	rep.nb_cells_read = br.nb_cells_read;
+	rep.nb_cells_built = br.nb_cells_built;
+	rep.nb_cells_skipped = br.nb_cells_degenerate + br.nb_cells_invalid;
+	rep.nb_isolated_vertices = br.nb_isolated_vertices;
+	rep.nb_nonmanifold_vertices = br.nb_nonmanifold_vertices;
+	rep.nb_vertices_split = uint32(br.split_vertices.size());
+	rep.nb_nonmanifold_edges = br.nb_nonmanifold_edges;
+	rep.nb_nonmanifold_faces = br.nb_nonmanifold_faces;
+	rep.nb_holes_closed = br.nb_boundary_cells;
+	return rep;
+}
+
+} // namespace
+
+LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path)
+{
+	return build(m, d, path);
+}
+LoadReport build_map(CMap3& m, const MeshData& d, const std::string& path)
+{
+	return build(m, d, path);
+}
+
+} // namespace cgogn::io::detail

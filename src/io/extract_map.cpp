@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/io/error.h>
+
+#include <cgogn/core/functions/attributes.h>
+#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/types/marker.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include "map_transfer.h"
+
+namespace cgogn::io::detail
+{
+
+namespace
+{
+
+// Column of the typed attributes (double, Vec2, Vec3) of a container, gathered
+// in the order of `lines`.
+void gather_columns(const AttributeContainer& cont, const std::vector<uint32>& lines, std::vector<Column>& out,
+					bool skip_position)
+{
+	for (const auto& a : cont.attributes())
+	{
+		const std::string& name = a->name();
+		if (name.rfind("__", 0) == 0 || (skip_position && name == "position"))
+			continue;
+		if (name.find_first_of(" \t\r\n") != std::string::npos)
+			continue;
+		Column c{name, 0, {}};
+		if (a->type() == typeid(double))
+		{
+			c.dim = 1;
+			const auto& at = static_cast<const Attribute<double>&>(*a);
+			for (uint32 l : lines)
+				c.values.push_back(at[l]);
+		}
+		else if (a->type() == typeid(Vec2))
+		{
+			c.dim = 2;
+			const auto& at = static_cast<const Attribute<Vec2>&>(*a);
+			for (uint32 l : lines)
+				c.values.insert(c.values.end(), {at[l][0], at[l][1]});
+		}
+		else if (a->type() == typeid(Vec3))
+		{
+			c.dim = 3;
+			const auto& at = static_cast<const Attribute<Vec3>&>(*a);
+			for (uint32 l : lines)
+				c.values.insert(c.values.end(), {at[l][0], at[l][1], at[l][2]});
+		}
+		else
+			continue;
+		out.push_back(std::move(c));
+	}
+}
+
+// Positions and a file id for every vertex line (vertices numbered in the
+// order of the vertex container).
+template <typename MAP>
+std::vector<uint32> number_vertices(const MAP& m, MeshData& d, const std::string& path, bool attributes)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	auto pos = get_attribute<Vec3, Vertex>(m, "position");
+	if (!pos)
+		throw Error(path, "the map has no Vec3 vertex attribute 'position' to write");
+	const AttributeContainer& vc = container_of<Vertex::ORBIT>(m);
+	std::vector<uint32> id(vc.end_index(), INVALID_INDEX);
+	std::vector<uint32> lines;
+	lines.reserve(vc.nb_lines());
+	d.positions.reserve(3 * std::size_t(vc.nb_lines()));
+	foreach_cell(m, [&](Vertex v) {
+		const uint32 l = index_of(m, v);
+		id[l] = uint32(lines.size());
+		lines.push_back(l);
+		const Vec3& p = (*pos)[l];
+		d.positions.insert(d.positions.end(), {p[0], p[1], p[2]});
+	});
+	if (attributes)
+		gather_columns(vc, lines, d.vertex_columns, true);
+	return id;
+}
+
+} // namespace
+
+MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes)
+{
+	using Vertex = CMap2::Vertex;
+	using Face = CMap2::Face;
+	MeshData d;
+	const std::vector<uint32> id = number_vertices(m, d, path, attributes);
+	std::vector<uint32> face_lines;
+	const bool faces_indexed = is_indexed<Face>(m);
+	foreach_cell(m, [&](Face f) {
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, f, [&](Dart x) {
+			d.cell_vertices.push_back(id[index_of(m, Vertex(x))]);
+			++n;
+		});
+		d.cell_sizes.push_back(n);
+		if (faces_indexed)
+			face_lines.push_back(index_of(m, f));
+	});
+	if (attributes && faces_indexed)
+		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false);
+	return d;
+}
+
+MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes)
+{
+	using Vertex = CMap3::Vertex;
+	using Volume = CMap3::Volume;
+	MeshData d;
+	const std::vector<uint32> id = number_vertices(m, d, path, attributes);
+	auto origin = [&](Dart x) { return id[index_of(m, Vertex(x))]; };
+	std::vector<uint32> volume_lines;
+	const bool volumes_indexed = is_indexed<Volume>(m);
+	DartMarker<CMap3> seen(m);
+	std::vector<std::pair<Dart, uint32>> faces; // (dart, degree) of one volume
+	foreach_cell(m, [&](Volume w) {
+		faces.clear();
+		foreach_dart_of_orbit(m, w, [&](Dart x) {
+			if (seen.is_marked(x))
+				return;
+			uint32 n = 0;
+			Dart it = x;
+			do
+			{
+				seen.mark(it);
+				++n;
+				it = phi1(m, it);
+			} while (it != x);
+			faces.emplace_back(x, n);
+		});
+		uint32 tri = 0, quad = 0;
+		for (const auto& f : faces)
+		{
+			tri += f.second == 3;
+			quad += f.second == 4;
+		}
+		const std::size_t nf = faces.size();
+		uint32 bottom_degree = 0, size = 0;
+		if (nf == 4 && tri == 4)
+			bottom_degree = 3, size = 4;
+		else if (nf == 5 && tri == 4 && quad == 1)
+			bottom_degree = 4, size = 5;
+		else if (nf == 5 && tri == 2 && quad == 3)
+			bottom_degree = 3, size = 6;
+		else if (nf == 6 && quad == 6)
+			bottom_degree = 4, size = 8;
+		else
+			throw Error(path, "a volume with " + std::to_string(nf) + " faces (" + std::to_string(tri) +
+								  " triangles, " + std::to_string(quad) +
+								  " quads) is not a tetrahedron, pyramid, prism or hexahedron: the format cannot "
+								  "hold it");
+		Dart b;
+		for (const auto& f : faces)
+			if (f.second == bottom_degree)
+			{
+				b = f.first;
+				break;
+			}
+		// bottom in reverse phi1 order, then the vertex above each bottom vertex
+		std::array<Dart, 4> x;
+		Dart it = b;
+		for (uint32 i = 0; i < bottom_degree; ++i)
+		{
+			x[i] = it;
+			d.cell_vertices.push_back(origin(it));
+			it = phi_1(m, it);
+		}
+		const uint32 tops = size == 4 || size == 5 ? 1 : bottom_degree;
+		for (uint32 i = 0; i < tops; ++i)
+			d.cell_vertices.push_back(origin(phi1(m, phi1(m, phi2(m, x[i])))));
+		d.cell_sizes.push_back(size);
+		if (volumes_indexed)
+			volume_lines.push_back(index_of(m, w));
+	});
+	if (attributes && volumes_indexed)
+		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false);
+	return d;
+}
+
+} // namespace cgogn::io::detail

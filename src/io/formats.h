@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// The readers and writers of every format, on memory buffers. Readers throw
+// io::Error (file, line or byte, cause); writers return the file's content.
+#pragma once
+
+#include "mesh_data.h"
+
+#include <string>
+#include <string_view>
+
+namespace cgogn::io::detail
+{
+
+// ---- surfaces (cells are polygons)
+MeshData read_off(std::string_view text, const std::string& path);
+MeshData read_obj(std::string_view text, const std::string& path);
+MeshData read_ply(std::string_view data, const std::string& path);
+MeshData read_stl(std::string_view data, const std::string& path);
+std::string write_off(const MeshData& d);
+std::string write_obj(const MeshData& d);
+std::string write_ply(const MeshData& d, bool binary);
+/// Polygons are written as triangle fans.
+std::string write_stl(const MeshData& d, bool binary);
+
+// ---- volumes (cells of 4, 5, 6 or 8 vertices in the builder's order)
+MeshData read_medit(std::string_view text, const std::string& path);
+MeshData read_vtk(std::string_view data, const std::string& path);
+MeshData read_vtu(std::string_view data, const std::string& path);
+MeshData read_gmsh(std::string_view data, const std::string& path);
+/// `node` and `ele` are the contents of the .node and .ele files.
+MeshData read_tetgen(std::string_view node, const std::string& node_path, std::string_view ele,
+					 const std::string& ele_path);
+std::string write_medit(const MeshData& d);
+std::string write_vtk(const MeshData& d, bool binary);
+std::string write_vtu(const MeshData& d, bool binary);
+std::string write_gmsh(const MeshData& d, bool binary);
+/// The .node and .ele files.
+std::pair<std::string, std::string> write_tetgen(const MeshData& d);
+
+/// Throws io::Error (no position) when a cell refers to a vertex that does not
+/// exist or a column does not have one value per element: the safety net
+/// behind each reader's own checks. O(size of d).
+void validate(const MeshData& d, const std::string& path);
+
+} // namespace cgogn::io::detail

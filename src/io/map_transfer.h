@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Between MeshData and maps: building a map from what a reader produced, and
+// extracting what a writer needs from a map.
+#pragma once
+
+#include <cgogn/io/options.h>
+
+#include <cgogn/core/types/maps/cmap3.h>
+
+#include "mesh_data.h"
+
+#include <string>
+
+namespace cgogn::io::detail
+{
+
+/// Appends d to m through build_surface / build_volume, then sets positions,
+/// `original_vertex` (when vertices were split) and the columns as attributes.
+/// Throws io::Error before touching m when an attribute of the same name but
+/// another type exists. O(size of d).
+LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path);
+LoadReport build_map(CMap3& m, const MeshData& d, const std::string& path);
+
+/// Turns over volume cells of negative orientation (tetrahedra by their signed
+/// volume; other cells by the side of the top relative to the bottom face's
+/// normal). Returns the number of cells turned over. O(number of cells).
+uint32 orient_cells(MeshData& d);
+
+/// The faces of m (polygons) or volumes of m (cells of 4, 5, 6 or 8 vertices in
+/// the builder's order) with positions and, when `attributes`, the double,
+/// Vec2 and Vec3 vertex and face/volume attributes. Throws io::Error (naming
+/// path) when there is no `position` or, for volumes, a volume is not a
+/// tetrahedron, pyramid, prism or hexahedron. O(size of m).
+MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes);
+MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes);
+
+} // namespace cgogn::io::detail

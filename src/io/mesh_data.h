@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// What readers produce and writers consume: a cell soup with positions and
+// named per-vertex and per-cell columns, independent of any map.
+#pragma once
+
+#include <cgogn/core/types/numeric.h>
+
+#include <string>
+#include <vector>
+
+namespace cgogn::io::detail
+{
+
+/// A named per-element array of `dim` doubles per element (dim 1: scalar,
+/// 2: Vec2, 3: Vec3).
+struct Column
+{
+	std::string name;
+	uint32 dim = 1;
+	std::vector<double> values;
+};
+
+/// Polygons (surfaces) or tetrahedra/pyramids/prisms/hexahedra (volumes, in the
+/// builder's vertex order) over vertices 0..nb_vertices()-1.
+struct MeshData
+{
+	std::vector<double> positions; // x y z per vertex
+	std::vector<uint32> cell_sizes;
+	std::vector<uint32> cell_vertices;
+	std::vector<Column> vertex_columns;
+	std::vector<Column> cell_columns;
+
+	uint32 nb_vertices() const
+	{
+		return uint32(positions.size() / 3);
+	}
+	uint32 nb_cells() const
+	{
+		return uint32(cell_sizes.size());
+	}
+	Column* find_vertex_column(const std::string& name)
+	{
+		for (auto& c : vertex_columns)
+			if (c.name == name)
+				return &c;
+		return nullptr;
+	}
+	const Column* find_vertex_column(const std::string& name) const
+	{
+		for (auto& c : vertex_columns)
+			if (c.name == name)
+				return &c;
+		return nullptr;
+	}
+	const Column* find_cell_column(const std::string& name) const
+	{
+		for (auto& c : cell_columns)
+			if (c.name == name)
+				return &c;
+		return nullptr;
+	}
+};
+
+} // namespace cgogn::io::detail

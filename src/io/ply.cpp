@@ -1,0 +1,548 @@
+// SPDX-License-Identifier: MIT
+// PLY: ascii, binary little and big endian, any property layout. Vertex
+// properties x, y, z are the position; face list `vertex_indices` (or
+// `vertex_index`) the polygons. Other scalar properties of vertices and faces
+// become columns: nx ny nz -> `normal`, red green blue -> `color`, u v (or s t,
+// texture_u texture_v) -> `tex_coord`, name_x name_y [name_z] -> Vec2/Vec3
+// `name`, anything else -> a scalar column of its name. Other elements and
+// list properties are read and dropped.
+#include "formats.h"
+#include "byte_reader.h"
+#include "text_reader.h"
+#include "text_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace cgogn::io::detail
+{
+
+namespace
+{
+
+enum class PType : uint8
+{
+	Int8,
+	UInt8,
+	Int16,
+	UInt16,
+	Int32,
+	UInt32,
+	Float32,
+	Float64
+};
+
+std::optional<PType> parse_type(std::string_view t)
+{
+	if (t == "char" || t == "int8")
+		return PType::Int8;
+	if (t == "uchar" || t == "uint8")
+		return PType::UInt8;
+	if (t == "short" || t == "int16")
+		return PType::Int16;
+	if (t == "ushort" || t == "uint16")
+		return PType::UInt16;
+	if (t == "int" || t == "int32")
+		return PType::Int32;
+	if (t == "uint" || t == "uint32")
+		return PType::UInt32;
+	if (t == "float" || t == "float32")
+		return PType::Float32;
+	if (t == "double" || t == "float64")
+		return PType::Float64;
+	return std::nullopt;
+}
+
+uint32 type_size(PType t)
+{
+	switch (t)
+	{
+	case PType::Int8:
+	case PType::UInt8:
+		return 1;
+	case PType::Int16:
+	case PType::UInt16:
+		return 2;
+	case PType::Int32:
+	case PType::UInt32:
+	case PType::Float32:
+		return 4;
+	case PType::Float64:
+		return 8;
+	}
+	return 1;
+}
+
+bool is_integer(PType t)
+{
+	return t != PType::Float32 && t != PType::Float64;
+}
+
+struct Property
+{
+	std::string name;
+	PType type = PType::Float32;
+	bool is_list = false;
+	PType count_type = PType::UInt8;
+	// where a scalar goes: -1 nowhere, -2 position, else a column
+	int column = -1;
+	uint32 component = 0;
+};
+
+struct Element
+{
+	std::string name;
+	uint64 count = 0;
+	std::vector<Property> props;
+	uint64 header_line = 0;
+};
+
+double read_binary(ByteReader& b, PType t)
+{
+	switch (t)
+	{
+	case PType::Int8:
+		return b.read<int8>();
+	case PType::UInt8:
+		return b.read<uint8>();
+	case PType::Int16:
+		return b.read<int16_t>();
+	case PType::UInt16:
+		return b.read<uint16>();
+	case PType::Int32:
+		return b.read<int32>();
+	case PType::UInt32:
+		return b.read<uint32>();
+	case PType::Float32:
+		return b.read<float>();
+	case PType::Float64:
+		return b.read<double>();
+	}
+	return 0.0;
+}
+
+// Groups the scalar properties of an element into columns (see the file comment).
+void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex)
+{
+	auto find = [&](std::string_view n) -> Property* {
+		for (auto& p : e.props)
+			if (!p.is_list && p.column == -1 && p.name == n)
+				return &p;
+		return nullptr;
+	};
+	auto group = [&](const std::string& col, std::initializer_list<std::string_view> names) {
+		std::vector<Property*> ps;
+		for (auto n : names)
+		{
+			Property* p = find(n);
+			if (!p)
+				return;
+			ps.push_back(p);
+		}
+		for (const auto& c : cols)
+			if (c.name == col)
+				return;
+		cols.push_back(Column{col, uint32(ps.size()), {}});
+		for (uint32 k = 0; k < ps.size(); ++k)
+		{
+			ps[k]->column = int(cols.size() - 1);
+			ps[k]->component = k;
+		}
+	};
+	if (is_vertex)
+	{
+		static constexpr std::string_view xyz[3] = {"x", "y", "z"};
+		for (uint32 k = 0; k < 3; ++k)
+			if (Property* p = find(xyz[k]))
+			{
+				p->column = -2;
+				p->component = k;
+			}
+	}
+	group("normal", {"nx", "ny", "nz"});
+	group("color", {"red", "green", "blue"});
+	group("tex_coord", {"u", "v"});
+	group("tex_coord", {"s", "t"});
+	group("tex_coord", {"texture_u", "texture_v"});
+	for (auto& p : e.props)
+	{
+		if (p.is_list || p.column != -1 || p.name.size() < 3 || p.name.substr(p.name.size() - 2) != "_x")
+			continue;
+		const std::string base = p.name.substr(0, p.name.size() - 2);
+		if (find(base + "_z"))
+			group(base, {base + "_x", base + "_y", base + "_z"});
+		else
+			group(base, {base + "_x", base + "_y"});
+	}
+	for (auto& p : e.props)
+	{
+		if (p.is_list || p.column != -1)
+			continue;
+		bool taken = false;
+		for (const auto& c : cols)
+			taken = taken || c.name == p.name;
+		if (taken || p.name == "position")
+			continue;
+		cols.push_back(Column{p.name, 1, {}});
+		p.column = int(cols.size() - 1);
+	}
+}
+
+} // namespace
+
+MeshData read_ply(std::string_view data, const std::string& path)
+{
+	// ---- header
+	const std::size_t end_header = data.find("end_header");
+	if (data.substr(0, 3) != "ply")
+		throw Error(path, Error::Where::Line, 1, "not a PLY file: it does not start with 'ply'");
+	if (end_header == std::string_view::npos)
+		throw Error(path, "PLY header without 'end_header'");
+	std::size_t body = end_header + 10;
+	if (body < data.size() && data[body] == '\r')
+		++body;
+	if (body < data.size() && data[body] == '\n')
+		++body;
+	TextReader h(data.substr(0, end_header), path, '\0');
+	h.next_line();
+	int format = -1; // 0 ascii, 1 little endian, 2 big endian
+	std::vector<Element> elements;
+	while (!h.at_end())
+	{
+		std::string_view k = h.token_in_line();
+		if (k == "format")
+		{
+			std::string_view f = h.token_in_line();
+			if (f == "ascii")
+				format = 0;
+			else if (f == "binary_little_endian")
+				format = 1;
+			else if (f == "binary_big_endian")
+				format = 2;
+			else
+				h.fail("unknown PLY format '" + TextReader::printable(f) + "'");
+			h.rest_of_line();
+		}
+		else if (k == "comment" || k == "obj_info")
+			h.rest_of_line();
+		else if (k == "element")
+		{
+			Element e;
+			e.name = std::string(h.token_in_line());
+			const int64 c = h.to_int(h.token_in_line(), "an element count");
+			if (c < 0)
+				h.fail("negative element count");
+			e.count = uint64(c);
+			e.header_line = h.line();
+			elements.push_back(std::move(e));
+		}
+		else if (k == "property")
+		{
+			if (elements.empty())
+				h.fail("property before any element");
+			Property p;
+			std::string_view t = h.token_in_line();
+			if (t == "list")
+			{
+				p.is_list = true;
+				std::string_view ct = h.token_in_line();
+				auto c = parse_type(ct);
+				if (!c || !is_integer(*c))
+					h.fail("bad list count type '" + TextReader::printable(ct) + "'");
+				p.count_type = *c;
+				t = h.token_in_line();
+			}
+			auto ty = parse_type(t);
+			if (!ty)
+				h.fail("unknown property type '" + TextReader::printable(t) + "'");
+			p.type = *ty;
+			p.name = std::string(h.token_in_line());
+			if (p.name.empty())
+				h.fail("property without a name");
+			elements.back().props.push_back(std::move(p));
+		}
+		else if (k.empty())
+		{
+		}
+		else
+			h.fail("unknown PLY header keyword '" + TextReader::printable(k) + "'");
+		if (!h.at_eol())
+			h.fail("unexpected '" + TextReader::printable(h.token_in_line()) + "' in the header");
+	}
+	if (format < 0)
+		throw Error(path, "PLY header without a 'format' line");
+
+	MeshData d;
+	uint64 nv = 0;
+	bool have_vertex = false;
+	for (auto& e : elements)
+	{
+		if (e.name == "vertex")
+		{
+			have_vertex = true;
+			nv = e.count;
+			assign_columns(e, d.vertex_columns, true);
+			int found = 0;
+			for (const auto& p : e.props)
+				found += p.column == -2;
+			if (found != 3)
+				throw Error(path, Error::Where::Line, e.header_line, "the vertex element lacks x, y or z");
+		}
+		else if (e.name == "face")
+		{
+			assign_columns(e, d.cell_columns, false);
+			bool found = false;
+			for (auto& p : e.props)
+				if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index") && !found)
+				{
+					p.column = -2;
+					found = true;
+				}
+			if (!found)
+				throw Error(path, Error::Where::Line, e.header_line, "the face element has no vertex_indices list");
+		}
+	}
+	if (!have_vertex)
+		throw Error(path, "PLY file without a vertex element");
+
+	// ---- body
+	auto face_index = [&](auto& reader, double v) {
+		if (!(v >= 0.0) || v >= double(nv) || v != std::floor(v))
+			reader.fail("vertex index " + std::to_string(int64(v)) + " out of range (the file has " +
+						std::to_string(nv) + " vertices)");
+		d.cell_vertices.push_back(uint32(v));
+	};
+	auto prepare = [&](Element& e, auto& reader, uint64 min_bytes) {
+		reader.check_count(e.count, std::max<uint64>(min_bytes, 1), (e.name + " elements").c_str());
+		std::vector<Column>* cols = e.name == "vertex" ? &d.vertex_columns : e.name == "face" ? &d.cell_columns : nullptr;
+		if (cols)
+			for (auto& c : *cols)
+				c.values.reserve(e.count * c.dim);
+		if (e.name == "vertex")
+			d.positions.resize(3 * e.count);
+		if (e.name == "face")
+			d.cell_sizes.reserve(e.count);
+		return cols;
+	};
+	if (format == 0)
+	{
+		// line numbers continue the header's
+		TextReader r(data.substr(body), path, '\0',
+					 1 + uint64(std::count(data.begin(), data.begin() + std::ptrdiff_t(body), '\n')));
+		for (auto& e : elements)
+		{
+			std::vector<Column>* cols = prepare(e, r, 2 * std::max<std::size_t>(e.props.size(), 1));
+			const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
+			for (uint64 i = 0; i < e.count; ++i)
+			{
+				for (const auto& p : e.props)
+				{
+					if (p.is_list)
+					{
+						const int64 n = r.read_int("a list count");
+						if (n < 0 || uint64(n) > r.remaining() / 2)
+							r.fail("bad list count " + std::to_string(n));
+						if (is_face && p.column == -2)
+						{
+							d.cell_sizes.push_back(uint32(n));
+							for (int64 j = 0; j < n; ++j)
+								face_index(r, double(r.read_int("a vertex index")));
+						}
+						else
+							for (int64 j = 0; j < n; ++j)
+								r.read_double("a list value");
+						continue;
+					}
+					const double v = is_integer(p.type) ? double(r.read_int("an integer value"))
+														: r.read_double("a property value");
+					if (p.column == -2 && is_vertex)
+						d.positions[3 * i + p.component] = v;
+					else if (p.column >= 0 && cols)
+						(*cols)[std::size_t(p.column)].values.push_back(v);
+				}
+			}
+		}
+		if (!r.at_end())
+			r.fail("unexpected content after the declared elements");
+	}
+	else
+	{
+		ByteReader b(data, body, path, format == 2);
+		for (auto& e : elements)
+		{
+			uint64 min_bytes = 0;
+			for (const auto& p : e.props)
+				min_bytes += p.is_list ? type_size(p.count_type) : type_size(p.type);
+			std::vector<Column>* cols = prepare(e, b, min_bytes);
+			const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
+			for (uint64 i = 0; i < e.count; ++i)
+			{
+				for (const auto& p : e.props)
+				{
+					if (p.is_list)
+					{
+						const double n = read_binary(b, p.count_type);
+						if (n < 0 || n > double(b.remaining() / type_size(p.type)))
+							b.fail("bad list count " + std::to_string(int64(n)));
+						const uint32 k = uint32(n);
+						if (is_face && p.column == -2)
+						{
+							d.cell_sizes.push_back(k);
+							for (uint32 j = 0; j < k; ++j)
+								face_index(b, read_binary(b, p.type));
+						}
+						else
+							b.skip(std::size_t(k) * type_size(p.type));
+						continue;
+					}
+					const double v = read_binary(b, p.type);
+					if (!std::isfinite(v))
+						b.fail("property '" + p.name + "' is not finite: NaN and infinite values are rejected");
+					if (p.column == -2 && is_vertex)
+						d.positions[3 * i + p.component] = v;
+					else if (p.column >= 0 && cols)
+						(*cols)[std::size_t(p.column)].values.push_back(v);
+				}
+			}
+		}
+		if (b.remaining() != 0)
+			b.fail("unexpected " + std::to_string(b.remaining()) + " bytes after the declared elements");
+	}
+	return d;
+}
+
+namespace
+{
+
+bool byte_valued(const Column& c)
+{
+	return std::all_of(c.values.begin(), c.values.end(),
+					   [](double v) { return v >= 0.0 && v <= 255.0 && v == std::floor(v); });
+}
+
+// Header lines and per-element writers for a list of columns.
+struct ColumnLayout
+{
+	const Column* col;
+	bool as_byte;
+};
+
+std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& header)
+{
+	std::vector<ColumnLayout> out;
+	for (const auto& c : cols)
+	{
+		if (c.dim < 1 || c.dim > 3)
+			continue;
+		const bool as_byte = c.name == "color" && c.dim == 3 && byte_valued(c);
+		const char* type = as_byte ? "uchar" : "double";
+		auto prop = [&](const std::string& n) { header += std::string("property ") + type + " " + n + "\n"; };
+		if (c.name == "normal" && c.dim == 3)
+			for (auto n : {"nx", "ny", "nz"})
+				prop(n);
+		else if (c.name == "color" && c.dim == 3)
+			for (auto n : {"red", "green", "blue"})
+				prop(n);
+		else if (c.name == "tex_coord" && c.dim == 2)
+			for (auto n : {"u", "v"})
+				prop(n);
+		else if (c.dim == 1)
+			prop(c.name);
+		else
+			for (uint32 k = 0; k < c.dim; ++k)
+				prop(c.name + (k == 0 ? "_x" : k == 1 ? "_y" : "_z"));
+		out.push_back({&c, as_byte});
+	}
+	return out;
+}
+
+void put_columns(std::string& s, const std::vector<ColumnLayout>& cols, std::size_t i, bool binary)
+{
+	for (const auto& l : cols)
+		for (uint32 k = 0; k < l.col->dim; ++k)
+		{
+			const double v = l.col->values[i * l.col->dim + k];
+			if (binary)
+			{
+				if (l.as_byte)
+					s.push_back(char(uint8(v)));
+				else
+					append_raw(s, v);
+			}
+			else
+			{
+				s += ' ';
+				append_double(s, v);
+			}
+		}
+}
+
+} // namespace
+
+std::string write_ply(const MeshData& d, bool binary)
+{
+	std::string s = "ply\nformat ";
+	s += binary ? "binary_little_endian 1.0\n" : "ascii 1.0\n";
+	s += "comment written by cgogn\nelement vertex ";
+	append_uint(s, d.nb_vertices());
+	s += "\nproperty double x\nproperty double y\nproperty double z\n";
+	auto vcols = layout(d.vertex_columns, s);
+	uint32 max_degree = 0;
+	for (uint32 n : d.cell_sizes)
+		max_degree = std::max(max_degree, n);
+	const bool byte_count = max_degree < 256;
+	s += "element face ";
+	append_uint(s, d.nb_cells());
+	s += byte_count ? "\nproperty list uchar int vertex_indices\n" : "\nproperty list int int vertex_indices\n";
+	auto fcols = layout(d.cell_columns, s);
+	s += "end_header\n";
+	s.reserve(s.size() + std::size_t(d.nb_vertices()) * (binary ? 24 : 40) + d.cell_vertices.size() * 8);
+	for (uint32 v = 0; v < d.nb_vertices(); ++v)
+	{
+		for (uint32 k = 0; k < 3; ++k)
+		{
+			const double x = d.positions[3 * std::size_t(v) + k];
+			if (binary)
+				append_raw(s, x);
+			else
+			{
+				if (k > 0)
+					s += ' ';
+				append_double(s, x);
+			}
+		}
+		put_columns(s, vcols, v, binary);
+		if (!binary)
+			s += '\n';
+	}
+	std::size_t k = 0;
+	for (uint32 f = 0; f < d.nb_cells(); ++f)
+	{
+		const uint32 n = d.cell_sizes[f];
+		if (binary)
+		{
+			if (byte_count)
+				s.push_back(char(uint8(n)));
+			else
+				append_raw(s, int32(n));
+			for (uint32 i = 0; i < n; ++i)
+				append_raw(s, int32(d.cell_vertices[k++]));
+		}
+		else
+		{
+			append_uint(s, n);
+			for (uint32 i = 0; i < n; ++i)
+			{
+				s += ' ';
+				append_uint(s, d.cell_vertices[k++]);
+			}
+		}
+		put_columns(s, fcols, f, binary);
+		if (!binary)
+			s += '\n';
+	}
+	return s;
+}
+
+} // namespace cgogn::io::detail

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/io/volume.h>
+
+#include "file_io.h"
+#include "formats.h"
+#include "map_transfer.h"
+
+namespace cgogn::io
+{
+
+namespace
+{
+Format resolve(Format f, const std::string& path)
+{
+	if (f == Format::Auto)
+		f = format_from_extension(path);
+	if (f == Format::Auto)
+		throw Error(path, "unknown volume format: use .mesh, .vtk, .vtu, .msh or .node/.ele, or give the format");
+	if (f != Format::Medit && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Gmsh && f != Format::TetGen)
+		throw Error(path, std::string(format_name(f)) + " is not a volume format (use load_surface/save_surface)");
+	return f;
+}
+
+// foo.ele -> foo.node and the reverse
+std::string with_extension(const std::string& path, const char* ext)
+{
+	const std::size_t dot = path.find_last_of('.');
+	return (dot == std::string::npos ? path : path.substr(0, dot)) + ext;
+}
+} // namespace
+
+LoadReport load_volume(CMap3& m, const std::string& path, const LoadOptions& options)
+{
+	const Format f = resolve(options.format, path);
+	detail::MeshData d;
+	if (f == Format::TetGen)
+	{
+		const std::string node_path = with_extension(path, ".node"), ele_path = with_extension(path, ".ele");
+		const std::string node = detail::read_file(node_path), ele = detail::read_file(ele_path);
+		d = detail::read_tetgen(node, node_path, ele, ele_path);
+	}
+	else
+	{
+		const std::string data = detail::read_file(path);
+		switch (f)
+		{
+		case Format::Medit:
+			d = detail::read_medit(data, path);
+			break;
+		case Format::VtkLegacy:
+			d = detail::read_vtk(data, path);
+			break;
+		case Format::Vtu:
+			d = detail::read_vtu(data, path);
+			break;
+		default:
+			d = detail::read_gmsh(data, path);
+			break;
+		}
+	}
+	detail::validate(d, path);
+	const uint32 flipped = detail::orient_cells(d);
+	LoadReport r = detail::build_map(m, d, path);
+	r.format = f;
+	r.nb_cells_reoriented = flipped;
+	return r;
+}
+
+void save_volume(const CMap3& m, const std::string& path, const SaveOptions& options)
+{
+	const Format f = resolve(options.format, path);
+	const detail::MeshData d = detail::extract_volume(m, path, options.attributes);
+	switch (f)
+	{
+	case Format::Medit:
+		detail::write_file(path, detail::write_medit(d));
+		break;
+	case Format::VtkLegacy:
+		detail::write_file(path, detail::write_vtk(d, options.binary));
+		break;
+	case Format::Vtu:
+		detail::write_file(path, detail::write_vtu(d, options.binary));
+		break;
+	case Format::Gmsh:
+		detail::write_file(path, detail::write_gmsh(d, options.binary));
+		break;
+	default:
+	{
+		for (uint32 n : d.cell_sizes)
+			if (n != 4)
+				throw Error(path, "TetGen files hold tetrahedra only; the map has other volumes");
+		auto [node, ele] = detail::write_tetgen(d);
+		detail::write_file(with_extension(path, ".node"), node);
+		detail::write_file(with_extension(path, ".ele"), ele);
+		break;
+	}
+	}
+}
+
+} // namespace cgogn::io

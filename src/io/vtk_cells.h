@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// VTK cell types shared by the legacy (.vtk) and XML (.vtu) formats.
+#pragma once
+
+#include "mesh_data.h"
+
+#include <functional>
+#include <string>
+
+namespace cgogn::io::detail
+{
+
+/// Appends the volume cells of a VTK cell list to d (tetra 10, voxel 11,
+/// hexahedron 12, wedge 13, pyramid 14, corners of quadratic tetra 24 and
+/// hexahedron 25; lines and polygons are ignored) and the matching rows of
+/// `cell_data` to d's cell columns. `offsets` has one more entry than `types`
+/// (starting at 0). `fail(message)` must throw.
+void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std::vector<int64>& connectivity,
+					   const std::vector<int64>& types, const std::vector<Column>& cell_data,
+					   const std::function<void(const std::string&)>& fail);
+
+/// An integer read as a double, converted without overflow: values out of
+/// the int64 range (or NaN) become -1, which every consumer rejects.
+inline int64 to_int64(double v)
+{
+	return (v >= -4.0e18 && v <= 4.0e18) ? int64(v) : -1;
+}
+inline std::vector<int64> to_int64(const std::vector<double>& v)
+{
+	std::vector<int64> out(v.size());
+	for (std::size_t i = 0; i < v.size(); ++i)
+		out[i] = to_int64(v[i]);
+	return out;
+}
+
+/// The VTK type of a cell of n vertices (4, 5, 6 or 8).
+inline int32 vtk_cell_type(uint32 n)
+{
+	return n == 4 ? 10 : n == 5 ? 14 : n == 6 ? 13 : 12;
+}
+/// Which of our vertices is the i-th VTK vertex of a cell of n vertices (VTK's
+/// wedge has its base triangle the other way round).
+inline uint32 vtk_order(uint32 n, uint32 i)
+{
+	static constexpr uint32 wedge[6] = {0, 2, 1, 3, 5, 4};
+	return n == 6 ? wedge[i] : i;
+}
+
+} // namespace cgogn::io::detail

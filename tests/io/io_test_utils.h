@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// Helpers shared by the io tests: temporary files, maps with positions.
+#pragma once
+
+#include <cgogn/cgogn.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace cgogn::io_test
+{
+
+/// A fresh directory under the system's temporary folder, removed at exit.
+class TempDir
+{
+public:
+	TempDir()
+	{
+		auto base = std::filesystem::temp_directory_path();
+		for (int i = 0;; ++i)
+		{
+			path_ = base / ("cgogn_io_test_" + std::to_string(::getpid()) + "_" + std::to_string(i));
+			if (std::filesystem::create_directory(path_))
+				break;
+		}
+	}
+	~TempDir()
+	{
+		std::error_code ec;
+		std::filesystem::remove_all(path_, ec);
+	}
+	std::string file(const std::string& name) const
+	{
+		return (path_ / name).string();
+	}
+
+private:
+	std::filesystem::path path_;
+};
+
+inline void write_text(const std::string& path, const std::string& content)
+{
+	std::ofstream f(path, std::ios::binary);
+	f << content;
+}
+
+inline std::string read_text(const std::string& path)
+{
+	std::ifstream f(path, std::ios::binary);
+	return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+/// Builds a soup into m and sets the `position` attribute from its positions.
+template <typename MAP, typename SOUP>
+BuildReport build_with_positions(MAP& m, const SOUP& s)
+{
+	BuildReport r;
+	if constexpr (MAP::dimension == 2)
+		r = build_surface(m, s);
+	else
+		r = build_volume(m, s);
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	auto pos = get_attribute<Vec3, Vertex>(m, "position");
+	if (!pos)
+		pos = add_attribute<Vec3, Vertex>(m, "position");
+	for (uint32 i = 0; i < s.nb_vertices; ++i)
+		if (container_of<Vertex::ORBIT>(m).is_live(r.vertex_offset + i))
+			(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	return r;
+}
+
+} // namespace cgogn::io_test

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// The `cgogn` program, run as a user would: exit codes, JSON keys, errors on
+// stderr, no progress output when not on a terminal.
+#include <cgogn/cgogn.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io_test_utils.h"
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+using namespace cgogn;
+using namespace cgogn::io_test;
+
+namespace
+{
+
+struct ToolRun
+{
+	int status = -1;
+	std::string out;
+	std::string err;
+};
+
+// Runs the tool with the given arguments (shell-quoted by the caller);
+// stdout and stderr are captured through files, so neither is a terminal.
+ToolRun run_tool(const std::string& args, const TempDir& dir)
+{
+	const std::string out = dir.file("stdout"), err = dir.file("stderr");
+	const std::string cmd = std::string("'") + CGOGN_TOOL_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
+	ToolRun r;
+	const int s = std::system(cmd.c_str());
+	r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+	r.out = read_text(out);
+	r.err = read_text(err);
+	return r;
+}
+
+std::string example_mesh()
+{
+	return std::string(CGOGN_EXAMPLE_DATA_DIR) + "/spot_control_mesh.obj";
+}
+
+} // namespace
+
+TEST(Tool, InfoJsonHasTheDocumentedKeys)
+{
+	TempDir dir;
+	const ToolRun r = run_tool("info --json '" + example_mesh() + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(r.err, "") << "no progress output when stderr is not a terminal";
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	for (const char* k : {"dimension", "vertices", "edges", "faces", "boundary_components", "connected_components",
+						  "euler_characteristic", "genus", "manifold", "bbox", "isolated_vertices",
+						  "nonmanifold_vertices", "nonmanifold_edges", "edge_length", "face_degrees"})
+		EXPECT_TRUE(j.contains(k)) << k;
+	EXPECT_EQ(j["dimension"], 2);
+	EXPECT_EQ(j["vertices"], 188);
+	EXPECT_EQ(j["edges"], 366);
+	EXPECT_EQ(j["faces"], 180);
+	EXPECT_EQ(j["euler_characteristic"], 2);
+	EXPECT_EQ(j["genus"], 0);
+	EXPECT_EQ(j["manifold"], true);
+	EXPECT_EQ(j["face_degrees"]["3"], 4);
+	EXPECT_EQ(j["face_degrees"]["4"], 160);
+	EXPECT_EQ(j["face_degrees"]["5"], 16);
+	EXPECT_EQ(j["bbox"]["min"].size(), 3u);
+}
+
+TEST(Tool, VolumeInfoAndConvert)
+{
+	TempDir dir;
+	CMap3 m;
+	build_with_positions(m, tet_grid_soup(2, 2, 2));
+	io::save_volume(m, dir.file("g.mesh"));
+	ToolRun r = run_tool("convert '" + dir.file("g.mesh") + "' '" + dir.file("g.vtu") + "' --binary", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("info --json '" + dir.file("g.vtu") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["dimension"], 3);
+	EXPECT_EQ(j["volumes"], 48);
+	EXPECT_EQ(j["vertices"], 27);
+	EXPECT_EQ(j["euler_characteristic"], 1);
+	EXPECT_EQ(j["cell_kinds"]["tetrahedra"], 48);
+	EXPECT_EQ(j["manifold"], true);
+	// a volume cannot go to a surface format
+	r = run_tool("convert '" + dir.file("g.mesh") + "' '" + dir.file("g.off") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("surface format"), std::string::npos) << r.err;
+}
+
+TEST(Tool, CheckReportsIntegrityAndRepairs)
+{
+	TempDir dir;
+	write_text(dir.file("bowtie.off"), "OFF\n5 2 0\n0 0 0\n1 0 0\n0.5 0.5 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 4 3\n");
+	ToolRun r = run_tool("check --json '" + dir.file("bowtie.off") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["ok"], true);
+	EXPECT_EQ(j["manifold"], false);
+	EXPECT_EQ(j["nonmanifold_vertices"], 1);
+	r = run_tool("info --json '" + dir.file("bowtie.off") + "'", dir);
+	const nlohmann::json i = nlohmann::json::parse(r.out);
+	EXPECT_EQ(i["vertices"], 6) << "the shared vertex is split, one per fan";
+	EXPECT_EQ(i["manifold"], false);
+	r = run_tool("check '" + dir.file("bowtie.off") + "'", dir);
+	EXPECT_EQ(r.status, 0);
+	EXPECT_NE(r.out.find("integrity ok"), std::string::npos);
+}
+
+TEST(Tool, ErrorsGoToStderrWithNonZeroExit)
+{
+	TempDir dir;
+	write_text(dir.file("bad.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n");
+	ToolRun r = run_tool("info '" + dir.file("bad.off") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_EQ(r.out, "");
+	EXPECT_NE(r.err.find("bad.off:6: vertex index 9 out of range"), std::string::npos) << r.err;
+	r = run_tool("info '" + dir.file("missing.off") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("cannot open"), std::string::npos) << r.err;
+	r = run_tool("info '" + dir.file("x.unknown") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	r = run_tool("", dir);
+	EXPECT_NE(r.status, 0);
+	r = run_tool("frobnicate x", dir);
+	EXPECT_NE(r.status, 0);
+	r = run_tool("--help", dir);
+	EXPECT_EQ(r.status, 0);
+	EXPECT_NE(r.out.find("convert"), std::string::npos);
+}

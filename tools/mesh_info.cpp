@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/options.h>
+
+#include <cgogn/core/functions/attributes.h>
+#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/functions/traversals/global.h>
+
+#include "mesh_info.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace cgogn::tool
+{
+
+namespace
+{
+
+using nlohmann::json;
+
+template <typename MAP>
+void geometry(const MAP& m, json& j)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Edge = typename mesh_traits<MAP>::Edge;
+	auto pos = get_attribute<Vec3, Vertex>(m, "position");
+	if (!pos)
+		return;
+	Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+	foreach_cell(m, [&](Vertex v) {
+		const Vec3& p = value<Vec3>(m, *pos, v);
+		lo = lo.cwiseMin(p);
+		hi = hi.cwiseMax(p);
+	});
+	if (nb_cells<Vertex>(m) > 0)
+		j["bbox"] = {{"min", {lo[0], lo[1], lo[2]}}, {"max", {hi[0], hi[1], hi[2]}}};
+	else
+		j["bbox"] = nullptr;
+	double mn = std::numeric_limits<double>::infinity(), mx = 0.0, sum = 0.0;
+	uint64 n = 0;
+	foreach_cell(m, [&](Edge e) {
+		const double l = ((*pos)[index_of(m, Vertex(e.dart))] - (*pos)[index_of(m, Vertex(phi1(m, e.dart)))]).norm();
+		mn = std::min(mn, l);
+		mx = std::max(mx, l);
+		sum += l;
+		++n;
+	});
+	if (n > 0)
+		j["edge_length"] = {{"min", mn}, {"max", mx}, {"mean", sum / double(n)}};
+	else
+		j["edge_length"] = nullptr;
+}
+
+void load_report(const io::LoadReport& r, json& j)
+{
+	j["format"] = io::format_name(r.format);
+	j["manifold"] = r.manifold();
+	j["isolated_vertices"] = r.nb_isolated_vertices;
+	j["nonmanifold_vertices"] = r.nb_nonmanifold_vertices;
+	j["split_vertex_copies"] = r.nb_vertices_split;
+	j["nonmanifold_edges"] = r.nb_nonmanifold_edges;
+	j["skipped_cells"] = r.nb_cells_skipped;
+	j["holes_closed"] = r.nb_holes_closed;
+}
+
+} // namespace
+
+json surface_info(const CMap2& m, const io::LoadReport& r)
+{
+	json j;
+	j["dimension"] = 2;
+	const int64 v = nb_cells<CMap2::Vertex>(m), e = nb_cells<CMap2::Edge>(m), f = nb_cells<CMap2::Face>(m);
+	j["vertices"] = v;
+	j["edges"] = e;
+	j["faces"] = f;
+	j["halfedges"] = nb_darts(m);
+	uint64 boundary_edges = 0;
+	foreach_cell(m, [&](CMap2::Edge x) { boundary_edges += is_incident_to_boundary(m, x); });
+	j["boundary_edges"] = boundary_edges;
+	const uint32 bc = nb_boundary_components(m), cc = nb_connected_components(m);
+	j["boundary_components"] = bc;
+	j["connected_components"] = cc;
+	const int64 chi = v - e + f;
+	j["euler_characteristic"] = chi;
+	// closed orientable surfaces: chi = 2 cc - 2 g (total genus over the components)
+	if (bc == 0 && cc > 0 && (2 * int64(cc) - chi) % 2 == 0)
+		j["genus"] = (2 * int64(cc) - chi) / 2;
+	else
+		j["genus"] = nullptr;
+	load_report(r, j);
+	std::map<uint32, uint64> degrees;
+	foreach_cell(m, [&](CMap2::Face x) { ++degrees[codegree(static_cast<const CMap1&>(m), CMap1::Face(x.dart))]; });
+	json h = json::object();
+	for (auto [d, n] : degrees)
+		h[std::to_string(d)] = n;
+	j["face_degrees"] = h;
+	geometry(m, j);
+	return j;
+}
+
+json volume_info(const CMap3& m, const io::LoadReport& r)
+{
+	json j;
+	j["dimension"] = 3;
+	const int64 v = nb_cells<CMap3::Vertex>(m), e = nb_cells<CMap3::Edge>(m), f = nb_cells<CMap3::Face>(m),
+				w = nb_cells<CMap3::Volume>(m);
+	j["vertices"] = v;
+	j["edges"] = e;
+	j["faces"] = f;
+	j["volumes"] = w;
+	uint64 boundary_faces = 0;
+	foreach_cell(m, [&](CMap3::Face x) { boundary_faces += is_incident_to_boundary(m, x); });
+	j["boundary_faces"] = boundary_faces;
+	j["boundary_components"] = nb_boundary_components(m);
+	j["connected_components"] = nb_connected_components(m);
+	j["euler_characteristic"] = v - e + f - w;
+	load_report(r, j);
+	j["nonmanifold_faces"] = r.nb_nonmanifold_faces;
+	j["reoriented_cells"] = r.nb_cells_reoriented;
+	std::map<uint32, uint64> degrees;
+	foreach_cell(m, [&](CMap3::Face x) { ++degrees[codegree(m, x)]; });
+	json h = json::object();
+	for (auto [d, n] : degrees)
+		h[std::to_string(d)] = n;
+	j["face_degrees"] = h;
+	uint64 tets = 0, pyramids = 0, prisms = 0, hexes = 0, others = 0;
+	foreach_cell(m, [&](CMap3::Volume x) {
+		uint32 nf = 0, tri = 0, quad = 0;
+		foreach_incident_face(m, x, [&](CMap3::Face fc) {
+			const uint32 d = codegree(m, fc);
+			++nf;
+			tri += d == 3;
+			quad += d == 4;
+		});
+		if (nf == 4 && tri == 4)
+			++tets;
+		else if (nf == 5 && tri == 4)
+			++pyramids;
+		else if (nf == 5 && tri == 2 && quad == 3)
+			++prisms;
+		else if (nf == 6 && quad == 6)
+			++hexes;
+		else
+			++others;
+	});
+	j["cell_kinds"] = {{"tetrahedra", tets}, {"pyramids", pyramids}, {"prisms", prisms}, {"hexahedra", hexes},
+					   {"other", others}};
+	geometry(m, j);
+	return j;
+}
+
+std::string info_text(const json& j)
+{
+	std::ostringstream s;
+	auto line = [&](const char* label, const json& v) {
+		s << label << ": ";
+		if (v.is_null())
+			s << "-";
+		else if (v.is_string())
+			s << v.get<std::string>();
+		else
+			s << v.dump();
+		s << "\n";
+	};
+	for (const char* k : {"file", "format", "dimension", "vertices", "edges", "faces", "volumes", "halfedges",
+						  "boundary_edges", "boundary_faces", "boundary_components", "connected_components",
+						  "euler_characteristic", "genus", "manifold", "isolated_vertices", "nonmanifold_vertices",
+						  "split_vertex_copies", "nonmanifold_edges", "nonmanifold_faces", "skipped_cells",
+						  "holes_closed", "reoriented_cells", "cell_kinds", "face_degrees", "bbox", "edge_length"})
+		if (j.contains(k))
+			line(k, j[k]);
+	return s.str();
+}
+
+} // namespace cgogn::tool

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// What `cgogn info` reports about a loaded map, as a JSON object.
+#pragma once
+
+#include <cgogn/io/options.h>
+
+#include <cgogn/core/types/maps/cmap3.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace cgogn::tool
+{
+
+/// Cell counts (boundary cells excluded), boundary and connected components,
+/// Euler characteristic, genus (closed surfaces), what the load repaired,
+/// bounding box, edge lengths and face degrees (and cell kinds for volumes).
+/// Keys: see the README's `cgogn info` section. O(size of m).
+nlohmann::json surface_info(const CMap2& m, const io::LoadReport& r);
+nlohmann::json volume_info(const CMap3& m, const io::LoadReport& r);
+
+/// The same information as readable text lines.
+std::string info_text(const nlohmann::json& info);
+
+} // namespace cgogn::tool
