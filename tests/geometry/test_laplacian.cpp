@@ -69,6 +69,32 @@ TEST(Laplacian, MatricesAreSymmetricWithZeroRowSums)
 	expect_symmetric_zero_rows(U);
 }
 
+TEST(Laplacian, CotanIsNegativeSemiDefiniteOnNoisyMeshes)
+{
+	for (bool triangles : {true, false})
+	{
+		CMap2 m;
+		auto pos = build_with_positions(m, torus_soup(12, 8, triangles));
+		uint32 i = 0;
+		for (Vec3& p : *pos)
+			p += 0.08 * Vec3(test::noise(i), test::noise(i + 300), test::noise(i + 600)), ++i;
+		const VertexNumbering num = vertex_numbering(m);
+		const SparseMatrix L = cotan_laplacian(m, *pos, num);
+		bool some_negative_weight = false;
+		for (int c = 0; c < L.outerSize(); ++c)
+			for (SparseMatrix::InnerIterator e(L, c); e; ++e)
+				some_negative_weight = some_negative_weight || (e.row() != e.col() && e.value() < 0.0);
+		EXPECT_TRUE(some_negative_weight); // obtuse angles are present
+		for (uint32 k = 0; k < 20; ++k)
+		{
+			Eigen::VectorXd f(num.size());
+			for (uint32 j = 0; j < num.size(); ++j)
+				f(j) = test::noise(1000 * k + j);
+			EXPECT_LE(f.dot(L * f), 1e-12);
+		}
+	}
+}
+
 TEST(Laplacian, CotanWeightsOfAKnownGrid)
 {
 	// each unit square split along (i, j)-(i+1, j+1): the diagonals face right

@@ -135,6 +135,7 @@ TEST(Measures, VolumeMeshFacesAndEdges)
 	// faces: 4*2*2 + 3*3*2 + 3*2*3
 	EXPECT_DOUBLE_EQ(surface_area(m, *pos), 16.0 + 18.0 + 18.0);
 	EXPECT_DOUBLE_EQ(mean_edge_length(m, *pos), 1.0);
+	EXPECT_DOUBLE_EQ(boundary_area(m, *pos), 2.0 * (6.0 + 6.0 + 4.0));
 	const BoundingBox bb = bounding_box(m, *pos);
 	EXPECT_EQ(bb.min(), Vec3(0, 0, 0));
 	EXPECT_EQ(bb.max(), Vec3(3, 2, 2));

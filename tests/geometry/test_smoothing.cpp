@@ -192,3 +192,12 @@ TEST(Smoothing, BilateralKeepsASharpEdge)
 	const Vertex corner = test::closest_vertex(fine, *fpos, Vec3(1, 1, 1));
 	EXPECT_GT(vertex_normal(fine, corner, *fpos).dot(Vec3(1, 1, 1).normalized()), 0.98);
 }
+
+TEST(Smoothing, ImplicitReportsASingularSystem)
+{
+	CMap2 m;
+	auto pos = build_with_positions(m, sphere_soup(8, 5, true));
+	for (Vec3& p : *pos)
+		p = Vec3(1, 2, 3); // collapsed: no area, no weights
+	EXPECT_THROW(implicit_smoothing(m, *pos, 1.0), Error);
+}

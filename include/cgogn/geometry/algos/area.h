@@ -36,4 +36,16 @@ double surface_area(const MESH& m, const Attribute<Vec3>& pos)
 	return a;
 }
 
+/// Area of the boundary surface of a 3-map: the faces between a volume and
+/// the outside. O(number of darts).
+inline double boundary_area(const CMap3& m, const Attribute<Vec3>& pos)
+{
+	double a = 0.0;
+	foreach_cell(m, [&](CMap3::Face f) {
+		if (is_boundary(m, f.dart) || is_boundary(m, phi3(m, f.dart)))
+			a += face_area(m, f, pos);
+	});
+	return a;
+}
+
 } // namespace cgogn::geometry

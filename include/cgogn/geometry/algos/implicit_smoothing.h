@@ -7,6 +7,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <cassert>
 #include <vector>
 
 namespace cgogn::geometry
@@ -20,14 +21,16 @@ namespace cgogn::geometry
 /// uniform Laplacian M is the identity and t counts explicit steps. L is
 /// rebuilt from the current positions at each iteration. Boundary vertices
 /// are fixed unless `fix_boundary` is false (they enter the right-hand side).
-/// Stable for any t > 0. O(iterations x factorization cost, about
-/// n^1.5 for a surface of n vertices). Throws cgogn::Error when the system
-/// cannot be factorized (degenerate faces, t <= 0).
+/// Stable for any t > 0 (precondition, asserted). O(iterations x
+/// factorization cost, about n^1.5 for a surface of n vertices). Throws
+/// cgogn::Error when the system cannot be factorized (e.g. a singular system
+/// from a mesh collapsed to a point).
 template <SurfaceMesh MESH>
 void implicit_smoothing(const MESH& m, Attribute<Vec3>& pos, double t, uint32 iterations = 1,
 						bool use_uniform_laplacian = false, bool fix_boundary = true)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
+	assert(t > 0.0 && "implicit_smoothing: the time step must be positive");
 	const VertexNumbering num = vertex_numbering(m);
 	const uint32 n = num.size();
 	// row_of[i]: row of dense vertex i in the system, INVALID_INDEX when fixed

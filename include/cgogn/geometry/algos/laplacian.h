@@ -19,8 +19,10 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 /// Cotangent Laplacian L of a surface, indexed by the dense numbering `num`:
 /// L(i, j) = (cot a_ij + cot b_ij) / 2 for the edge (i, j) of two triangles,
 /// L(i, i) = -sum_j L(i, j). Symmetric, zero row sums, negative semi-definite
-/// when the angles are not obtuse; (L x)_i is the integrated Laplace-Beltrami
-/// of x at vertex i (divide by the vertex area for the pointwise value).
+/// (minus the stiffness matrix of linear finite elements; off-diagonal
+/// entries turn negative across obtuse angles); (L x)_i is the integrated
+/// Laplace-Beltrami of x at vertex i (divide by the vertex area for the
+/// pointwise value).
 /// Polygons use the virtual refinement of detail::FaceStiffness (vertices of a
 /// polygon that share no edge get weights too). Boundary edges have a
 /// single cotangent (natural Neumann condition). O(sum of squared face degrees).

@@ -25,14 +25,13 @@ struct PrincipalCurvatures
 /// one-ring B of v: T = (1 / area(B)) sum_e beta(e) |e n B| e e^T with beta the
 /// signed dihedral angle (positive where convex) and e the unit edge
 /// direction; edges incident to v count fully, the other edges of the
-/// incident faces (on the border of B) by half. T has a near-zero eigenvalue
-/// along the normal; its two others are the principal curvatures with their
-/// directions swapped (the direction of the largest eigenvalue is the
-/// direction of least curvature); they are taken from T restricted to the
-/// tangent plane of the area-weighted vertex normal. Signs follow mean_curvature (a sphere with
-/// outward faces has k = 1 / radius). Works on any polygons; at boundary
-/// vertices the estimate only sees the inner side. O(sum of the squared
-/// degrees of the incident faces).
+/// incident faces (on the border of B) by half. Restricted to the tangent
+/// plane of the area-weighted vertex normal, T has the principal curvatures
+/// as eigenvalues with their directions swapped (the eigenvector of the
+/// largest one is the direction of least curvature). Signs follow
+/// mean_curvature (a sphere with outward faces has k = 1 / radius). Works on
+/// any polygons; at boundary vertices the estimate only sees the inner side.
+/// O(sum of the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
 PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MESH>::Vertex v,
 										 const Attribute<Vec3>& pos)
