@@ -5,6 +5,7 @@
 #include <cgogn/core/functions/traversals/local_cmap2.h>
 #include <cgogn/geometry/algos/normal.h>
 
+#include <cassert>
 #include <cmath>
 #include <vector>
 
@@ -36,12 +37,14 @@ struct BilateralNormalFilteringParams
 /// (x_v += mean over incident faces f of n_f (n_f . (c_f - x_v))). Any
 /// polygons (Newell normals, vertex centroids). O((normal_iterations x sum of
 /// the face one-ring sizes) + vertex_iterations x number of darts); scratch
-/// arrays of one entry per dart and per face, allocated once.
+/// arrays of one entry per dart and per face, allocated once. Preconditions:
+/// sigma_r > 0, sigma_s >= 0.
 template <SurfaceMesh MESH>
 void bilateral_normal_filtering(const MESH& m, Attribute<Vec3>& pos, const BilateralNormalFilteringParams& p = {})
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	using Face = typename mesh_traits<MESH>::Face;
+	assert(p.sigma_r > 0.0 && p.sigma_s >= 0.0);
 
 	// number the faces densely through their darts: no face attribute needed
 	std::vector<uint32> face_of_dart(map_of(m).darts_->end_index(), INVALID_INDEX);

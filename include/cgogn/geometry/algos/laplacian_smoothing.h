@@ -5,6 +5,7 @@
 #include <cgogn/core/functions/traversals/local_cmap3.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
+#include <cassert>
 #include <vector>
 
 namespace cgogn::geometry
@@ -71,6 +72,7 @@ template <GeometricMesh MESH>
 void laplacian_smoothing(const MESH& m, Attribute<Vec3>& pos, uint32 iterations, double lambda = 0.5,
 						 bool fix_boundary = true)
 {
+	assert(lambda > 0.0 && lambda <= 1.0);
 	detail::UniformSmoother<MESH> s(m, fix_boundary);
 	for (uint32 k = 0; k < iterations; ++k)
 		s.step(pos, lambda);
@@ -80,11 +82,13 @@ void laplacian_smoothing(const MESH& m, Attribute<Vec3>& pos, uint32 iterations,
 /// Laplacian step with factor lambda > 0 followed by one with mu < -lambda,
 /// a low-pass filter with pass-band frequency 1/lambda + 1/mu that removes
 /// noise without the shrinking of plain Laplacian smoothing. Boundary as in
-/// laplacian_smoothing. O(iterations x number of darts).
+/// laplacian_smoothing. O(iterations x number of darts). Preconditions:
+/// lambda > 0, mu < -lambda.
 template <GeometricMesh MESH>
 void taubin_smoothing(const MESH& m, Attribute<Vec3>& pos, uint32 iterations, double lambda = 0.5,
 					  double mu = -0.53, bool fix_boundary = true)
 {
+	assert(lambda > 0.0 && mu < -lambda);
 	detail::UniformSmoother<MESH> s(m, fix_boundary);
 	for (uint32 k = 0; k < iterations; ++k)
 	{
