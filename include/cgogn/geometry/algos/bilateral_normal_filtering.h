@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/geometry/algos/normal.h>
+
+#include <cassert>
+#include <cmath>
+#include <vector>
+
+namespace cgogn::geometry
+{
+
+/// Parameters of bilateral_normal_filtering.
+struct BilateralNormalFilteringParams
+{
+	/// Passes of the normal filter.
+	uint32 normal_iterations = 20;
+	/// Passes of the vertex update that fits the faces to the filtered normals.
+	uint32 vertex_iterations = 10;
+	/// Range (normal difference) scale sigma_r of the Gaussian weight.
+	double sigma_r = 0.35;
+	/// Spatial scale sigma_s; 0 means the mean distance between the centroids
+	/// of edge-adjacent faces.
+	double sigma_s = 0.0;
+	/// Keep boundary vertices in place.
+	bool fix_boundary = true;
+};
+
+/// Mesh denoising by bilateral filtering of the face normals (Zheng, Fu, Au,
+/// Tai 2011): each face normal is replaced by the area-weighted average of the
+/// normals of the faces sharing a vertex with it (itself included), weighted
+/// by Gaussians of the centroid distance (sigma_s) and of the normal
+/// difference (sigma_r), so that sharp edges survive; then the vertices are
+/// moved so that the faces become orthogonal to the filtered normals
+/// (x_v += mean over incident faces f of n_f (n_f . (c_f - x_v))). Any
+/// polygons (Newell normals, vertex centroids). O((normal_iterations x sum of
+/// the face one-ring sizes) + vertex_iterations x number of darts); scratch
+/// arrays of one entry per dart and per face, allocated once. Preconditions:
+/// sigma_r > 0, sigma_s >= 0.
+template <SurfaceMesh MESH>
+void bilateral_normal_filtering(const MESH& m, Attribute<Vec3>& pos, const BilateralNormalFilteringParams& p = {})
+{
+	using Vertex = typename mesh_traits<MESH>::Vertex;
+	using Face = typename mesh_traits<MESH>::Face;
+	assert(p.sigma_r > 0.0 && p.sigma_s >= 0.0);
+
+	// number the faces densely through their darts: no face attribute needed
+	std::vector<uint32> face_of_dart(map_of(m).darts_->end_index(), INVALID_INDEX);
+	std::vector<Dart> faces;
+	foreach_cell(m, [&](Face f) {
+		foreach_dart_of_orbit(m, f, [&](Dart d) { face_of_dart[d.index] = uint32(faces.size()); });
+		faces.push_back(f.dart);
+	});
+	const std::size_t nf = faces.size();
+	std::vector<Vec3> normal(nf), filtered(nf), center(nf);
+	std::vector<double> area(nf);
+	auto update_faces = [&] {
+		for (std::size_t i = 0; i < nf; ++i)
+		{
+			const Vec3 n = newell_vector(m, pos, faces[i]);
+			area[i] = 0.5 * n.norm();
+			normal[i] = area[i] > 0.0 ? Vec3(n / (2.0 * area[i])) : Vec3::Zero();
+			Vec3 c = Vec3::Zero();
+			uint32 k = 0;
+			foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) {
+				c += origin_position(m, pos, d);
+				++k;
+			});
+			center[i] = c / k;
+		}
+	};
+	update_faces();
+
+	double sigma_s = p.sigma_s;
+	if (sigma_s <= 0.0)
+	{
+		double sum = 0.0;
+		uint32 k = 0;
+		for (std::size_t i = 0; i < nf; ++i)
+			foreach_adjacent_face_through_edge(m, Face(faces[i]), [&](Face g) {
+				sum += (center[i] - center[face_of_dart[g.dart.index]]).norm();
+				++k;
+			});
+		sigma_s = k > 0 ? sum / k : 1.0;
+	}
+	const double ws = -0.5 / (sigma_s * sigma_s);
+	const double wr = -0.5 / (p.sigma_r * p.sigma_r);
+
+	for (uint32 it = 0; it < p.normal_iterations; ++it)
+	{
+		for (std::size_t i = 0; i < nf; ++i)
+		{
+			Vec3 s = area[i] * normal[i];
+			foreach_adjacent_face_through_vertex(m, Face(faces[i]), [&](Face g) {
+				const uint32 j = face_of_dart[g.dart.index];
+				const double w = area[j] * std::exp(ws * (center[i] - center[j]).squaredNorm()) *
+								 std::exp(wr * (normal[i] - normal[j]).squaredNorm());
+				s += w * normal[j];
+			});
+			const double l = s.norm();
+			filtered[i] = l > 0.0 ? Vec3(s / l) : normal[i];
+		}
+		normal.swap(filtered);
+	}
+
+	std::vector<uint8> moves(map_of(m).cells_[orbit_index(Vertex::ORBIT)]->end_index(), 0);
+	foreach_cell(m, [&](Vertex v) { moves[index_of(m, v)] = !(p.fix_boundary && is_incident_to_boundary(m, v)); });
+	std::vector<Vec3> delta(moves.size(), Vec3::Zero());
+	for (uint32 it = 0; it < p.vertex_iterations; ++it)
+	{
+		if (it > 0) // centroids follow the vertices; the target normals stay
+			for (std::size_t i = 0; i < nf; ++i)
+			{
+				Vec3 c = Vec3::Zero();
+				uint32 k = 0;
+				foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) {
+					c += origin_position(m, pos, d);
+					++k;
+				});
+				center[i] = c / k;
+			}
+		foreach_cell(m, [&](Vertex v) {
+			const uint32 iv = index_of(m, v);
+			if (!moves[iv])
+				return;
+			const Vec3& x = pos[iv];
+			Vec3 s = Vec3::Zero();
+			uint32 k = 0;
+			foreach_incident_face(m, v, [&](Face f) {
+				const uint32 j = face_of_dart[f.dart.index];
+				s += normal[j] * normal[j].dot(center[j] - x);
+				++k;
+			});
+			delta[iv] = k > 0 ? Vec3(s / k) : Vec3::Zero();
+		});
+		foreach_cell(m, [&](Vertex v) {
+			const uint32 iv = index_of(m, v);
+			if (moves[iv])
+				pos[iv] += delta[iv];
+		});
+	}
+}
+
+} // namespace cgogn::geometry

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/functions/traversals/local_cmap3.h>
+#include <cgogn/geometry/algos/normal.h>
+
+namespace cgogn::geometry
+{
+
+// Volumes by the divergence theorem. Each face, seen from a reference point
+// o, is split into the triangles (c, p_i, p_i+1) fanned around its vertex
+// centroid c; the signed volumes of the tetrahedra (o, c, p_i, p_i+1) sum to
+// (c - o) . N / 6 with N the face's Newell vector. The fan around the centroid
+// is the same from both sides of a face, so non-planar faces (e.g. twisted
+// hexahedra faces) are closed consistently: the volumes of the cells of a 3-map
+// add up to the volume of the solid, and the result does not depend on o.
+
+namespace detail
+{
+/// Signed volume of the cone from o over the face cycle of dart d. O(face degree).
+template <GeometricMesh MESH>
+double face_cone_volume(const MESH& m, const Attribute<Vec3>& pos, Dart d, const Vec3& o)
+{
+	Vec3 c = Vec3::Zero();
+	uint32 n = 0;
+	Dart it = d;
+	do
+	{
+		c += origin_position(m, pos, it);
+		++n;
+		it = phi1(m, it);
+	} while (it != d);
+	c /= n;
+	return (c - o).dot(newell_vector(m, pos, d)) / 6.0;
+}
+} // namespace detail
+
+/// Signed volume enclosed by a closed surface (all its components), positive
+/// when the faces are oriented outwards (counterclockwise seen from outside).
+/// Precondition: no boundary (otherwise the value depends on the position of
+/// the mesh). O(number of darts).
+template <SurfaceMesh MESH>
+double signed_volume(const MESH& m, const Attribute<Vec3>& pos)
+{
+	using Face = typename mesh_traits<MESH>::Face;
+	bool first = true;
+	Vec3 o = Vec3::Zero();
+	double v = 0.0;
+	foreach_cell(m, [&](Face f) {
+		if (first)
+			o = origin_position(m, pos, f.dart);
+		first = false;
+		v += detail::face_cone_volume(m, pos, f.dart, o);
+	});
+	return v;
+}
+
+/// Signed volume enclosed by one connected component w of a closed surface.
+/// O(number of darts of w).
+template <SurfaceMesh MESH>
+double volume(const MESH& m, typename mesh_traits<MESH>::Volume w, const Attribute<Vec3>& pos)
+{
+	using Face = typename mesh_traits<MESH>::Face;
+	const Vec3 o = origin_position(m, pos, w.dart);
+	double v = 0.0;
+	foreach_incident_face(m, w, [&](Face f) { v += detail::face_cone_volume(m, pos, f.dart, o); });
+	return v;
+}
+
+/// Volume of volume w of a 3-map (any polyhedron: its faces are fanned around
+/// their vertex centroids). Positive for the cells built by build_volume
+/// (faces oriented outwards). O(number of darts of w).
+inline double volume(const CMap3& m, CMap3::Volume w, const Attribute<Vec3>& pos)
+{
+	const Vec3 o = origin_position(m, pos, w.dart);
+	double v = 0.0;
+	// the faces are given by darts of w: their phi1 cycles are seen from w
+	foreach_incident_face(m, w, [&](CMap3::Face f) { v += detail::face_cone_volume(m, pos, f.dart, o); });
+	return v;
+}
+
+/// Writes the volume of every volume of a 3-map into the volume attribute
+/// `out`. O(number of darts).
+inline void compute_volumes(const CMap3& m, const Attribute<Vec3>& pos, Attribute<double>& out)
+{
+	foreach_cell(m, [&](CMap3::Volume w) { value<double>(m, out, w) = volume(m, w, pos); });
+}
+
+/// Volume of the solid made by a 3-map, from its boundary surface alone (the
+/// faces between a volume and the outside). Equal to the sum of the volumes of
+/// its cells up to rounding. O(number of darts).
+inline double solid_volume(const CMap3& m, const Attribute<Vec3>& pos)
+{
+	bool first = true;
+	Vec3 o = Vec3::Zero();
+	double v = 0.0;
+	foreach_cell(m, [&](CMap3::Face f) {
+		Dart d = f.dart;
+		if (is_boundary(m, d))
+			d = phi3(m, d);
+		else if (!is_boundary(m, phi3(m, d)))
+			return; // inner face
+		if (first)
+			o = origin_position(m, pos, d);
+		first = false;
+		v += detail::face_cone_volume(m, pos, d, o);
+	});
+	return v;
+}
+
+/// Centre of mass of volume w of a 3-map (uniform density), from the same
+/// decomposition into tetrahedra as volume(). The vertex centroid when the
+/// volume is zero. O(number of darts of w).
+inline Vec3 mass_center(const CMap3& m, CMap3::Volume w, const Attribute<Vec3>& pos)
+{
+	const Vec3 o = origin_position(m, pos, w.dart);
+	double vol = 0.0;
+	Vec3 moment = Vec3::Zero();
+	Vec3 vertex_sum = Vec3::Zero();
+	uint32 nb = 0;
+	foreach_incident_face(m, w, [&](CMap3::Face f) {
+		Vec3 c = Vec3::Zero();
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) {
+			c += origin_position(m, pos, d);
+			++n;
+		});
+		c /= n;
+		foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) {
+			const Vec3& a = origin_position(m, pos, d);
+			const Vec3& b = origin_position(m, pos, phi1(m, d));
+			const double t = (c - o).dot((a - o).cross(b - o)) / 6.0;
+			vol += t;
+			moment += t * (o + c + a + b) / 4.0;
+		});
+	});
+	foreach_incident_vertex(m, w, [&](CMap3::Vertex v) {
+		vertex_sum += value<Vec3>(m, pos, v);
+		++nb;
+	});
+	if (vol == 0.0)
+		return nb > 0 ? Vec3(vertex_sum / nb) : vertex_sum;
+	return moment / vol;
+}
+
+} // namespace cgogn::geometry
