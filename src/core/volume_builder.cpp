@@ -6,6 +6,7 @@
 #include "builder_common.h"
 #include "cmap3_build.h"
 
+#include <algorithm>
 #include <array>
 
 namespace cgogn
@@ -66,11 +67,16 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 		++offsets[origin(d) + 1];
 	for (uint32 v = 0; v < nb_vertices; ++v)
 		offsets[v + 1] += offsets[v];
-	std::vector<Dart> outgoing(darts.size());
+	// darts leaving each vertex, sorted by the vertex they go to: a mate is
+	// found by binary search (real meshes have vertices with hundreds of darts)
+	std::vector<std::pair<uint32, Dart>> outgoing(darts.size());
 	{
 		std::vector<uint32> pos(offsets.begin(), offsets.end() - 1);
 		for (Dart d : darts)
-			outgoing[pos[origin(d)]++] = d;
+			outgoing[pos[origin(d)]++] = {target(d), d};
+		for (uint32 v = 0; v < nb_vertices; ++v)
+			std::sort(outgoing.begin() + offsets[v], outgoing.begin() + offsets[v + 1],
+					  [](const auto& x, const auto& y) { return x.first < y.first; });
 	}
 	// true when the face of e is the face of d seen from the other side
 	auto faces_match = [&](Dart d, Dart e) {
@@ -86,10 +92,12 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	};
 	auto find_mate = [&](Dart d, bool free_only) {
 		const uint32 a = origin(d), b = target(d);
-		for (uint32 i = offsets[b]; i < offsets[b + 1]; ++i)
+		auto first = outgoing.begin() + offsets[b], last = outgoing.begin() + offsets[b + 1];
+		auto it = std::lower_bound(first, last, a, [](const auto& x, uint32 v) { return x.first < v; });
+		for (; it != last && it->first == a; ++it)
 		{
-			const Dart e = outgoing[i];
-			if (e != d && target(e) == a && (!free_only || phi3(m, e) == e) && faces_match(d, e))
+			const Dart e = it->second;
+			if (e != d && (!free_only || phi3(m, e) == e) && faces_match(d, e))
 				return e;
 		}
 		return Dart();
