@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// The side-by-side suites of issue 7 (BENCHMARKS.md): surface/<workload>/<library>,
+// volume/<workload>/<library>, memory/<suite>/<library>. Libraries register
+// their workloads from their own translation unit; peers not found at
+// configure time are simply absent. Extra option: --input=data|generated|small.
+#include "inputs.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+	std::vector<char*> args;
+	try
+	{
+		for (int i = 0; i < argc; ++i)
+		{
+			if (std::strncmp(argv[i], "--input=", 8) == 0)
+				cgogn_bench::set_input(argv[i] + 8);
+			else
+				args.push_back(argv[i]);
+		}
+	}
+	catch (const std::exception& e)
+	{
+		std::fprintf(stderr, "bench_suite: %s\n", e.what());
+		return 2;
+	}
+	int n = int(args.size());
+	benchmark::Initialize(&n, args.data());
+	if (benchmark::ReportUnrecognizedArguments(n, args.data()))
+		return 1;
+	benchmark::AddCustomContext("compiler_flags", "-O3 -DNDEBUG (no -march=native)");
+	// the input is described lazily: loading it is only paid by runs that use it
+	benchmark::RunSpecifiedBenchmarks();
+	benchmark::Shutdown();
+	return 0;
+}
