@@ -3,6 +3,7 @@
 
 #include <malloc.h>
 #include <sys/resource.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -40,6 +41,13 @@ void register_bench(const std::string& name, Kind kind, std::function<void(bench
 		b->Repetitions(env_int("CGOGN_BENCH_TOPO_REPS", 3));
 	else
 		b->Repetitions(1);
+}
+
+double thread_seconds()
+{
+	timespec ts;
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 std::size_t heap_bytes()

@@ -30,8 +30,13 @@ enum class Kind
 /// on the first repetition (read-only workloads warm up then).
 void register_bench(const std::string& name, Kind kind, std::function<void(benchmark::State&, bool)> fn);
 
-/// Runs one repetition: reset() untimed, work() timed (once per benchmark
-/// iteration), warm-up first when asked.
+/// CPU time of the calling thread, in seconds. The benchmarks report it
+/// rather than wall time: the machine is shared, and descheduling would
+/// otherwise be counted (wall time is kept in the counter "wall_ms").
+double thread_seconds();
+
+/// Runs one repetition: reset() untimed, work() timed (thread CPU time, once
+/// per benchmark iteration), warm-up first when asked.
 template <typename Reset, typename Work>
 void timed(benchmark::State& state, bool warm_up, Reset&& reset, Work&& work)
 {
@@ -40,14 +45,18 @@ void timed(benchmark::State& state, bool warm_up, Reset&& reset, Work&& work)
 		reset();
 		work();
 	}
+	double wall = 0;
 	for (auto _ : state)
 	{
 		reset();
+		const double c0 = thread_seconds();
 		const auto t0 = std::chrono::steady_clock::now();
 		work();
 		const auto t1 = std::chrono::steady_clock::now();
-		state.SetIterationTime(std::chrono::duration<double>(t1 - t0).count());
+		state.SetIterationTime(thread_seconds() - c0);
+		wall += std::chrono::duration<double>(t1 - t0).count();
 	}
+	state.counters["wall_ms"] = wall * 1e3;
 }
 
 /// A check value (all libraries must report the same; compared by report.py).
