@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <numeric>
+#include <random>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -15,6 +17,7 @@ namespace
 {
 
 std::string input_kind;
+uint32_t permutation_seed = 0;
 
 std::string data_path(const char* rel)
 {
@@ -45,6 +48,39 @@ void set_input(const std::string& k)
 	input_kind = k;
 }
 
+void set_permutation_seed(uint32_t seed)
+{
+	permutation_seed = seed;
+}
+
+cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed)
+{
+	std::mt19937 rng(seed);
+	std::vector<uint32_t> new_id(s.nb_vertices);
+	std::iota(new_id.begin(), new_id.end(), 0u);
+	std::shuffle(new_id.begin(), new_id.end(), rng);
+	std::vector<uint32_t> offset(s.face_sizes.size() + 1, 0);
+	for (std::size_t f = 0; f < s.face_sizes.size(); ++f)
+		offset[f + 1] = offset[f] + s.face_sizes[f];
+	std::vector<uint32_t> face_order(s.face_sizes.size());
+	std::iota(face_order.begin(), face_order.end(), 0u);
+	std::shuffle(face_order.begin(), face_order.end(), rng);
+	cgogn::SurfaceSoup r;
+	r.nb_vertices = s.nb_vertices;
+	r.positions.resize(s.nb_vertices);
+	for (uint32_t v = 0; v < s.nb_vertices; ++v)
+		r.positions[new_id[v]] = s.positions[v];
+	r.face_sizes.reserve(s.face_sizes.size());
+	r.face_vertices.reserve(s.face_vertices.size());
+	for (uint32_t f : face_order)
+	{
+		r.face_sizes.push_back(s.face_sizes[f]);
+		for (uint32_t k = offset[f]; k < offset[f + 1]; ++k)
+			r.face_vertices.push_back(new_id[s.face_vertices[k]]);
+	}
+	return r;
+}
+
 cgogn::SurfaceSoup load_surface_soup(const std::string& path)
 {
 	auto s = read_obj_soup(path);
@@ -64,11 +100,14 @@ cgogn::VolumeSoup load_volume_soup(const std::string& path)
 const cgogn::SurfaceSoup& surface_soup()
 {
 	static const cgogn::SurfaceSoup soup = [] {
+		cgogn::SurfaceSoup s;
 		if (kind() == "data")
-			return refine_1_to_4(refine_1_to_4(load_surface_soup(data_path("surface/nefertiti.obj"))));
-		if (kind() == "small")
-			return cgogn::torus_soup(40, 30, true);
-		return cgogn::torus_soup(1000, 800, true);
+			s = refine_1_to_4(refine_1_to_4(load_surface_soup(data_path("surface/nefertiti.obj"))));
+		else if (kind() == "small")
+			s = cgogn::torus_soup(40, 30, true);
+		else
+			s = cgogn::torus_soup(1000, 800, true);
+		return permutation_seed != 0 ? permute_soup(s, permutation_seed) : s;
 	}();
 	return soup;
 }
@@ -96,6 +135,8 @@ std::string input_description()
 	std::string d = kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
 									 : (kind() == "small" ? "small torus and tet grid"
 														  : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
+	if (permutation_seed != 0)
+		d += "; surface ids permuted with seed " + std::to_string(permutation_seed);
 	return d + " (surface V=" + std::to_string(s.nb_vertices) + " F=" + std::to_string(s.face_sizes.size()) +
 		   "; volume V=" + std::to_string(v.nb_vertices) + " T=" + std::to_string(v.cell_sizes.size()) + ")";
 }

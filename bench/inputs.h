@@ -20,6 +20,12 @@ namespace cgogn_bench
 
 /// Selects the input ("data", "generated", "small"); call before the benchmarks run.
 void set_input(const std::string& kind);
+/// --permute=SEED: the surface soup's vertex ids and face order are randomly
+/// permuted (std::mt19937 with this seed) before any library builds from it:
+/// badly ordered files are what users load, and order dominates traversal cost.
+void set_permutation_seed(uint32_t seed);
+/// Returns s with vertex ids and face order permuted (same mesh).
+cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed);
 /// What the inputs are, for the benchmark context (e.g. "nefertiti.obj x2 refined: V=..., F=...").
 std::string input_description();
 

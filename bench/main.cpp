@@ -2,12 +2,14 @@
 // The side-by-side suites of issue 7 (BENCHMARKS.md): surface/<workload>/<library>,
 // volume/<workload>/<library>, memory/<suite>/<library>. Libraries register
 // their workloads from their own translation unit; peers not found at
-// configure time are simply absent. Extra option: --input=data|generated|small.
+// configure time are simply absent. Extra options: --input=data|generated|small,
+// --permute=SEED (surface soup with randomly permuted vertex ids and face order).
 #include "inputs.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -21,6 +23,8 @@ int main(int argc, char** argv)
 		{
 			if (std::strncmp(argv[i], "--input=", 8) == 0)
 				cgogn_bench::set_input(argv[i] + 8);
+			else if (std::strncmp(argv[i], "--permute=", 10) == 0)
+				cgogn_bench::set_permutation_seed(uint32_t(std::strtoul(argv[i] + 10, nullptr, 10)));
 			else
 				args.push_back(argv[i]);
 		}
@@ -35,7 +39,11 @@ int main(int argc, char** argv)
 	if (benchmark::ReportUnrecognizedArguments(n, args.data()))
 		return 1;
 	benchmark::AddCustomContext("compiler_flags", "-O3 -DNDEBUG (no -march=native)");
-	// the input is described lazily: loading it is only paid by runs that use it
+	bool listing = false;
+	for (int i = 0; i < n; ++i)
+		listing = listing || std::strncmp(args[std::size_t(i)], "--benchmark_list_tests", 22) == 0;
+	if (!listing) // describing the input loads it (the soups are shared by all benchmarks)
+		benchmark::AddCustomContext("input", cgogn_bench::input_description());
 	benchmark::RunSpecifiedBenchmarks();
 	benchmark::Shutdown();
 	return 0;

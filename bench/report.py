@@ -194,6 +194,8 @@ def main(argv):
             f"Machine: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
             f"run {context.get('date', '?')}; flags {context.get('compiler_flags', '?')}.\n"
         )
+        if "input" in context:
+            out.append(f"Input: {context['input']}.\n")
     for s in SUITES:
         out.append(time_tables(runs, s))
     out.append(memory_table(runs))
