@@ -324,6 +324,7 @@ void collapse(benchmark::State& state, bool)
 void dynamic(benchmark::State& state, bool)
 {
 	std::unique_ptr<LccSurface> me = fresh();
+	trim_heap();
 	Lcc& m = me->m;
 	for (auto _ : state)
 	{
@@ -344,11 +345,7 @@ void dynamic(benchmark::State& state, bool)
 				collapse_vertex(m, dv);
 			const double dt = thread_seconds() - t0;
 			total += dt;
-			char key[32];
-			std::snprintf(key, sizeof key, "batch%02u_ms", b);
-			state.counters[key] = dt * 1e3;
-			std::snprintf(key, sizeof key, "batch%02u_rss_MB", b);
-			state.counters[key] = double(resident_bytes()) / 1e6;
+			record_batch(state, b, dt);
 		}
 		state.SetIterationTime(total);
 	}

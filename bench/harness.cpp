@@ -43,6 +43,17 @@ void register_bench(const std::string& name, Kind kind, std::function<void(bench
 		b->Repetitions(1);
 }
 
+void record_batch(benchmark::State& state, unsigned b, double seconds)
+{
+	char key[32];
+	std::snprintf(key, sizeof key, "batch%02u_ms", b);
+	state.counters[key] = seconds * 1e3;
+	std::snprintf(key, sizeof key, "batch%02u_rss_MB", b);
+	state.counters[key] = double(resident_bytes()) / 1e6;
+	std::snprintf(key, sizeof key, "batch%02u_heap_MB", b);
+	state.counters[key] = double(heap_bytes()) / 1e6;
+}
+
 double thread_seconds()
 {
 	timespec ts;

@@ -95,6 +95,10 @@ private:
 	static inline std::shared_ptr<void> object_;
 };
 
+/// Records batch b of the dynamic-editing workload: its time (ms), the
+/// resident memory of the process and the bytes held by the allocator (MB).
+void record_batch(benchmark::State& state, unsigned b, double seconds);
+
 /// Bytes currently allocated by malloc (mallinfo2().uordblks + hblkhd).
 std::size_t heap_bytes();
 /// Resident set size of the process, in bytes (/proc/self/statm).

@@ -264,6 +264,7 @@ void collapse(benchmark::State& state, bool)
 void dynamic(benchmark::State& state, bool)
 {
 	std::unique_ptr<Mesh> mp = fresh();
+	trim_heap();
 	Mesh& m = *mp;
 	for (auto _ : state)
 	{
@@ -285,11 +286,7 @@ void dynamic(benchmark::State& state, bool)
 			m.garbage_collection();
 			const double dt = thread_seconds() - t0;
 			total += dt;
-			char key[32];
-			std::snprintf(key, sizeof key, "batch%02u_ms", b);
-			state.counters[key] = dt * 1e3;
-			std::snprintf(key, sizeof key, "batch%02u_rss_MB", b);
-			state.counters[key] = double(resident_bytes()) / 1e6;
+			record_batch(state, b, dt);
 		}
 		state.SetIterationTime(total);
 	}

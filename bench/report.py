@@ -155,6 +155,7 @@ def dynamic_table(runs):
         b = e[-1]
         t = [b[k] for k in sorted(b) if k.startswith("batch") and k.endswith("_ms")]
         r = [b[k] for k in sorted(b) if k.startswith("batch") and k.endswith("_rss_MB")]
+        h = [b[k] for k in sorted(b) if k.startswith("batch") and k.endswith("_heap_MB")] or [0.0] * len(t)
         if not t:
             continue
         pick = [0, 9, 24, len(t) - 1]
@@ -163,14 +164,14 @@ def dynamic_table(runs):
             + " | ".join(f"{t[i]:.1f}" for i in pick)
             + f" | {max(t) / min(t):.2f} | "
             + " | ".join(f"{r[i]:.0f}" for i in pick)
-            + f" | {r[-1] - r[0]:+.0f} |"
+            + f" | {r[-1] - r[0]:+.0f} | {h[0]:.0f} | {h[-1]:.0f} |"
         )
     if not rows:
         return ""
     head = [
         "### dynamic editing: 50 batches (split 10% of the faces, collapse back, garbage collection for peers)\n",
-        "| library | batch 1 ms | batch 10 ms | batch 25 ms | batch 50 ms | max/min time | RSS 1 MB | RSS 10 MB | RSS 25 MB | RSS 50 MB | RSS 50 - RSS 1 MB |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
+        "| library | batch 1 ms | batch 10 ms | batch 25 ms | batch 50 ms | max/min time | RSS 1 MB | RSS 10 MB | RSS 25 MB | RSS 50 MB | RSS 50 - RSS 1 MB | heap 1 MB | heap 50 MB |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     return "\n".join(head + rows) + "\n"
 
