@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Day-one speed of the core: the surface "circulator" and "smoothing"
 // workloads of BENCHMARKS.md on a generated closed triangle mesh of 1M faces,
 // with cells visited by walking darts with a marker ("plain") and by walking

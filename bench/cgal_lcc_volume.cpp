@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: MIT
+// CGAL Linear_cell_complex_for_combinatorial_map<3>'s side of the volume
+// suite (read-only workloads): vertex attributes with the point and the soup
+// index (info), 3-attributes holding the stored barycenter. Built with
+// Linear_cell_complex_incremental_builder_3 (one closed surface per tet,
+// 3-sewn to its neighbours by the builder); cells walked through their
+// attribute containers and one_dart_per_incident_cell ranges.
+// Split and collapse are not run for the LCC: it has no public operator that
+// inserts a vertex in a 3-cell (insert_point_in_cell is for 1- and 2-cells)
+// nor a tet-mesh edge collapse; see bench/README.md.
+#include "harness.h"
+#include "inputs.h"
+#include "workload_rules.h"
+
+#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
+#include <CGAL/Linear_cell_complex_incremental_builder.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <limits>
+#include <vector>
+
+namespace cgogn_bench
+{
+
+namespace
+{
+
+using K = CGAL::Simple_cartesian<double>;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+
+struct Items
+{
+	template <class LCC>
+	struct Dart_wrapper
+	{
+		using Vertex_attribute = CGAL::Cell_attribute_with_point<LCC, uint32_t>; // info: soup index
+		using Volume_attribute = CGAL::Cell_attribute<LCC, Point>;				  // info: barycenter
+		using Attributes = std::tuple<Vertex_attribute, void, void, Volume_attribute>;
+	};
+};
+
+using Lcc = CGAL::Linear_cell_complex_for_combinatorial_map<3, 3, CGAL::Linear_cell_complex_traits<3, K>, Items>;
+using DH = Lcc::Dart_handle;
+using VAH = Lcc::Vertex_attribute_handle;
+
+struct LccVolume
+{
+	Lcc m;
+	std::vector<VAH> vertices; // in soup order
+	std::vector<Point> buffer; // second buffer of the Jacobi smoothing, by soup index
+
+	LccVolume(const cgogn::VolumeSoup& s, bool with_volume_attributes)
+	{
+		CGAL::Linear_cell_complex_incremental_builder_3<Lcc> b(m);
+		for (uint32_t i = 0; i < s.nb_vertices; ++i)
+		{
+			const auto& p = s.positions[i];
+			vertices.push_back(b.add_vertex(Point(p[0], p[1], p[2])));
+			vertices.back()->info() = i;
+		}
+		std::size_t k = 0;
+		for (uint32_t n : s.cell_sizes)
+		{
+			if (n == 4) // a positive tet (a, b, c, d): its four faces oriented outwards
+			{
+				const uint32_t* t = &s.cell_vertices[k];
+				b.begin_surface();
+				b.add_facet({t[0], t[2], t[1]});
+				b.add_facet({t[0], t[1], t[3]});
+				b.add_facet({t[1], t[2], t[3]});
+				b.add_facet({t[2], t[0], t[3]});
+				b.end_surface();
+			}
+			k += n;
+		}
+		if (with_volume_attributes)
+		{
+			for (auto d = m.one_dart_per_cell<3>().begin(); d != m.one_dart_per_cell<3>().end(); ++d)
+				m.set_attribute<3>(d, m.create_attribute<3>(Point(0, 0, 0)));
+			buffer.resize(s.nb_vertices);
+		}
+	}
+	void reset_positions()
+	{
+		const auto& s = volume_soup();
+		for (uint32_t i = 0; i < s.nb_vertices; ++i)
+			vertices[i]->point() = Point(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	}
+};
+
+LccVolume& mesh()
+{
+	return Cache::get<LccVolume>("cgal_lcc/volume", [] { return std::make_unique<LccVolume>(volume_soup(), true); });
+}
+
+void circulator(benchmark::State& state, bool first)
+{
+	Lcc& m = mesh().m;
+	int64_t c = 0, incidences = 0;
+	timed(
+		state, first, [] {},
+		[&] {
+			c = 0;
+			for (auto& v : m.vertex_attributes())
+				for (auto it = m.one_dart_per_incident_cell<3, 0>(v.dart()).begin(),
+						  end = m.one_dart_per_incident_cell<3, 0>(v.dart()).end();
+					 it != end; ++it)
+					++c;
+			incidences = c;
+			for (auto& w : m.attributes<3>())
+				for (auto it = m.one_dart_per_incident_cell<0, 3, 2>(w.dart()).begin(),
+						  end = m.one_dart_per_incident_cell<0, 3, 2>(w.dart()).end();
+					 it != end; ++it)
+					--c;
+			benchmark::DoNotOptimize(c);
+		});
+	set_check(state, "check", double(c));
+	set_check(state, "check_incidences", double(incidences));
+}
+
+void circulator2(benchmark::State& state, bool first)
+{
+	LccVolume& me = mesh();
+	Lcc& m = me.m;
+	int64_t total = 0;
+	std::vector<uint32_t> last(me.vertices.size());
+	timed(
+		state, first, [&] { std::fill(last.begin(), last.end(), std::numeric_limits<uint32_t>::max()); },
+		[&] {
+			total = 0;
+			for (auto& v : m.vertex_attributes())
+			{
+				const uint32_t i = v.info();
+				for (auto w = m.one_dart_per_incident_cell<3, 0>(v.dart()).begin(),
+						  wend = m.one_dart_per_incident_cell<3, 0>(v.dart()).end();
+					 w != wend; ++w)
+					for (auto u = m.one_dart_per_incident_cell<0, 3, 2>(w).begin(),
+							  uend = m.one_dart_per_incident_cell<0, 3, 2>(w).end();
+						 u != uend; ++u)
+					{
+						const uint32_t j = m.vertex_attribute(u)->info();
+						if (j != i && last[j] != i)
+						{
+							last[j] = i;
+							++total;
+						}
+					}
+			}
+			benchmark::DoNotOptimize(total);
+		});
+	set_check(state, "check", double(total));
+}
+
+void barycenter(benchmark::State& state, bool first)
+{
+	Lcc& m = mesh().m;
+	timed(
+		state, first, [] {},
+		[&] {
+			// the vertices of a tet as 2-D vertices of its own surface (<0, 3, 2>):
+			// (barycenter<3> and <0, 3> mark whole 3-D vertex orbits: much slower)
+			for (auto& w : m.attributes<3>())
+			{
+				Vector b(0, 0, 0);
+				int n = 0;
+				for (auto it = m.one_dart_per_incident_cell<0, 3, 2>(w.dart()).begin(),
+						  end = m.one_dart_per_incident_cell<0, 3, 2>(w.dart()).end();
+					 it != end; ++it, ++n)
+					b = b + (m.point(it) - CGAL::ORIGIN);
+				w.info() = CGAL::ORIGIN + b / double(n);
+			}
+		});
+	double s = 0;
+	for (auto& w : m.attributes<3>())
+		s += w.info().x() + w.info().y() + w.info().z();
+	set_check(state, "check", s);
+}
+
+void smoothing_pass(LccVolume& me)
+{
+	Lcc& m = me.m;
+	for (auto& v : m.vertex_attributes())
+	{
+		Vector s(0, 0, 0);
+		int n = 0;
+		for (auto it = m.one_dart_per_incident_cell<1, 0>(v.dart()).begin(),
+				  end = m.one_dart_per_incident_cell<1, 0>(v.dart()).end();
+			 it != end; ++it, ++n)
+			s = s + (m.point(m.other_extremity(it)) - CGAL::ORIGIN);
+		me.buffer[v.info()] = CGAL::ORIGIN + s / double(n);
+	}
+	for (auto& v : m.vertex_attributes())
+		v.point() = me.buffer[v.info()];
+}
+
+void smoothing(benchmark::State& state, bool first)
+{
+	LccVolume& me = mesh();
+	timed(
+		state, first, [&] { me.reset_positions(); }, [&] { smoothing_pass(me); });
+	me.reset_positions();
+	for (uint32_t i = 0; i < volume_smoothing_check_passes; ++i)
+		smoothing_pass(me);
+	double s = 0;
+	for (auto& v : me.m.vertex_attributes())
+		s += v.point().x() + v.point().y() + v.point().z();
+	set_check(state, "check", s);
+}
+
+void memory(benchmark::State& state, bool)
+{
+	Cache::clear();
+	const auto& s = volume_soup();
+	std::size_t bytes = 0;
+	for (auto _ : state)
+	{
+		trim_heap();
+		const std::size_t before = heap_bytes();
+		auto me = std::make_unique<LccVolume>(s, false);
+		me->vertices = {};
+		me->vertices.shrink_to_fit(); // the handle table is the benchmark's, not the structure's
+		bytes = heap_bytes() - before;
+		state.SetIterationTime(1e-9);
+		benchmark::DoNotOptimize(me.get());
+	}
+	state.counters["bytes"] = double(bytes);
+	state.counters["bytes_per_tet"] = double(bytes) / double(s.cell_sizes.size());
+	state.counters["bytes_per_vertex"] = double(bytes) / double(s.nb_vertices);
+	state.counters["peak_rss_MB"] = double(peak_resident_bytes()) / 1e6;
+}
+
+const bool registered = [] {
+	register_bench("volume/circulator/cgal_lcc", Kind::read_only, circulator);
+	register_bench("volume/circulator2/cgal_lcc", Kind::read_only, circulator2);
+	register_bench("volume/barycenter/cgal_lcc", Kind::read_only, barycenter);
+	register_bench("volume/smoothing/cgal_lcc", Kind::read_only, smoothing);
+	register_bench("memory/volume/cgal_lcc", Kind::single, memory);
+	return true;
+}();
+
+} // namespace
+
+} // namespace cgogn_bench

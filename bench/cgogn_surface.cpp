@@ -1,0 +1,336 @@
+// SPDX-License-Identifier: MIT
+// cgogn's side of the surface suite: a CMap2 with double positions and
+// vertex and face normals (Vec3 attributes), built from the shared soup.
+// "plain" mode: no incidence cache; cells are visited by walking the indexed
+// containers (foreach_cell) and the local traversals of local_cmap2.h.
+#include "cgogn_topology.h"
+#include "harness.h"
+#include "inputs.h"
+#include "workload_rules.h"
+
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include <Eigen/Geometry> // cross(): vector_traits.h includes Eigen/Core only
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace cgogn_bench
+{
+
+namespace
+{
+
+using namespace cgogn;
+using Vertex = CMap2::Vertex;
+using Edge = CMap2::Edge;
+using Face = CMap2::Face;
+
+struct CgognSurface
+{
+	CMap2 map;
+	std::shared_ptr<Attribute<Vec3>> position, vnormal, fnormal;
+	uint32 vertex_offset = 0;
+
+	explicit CgognSurface(const SurfaceSoup& s)
+	{
+		vertex_offset = build_surface(map, s).vertex_offset;
+		position = add_attribute<Vec3, Vertex>(map, "position");
+		vnormal = add_attribute<Vec3, Vertex>(map, "normal");
+		fnormal = add_attribute<Vec3, Face>(map, "normal");
+		reset_positions(s);
+	}
+	void reset_positions(const SurfaceSoup& s)
+	{
+		for (uint32 i = 0; i < s.nb_vertices; ++i)
+			(*position)[vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	}
+};
+
+CgognSurface& mesh()
+{
+	return Cache::get<CgognSurface>("cgogn/surface", [] { return std::make_unique<CgognSurface>(surface_soup()); });
+}
+
+double position_sum(const CgognSurface& me)
+{
+	double s = 0;
+	foreach_cell(me.map, [&](Vertex v) {
+		const Vec3& p = value<Vec3>(me.map, *me.position, v);
+		s += p[0] + p[1] + p[2];
+	});
+	return s;
+}
+
+void circulator(benchmark::State& state, bool first)
+{
+	const CMap2& m = mesh().map;
+	int64 c = 0;
+	timed(
+		state, first, [] {},
+		[&] {
+			c = 0;
+			foreach_cell(m, [&](Vertex v) { foreach_incident_face(m, v, [&](Face) { ++c; }); });
+			foreach_cell(m, [&](Face f) { foreach_incident_vertex(m, f, [&](Vertex) { --c; }); });
+			benchmark::DoNotOptimize(c);
+		});
+	set_check(state, "check", double(c));
+}
+
+void barycenter(benchmark::State& state, bool first)
+{
+	CgognSurface& me = mesh();
+	const CMap2& m = me.map;
+	Attribute<Vec3>& pos = *me.position;
+	timed(
+		state, first, [&] { me.reset_positions(surface_soup()); },
+		[&] {
+			// the values of the live vertices, walked in line order (Attribute's range)
+			Vec3 b = Vec3::Zero();
+			uint32 n = 0;
+			for (const Vec3& p : pos)
+			{
+				b += p;
+				++n;
+			}
+			b /= double(n);
+			for (Vec3& p : pos)
+				p -= b;
+		});
+	double s = 0;
+	foreach_cell(m, [&](Vertex v) { s += value<Vec3>(m, pos, v).cwiseAbs().sum(); });
+	set_check(state, "check", s);
+}
+
+void normal(benchmark::State& state, bool first)
+{
+	CgognSurface& me = mesh();
+	const CMap2& m = me.map;
+	const Attribute<Vec3>& pos = *me.position;
+	Attribute<Vec3>& fn = *me.fnormal;
+	Attribute<Vec3>& vn = *me.vnormal;
+	timed(
+		state, first, [] {},
+		[&] {
+			foreach_cell(m, [&](Face f) {
+				const Dart d0 = f.dart, d1 = phi1(m, d0), d2 = phi1(m, d1);
+				const Vec3& p0 = value<Vec3>(m, pos, Vertex(d0));
+				value<Vec3>(m, fn, f) =
+					(value<Vec3>(m, pos, Vertex(d1)) - p0).cross(value<Vec3>(m, pos, Vertex(d2)) - p0).normalized();
+			});
+			foreach_cell(m, [&](Vertex v) {
+				Vec3 n = Vec3::Zero();
+				foreach_incident_face(m, v, [&](Face f) { n += value<Vec3>(m, fn, f); });
+				value<Vec3>(m, vn, v) = n.normalized();
+			});
+		});
+	double s = 0;
+	foreach_cell(m, [&](Vertex v) { s += value<Vec3>(m, vn, v).sum(); });
+	set_check(state, "check", s);
+}
+
+void smoothing(benchmark::State& state, bool first)
+{
+	CgognSurface& me = mesh();
+	const CMap2& m = me.map;
+	Attribute<Vec3>& pos = *me.position;
+	timed(
+		state, first, [&] { me.reset_positions(surface_soup()); },
+		[&] {
+			// one walk around each vertex finds the neighbours and the boundary
+			// (is_incident_to_boundary then foreach_adjacent_vertex_through_edge
+			// would walk twice): dart d leaves v, phi2(d) leaves the neighbour
+			foreach_cell(m, [&](Vertex v) {
+				Vec3 s = Vec3::Zero();
+				uint32 n = 0;
+				const bool inner = foreach_dart_of_orbit(m, v, [&](Dart d) {
+					if (is_boundary(m, d))
+						return false;
+					s += value<Vec3>(m, pos, Vertex(phi2(m, d)));
+					++n;
+					return true;
+				});
+				if (inner)
+					value<Vec3>(m, pos, v) = s / double(n);
+			});
+		});
+	set_check(state, "check", position_sum(me));
+}
+
+void memory(benchmark::State& state, bool)
+{
+	Cache::clear();
+	const SurfaceSoup& s = surface_soup();
+	std::size_t bytes = 0;
+	for (auto _ : state)
+	{
+		trim_heap();
+		const std::size_t before = heap_bytes();
+		auto me = std::make_unique<CgognSurface>(s);
+		bytes = heap_bytes() - before;
+		state.SetIterationTime(1e-9);
+		benchmark::DoNotOptimize(me.get());
+	}
+	const double nf = double(s.face_sizes.size()), nv = double(s.nb_vertices);
+	state.counters["bytes"] = double(bytes);
+	state.counters["bytes_per_face"] = double(bytes) / nf;
+	state.counters["bytes_per_vertex"] = double(bytes) / nv;
+	state.counters["peak_rss_MB"] = double(peak_resident_bytes()) / 1e6;
+}
+
+#if CGOGN_BENCH_HAS_TOPOLOGY
+// ---- topology workloads, written against the planned operators (see cgogn_topology.h)
+
+std::unique_ptr<CgognSurface> fresh()
+{
+	Cache::clear();
+	return std::make_unique<CgognSurface>(surface_soup());
+}
+
+void set_counts_and_checksum(benchmark::State& state, const CgognSurface& me)
+{
+	set_check(state, "check_V", double(nb_cells<Vertex>(me.map)));
+	set_check(state, "check_F", double(nb_cells<Face>(me.map)));
+	set_check(state, "check", position_sum(me));
+}
+
+Vec3 centroid(const CMap2& m, const Attribute<Vec3>& pos, Face f)
+{
+	Vec3 c = Vec3::Zero();
+	uint32 n = 0;
+	foreach_incident_vertex(m, f, [&](Vertex v) {
+		c += value<Vec3>(m, pos, v);
+		++n;
+	});
+	return c / double(n);
+}
+
+void subdivision(benchmark::State& state, bool)
+{
+	std::unique_ptr<CgognSurface> me;
+	timed(
+		state, false, [&] { me = fresh(); },
+		[&] {
+			CMap2& m = me->map;
+			Attribute<Vec3>& pos = *me->position;
+			// new positions of the original vertices, kept aside (by vertex line)
+			std::vector<Vec3> moved(container_of<Vertex::ORBIT>(m).end_index());
+			std::vector<Vertex> old_vertices;
+			foreach_cell(m, [&](Vertex v) {
+				old_vertices.push_back(v);
+				if (is_incident_to_boundary(m, v))
+				{
+					moved[index_of(m, v)] = value<Vec3>(m, pos, v);
+					return;
+				}
+				Vec3 s = Vec3::Zero();
+				uint32 n = 0;
+				foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+					s += value<Vec3>(m, pos, w);
+					++n;
+				});
+				const double a = sqrt3_alpha(n);
+				moved[index_of(m, v)] = (1 - a) * value<Vec3>(m, pos, v) + a / n * s;
+			});
+			std::vector<Face> faces;
+			foreach_cell(m, [&](Face f) { faces.push_back(f); });
+			std::vector<Edge> edges;
+			foreach_cell(m, [&](Edge e) { edges.push_back(e); });
+			for (Face f : faces)
+			{
+				const Vec3 c = centroid(m, pos, f);
+				value<Vec3>(m, pos, triangulate_face(m, f)) = c;
+			}
+			for (Vertex v : old_vertices)
+				value<Vec3>(m, pos, v) = moved[index_of(m, v)];
+			for (Edge e : edges)
+				if (edge_can_flip(m, e))
+					flip_edge(m, e);
+		});
+	set_counts_and_checksum(state, *me);
+}
+
+void collapse(benchmark::State& state, bool)
+{
+	std::unique_ptr<CgognSurface> me;
+	timed(
+		state, false, [&] { me = fresh(); },
+		[&] {
+			CMap2& m = me->map;
+			Attribute<Vec3>& pos = *me->position;
+			std::vector<Face> faces;
+			foreach_cell(m, [&](Face f) { faces.push_back(f); });
+			std::vector<Vertex> added;
+			added.reserve(faces.size());
+			for (Face f : faces)
+				added.push_back(triangulate_face(m, f));
+			for (Vertex v : added)
+			{
+				// the edge from v to a neighbour w: v disappears, w stays where it was
+				const Dart d = v.dart;
+				const Vec3 keep = value<Vec3>(m, pos, Vertex(phi1(m, d)));
+				value<Vec3>(m, pos, collapse_edge(m, Edge(d))) = keep;
+			}
+			compact(m);
+		});
+	set_counts_and_checksum(state, *me);
+}
+
+void dynamic(benchmark::State& state, bool)
+{
+	std::unique_ptr<CgognSurface> me = fresh();
+	trim_heap();
+	CMap2& m = me->map;
+	for (auto _ : state)
+	{
+		double total = 0;
+		for (uint32 b = 0; b < dynamic_batches; ++b)
+		{
+			const double t0 = thread_seconds();
+			std::vector<Face> faces;
+			uint32 rank = 0;
+			foreach_cell(m, [&](Face f) {
+				if (dynamic_selected(rank++, b))
+					faces.push_back(f);
+			});
+			std::vector<Vertex> added;
+			for (Face f : faces)
+				added.push_back(triangulate_face(m, f));
+			for (Vertex v : added)
+				collapse_edge(m, Edge(v.dart));
+			const double dt = thread_seconds() - t0;
+			total += dt;
+			record_batch(state, b, dt);
+		}
+		state.SetIterationTime(total);
+	}
+	set_check(state, "check_V", double(nb_cells<Vertex>(m)));
+	set_check(state, "check_F", double(nb_cells<Face>(m)));
+}
+#endif
+
+const bool registered = [] {
+	register_bench("surface/circulator/cgogn", Kind::read_only, circulator);
+	register_bench("surface/barycenter/cgogn", Kind::read_only, barycenter);
+	register_bench("surface/normal/cgogn", Kind::read_only, normal);
+	register_bench("surface/smoothing/cgogn", Kind::read_only, smoothing);
+#if CGOGN_BENCH_HAS_TOPOLOGY
+	register_bench("surface/subdivision/cgogn", Kind::topology, subdivision);
+	register_bench("surface/collapse/cgogn", Kind::topology, collapse);
+	register_bench("surface/dynamic/cgogn", Kind::single, dynamic);
+#endif
+	// REGISTRATION POINT (cgogn_quick): with CGOGN_BENCH_HAS_QUICK, register
+	// surface/<workload>/cgogn_quick for the four read-only workloads above,
+	// running the same lambdas on the map with incidence caches enabled
+	// (vertex->face, face->vertex, vertex->vertex), the cache build reported
+	// as a separate benchmark surface/cache_build/cgogn_quick.
+	register_bench("memory/surface/cgogn", Kind::single, memory);
+	return true;
+}();
+
+} // namespace
+
+} // namespace cgogn_bench

@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: MIT
+// cgogn's side of the volume suite: a CMap3 with double positions (and a
+// volume attribute for the stored barycenters), built from the shared tet
+// soup. "plain" mode: no incidence cache; the local traversals of
+// local_cmap3.h.
+#include "cgogn_topology.h"
+#include "harness.h"
+#include "inputs.h"
+#include "workload_rules.h"
+
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace cgogn_bench
+{
+
+namespace
+{
+
+using namespace cgogn;
+using Vertex = CMap3::Vertex;
+using Edge = CMap3::Edge;
+using Volume = CMap3::Volume;
+
+struct CgognVolume
+{
+	CMap3 map;
+	std::shared_ptr<Attribute<Vec3>> position, position2, barycenter;
+	uint32 vertex_offset = 0;
+
+	CgognVolume(const VolumeSoup& s, bool with_work_attributes)
+	{
+		vertex_offset = build_volume(map, s).vertex_offset;
+		position = add_attribute<Vec3, Vertex>(map, "position");
+		if (with_work_attributes)
+		{
+			position2 = add_attribute<Vec3, Vertex>(map, "position2");
+			barycenter = add_attribute<Vec3, Volume>(map, "barycenter");
+		}
+		reset_positions(s);
+	}
+	void reset_positions(const VolumeSoup& s)
+	{
+		for (uint32 i = 0; i < s.nb_vertices; ++i)
+			(*position)[vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	}
+};
+
+CgognVolume& mesh()
+{
+	return Cache::get<CgognVolume>("cgogn/volume",
+								   [] { return std::make_unique<CgognVolume>(volume_soup(), true); });
+}
+
+void circulator(benchmark::State& state, bool first)
+{
+	const CMap3& m = mesh().map;
+	int64 c = 0, incidences = 0;
+	timed(
+		state, first, [] {},
+		[&] {
+			c = 0;
+			foreach_cell(m, [&](Vertex v) { foreach_incident_volume(m, v, [&](Volume) { ++c; }); });
+			incidences = c;
+			foreach_cell(m, [&](Volume w) { foreach_incident_vertex(m, w, [&](Vertex) { --c; }); });
+			benchmark::DoNotOptimize(c);
+		});
+	set_check(state, "check", double(c));
+	set_check(state, "check_incidences", double(incidences));
+}
+
+void circulator2(benchmark::State& state, bool first)
+{
+	const CMap3& m = mesh().map;
+	int64 total = 0;
+	timed(
+		state, first, [] {},
+		[&] {
+			total = 0;
+			foreach_cell(m, [&](Vertex v) { foreach_adjacent_vertex_through_volume(m, v, [&](Vertex) { ++total; }); });
+			benchmark::DoNotOptimize(total);
+		});
+	set_check(state, "check", double(total));
+	int64 naive = 0;
+	foreach_cell(m, [&](Vertex v) {
+		foreach_incident_volume(m, v, [&](Volume w) { foreach_incident_vertex(m, w, [&](Vertex) { ++naive; }); });
+	});
+	state.counters["naive_triples"] = double(naive);
+}
+
+void barycenter(benchmark::State& state, bool first)
+{
+	CgognVolume& me = mesh();
+	const CMap3& m = me.map;
+	const Attribute<Vec3>& pos = *me.position;
+	Attribute<Vec3>& bary = *me.barycenter;
+	timed(
+		state, first, [] {},
+		[&] {
+			foreach_cell(m, [&](Volume w) {
+				Vec3 b = Vec3::Zero();
+				uint32 n = 0;
+				foreach_incident_vertex(m, w, [&](Vertex v) {
+					b += value<Vec3>(m, pos, v);
+					++n;
+				});
+				value<Vec3>(m, bary, w) = b / double(n);
+			});
+		});
+	double s = 0;
+	foreach_cell(m, [&](Volume w) { s += value<Vec3>(m, bary, w).sum(); });
+	set_check(state, "check", s);
+}
+
+void smoothing_pass(CgognVolume& me)
+{
+	const CMap3& m = me.map;
+	const Attribute<Vec3>& pos = *me.position;
+	Attribute<Vec3>& out = *me.position2;
+	foreach_cell(m, [&](Vertex v) {
+		Vec3 s = Vec3::Zero();
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+			s += value<Vec3>(m, pos, w);
+			++n;
+		});
+		value<Vec3>(m, out, v) = s / double(n);
+	});
+	std::swap(me.position, me.position2);
+}
+
+void smoothing(benchmark::State& state, bool first)
+{
+	CgognVolume& me = mesh();
+	timed(
+		state, first, [&] { me.reset_positions(volume_soup()); }, [&] { smoothing_pass(me); });
+	me.reset_positions(volume_soup());
+	for (uint32 i = 0; i < volume_smoothing_check_passes; ++i)
+		smoothing_pass(me);
+	double s = 0;
+	foreach_cell(me.map, [&](Vertex v) { s += value<Vec3>(me.map, *me.position, v).sum(); });
+	set_check(state, "check", s);
+}
+
+void memory(benchmark::State& state, bool)
+{
+	Cache::clear();
+	const VolumeSoup& s = volume_soup();
+	std::size_t bytes = 0;
+	for (auto _ : state)
+	{
+		trim_heap();
+		const std::size_t before = heap_bytes();
+		auto me = std::make_unique<CgognVolume>(s, false);
+		bytes = heap_bytes() - before;
+		state.SetIterationTime(1e-9);
+		benchmark::DoNotOptimize(me.get());
+	}
+	state.counters["bytes"] = double(bytes);
+	state.counters["bytes_per_tet"] = double(bytes) / double(s.cell_sizes.size());
+	state.counters["bytes_per_vertex"] = double(bytes) / double(s.nb_vertices);
+	state.counters["peak_rss_MB"] = double(peak_resident_bytes()) / 1e6;
+}
+
+#if CGOGN_BENCH_HAS_TOPOLOGY
+// ---- topology workloads, written against the planned operators (see cgogn_topology.h)
+
+std::unique_ptr<CgognVolume> fresh()
+{
+	Cache::clear();
+	return std::make_unique<CgognVolume>(volume_soup(), false);
+}
+
+void split(benchmark::State& state, bool)
+{
+	std::unique_ptr<CgognVolume> me;
+	timed(
+		state, false, [&] { me = fresh(); },
+		[&] {
+			CMap3& m = me->map;
+			Attribute<Vec3>& pos = *me->position;
+			std::vector<Volume> tets;
+			foreach_cell(m, [&](Volume w) { tets.push_back(w); });
+			for (Volume w : tets)
+			{
+				Vec3 b = Vec3::Zero();
+				foreach_incident_vertex(m, w, [&](Vertex v) { b += value<Vec3>(m, pos, v); });
+				value<Vec3>(m, pos, split_tetra(m, w)) = b / 4.0;
+			}
+		});
+	set_check(state, "check_V", double(nb_cells<Vertex>(me->map)));
+	set_check(state, "check_T", double(nb_cells<Volume>(me->map)));
+}
+
+void collapse(benchmark::State& state, bool)
+{
+	std::unique_ptr<CgognVolume> me;
+	std::vector<double> lengths;
+	timed(
+		state, false, [&] { me = fresh(); },
+		[&] {
+			CMap3& m = me->map;
+			Attribute<Vec3>& pos = *me->position;
+			lengths.clear();
+			// boundary status cached per vertex
+			auto boundary = add_attribute<uint8, Vertex>(m, "boundary_cache");
+			foreach_cell(m, [&](Vertex v) { value<uint8>(m, *boundary, v) = is_incident_to_boundary(m, v); });
+			for (uint32 k = 0; k < volume_collapses; ++k)
+			{
+				Edge best;
+				double best_len = std::numeric_limits<double>::max();
+				foreach_cell(m, [&](Edge e) {
+					const Vertex a(e.dart), b(phi1(m, e.dart));
+					if (value<uint8>(m, *boundary, a) || value<uint8>(m, *boundary, b))
+						return;
+					const double l = (value<Vec3>(m, pos, a) - value<Vec3>(m, pos, b)).norm();
+					if (l < best_len)
+						best_len = l, best = e;
+				});
+				lengths.push_back(best_len);
+				const Vec3 mid = (value<Vec3>(m, pos, Vertex(best.dart)) + value<Vec3>(m, pos, Vertex(phi1(m, best.dart)))) / 2.0;
+				const Vertex kept = collapse_edge(m, best);
+				value<Vec3>(m, pos, kept) = mid;
+				value<uint8>(m, *boundary, kept) = is_incident_to_boundary(m, kept);
+			}
+			remove_attribute(m, boundary);
+		});
+	for (uint32 k = 0; k < lengths.size(); ++k)
+		set_check(state, "check_len" + std::to_string(k), lengths[k]);
+	set_check(state, "check_V", double(nb_cells<Vertex>(me->map)));
+	set_check(state, "check_T", double(nb_cells<Volume>(me->map)));
+}
+#endif
+
+const bool registered = [] {
+	register_bench("volume/circulator/cgogn", Kind::read_only, circulator);
+	register_bench("volume/circulator2/cgogn", Kind::read_only, circulator2);
+	register_bench("volume/barycenter/cgogn", Kind::read_only, barycenter);
+	register_bench("volume/smoothing/cgogn", Kind::read_only, smoothing);
+#if CGOGN_BENCH_HAS_TOPOLOGY
+	register_bench("volume/split/cgogn", Kind::topology, split);
+	register_bench("volume/collapse/cgogn", Kind::topology, collapse);
+#endif
+	// REGISTRATION POINT (cgogn_quick): with CGOGN_BENCH_HAS_QUICK, register
+	// volume/<workload>/cgogn_quick for the four read-only workloads with the
+	// vertex->volume, volume->vertex and vertex->vertex caches enabled.
+	register_bench("memory/volume/cgogn", Kind::single, memory);
+	return true;
+}();
+
+} // namespace
+
+} // namespace cgogn_bench

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: MIT
+#include "inputs.h"
+
+#include "soup_reader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace cgogn_bench
+{
+
+namespace
+{
+
+std::string input_kind;
+uint32_t permutation_seed = 0;
+
+std::string data_path(const char* rel)
+{
+	return std::string(CGOGN_DATA_DIR) + "/" + rel;
+}
+
+bool data_present()
+{
+	return std::filesystem::exists(data_path("surface/nefertiti.obj")) &&
+		   std::filesystem::exists(data_path("volume/armadillo_tet_461k.mesh"));
+}
+
+const std::string& kind()
+{
+	if (input_kind.empty())
+		input_kind = data_present() ? "data" : "generated";
+	return input_kind;
+}
+
+} // namespace
+
+void set_input(const std::string& k)
+{
+	if (k != "data" && k != "generated" && k != "small")
+		throw std::runtime_error("--input must be data, generated or small");
+	if (k == "data" && !data_present())
+		throw std::runtime_error("--input=data: meshes not found in " + std::string(CGOGN_DATA_DIR));
+	input_kind = k;
+}
+
+void set_permutation_seed(uint32_t seed)
+{
+	permutation_seed = seed;
+}
+
+cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed)
+{
+	std::mt19937 rng(seed);
+	std::vector<uint32_t> new_id(s.nb_vertices);
+	std::iota(new_id.begin(), new_id.end(), 0u);
+	std::shuffle(new_id.begin(), new_id.end(), rng);
+	std::vector<uint32_t> offset(s.face_sizes.size() + 1, 0);
+	for (std::size_t f = 0; f < s.face_sizes.size(); ++f)
+		offset[f + 1] = offset[f] + s.face_sizes[f];
+	std::vector<uint32_t> face_order(s.face_sizes.size());
+	std::iota(face_order.begin(), face_order.end(), 0u);
+	std::shuffle(face_order.begin(), face_order.end(), rng);
+	cgogn::SurfaceSoup r;
+	r.nb_vertices = s.nb_vertices;
+	r.positions.resize(s.nb_vertices);
+	for (uint32_t v = 0; v < s.nb_vertices; ++v)
+		r.positions[new_id[v]] = s.positions[v];
+	r.face_sizes.reserve(s.face_sizes.size());
+	r.face_vertices.reserve(s.face_vertices.size());
+	for (uint32_t f : face_order)
+	{
+		r.face_sizes.push_back(s.face_sizes[f]);
+		for (uint32_t k = offset[f]; k < offset[f + 1]; ++k)
+			r.face_vertices.push_back(new_id[s.face_vertices[k]]);
+	}
+	return r;
+}
+
+cgogn::SurfaceSoup load_surface_soup(const std::string& path)
+{
+	auto s = read_obj_soup(path);
+	if (!s)
+		throw std::runtime_error("cannot read " + path);
+	return std::move(*s);
+}
+
+cgogn::VolumeSoup load_volume_soup(const std::string& path)
+{
+	auto s = read_medit_tet_soup(path);
+	if (!s)
+		throw std::runtime_error("cannot read " + path);
+	return std::move(*s);
+}
+
+const cgogn::SurfaceSoup& surface_soup()
+{
+	static const cgogn::SurfaceSoup soup = [] {
+		cgogn::SurfaceSoup s;
+		if (kind() == "data")
+			s = refine_1_to_4(refine_1_to_4(load_surface_soup(data_path("surface/nefertiti.obj"))));
+		else if (kind() == "small")
+			s = cgogn::torus_soup(40, 30, true);
+		else
+			s = cgogn::torus_soup(1000, 800, true);
+		return permutation_seed != 0 ? permute_soup(s, permutation_seed) : s;
+	}();
+	return soup;
+}
+
+const cgogn::VolumeSoup& volume_soup()
+{
+	static const cgogn::VolumeSoup soup = [] {
+		cgogn::VolumeSoup s;
+		if (kind() == "data")
+			s = load_volume_soup(data_path("volume/armadillo_tet_461k.mesh"));
+		else if (kind() == "small")
+			s = cgogn::tet_grid_soup(6, 5, 4);
+		else
+			s = cgogn::tet_grid_soup(55, 55, 55);
+		orient_tets_positive(s);
+		return s;
+	}();
+	return soup;
+}
+
+std::string input_description()
+{
+	const auto& s = surface_soup();
+	const auto& v = volume_soup();
+	std::string d = kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
+									 : (kind() == "small" ? "small torus and tet grid"
+														  : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
+	if (permutation_seed != 0)
+		d += "; surface ids permuted with seed " + std::to_string(permutation_seed);
+	return d + " (surface V=" + std::to_string(s.nb_vertices) + " F=" + std::to_string(s.face_sizes.size()) +
+		   "; volume V=" + std::to_string(v.nb_vertices) + " T=" + std::to_string(v.cell_sizes.size()) + ")";
+}
+
+cgogn::SurfaceSoup refine_1_to_4(const cgogn::SurfaceSoup& s)
+{
+	cgogn::SurfaceSoup r;
+	r.positions = s.positions;
+	std::unordered_map<uint64_t, uint32_t> mid;
+	mid.reserve(s.face_vertices.size());
+	auto midpoint = [&](uint32_t a, uint32_t b) {
+		const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+		auto [it, inserted] = mid.try_emplace(key, uint32_t(r.positions.size()));
+		if (inserted)
+		{
+			const auto& p = s.positions[a];
+			const auto& q = s.positions[b];
+			r.positions.push_back({(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2});
+		}
+		return it->second;
+	};
+	std::size_t k = 0;
+	for (uint32_t n : s.face_sizes)
+	{
+		if (n != 3)
+			throw std::runtime_error("refine_1_to_4: triangles only");
+		const uint32_t a = s.face_vertices[k], b = s.face_vertices[k + 1], c = s.face_vertices[k + 2];
+		k += 3;
+		const uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+		for (uint32_t v : {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca})
+			r.face_vertices.push_back(v);
+		r.face_sizes.insert(r.face_sizes.end(), 4, 3u);
+	}
+	r.nb_vertices = uint32_t(r.positions.size());
+	return r;
+}
+
+void orient_tets_positive(cgogn::VolumeSoup& s)
+{
+	std::size_t k = 0;
+	for (uint32_t n : s.cell_sizes)
+	{
+		if (n == 4)
+		{
+			uint32_t* t = &s.cell_vertices[k];
+			const auto& a = s.positions[t[0]];
+			const auto& b = s.positions[t[1]];
+			const auto& c = s.positions[t[2]];
+			const auto& d = s.positions[t[3]];
+			const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+			const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+			const double w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+			const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+							   u[2] * (v[0] * w[1] - v[1] * w[0]);
+			if (det < 0)
+				std::swap(t[1], t[2]);
+		}
+		k += n;
+	}
+}
+
+} // namespace cgogn_bench

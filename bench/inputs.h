@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The inputs every library builds from: one surface soup and one tet soup,
+// the same in-memory arrays (same vertex and face order) for all libraries.
+//
+// --input=data (default when CGOGN_DATA_DIR holds the files): nefertiti.obj
+//   refined twice by 1-to-4 midpoint subdivision (1,599,008 triangles) and
+//   armadillo_tet_461k.mesh (tets re-oriented to positive volume).
+// --input=generated: torus_soup(1000, 800, true) (1,600,000 triangles) and
+//   tet_grid_soup(55, 55, 55) (998,250 tets): runs without the data folder.
+// --input=small: a small torus and tet grid (smoke test of the check values).
+
+#include <cgogn/core/builder/generators.h>
+
+#include <string>
+
+namespace cgogn_bench
+{
+
+/// Selects the input ("data", "generated", "small"); call before the benchmarks run.
+void set_input(const std::string& kind);
+/// --permute=SEED: the surface soup's vertex ids and face order are randomly
+/// permuted (std::mt19937 with this seed) before any library builds from it:
+/// badly ordered files are what users load, and order dominates traversal cost.
+void set_permutation_seed(uint32_t seed);
+/// Returns s with vertex ids and face order permuted (same mesh).
+cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed);
+/// What the inputs are, for the benchmark context (e.g. "nefertiti.obj x2 refined: V=..., F=...").
+std::string input_description();
+
+/// The surface soup (closed triangle mesh), loaded or generated once.
+const cgogn::SurfaceSoup& surface_soup();
+/// The tet soup, loaded or generated once; every tet positively oriented.
+const cgogn::VolumeSoup& volume_soup();
+
+/// 1-to-4 midpoint subdivision of a triangle soup: vertices first, then one
+/// new vertex per edge in order of first appearance.
+cgogn::SurfaceSoup refine_1_to_4(const cgogn::SurfaceSoup& s);
+/// Swaps two vertices of every tet of negative signed volume.
+void orient_tets_positive(cgogn::VolumeSoup& s);
+
+/// Plug-in point for the io layer: the polygon soup of a surface file
+/// (today the bench-only OBJ reader of soup_reader.h). Throws std::runtime_error
+/// when the file cannot be read.
+cgogn::SurfaceSoup load_surface_soup(const std::string& path);
+/// Plug-in point for the io layer: the tets of a volume file (today the
+/// bench-only MEDIT reader of soup_reader.h).
+cgogn::VolumeSoup load_volume_soup(const std::string& path);
+
+} // namespace cgogn_bench
