@@ -12,6 +12,9 @@
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
+#include <filesystem>
+
 #include <cmath>
 #include <sys/resource.h>
 
@@ -29,18 +32,28 @@ struct Surface
 	std::shared_ptr<Attribute<double>> scalar;
 	Surface()
 	{
-		// TODO(io): read the largest surface of ../shared/data once the io layer is merged
-		SurfaceSoup soup = torus_soup(1000, 500, true);
-		BuildReport r = build_surface(map, soup);
-		position = add_attribute<Vec3, Vertex>(map, "position");
+		// the largest surface of the data folder (CGOGN_BENCH_GENERATED=1, or no
+		// data folder: the generated 1M-triangle torus)
+		const std::string file = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
+		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
+		{
+			io::load_surface(map, file);
+			position = get_attribute<Vec3, Vertex>(map, "position");
+		}
+		else
+		{
+			SurfaceSoup soup = torus_soup(1000, 500, true);
+			BuildReport r = build_surface(map, soup);
+			position = add_attribute<Vec3, Vertex>(map, "position");
+			for (uint32 i = 0; i < soup.nb_vertices; ++i)
+			{
+				const auto& p = soup.positions[i];
+				(*position)[r.vertex_offset + i] = Vec3(p[0], p[1], p[2]);
+			}
+		}
 		position2 = add_attribute<Vec3, Vertex>(map, "position2");
 		normal = add_attribute<Vec3, Vertex>(map, "normal");
 		scalar = add_attribute<double, Vertex>(map, "scalar");
-		for (uint32 i = 0; i < soup.nb_vertices; ++i)
-		{
-			const auto& p = soup.positions[i];
-			(*position)[r.vertex_offset + i] = Vec3(p[0], p[1], p[2]);
-		}
 	}
 };
 
@@ -170,7 +183,7 @@ void face_areas_unindexed(benchmark::State& state, Mode mode)
 		});
 		benchmark::DoNotOptimize(sum.data());
 	}
-	state.SetItemsProcessed(int64(state.iterations()) * 1000000);
+	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Face>(m));
 }
 
 // ---- circulators with and without quick incidence caches
@@ -188,7 +201,7 @@ void circulator_surface(benchmark::State& state, bool cached)
 		foreach_cell(m, [&](Vertex v) { foreach_incident_face(m, v, [&](Face f) { c += f.dart.index; }); });
 		benchmark::DoNotOptimize(c);
 	}
-	state.SetItemsProcessed(int64(state.iterations()) * 3000000);
+	state.SetItemsProcessed(int64(state.iterations()) * 3 * nb_cells<Face>(m)); // triangles
 	state.counters["cache_MB"] = double(VF::memory_bytes(m)) / 1e6;
 	VF::remove(m);
 }
@@ -198,8 +211,12 @@ struct Volume3
 	CMap3 map;
 	Volume3()
 	{
-		// TODO(io): armadillo_tet_461k.mesh from ../shared/data once the io layer is merged
-		build_volume(map, tet_grid_soup(40, 40, 40));
+		// the largest tet mesh of the data folder, or a generated 384k-tet grid
+		const std::string file = std::string(CGOGN_DATA_DIR) + "/volume/armadillo_tet_461k.mesh";
+		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
+			io::load_volume(map, file);
+		else
+			build_volume(map, tet_grid_soup(40, 40, 40));
 	}
 };
 
