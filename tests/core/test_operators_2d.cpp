@@ -1,5 +1,7 @@
 #include <cgogn/core.h>
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -39,31 +41,8 @@ CMap2 indexed(const SurfaceSoup& s)
 	index_everything(m);
 	return m;
 }
-template <typename CELL>
-std::vector<CELL> all(const CMap2& m)
-{
-	std::vector<CELL> v;
-	foreach_cell(m, [&](CELL c) { v.push_back(c); });
-	return v;
-}
-template <typename CELL, typename P>
-CELL find(const CMap2& m, P pred)
-{
-	CELL r;
-	foreach_cell(m, [&](CELL c) {
-		if (!pred(c))
-			return true;
-		r = c;
-		return false;
-	});
-	return r;
-}
-#define EXPECT_INTEGRITY(m)                                                                                          \
-	do                                                                                                                 \
-	{                                                                                                                  \
-		const IntegrityReport r_ = check_integrity(m);                                                                \
-		EXPECT_TRUE(r_.ok()) << r_.to_string();                                                                        \
-	} while (0)
+using test::all;
+using test::find;
 } // namespace
 
 TEST(Operators2, CutEdgeInsertsADegree2Vertex)
