@@ -15,7 +15,6 @@ namespace
 {
 constexpr Orbit V = Orbit::PHI21;
 constexpr Orbit E = Orbit::PHI2;
-constexpr Orbit F = Orbit::PHI1;
 constexpr Orbit W = Orbit::PHI1_PHI2;
 
 // After a sew, the vertices of d1 and d2 (one or two orbits) get lines from

@@ -129,7 +129,7 @@ void detail::parallel_for_chunks(uint32 n, uint32 grain, ChunkBody body)
 		tbb::parallel_for(tbb::blocked_range<uint32>(0, n, std::max(grain, 1u)),
 						  [&](const tbb::blocked_range<uint32>& r) {
 							  // the arena slot: dense in [0, arena concurrency)
-							  RegionGuard guard(uint32(tbb::this_task_arena::current_thread_index()));
+							  RegionGuard guard{uint32(tbb::this_task_arena::current_thread_index())};
 							  body(r.begin(), r.end());
 						  });
 	});
