@@ -25,6 +25,13 @@ using Face = CMap2::Face;
 namespace
 {
 
+// a per-thread accumulator on its own cache line (no false sharing)
+template <typename T>
+struct alignas(64) PerThread
+{
+	T v{};
+};
+
 struct Surface
 {
 	CMap2 map;
@@ -174,12 +181,12 @@ void face_areas_unindexed(benchmark::State& state, Mode mode)
 	Workers w(state, mode);
 	for (auto _ : state)
 	{
-		std::vector<double> sum(thread_pool()->nb_workers(), 0.0);
+		std::vector<PerThread<double>> sum(thread_pool()->nb_workers());
 		run(mode, m, [&](Face f) {
 			const Vec3& a = value(m, s.position, Vertex(f.dart));
 			const Vec3& b = value(m, s.position, Vertex(phi1(m, f.dart)));
 			const Vec3& c = value(m, s.position, Vertex(phi<1, 1>(m, f.dart)));
-			sum[current_thread_index()] += 0.5 * (b - a).cross(c - a).norm();
+			sum[current_thread_index()].v += 0.5 * (b - a).cross(c - a).norm();
 		});
 		benchmark::DoNotOptimize(sum.data());
 	}
@@ -260,8 +267,8 @@ void edge_degrees_volume_unindexed(benchmark::State& state, Mode mode)
 	Workers w(state, mode);
 	for (auto _ : state)
 	{
-		std::vector<uint64> sum(thread_pool()->nb_workers(), 0);
-		run(mode, m, [&](CMap3::Edge e) { sum[current_thread_index()] += degree(m, e); });
+		std::vector<PerThread<uint64>> sum(thread_pool()->nb_workers());
+		run(mode, m, [&](CMap3::Edge e) { sum[current_thread_index()].v += degree(m, e); });
 		benchmark::DoNotOptimize(sum.data());
 	}
 }
@@ -271,8 +278,8 @@ void volume_sizes_unindexed(benchmark::State& state, Mode mode)
 	Workers w(state, mode);
 	for (auto _ : state)
 	{
-		std::vector<uint64> sum(thread_pool()->nb_workers(), 0);
-		run(mode, m, [&](CMap3::Volume v) { sum[current_thread_index()] += v.dart.index; });
+		std::vector<PerThread<uint64>> sum(thread_pool()->nb_workers());
+		run(mode, m, [&](CMap3::Volume v) { sum[current_thread_index()].v += v.dart.index; });
 		benchmark::DoNotOptimize(sum.data());
 	}
 }
