@@ -1,10 +1,8 @@
-// Parallel traversals and quick incidence caches. Surface: a generated closed
-// triangle torus of 1,000,000 faces (torus_soup(1000, 500, true)) with Vec3
-// positions; volume: a tetrahedral grid of 384,000 tets (tet_grid_soup(40, 40,
-// 40)). The io layer that reads ../shared/data is being written on another
-// branch: once merged, the largest files there (nefertiti.obj, 100k faces;
-// armadillo_tet_461k.mesh) can replace the generated meshes (see the TODO in
-// surface()/volume()). "seq" runs foreach_cell, "par" parallel_foreach_cell
+// Parallel traversals and quick incidence caches, on the largest meshes of the
+// data folder (nefertiti.obj, armadillo_tet_461k.mesh) or, with
+// CGOGN_BENCH_GENERATED=1 or without the folder, on a generated closed
+// triangle torus of 1,000,000 faces and a 384,000-tet grid (see surface() and
+// volume()). "seq" runs foreach_cell, "par" parallel_foreach_cell
 // with the default number of workers, "par1" parallel_foreach_cell limited to
 // one worker (its sequential fallback).
 #include <cgogn/cgogn.h>

@@ -87,11 +87,11 @@ CMap3::Volume close_hole(CMap3& m, Dart d, bool set_indices)
 	// the free faces reachable from d across edges
 	std::vector<Dart> hole;
 	DartMarkerStore<CMap3> seen(m);
-	std::vector<Dart> todo{d};
-	while (!todo.empty())
+	std::vector<Dart> pending{d};
+	while (!pending.empty())
 	{
-		const Dart x = todo.back();
-		todo.pop_back();
+		const Dart x = pending.back();
+		pending.pop_back();
 		if (seen.is_marked(x))
 			continue;
 		for (Dart y : face_darts(m, x))
@@ -102,7 +102,7 @@ CMap3::Volume close_hole(CMap3& m, Dart d, bool set_indices)
 			while (phi3(m, it) != it)
 				it = phi2(m, phi3(m, it));
 			if (!seen.is_marked(it))
-				todo.push_back(it);
+				pending.push_back(it);
 		}
 	}
 	std::vector<Dart> created;
