@@ -17,9 +17,9 @@ constexpr Orbit E = Orbit::PHI2;
 constexpr Orbit F = Orbit::PHI1;
 constexpr Orbit W = Orbit::PHI1_PHI2;
 
-// A new edge {x, y}: x inserted before dx in its face, y before dy in its face.
-// x starts where dy starts... no: x goes from the origin of dy's vertex chosen by
-// the caller; callers set vertex indices themselves.
+// A new edge {x, y}, phi2 of each other: x inserted before dx in its face (it
+// ends where dx starts), y before dy. Each takes the boundary mark of the dart
+// it precedes; callers set the indices.
 std::pair<Dart, Dart> insert_edge_before(CMap2& m, Dart dx, Dart dy)
 {
 	const Dart px = phi_1(m, dx), py = phi_1(m, dy);
@@ -49,7 +49,8 @@ CMap2::Edge cut_face(CMap2& m, CMap2::Vertex v1, CMap2::Vertex v2, bool set_indi
 	const Dart d = v1.dart, e = v2.dart;
 	// x: origin(e) -> origin(d), before d (stays in d's part)
 	// y: origin(d) -> origin(e), before e (in the new face)
-	// the face (d, ..., pe, e, ..., pd) becomes (d, ..., pe, x) and (e, ..., pd, y)
+	// the face (d, ..., pe, e, ..., pd) becomes (d, ..., pe, x) and (e, ..., pd, y):
+	// unlike insert_edge_before, the links cross (x follows pe, y follows pd)
 	const Dart pd = phi_1(m, d), pe = phi_1(m, e);
 	const Dart x = detail::add_dart(m), y = detail::add_dart(m);
 	detail::set_phi1(m, pe, x);

@@ -16,9 +16,8 @@ void remap_darts(CMapBase& m, const std::vector<uint32>& dart_map)
 	const AttributeContainer& darts = *m.darts_;
 	for (Attribute<uint32>* r : m.relations_)
 		for (uint32 i = 0; i < darts.end_index(); ++i)
-			if (darts.is_live(i) || r == m.phi1_)
-				if ((*r)[i] != INVALID_INDEX && (*r)[i] < dart_map.size())
-					(*r)[i] = dart_map[(*r)[i]];
+			if (darts.is_live(i))
+				(*r)[i] = dart_map[(*r)[i]];
 	for (auto& c : m.cells_)
 		for (uint32 i = 0; i < c->end_index(); ++i)
 			if (c->is_live(i))
