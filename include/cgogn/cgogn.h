@@ -5,3 +5,4 @@
 #include <cgogn/core.h>
 #include <cgogn/geometry.h>
 #include <cgogn/io.h>
+#include <cgogn/modeling.h>

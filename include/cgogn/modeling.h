@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: MIT
+// The modeling layer of cgogn: subdivision, decimation, remeshing, hole
+// filling, triangulation, duals (functions of CMap2/CMap3 and Vec3 positions).
+#pragma once
+
+#include <cgogn/modeling/progress.h>
+#include <cgogn/modeling/triangulation.h>

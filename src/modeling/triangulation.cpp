@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/modeling/triangulation.h>
+
+#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/operators/cmap2.h>
+#include <cgogn/geometry/algos/normal.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <vector>
+
+namespace cgogn::modeling
+{
+
+namespace
+{
+
+using Vec2 = Eigen::Vector2d;
+
+double cross(const Vec2& a, const Vec2& b, const Vec2& c)
+{
+	return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+/// Smallest angle of triangle abc (radians), 0 for a degenerate one.
+double min_angle(const Vec2& a, const Vec2& b, const Vec2& c)
+{
+	const auto angle = [](const Vec2& o, const Vec2& p, const Vec2& q) {
+		const Vec2 u = p - o, v = q - o;
+		const double nu = u.norm(), nv = v.norm();
+		if (nu == 0.0 || nv == 0.0)
+			return 0.0;
+		return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
+	};
+	return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+}
+
+/// The polygon being clipped: its corners (darts of the face, whose origins
+/// are the corners) in cyclic order, and their projections.
+struct Polygon
+{
+	std::vector<Dart> darts;
+	std::vector<Vec2> points;
+
+	std::size_t prev(std::size_t i) const
+	{
+		return (i + darts.size() - 1) % darts.size();
+	}
+	std::size_t next(std::size_t i) const
+	{
+		return (i + 1) % darts.size();
+	}
+
+	/// True when corner i is convex and no other corner lies in (or on) the
+	/// triangle (prev(i), i, next(i)).
+	bool is_ear(std::size_t i) const
+	{
+		const std::size_t p = prev(i), n = next(i);
+		const Vec2 &a = points[p], &b = points[i], &c = points[n];
+		if (cross(a, b, c) <= 0.0)
+			return false;
+		for (std::size_t j = 0; j < points.size(); ++j)
+		{
+			if (j == p || j == i || j == n)
+				continue;
+			const Vec2& q = points[j];
+			if (cross(a, b, q) >= 0.0 && cross(b, c, q) >= 0.0 && cross(c, a, q) >= 0.0)
+				return false;
+		}
+		return true;
+	}
+
+	/// The ear of largest smallest angle, else the most convex corner.
+	std::size_t best_corner() const
+	{
+		std::size_t best = 0;
+		double best_score = -1.0;
+		bool best_is_ear = false;
+		for (std::size_t i = 0; i < darts.size(); ++i)
+		{
+			const bool ear = is_ear(i);
+			if (best_is_ear && !ear)
+				continue;
+			const Vec2 &a = points[prev(i)], &b = points[i], &c = points[next(i)];
+			const double score = ear ? min_angle(a, b, c) : cross(a, b, c);
+			if ((ear && !best_is_ear) || score > best_score)
+			{
+				best = i;
+				best_score = score;
+				best_is_ear = ear;
+			}
+		}
+		return best;
+	}
+};
+
+} // namespace
+
+uint32 ear_clip_face(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f)
+{
+	assert(!is_boundary(m, f.dart));
+	Polygon poly;
+	foreach_dart_of_orbit(m, f, [&](Dart d) { poly.darts.push_back(d); });
+	if (poly.darts.size() <= 3)
+		return 0;
+
+	// a frame (u, v, n) of the face's plane, counter-clockwise seen from n
+	Vec3 n = geometry::newell_vector(m, pos, f.dart);
+	if (n.squaredNorm() == 0.0)
+		n = Vec3::UnitZ();
+	n.normalize();
+	const Vec3 u = n.unitOrthogonal();
+	const Vec3 v = n.cross(u);
+	for (Dart d : poly.darts)
+	{
+		const Vec3& p = pos[index_of(m, CMap2::Vertex(d))];
+		poly.points.emplace_back(p.dot(u), p.dot(v));
+	}
+
+	uint32 nb_triangles = 0;
+	while (poly.darts.size() > 3)
+	{
+		const std::size_t i = poly.best_corner();
+		const std::size_t p = poly.prev(i), nx = poly.next(i);
+		// the cut leaves the triangle (p, i, nx) on poly.darts[p]'s side; the
+		// new edge's dart, from p's corner to nx's, is in the rest
+		const CMap2::Edge e = cut_face(m, CMap2::Vertex(poly.darts[p]), CMap2::Vertex(poly.darts[nx]));
+		poly.darts[p] = e.dart;
+		poly.darts.erase(poly.darts.begin() + std::ptrdiff_t(i));
+		poly.points.erase(poly.points.begin() + std::ptrdiff_t(i));
+		++nb_triangles;
+	}
+	return nb_triangles + 1;
+}
+
+uint32 triangulate_faces(CMap2& m, const Attribute<Vec3>& pos)
+{
+	std::vector<CMap2::Face> polygons;
+	foreach_cell(m, [&](CMap2::Face f) {
+		if (codegree(m, f) > 3)
+			polygons.push_back(f);
+	});
+	for (CMap2::Face f : polygons)
+		ear_clip_face(m, pos, f);
+	return uint32(polygons.size());
+}
+
+} // namespace cgogn::modeling

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// `cgogn triangulate`: ear clipping of every polygonal face of a surface file.
+#include "commands.h"
+
+#include <cgogn/modeling/triangulation.h>
+
+namespace cgogn::tool
+{
+
+Command add_triangulate_command(CLI::App& app)
+{
+	auto* sub = app.add_subcommand("triangulate", "Cut every polygonal face into triangles (ear clipping)");
+	auto files = std::make_shared<EditFiles>();
+	add_edit_files(*sub, *files);
+	return {sub, [files] {
+				Progress progress;
+				CMap2 m;
+				load_surface_file(m, files->in, progress);
+				progress.stage("triangulating");
+				modeling::triangulate_faces(m, *positions(m));
+				save_surface_file(m, files->out, files->binary, progress);
+				return 0;
+			}};
+}
+
+} // namespace cgogn::tool

@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// The subcommands of the `cgogn` program, one file each (cmd_*.cpp).
+#pragma once
+
+#include "tool_common.h"
+
+namespace cgogn::tool
+{
+
+Command add_info_command(CLI::App& app);
+Command add_check_command(CLI::App& app);
+Command add_convert_command(CLI::App& app);
+Command add_smooth_command(CLI::App& app);
+Command add_triangulate_command(CLI::App& app);
+
+} // namespace cgogn::tool

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include "tool_common.h"
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace cgogn::tool
+{
+
+Progress::Progress() : on_(isatty(STDERR_FILENO) != 0)
+{
+}
+
+Progress::~Progress()
+{
+	if (on_ && shown_)
+		std::fputs("\r\033[K", stderr);
+}
+
+void Progress::stage(const std::string& what)
+{
+	if (!on_)
+		return;
+	std::fprintf(stderr, "\r\033[K%s...", what.c_str());
+	std::fflush(stderr);
+	shown_ = true;
+}
+
+modeling::ProgressCallback Progress::percent(const std::string& what)
+{
+	if (!on_)
+		return {};
+	return [this, what](double fraction) {
+		std::fprintf(stderr, "\r\033[K%s... %3d%%", what.c_str(), int(fraction * 100.0));
+		std::fflush(stderr);
+		shown_ = true;
+		return true;
+	};
+}
+
+bool is_volume_format(io::Format f)
+{
+	return f == io::Format::Medit || f == io::Format::VtkLegacy || f == io::Format::Vtu || f == io::Format::Gmsh ||
+		   f == io::Format::TetGen;
+}
+
+io::Format format_of(const std::string& path)
+{
+	const io::Format f = io::format_from_extension(path);
+	if (f == io::Format::Auto)
+		throw io::Error(path, "unknown file extension (surfaces: .off .obj .ply .stl; volumes: .mesh .vtk .vtu "
+							  ".msh .node/.ele)");
+	return f;
+}
+
+void load_surface_file(CMap2& m, const std::string& path, Progress& progress)
+{
+	if (is_volume_format(format_of(path)))
+		throw io::Error(path, "this command works on surfaces; the file is a volume mesh");
+	progress.stage("loading " + path);
+	io::load_surface(m, path);
+}
+
+void save_surface_file(const CMap2& m, const std::string& path, bool binary, Progress& progress)
+{
+	if (is_volume_format(format_of(path)))
+		throw io::Error(path, "a surface mesh cannot be written in a volume format");
+	progress.stage("writing " + path);
+	io::SaveOptions options;
+	options.binary = binary;
+	io::save_surface(m, path, options);
+}
+
+void add_edit_files(CLI::App& sub, EditFiles& files)
+{
+	sub.add_option("IN", files.in, "input mesh file")->required();
+	sub.add_option("OUT", files.out, "output mesh file (format by extension)")->required();
+	sub.add_flag("--binary", files.binary, "write binary where the format allows it (PLY, STL)");
+}
+
+std::shared_ptr<Attribute<Vec3>> positions(CMap2& m)
+{
+	auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
+	if (!pos)
+		throw std::runtime_error("the mesh has no vertex positions");
+	return pos;
+}
+
+} // namespace cgogn::tool

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+// What the subcommands of the `cgogn` program share: exit codes, progress on
+// a terminal, format dispatch, loading and saving.
+#pragma once
+
+#include <cgogn/core/functions/attributes.h>
+#include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/surface.h>
+#include <cgogn/io/volume.h>
+#include <cgogn/modeling/progress.h>
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace cgogn::tool
+{
+
+// Exit codes: 0 success, 1 `check` found a broken map, 2 any error.
+constexpr int EXIT_BROKEN = 1;
+constexpr int EXIT_ERROR = 2;
+
+/// A subcommand: its CLI11 parser, and what runs once it was chosen.
+struct Command
+{
+	CLI::App* parser;
+	std::function<int()> run;
+};
+
+/// Progress on stderr, only when it is a terminal: named stages and, for the
+/// modeling algorithms, a percentage.
+class Progress
+{
+public:
+	Progress();
+	~Progress();
+	Progress(const Progress&) = delete;
+	Progress& operator=(const Progress&) = delete;
+
+	void stage(const std::string& what);
+	/// A callback for the modeling algorithms showing "what... N%"; never cancels.
+	modeling::ProgressCallback percent(const std::string& what);
+
+private:
+	bool on_;
+	bool shown_ = false;
+};
+
+bool is_volume_format(io::Format f);
+
+/// The format of path by its extension; throws io::Error when unknown.
+io::Format format_of(const std::string& path);
+
+/// Loads path into a CMap2 or a CMap3 (by format) and calls f(map, report).
+template <typename FUNC>
+void with_loaded(const std::string& path, Progress& progress, const FUNC& f)
+{
+	progress.stage("loading " + path);
+	if (is_volume_format(format_of(path)))
+	{
+		CMap3 m;
+		const io::LoadReport r = io::load_volume(m, path);
+		f(m, r);
+	}
+	else
+	{
+		CMap2 m;
+		const io::LoadReport r = io::load_surface(m, path);
+		f(m, r);
+	}
+}
+
+/// Loads a surface file (throws io::Error naming the file when it is a volume format).
+void load_surface_file(CMap2& m, const std::string& path, Progress& progress);
+
+/// Saves a surface (throws io::Error when out names a volume format).
+void save_surface_file(const CMap2& m, const std::string& path, bool binary, Progress& progress);
+
+/// The input/output options every editing subcommand has: IN, OUT, --binary.
+struct EditFiles
+{
+	std::string in, out;
+	bool binary = false;
+};
+void add_edit_files(CLI::App& sub, EditFiles& files);
+
+/// The "position" attribute of a loaded surface (every reader creates it).
+std::shared_ptr<Attribute<Vec3>> positions(CMap2& m);
+
+} // namespace cgogn::tool
