@@ -5,3 +5,5 @@
 
 #include <cgogn/modeling/progress.h>
 #include <cgogn/modeling/triangulation.h>
+#include <cgogn/modeling/quadric.h>
+#include <cgogn/modeling/decimation.h>
