@@ -7,3 +7,5 @@
 #include <cgogn/modeling/triangulation.h>
 #include <cgogn/modeling/quadric.h>
 #include <cgogn/modeling/decimation.h>
+#include <cgogn/modeling/triangle_tree.h>
+#include <cgogn/modeling/remeshing.h>
