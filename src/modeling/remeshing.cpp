@@ -242,7 +242,8 @@ private:
 		// the origin of `gone` disappears; the other end takes position x
 		const Dart gone = locked_a ? d2 : d;
 		const Vec3 x = locked_a ? position(d) : (locked_b ? position(d2) : 0.5 * (position(d) + position(d2)));
-		if (!edge_can_collapse(m_, Edge(gone)) || !stays_short(gone, x) || !normals_stay(gone, x))
+		// the geometric tests first: they are cheaper than the link condition and fail more often
+		if (!stays_short(gone, x) || !normals_stay(gone, x) || !edge_can_collapse(m_, Edge(gone)))
 			return false;
 		const Vertex v = collapse_edge(m_, Edge(gone));
 		position(v.dart) = x;
