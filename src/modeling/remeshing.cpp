@@ -51,6 +51,7 @@ public:
 		high2_ = (4.0 / 3.0 * length) * (4.0 / 3.0 * length);
 		low2_ = (4.0 / 5.0 * length) * (4.0 / 5.0 * length);
 		mark_features();
+		init_vertex_flags();
 		if (o_.project)
 			reference_ = std::make_unique<TriangleTree>(m_, pos_);
 
@@ -127,25 +128,47 @@ private:
 		});
 	}
 
+	// ---- vertex flags, per vertex line, kept up to date through the
+	// operations (walking around a vertex at each test cost 18% of the time)
+
+	static constexpr uint8 ON_BOUNDARY = 1;
+	static constexpr uint8 ON_FEATURE = 2;
+
+	uint8& flags(Dart d)
+	{
+		const uint32 line = index_of(m_, Vertex(d));
+		if (line >= vflags_.size())
+			vflags_.resize(container_of<Vertex::ORBIT>(m_).end_index(), 0);
+		return vflags_[line];
+	}
+	uint8 flags(Dart d) const
+	{
+		const uint32 line = index_of(m_, Vertex(d));
+		return line < vflags_.size() ? vflags_[line] : 0;
+	}
+
+	void init_vertex_flags()
+	{
+		vflags_.assign(container_of<Vertex::ORBIT>(m_).end_index(), 0);
+		foreach_cell(m_, [&](Vertex v) {
+			uint8 f = 0;
+			foreach_dart_of_orbit(m_, v, [&](Dart s) {
+				f |= is_boundary(m_, s) ? ON_BOUNDARY : 0;
+				f |= is_feature(s) ? ON_FEATURE : 0;
+			});
+			flags(v.dart) = f;
+		});
+	}
+
 	/// Boundary and feature vertices neither move nor disappear.
 	bool is_locked(Vertex v) const
 	{
-		bool locked = false;
-		foreach_dart_of_orbit(m_, v, [&](Dart s) {
-			locked = is_boundary(m_, s) || is_feature(s);
-			return !locked;
-		});
-		return locked;
+		return flags(v.dart) != 0;
 	}
 
 	bool is_on_boundary(Vertex v) const
 	{
-		bool b = false;
-		foreach_dart_of_orbit(m_, v, [&](Dart s) {
-			b = is_boundary(m_, s);
-			return !b;
-		});
-		return b;
+		return (flags(v.dart) & ON_BOUNDARY) != 0;
 	}
 
 	// ---- (1) splits
@@ -171,8 +194,11 @@ private:
 	{
 		const Vec3 mid = 0.5 * (position(d) + position(phi2(m_, d)));
 		const bool feature = is_feature(d);
+		const bool boundary = is_boundary(m_, d) || is_boundary(m_, phi2(m_, d));
 		const Vertex v = cut_edge(m_, Edge(d));
 		position(v.dart) = mid;
+		// the new vertex lies on the boundary or the feature line when its edge did
+		flags(v.dart) = uint8((boundary ? ON_BOUNDARY : 0) | (feature ? ON_FEATURE : 0));
 		grow_flags();
 		set_feature(d, feature);
 		set_feature(v.dart, feature);
@@ -245,8 +271,10 @@ private:
 		// the geometric tests first: they are cheaper than the link condition and fail more often
 		if (!stays_short(gone, x) || !normals_stay(gone, x) || !edge_can_collapse(m_, Edge(gone)))
 			return false;
+		const uint8 kept_flags = uint8(flags(d) | flags(d2)); // at most one end is locked
 		const Vertex v = collapse_edge(m_, Edge(gone));
 		position(v.dart) = x;
+		flags(v.dart) = kept_flags;
 		// a vanished triangle merges two of its edges: the result is a feature if either was
 		foreach_dart_of_orbit(m_, v, [&](Dart s) { set_feature(s, is_feature(s) || is_feature(phi2(m_, s))); });
 		++r_.collapses;
@@ -354,6 +382,7 @@ private:
 	RemeshingResult r_;
 	double high2_ = 0.0, low2_ = 0.0;
 	std::vector<uint8> feature_; // per dart
+	std::vector<uint8> vflags_;	 // per vertex line: ON_BOUNDARY | ON_FEATURE
 	std::unique_ptr<TriangleTree> reference_;
 	std::vector<std::pair<uint32, Vec3>> moves_; // vertex line, new position
 };
