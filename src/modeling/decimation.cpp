@@ -215,7 +215,8 @@ private:
 				const Vec3 before = (q - p).cross(r - p);
 				const Vec3 after = (q - x).cross(r - x);
 				const double la = after.norm(), lb = before.norm();
-				ok = la > 0.0 && after.dot(before) > o_.min_normal_cosine * la * lb;
+				// a face degenerate in the input has no normal to keep: it only must not stay degenerate
+				ok = la > 0.0 && (lb == 0.0 || after.dot(before) > o_.min_normal_cosine * la * lb);
 				return ok;
 			});
 			if (!ok)

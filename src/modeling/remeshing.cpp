@@ -234,7 +234,8 @@ private:
 				const Vec3 &q = position(t), &w = position(u);
 				const Vec3 before = (q - position(s)).cross(w - position(s));
 				const Vec3 after = (q - x).cross(w - x);
-				ok = after.squaredNorm() > 0.0 && after.dot(before) > 0.0;
+				// a degenerate face has no orientation to keep: it only must not stay degenerate
+				ok = after.squaredNorm() > 0.0 && (before.squaredNorm() == 0.0 || after.dot(before) > 0.0);
 				return ok;
 			});
 			if (!ok)
