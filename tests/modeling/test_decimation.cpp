@@ -226,3 +226,28 @@ TEST(Decimation, HemisphereBoundaryMayCollapseOtherwise)
 	foreach_cell(m, [&](Vertex v) { nb_boundary += is_incident_to_boundary(m, v) ? 1 : 0; });
 	EXPECT_LT(nb_boundary, 120u);
 }
+
+TEST(Decimation, BunnyWithHolesKeepsItsFiveBoundaryLoops)
+{
+	const std::string path = data_file("stanford-bunny.obj");
+	if (!std::filesystem::exists(path))
+		GTEST_SKIP() << "no " << path;
+	CMap2 m;
+	io::load_surface(m, path);
+	auto pos = get_attribute<Vec3, Vertex>(m, "position");
+	ASSERT_EQ(nb_boundary_components(m), 5u);
+	const int64 chi = euler_characteristic(m);
+	uint32 boundary_before = 0;
+	foreach_cell(m, [&](Vertex v) { boundary_before += is_incident_to_boundary(m, v) ? 1 : 0; });
+	modeling::DecimationOptions o;
+	o.target_faces = 6945; // 10%
+	o.keep_boundary = true;
+	const auto r = modeling::decimate(m, *pos, o);
+	EXPECT_EQ(r.faces, 6945u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_EQ(nb_boundary_components(m), 5u);
+	EXPECT_EQ(euler_characteristic(m), chi);
+	uint32 boundary_after = 0;
+	foreach_cell(m, [&](Vertex v) { boundary_after += is_incident_to_boundary(m, v) ? 1 : 0; });
+	EXPECT_EQ(boundary_after, boundary_before);
+}

@@ -192,3 +192,25 @@ TEST(TriangleTree, ClosestPointsOnAGrid)
 	EXPECT_NEAR((outside.point - Vec3(0.0, 10.0, 0.0)).norm(), 0.0, 1e-12);
 	EXPECT_NEAR(outside.squared_distance, 1.0 + 4.0 + 1.0, 1e-12);
 }
+
+TEST(Remeshing, NefertitiAtItsMeanEdgeLength)
+{
+	const std::string path = data_file("nefertiti.obj");
+	if (!std::filesystem::exists(path))
+		GTEST_SKIP() << "no " << path;
+	CMap2 m;
+	io::load_surface(m, path);
+	auto pos = get_attribute<Vec3, Vertex>(m, "position");
+	const modeling::TriangleTree input(m, *pos);
+	modeling::RemeshingOptions o;
+	o.iterations = 3;
+	const auto r = modeling::isotropic_remeshing(m, *pos, o); // L = the mean edge length
+	EXPECT_NEAR(r.target_edge_length, 2.98, 0.01);
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_TRUE(all_triangles(m));
+	EXPECT_EQ(nb_cells<Vertex>(m) - nb_cells<Edge>(m) + nb_cells<CMap2::Face>(m), 2u); // still genus 0
+	EXPECT_NEAR(geometry::mean_edge_length(m, *pos), r.target_edge_length, 0.1 * r.target_edge_length);
+	const Valences v = valences(m);
+	EXPECT_GT(v.regular, v.total * 7 / 10) << v.regular << " of " << v.total;
+	EXPECT_LT(modeling::vertex_distance_to_surface(m, *pos, input).max, 1e-9);
+}
