@@ -5,3 +5,4 @@
 
 #include <cgogn/modeling/progress.h>
 #include <cgogn/modeling/triangulation.h>
+#include <cgogn/modeling/subdivision.h>
