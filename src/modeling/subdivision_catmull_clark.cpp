@@ -54,14 +54,26 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, Attribute<Vec3>& pos, cons
 {
 	StepProgress step(progress);
 	VertexPositions vertices(m);
-	const std::vector<Dart> edges = snapshot<Edge>(m);
-	const std::vector<Dart> faces = snapshot<Face>(m);
+	const std::vector<Dart> edges = edge_snapshot(m);
+	uint32 max_degree = 0;
+	const std::vector<Dart> faces = face_snapshot(m, max_degree);
 	const std::size_t total = vertices.vertices.size() + edges.size() + faces.size();
 
-	// 1. the old vertices: (Q + 2R + (n - 3) p) / n
-	for (std::size_t i = 0; i < vertices.vertices.size(); ++i)
+	// 1. the face points, and for each dart the slot of its face's point
+	// (boundary darts have none), so that edges and vertices read them
+	std::vector<Vec3> face_points(faces.size());
+	std::vector<uint32> face_of_dart(m.darts_->end_index(), INVALID_INDEX);
+	for (std::size_t i = 0; i < faces.size(); ++i)
 	{
 		if (!step.computing(i, total))
+			return step.cancelled_before_change();
+		face_points[i] = face_point(m, pos, faces[i]);
+		foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) { face_of_dart[d.index] = uint32(i); });
+	}
+	// 2. the old vertices: (Q + 2R + (n - 3) p) / n
+	for (std::size_t i = 0; i < vertices.vertices.size(); ++i)
+	{
+		if (!step.computing(faces.size() + i, total))
 			return step.cancelled_before_change();
 		const Vertex v(vertices.vertices[i]);
 		if (boundary_vertex_rule(m, pos, v, vertices.positions[i]))
@@ -70,7 +82,7 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, Attribute<Vec3>& pos, cons
 		Vec3 q = Vec3::Zero(), r = Vec3::Zero();
 		uint32 n = 0;
 		foreach_dart_of_orbit(m, v, [&](Dart d) {
-			q += face_point(m, pos, d);
+			q += face_points[face_of_dart[d.index]];
 			r += position(m, pos, phi2(m, d));
 			++n;
 		});
@@ -78,26 +90,18 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, Attribute<Vec3>& pos, cons
 		const double dn = double(n);
 		vertices.positions[i] = (q / dn + (p + r / dn) + (dn - 3.0) * p) / dn;
 	}
-	// 2. the edge points
+	// 3. the edge points
 	std::vector<Vec3> edge_points(edges.size());
 	for (std::size_t i = 0; i < edges.size(); ++i)
 	{
-		if (!step.computing(vertices.vertices.size() + i, total))
+		if (!step.computing(faces.size() + vertices.vertices.size() + i, total))
 			return step.cancelled_before_change();
 		const Dart d = edges[i], d2 = phi2(m, d);
 		const Vec3 ends = position(m, pos, d) + position(m, pos, d2);
 		if (is_boundary(m, d) || is_boundary(m, d2))
 			edge_points[i] = 0.5 * ends;
 		else
-			edge_points[i] = 0.25 * (ends + face_point(m, pos, d) + face_point(m, pos, d2));
-	}
-	// 3. the face points
-	std::vector<Vec3> face_points(faces.size());
-	for (std::size_t i = 0; i < faces.size(); ++i)
-	{
-		if (!step.computing(vertices.vertices.size() + edges.size() + i, total))
-			return step.cancelled_before_change();
-		face_points[i] = face_point(m, pos, faces[i]);
+			edge_points[i] = 0.25 * (ends + face_points[face_of_dart[d.index]] + face_points[face_of_dart[d2.index]]);
 	}
 
 	// 4. the connectivity (cut_edge keeps the origins of the existing darts,

@@ -4,6 +4,7 @@
 
 #include <cgogn/core/operators/cmap2.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -15,8 +16,8 @@ using namespace detail;
 bool is_triangle_mesh(const CMap2& m)
 {
 	bool ok = true;
-	foreach_cell(m, [&](Face f) {
-		ok = phi<1, 1, 1>(m, f.dart) == f.dart && phi1(m, f.dart) != f.dart;
+	foreach_dart(m, [&](Dart d) {
+		ok = is_boundary(m, d) || (phi<1, 1, 1>(m, d) == d && phi1(m, d) != d);
 		return ok;
 	});
 	return ok;
@@ -50,14 +51,19 @@ void cut_hexagon(CMap2& m, Dart h0)
 
 SubdivisionResult loop_subdivision(CMap2& m, Attribute<Vec3>& pos, const ProgressCallback& progress)
 {
-	if (!is_triangle_mesh(m))
+	uint32 max_degree = 0;
+	const std::vector<Dart> faces = face_snapshot(m, max_degree); // darts starting at old vertices
+	if (max_degree > 3)
 		throw SubdivisionError("Loop subdivision: every face must be a triangle");
 	StepProgress step(progress);
 	VertexPositions vertices(m);
-	const std::vector<Dart> edges = snapshot<Edge>(m);
+	const std::vector<Dart> edges = edge_snapshot(m);
 	const std::size_t total = vertices.vertices.size() + edges.size();
 
-	// 1. the old vertices
+	// 1. the old vertices (the weights of the usual valences computed once)
+	std::array<double, 16> betas;
+	for (uint32 n = 1; n < betas.size(); ++n)
+		betas[n] = loop_beta(n);
 	for (std::size_t i = 0; i < vertices.vertices.size(); ++i)
 	{
 		if (!step.computing(i, total))
@@ -71,7 +77,7 @@ SubdivisionResult loop_subdivision(CMap2& m, Attribute<Vec3>& pos, const Progres
 			sum += position(m, pos, phi2(m, d));
 			++n;
 		});
-		const double beta = loop_beta(n);
+		const double beta = n < betas.size() ? betas[n] : loop_beta(n);
 		vertices.positions[i] = (1.0 - double(n) * beta) * position(m, pos, v.dart) + beta * sum;
 	}
 	// 2. the edge vertices
@@ -88,9 +94,8 @@ SubdivisionResult loop_subdivision(CMap2& m, Attribute<Vec3>& pos, const Progres
 			edge_points[i] = 0.375 * ends + 0.125 * (position(m, pos, phi<1, 1>(m, d)) + position(m, pos, phi<1, 1>(m, d2)));
 	}
 
-	// 3. the connectivity: faces are snapshot by a dart starting at an old
-	// vertex (cut_edge keeps the origins of the existing darts)
-	const std::vector<Dart> faces = snapshot<Face>(m);
+	// 3. the connectivity (cut_edge keeps the origins of the existing darts,
+	// so the face snapshot still starts at old vertices)
 	vertices.commit(m, pos);
 	const std::size_t work = edges.size() + faces.size();
 	for (std::size_t i = 0; i < edges.size(); ++i)

@@ -14,11 +14,12 @@ using namespace detail;
 
 SubdivisionResult sqrt3_subdivision(CMap2& m, Attribute<Vec3>& pos, const ProgressCallback& progress)
 {
-	if (!is_triangle_mesh(m))
+	uint32 max_degree = 0;
+	const std::vector<Dart> faces = face_snapshot(m, max_degree);
+	if (max_degree > 3)
 		throw SubdivisionError("sqrt3 subdivision: every face must be a triangle");
 	StepProgress step(progress);
 	VertexPositions vertices(m);
-	const std::vector<Dart> faces = snapshot<Face>(m);
 	const std::size_t total = vertices.vertices.size() + faces.size();
 
 	// 1. the old vertices: interior ones are relaxed, boundary ones stay
@@ -54,12 +55,8 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, Attribute<Vec3>& pos, const Progre
 		centroids[i] = (position(m, pos, d) + position(m, pos, phi1(m, d)) + position(m, pos, phi<1, 1>(m, d))) / 3.0;
 	}
 	// the interior edges, flipped once the faces are split
-	std::vector<Dart> interior_edges;
-	interior_edges.reserve(nb_cells<Edge>(m));
-	foreach_cell(m, [&](Edge e) {
-		if (!is_boundary_edge(m, e.dart))
-			interior_edges.push_back(e.dart);
-	});
+	std::vector<Dart> interior_edges = edge_snapshot(m);
+	std::erase_if(interior_edges, [&](Dart d) { return is_boundary_edge(m, d); });
 
 	// 3. the connectivity
 	vertices.commit(m, pos);
