@@ -55,8 +55,10 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, Attribute<Vec3>& pos, cons
 	StepProgress step(progress);
 	VertexPositions vertices(m);
 	const std::vector<Dart> edges = edge_snapshot(m);
-	uint32 max_degree = 0;
-	const std::vector<Dart> faces = face_snapshot(m, max_degree);
+	const FaceSnapshot snapshot(m);
+	if (!snapshot.darts.empty() && snapshot.min_degree < 3)
+		throw SubdivisionError("Catmull-Clark subdivision: a face has fewer than 3 edges");
+	const std::vector<Dart>& faces = snapshot.darts;
 	const std::size_t total = vertices.vertices.size() + edges.size() + faces.size();
 
 	// 1. the face points, and for each dart the slot of its face's point

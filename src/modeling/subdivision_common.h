@@ -36,7 +36,8 @@ inline bool is_boundary_edge(const CMap2& m, Dart d)
 /// The boundary rule shared by Loop and Catmull-Clark for a vertex whose
 /// orbit touches the boundary: 1/8 q0 + 3/4 p + 1/8 q1 (q0, q1 the ends of
 /// its two boundary edges); a vertex with another number of boundary edges
-/// (a pinched vertex) stays. `boundary` tells whether v is on the boundary.
+/// (a pinched vertex) stays. Returns false (and leaves `out`) when v is not
+/// on the boundary.
 inline bool boundary_vertex_rule(const CMap2& m, const Attribute<Vec3>& pos, Vertex v, Vec3& out)
 {
 	Vec3 sum = Vec3::Zero();
@@ -82,27 +83,34 @@ inline std::vector<Dart> edge_snapshot(const CMap2& m)
 	return darts;
 }
 
-/// One dart per non-boundary face: the one of smallest index (found by
-/// walking the face until a smaller one shows up). Sets `max_degree` to the
-/// largest face degree. No marker. O(sum of squared face degrees) in the
+/// One dart per non-boundary face (the one of smallest index, found by
+/// walking the face until a smaller one shows up), with the smallest and
+/// largest face degrees. No marker. O(sum of squared face degrees) in the
 /// worst case, about 1.5 steps per dart on triangles.
-inline std::vector<Dart> face_snapshot(const CMap2& m, uint32& max_degree)
+struct FaceSnapshot
 {
 	std::vector<Dart> darts;
-	darts.reserve(nb_darts(m) / 3);
-	max_degree = 0;
-	foreach_dart(m, [&](Dart d) {
-		if (is_boundary(m, d))
-			return;
-		uint32 degree = 1;
-		for (Dart x = phi1(m, d); x != d; x = phi1(m, x), ++degree)
-			if (x.index < d.index)
+	uint32 min_degree = 0, max_degree = 0;
+
+	explicit FaceSnapshot(const CMap2& m)
+	{
+		darts.reserve(nb_darts(m) / 3);
+		min_degree = ~0u;
+		foreach_dart(m, [&](Dart d) {
+			if (is_boundary(m, d))
 				return;
-		darts.push_back(d);
-		max_degree = std::max(max_degree, degree);
-	});
-	return darts;
-}
+			uint32 degree = 1;
+			for (Dart x = phi1(m, d); x != d; x = phi1(m, x), ++degree)
+				if (x.index < d.index)
+					return;
+			darts.push_back(d);
+			min_degree = std::min(min_degree, degree);
+			max_degree = std::max(max_degree, degree);
+		});
+		if (darts.empty())
+			min_degree = 0;
+	}
+};
 
 /// Progress of one step: computing the positions is [0, 0.5) and may be
 /// cancelled (the map is untouched), changing the connectivity is [0.5, 1]

@@ -51,9 +51,9 @@ void cut_hexagon(CMap2& m, Dart h0)
 
 SubdivisionResult loop_subdivision(CMap2& m, Attribute<Vec3>& pos, const ProgressCallback& progress)
 {
-	uint32 max_degree = 0;
-	const std::vector<Dart> faces = face_snapshot(m, max_degree); // darts starting at old vertices
-	if (max_degree > 3)
+	const FaceSnapshot snapshot(m);
+	const std::vector<Dart>& faces = snapshot.darts; // darts starting at old vertices
+	if (!faces.empty() && (snapshot.min_degree != 3 || snapshot.max_degree != 3))
 		throw SubdivisionError("Loop subdivision: every face must be a triangle");
 	StepProgress step(progress);
 	VertexPositions vertices(m);

@@ -500,3 +500,32 @@ TEST(TetSubdivision, GridTwiceAndCancellation)
 	foreach_cell(m, [&](CMap3::Volume x) { sum += geometry::volume(m, x, *pos); });
 	EXPECT_NEAR(sum, 2.0, 1e-12);
 }
+
+// ---- degenerate inputs
+
+TEST(Subdivision, PillowOfTwoTriangles)
+{
+	// two triangles glued along their three edges: sqrt3 joins the two
+	// centroids by the first flip and must not double that edge
+	for (auto scheme :
+		 {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
+	{
+		CMap2 m;
+		auto pos = test::build_with_positions(m, polygon_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}}));
+		ASSERT_EQ(nb_cells<CMap2::Face>(m), 2u);
+		modeling::subdivide(m, *pos, scheme, 2);
+		EXPECT_TRUE(check_integrity(m).ok());
+		EXPECT_EQ(euler_characteristic(m), 2);
+	}
+}
+
+TEST(Subdivision, FacesWithFewerThanThreeEdgesAreRejected)
+{
+	CMap2 m;
+	add_face(m, 2);
+	auto pos = add_attribute<Vec3, Vertex>(m, "position");
+	const uint32 darts = nb_darts(m);
+	EXPECT_THROW(modeling::catmull_clark_subdivision(m, *pos), modeling::SubdivisionError);
+	EXPECT_THROW(modeling::loop_subdivision(m, *pos), modeling::SubdivisionError);
+	EXPECT_EQ(nb_darts(m), darts);
+}

@@ -65,13 +65,15 @@ SubdivisionResult loop_subdivision(CMap2& m, Attribute<Vec3>& pos, const Progres
 /// mean of its faces' centroids and R the mean of its edges' midpoints.
 /// Boundary (crease) rules: a boundary edge's vertex is its midpoint, a
 /// boundary vertex moves to 1/8 q0 + 3/4 p + 1/8 q1 (a vertex with more than
-/// two boundary edges stays). Afterwards every face is a quad. O(n).
+/// two boundary edges stays). Afterwards every face is a quad. Throws
+/// SubdivisionError (map untouched) when a face has fewer than 3 edges. O(n).
 SubdivisionResult catmull_clark_subdivision(CMap2& m, Attribute<Vec3>& pos, const ProgressCallback& progress = {});
 
 /// One step of sqrt3 subdivision (Kobbelt 2000, as OpenMesh's Sqrt3T): each
 /// triangle gets its centroid and is split in 3, each old interior vertex of
 /// valence n moves to (1 - a) p + a/n sum(q) with a = (4 - 2 cos(2 pi / n)) / 9,
-/// and every old interior edge is flipped. Boundary choice: boundary
+/// and every old interior edge is flipped (unless the flip would double an
+/// edge: two triangles sharing two edges). Boundary choice: boundary
 /// vertices stay where they are and boundary edges are not flipped (each
 /// boundary triangle simply becomes 3); Kobbelt's every-other-step boundary
 /// rule is not applied, so a step on a mesh with boundary equals OpenMesh's
