@@ -2,12 +2,12 @@
 // The modeling subcommands of the `cgogn` program, run as a user would.
 #include <cgogn/cgogn.h>
 
-#include "../io/io_test_utils.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <sys/wait.h>
+
+#include "../io/io_test_utils.h"
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -21,7 +21,7 @@ struct ToolRun
 	std::string err;
 };
 
-ToolRun run_tool(const std::string& args, const TempDir& dir)
+ToolRun run_tool(const std::string &args, const TempDir &dir)
 {
 	const std::string err = dir.file("stderr");
 	const std::string cmd = std::string("'") + CGOGN_TOOL_PATH + "' " + args + " >/dev/null 2>'" + err + "'";
@@ -29,7 +29,7 @@ ToolRun run_tool(const std::string& args, const TempDir& dir)
 	return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, read_text(err)};
 }
 
-std::string quoted(const std::string& s)
+std::string quoted(const std::string &s)
 {
 	return "'" + s + "'";
 }
@@ -42,8 +42,8 @@ TEST(ToolSubdivide, CatmullClarkTwiceOnSpot)
 {
 	TempDir dir;
 	const ToolRun r = run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("out.off")) +
-								   " --scheme catmull-clark --iterations 2",
-							   dir);
+	                               " --scheme catmull-clark --iterations 2",
+	                           dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	EXPECT_EQ(r.err, "") << "no progress output when stderr is not a terminal";
 	CMap2 m;
@@ -62,7 +62,8 @@ TEST(ToolSubdivide, LoopOnPolygonsIsAClearError)
 	EXPECT_NE(r.err.find("spot_control_mesh.obj"), std::string::npos) << r.err;
 	EXPECT_NE(r.err.find("triangle"), std::string::npos) << r.err;
 	EXPECT_FALSE(std::filesystem::exists(dir.file("out.off")));
-	const ToolRun s = run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("out.off")) + " --scheme sqrt3", dir);
+	const ToolRun s =
+	    run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("out.off")) + " --scheme sqrt3", dir);
 	EXPECT_EQ(s.status, 2);
 	EXPECT_NE(s.err.find("triangle"), std::string::npos) << s.err;
 }
@@ -80,17 +81,16 @@ TEST(ToolSubdivide, LoopAndSqrt3OnTriangles)
 		io::save_surface(t, dir.file("sphere.ply"));
 	}
 	const uint32 v = nb_cells<CMap2::Vertex>(t), e = nb_cells<CMap2::Edge>(t), f = nb_cells<CMap2::Face>(t);
-	ToolRun r = run_tool("subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("loop.obj")) +
-							 " --scheme loop",
-						 dir);
+	ToolRun r = run_tool(
+	    "subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("loop.obj")) + " --scheme loop", dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	CMap2 l;
 	io::load_surface(l, dir.file("loop.obj"));
 	EXPECT_EQ(nb_cells<CMap2::Vertex>(l), v + e);
 	EXPECT_EQ(nb_cells<CMap2::Face>(l), 4 * f);
 	r = run_tool("subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("s3.ply")) +
-					 " --scheme sqrt3 -n 2 --binary",
-				 dir);
+	                 " --scheme sqrt3 -n 2 --binary",
+	             dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	CMap2 s3;
 	io::load_surface(s3, dir.file("s3.ply"));
@@ -110,19 +110,20 @@ TEST(ToolSubdivide, TetMeshAndWrongKinds)
 			(*pos)[b.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 		io::save_volume(g, dir.file("grid.mesh"));
 	}
-	ToolRun r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("fine.vtu")) +
-							 " --scheme tet",
-						 dir);
+	ToolRun r = run_tool(
+	    "subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("fine.vtu")) + " --scheme tet", dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	CMap3 fine;
 	io::load_volume(fine, dir.file("fine.vtu"));
 	EXPECT_EQ(nb_cells<CMap3::Volume>(fine), 8 * nb_cells<CMap3::Volume>(g));
 	EXPECT_TRUE(check_integrity(fine).ok());
 	// hexahedral refinement of tetrahedra, a surface scheme on a volume file
-	r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("x.mesh")) + " --scheme hex", dir);
+	r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("x.mesh")) + " --scheme hex",
+	             dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("hexahedron"), std::string::npos) << r.err;
-	r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("x.off")) + " --scheme loop", dir);
+	r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("x.off")) + " --scheme loop",
+	             dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("volume"), std::string::npos) << r.err;
 }
