@@ -14,5 +14,6 @@ Command add_smooth_command(CLI::App& app);
 Command add_triangulate_command(CLI::App& app);
 Command add_decimate_command(CLI::App& app);
 Command add_remesh_command(CLI::App& app);
+Command add_subdivide_command(CLI::App& app);
 
 } // namespace cgogn::tool

@@ -9,3 +9,4 @@
 #include <cgogn/modeling/decimation.h>
 #include <cgogn/modeling/triangle_tree.h>
 #include <cgogn/modeling/remeshing.h>
+#include <cgogn/modeling/subdivision.h>
