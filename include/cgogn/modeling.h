@@ -5,3 +5,6 @@
 
 #include <cgogn/modeling/progress.h>
 #include <cgogn/modeling/triangulation.h>
+#include <cgogn/modeling/fairing.h>
+#include <cgogn/modeling/hole_filling.h>
+#include <cgogn/modeling/dual.h>
