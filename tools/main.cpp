@@ -15,6 +15,7 @@ int main(int argc, char** argv)
 	const std::vector<tool::Command> commands = {
 		tool::add_info_command(app),		tool::add_check_command(app),		tool::add_convert_command(app),
 		tool::add_smooth_command(app),		tool::add_triangulate_command(app),
+		tool::add_fill_holes_command(app),	tool::add_dual_command(app),
 	};
 	try
 	{
