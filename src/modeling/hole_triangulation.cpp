@@ -19,22 +19,22 @@ namespace cgogn::modeling::detail
 namespace
 {
 
-constexpr double INFINITE_WEIGHT = std::numeric_limits<double>::infinity();
+constexpr float INFINITE_ANGLE = std::numeric_limits<float>::infinity();
 constexpr uint32 NO_APEX = std::numeric_limits<uint32>::max();
 // dihedral terms closer than this count as equal, so that rounding noise on
 // (nearly) planar holes does not hide the area criterion
-constexpr double ANGLE_TOLERANCE = 1e-9;
+constexpr float ANGLE_TOLERANCE = 1e-6f;
 
 /// 1 - cos of the angle between two unit normals: 0 when the triangles are
 /// coplanar, 2 when folded back; a degenerate triangle (zero normal) is worse
 /// than any fold (a hole filled on the back of a flat disk is folded 180
 /// degrees everywhere along its boundary, and degenerate triangles would win
 /// there on area).
-double dihedral_term(const Vec3 &a, const Vec3 &b)
+float dihedral_term(const Eigen::Vector3f &a, const Eigen::Vector3f &b)
 {
-	if (a.isZero(0.0) || b.isZero(0.0))
-		return 4.0;
-	return 1.0 - a.dot(b);
+	if (a.isZero(0.0f) || b.isZero(0.0f))
+		return 4.0f;
+	return 1.0f - a.dot(b);
 }
 
 Vec3 unit_or_zero(const Vec3 &v)
@@ -82,32 +82,42 @@ bool optimal_hole_triangulation(const CMap2 &m, const Attribute<Vec3> &pos, cons
                                 ProgressReporter &reporter, double from, double to, HoleTriangulation &out)
 {
 	const uint32 n = uint32(loop.size());
-	std::vector<Vec3> p(n), outside(n);
+	// single precision, relative to the loop's centroid: the table below is
+	// read n^3 / 3 times and memory traffic is the cost; float rounding stays
+	// far below the angle tolerance
+	Vec3 center = Vec3::Zero();
+	for (Dart d : loop)
+		center += pos[index_of(m, CMap2::Vertex(d))];
+	center /= double(n);
+	std::vector<Eigen::Vector3f> p(n), outside(n);
 	for (uint32 i = 0; i < n; ++i)
 	{
-		p[i] = pos[index_of(m, CMap2::Vertex(loop[i]))];
+		p[i] = (pos[index_of(m, CMap2::Vertex(loop[i]))] - center).cast<float>();
 		// the face across loop edge i, oriented like the triangles that will fill the hole
-		outside[i] = unit_or_zero(geometry::newell_vector(m, pos, phi2(m, loop[i])));
+		outside[i] = unit_or_zero(geometry::newell_vector(m, pos, phi2(m, loop[i]))).cast<float>();
 	}
 	const std::vector<char> forbidden = forbidden_diagonals(m, loop);
 	const auto at = [n](uint32 i, uint32 j) { return std::size_t(i) * n + j; };
 
 	out.n = n;
-	std::vector<double> angle(std::size_t(n) * n), area(std::size_t(n) * n);
+	// the best triangulation of each sub-polygon i..j: its weight and the unit
+	// normal of its triangle on (i, j), stored at (i, j) and (j, i) so that
+	// the inner loop reads rows i and j contiguously
+	struct Sub
+	{
+		float angle;
+		float area;
+		Eigen::Vector3f normal;
+	};
+	std::vector<Sub> sub(std::size_t(n) * n);
 	// first with the forbidden diagonals avoided; when no triangulation avoids
 	// them (rare: a loop whose vertices are all joined outside), with them
 	for (const bool avoid : {true, false})
 	{
 		out.split.assign(std::size_t(n) * n, NO_APEX);
-		std::fill(angle.begin(), angle.end(), 0.0);
-		std::fill(area.begin(), area.end(), 0.0);
-		const auto top_normal = [&](uint32 i, uint32 j)
-		{
-			if (j == i + 1)
-				return outside[i];
-			const uint32 k = out.apex(i, j);
-			return unit_or_zero((p[k] - p[i]).cross(p[j] - p[i]));
-		};
+		std::fill(sub.begin(), sub.end(), Sub{INFINITE_ANGLE, INFINITE_ANGLE, Eigen::Vector3f::Zero()});
+		for (uint32 i = 0; i + 1 < n; ++i)
+			sub[at(i, i + 1)] = sub[at(i + 1, i)] = Sub{0.0f, 0.0f, outside[i]};
 		for (uint32 len = 2; len < n; ++len)
 		{
 			if (!reporter.report(from + (to - from) * double(len) / double(n)))
@@ -115,34 +125,37 @@ bool optimal_hole_triangulation(const CMap2 &m, const Attribute<Vec3> &pos, cons
 			for (uint32 i = 0; i + len < n; ++i)
 			{
 				const uint32 j = i + len;
-				double best_angle = INFINITE_WEIGHT, best_area = INFINITE_WEIGHT;
-				uint32 best_k = NO_APEX;
 				const bool closing = i == 0 && j == n - 1;
-				if (!(avoid && !closing && forbidden[at(i, j)]))
+				if (avoid && !closing && forbidden[at(i, j)])
+					continue;
+				const Sub *row_i = &sub[at(i, 0)];
+				const Sub *row_j = &sub[at(j, 0)];
+				const Eigen::Vector3f pi = p[i], ij = p[j] - p[i];
+				Sub best{INFINITE_ANGLE, INFINITE_ANGLE, Eigen::Vector3f::Zero()};
+				uint32 best_k = NO_APEX;
+				for (uint32 k = i + 1; k < j; ++k)
 				{
-					for (uint32 k = i + 1; k < j; ++k)
+					const Sub &left = row_i[k], &right = row_j[k];
+					const float inherited = std::max(left.angle, right.angle);
+					// also skips the sub-polygons without a triangulation (infinite)
+					if (inherited > best.angle + ANGLE_TOLERANCE)
+						continue;
+					const Eigen::Vector3f twice_area = (p[k] - pi).cross(ij);
+					const float norm = twice_area.norm();
+					const Eigen::Vector3f nt =
+					    norm > 0.0f ? Eigen::Vector3f(twice_area / norm) : Eigen::Vector3f::Zero();
+					float a = std::max({inherited, dihedral_term(nt, left.normal), dihedral_term(nt, right.normal)});
+					if (closing)
+						a = std::max(a, dihedral_term(nt, outside[n - 1]));
+					const float s = left.area + right.area + 0.5f * norm;
+					if (a < best.angle - ANGLE_TOLERANCE || (a <= best.angle + ANGLE_TOLERANCE && s < best.area))
 					{
-						if ((k > i + 1 && out.split[at(i, k)] == NO_APEX) ||
-						    (j > k + 1 && out.split[at(k, j)] == NO_APEX))
-							continue;
-						const Vec3 nt_area = (p[k] - p[i]).cross(p[j] - p[i]);
-						const Vec3 nt = unit_or_zero(nt_area);
-						double a = std::max({angle[at(i, k)], angle[at(k, j)], dihedral_term(nt, top_normal(i, k)),
-						                     dihedral_term(nt, top_normal(k, j))});
-						if (closing)
-							a = std::max(a, dihedral_term(nt, outside[n - 1]));
-						const double s = area[at(i, k)] + area[at(k, j)] + 0.5 * nt_area.norm();
-						if (a < best_angle - ANGLE_TOLERANCE || (a <= best_angle + ANGLE_TOLERANCE && s < best_area))
-						{
-							best_angle = a;
-							best_area = s;
-							best_k = k;
-						}
+						best = Sub{a, s, nt};
+						best_k = k;
 					}
 				}
 				out.split[at(i, j)] = best_k;
-				angle[at(i, j)] = best_angle;
-				area[at(i, j)] = best_area;
+				sub[at(i, j)] = sub[at(j, i)] = best;
 			}
 		}
 		if (out.split[at(0, n - 1)] != NO_APEX)
