@@ -33,7 +33,7 @@ void expect_consistent_fill(const CMap2 &m, uint32 nv, uint32 nf, int64_t chi, c
 // hemisphere.off is a cap of the unit sphere (z >= 0.098) around the origin.
 // Fairing pulls the patch from the flat disk of the boundary circle towards
 // the missing cap: the bi-harmonic patch (tangent continuity) dips to
-// z = -0.33, the tri-harmonic one to z = -0.59 (the sphere reaches -1: a
+// z = -0.35, the tri-harmonic one to z = -0.62 (the sphere reaches -1: a
 // faired patch is a smooth, not a round, fill).
 TEST(HoleFilling, HemisphereBecomesASphere)
 {
