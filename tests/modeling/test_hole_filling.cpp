@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <set>
 
+#include "../geometry/geometry_test_meshes.h"
 #include "modeling_test_utils.h"
 
 using namespace cgogn;
@@ -291,5 +292,27 @@ TEST(HoleFilling, CancellationLeavesAValidMap)
 			EXPECT_EQ(r.holes_filled, 0u);
 		}
 		expect_consistent_fill(m, nv, nf, chi, r);
+	}
+}
+
+TEST(HoleFilling, AvoidsDiagonalsThatExistOutside)
+{
+	// two triangles (a, b, c), (a, c, d): their back is a hole of loop a, d, c,
+	// b whose diagonal a-c already exists; every quad shape, even one where
+	// a-c is the better diagonal for the back, must get b-d
+	for (const double lift : {0.0, 0.5, -0.5})
+	{
+		CMap2 m;
+		auto pos = test::build_with_positions(
+		    m, test::polygon_soup({{0, 0, 0}, {1, 0, lift}, {1, 1, 0}, {0, 1, lift}}, {{0, 1, 2}, {0, 2, 3}}));
+		modeling::HoleFillingOptions o;
+		o.refine = false;
+		const auto r = modeling::fill_holes(m, *pos, o);
+		EXPECT_EQ(r.holes_filled, 1u);
+		EXPECT_TRUE(check_integrity(m).ok());
+		EXPECT_EQ(nb_multiple_edges(m), 0u) << lift;
+		EXPECT_EQ(nb_cells<CMap2::Edge>(m), 6u);
+		EXPECT_EQ(nb_cells<CMap2::Face>(m), 4u);
+		foreach_cell(m, [&](CMap2::Vertex v) { EXPECT_EQ(degree(m, v), 3u) << "a tetrahedron"; });
 	}
 }

@@ -61,8 +61,10 @@ struct HoleFillingResult
 /// are split at their centroid and edges flipped to Delaunay until the edge
 /// lengths match the mean edge length at the loop's vertices, and with
 /// options.fair the new vertices are placed by fair_vertices. The new faces
-/// are oriented like the surface. Precondition (throws TopologyError): d is a
-/// boundary dart of m. Cost O(n^3) for a loop of n edges (n <= max_optimal_size),
+/// are oriented like the surface. Loops of fewer than 3 edges or more than
+/// options.max_hole_size are left open (counted as skipped). `pos` is m's
+/// vertex position attribute; new vertices get positions there. Precondition
+/// (throws TopologyError): d is a boundary dart of m. Cost O(n^3) for a loop of n edges (n <= max_optimal_size),
 /// O(n^2) to O(n^3) by ear clipping above, plus the refinement and a sparse
 /// solve on the patch. Named like core's cgogn::fill_hole(m, d) (which turns
 /// the hole into one polygon) but with positions and options: the two never
