@@ -15,23 +15,6 @@ using namespace cgogn::io_test;
 namespace
 {
 
-struct ToolRun
-{
-	int status = -1;
-	std::string err;
-};
-
-ToolRun run_tool(const std::string& args, const TempDir& dir)
-{
-	const std::string err = dir.file("stderr");
-	const std::string cmd = std::string("'") + CGOGN_TOOL_PATH + "' " + args + " >/dev/null 2>'" + err + "'";
-	ToolRun r;
-	const int s = std::system(cmd.c_str());
-	r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-	r.err = read_text(err);
-	return r;
-}
-
 uint32 count_faces(const CMap2& m)
 {
 	uint32 n = 0;

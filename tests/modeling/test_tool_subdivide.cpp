@@ -15,25 +15,6 @@ using namespace cgogn::io_test;
 namespace
 {
 
-struct ToolRun
-{
-	int status = -1;
-	std::string err;
-};
-
-ToolRun run_tool(const std::string &args, const TempDir &dir)
-{
-	const std::string err = dir.file("stderr");
-	const std::string cmd = std::string("'") + CGOGN_TOOL_PATH + "' " + args + " >/dev/null 2>'" + err + "'";
-	const int s = std::system(cmd.c_str());
-	return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, read_text(err)};
-}
-
-std::string quoted(const std::string &s)
-{
-	return "'" + s + "'";
-}
-
 const std::string spot = std::string(CGOGN_EXAMPLE_DATA_DIR) + "/spot_control_mesh.obj";
 
 } // namespace
