@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
 // cgogn's side of the surface suite: a CMap2 with double positions and
 // vertex and face normals (Vec3 attributes), built from the shared soup.
-// "plain" mode: no incidence cache; cells are visited by walking the indexed
-// containers (foreach_cell) and the local traversals of local_cmap2.h.
+// "plain" mode (library cgogn): no incidence cache; cells are visited by
+// walking the indexed containers (foreach_cell) and the local traversals of
+// local_cmap2.h. "quick" mode (library cgogn_quick): the same workloads on a
+// map holding the quick incidence caches vertex -> faces, face -> vertices and
+// vertex -> vertices through edges (IncidenceCache), which the same local
+// traversals then read; built untimed before the runs, their build timed
+// separately (surface/cache_build/cgogn_quick).
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
@@ -16,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 namespace cgogn_bench
@@ -33,6 +39,9 @@ struct CgognSurface
 {
 	CMap2 map;
 	std::shared_ptr<Attribute<Vec3>> position, vnormal, fnormal;
+	// quick mode: boundary flag per vertex (the flat arrays' boundary flags),
+	// filled with the caches
+	std::shared_ptr<Attribute<uint8>> boundary;
 	uint32 vertex_offset = 0;
 
 	explicit CgognSurface(const SurfaceSoup& s)
@@ -50,9 +59,41 @@ struct CgognSurface
 	}
 };
 
-CgognSurface& mesh()
+enum class Mode
 {
-	return Cache::get<CgognSurface>("cgogn/surface", [] { return std::make_unique<CgognSurface>(surface_soup()); });
+	plain,
+	quick
+};
+
+// The caches of quick mode, and the boundary flags its smoothing reads.
+void build_quick_caches(CgognSurface& me)
+{
+	CMap2& m = me.map;
+	IncidenceCache<CMap2, Vertex, Face>::build(m);
+	IncidenceCache<CMap2, Face, Vertex>::build(m);
+	IncidenceCache<CMap2, Vertex, Vertex, Edge>::build(m);
+	if (!me.boundary)
+		me.boundary = add_attribute<uint8, Vertex>(m, "boundary");
+	Attribute<uint8>& b = *me.boundary;
+	parallel_foreach_cell(m, [&](Vertex v) { value<uint8>(m, b, v) = is_incident_to_boundary(m, v); });
+}
+
+std::size_t quick_cache_bytes(const CgognSurface& me)
+{
+	const CMap2& m = me.map;
+	return IncidenceCache<CMap2, Vertex, Face>::memory_bytes(m) + IncidenceCache<CMap2, Face, Vertex>::memory_bytes(m) +
+		   IncidenceCache<CMap2, Vertex, Vertex, Edge>::memory_bytes(m);
+}
+
+CgognSurface& mesh(Mode mode = Mode::plain)
+{
+	if (mode == Mode::plain)
+		return Cache::get<CgognSurface>("cgogn/surface", [] { return std::make_unique<CgognSurface>(surface_soup()); });
+	return Cache::get<CgognSurface>("cgogn_quick/surface", [] {
+		auto me = std::make_unique<CgognSurface>(surface_soup());
+		build_quick_caches(*me);
+		return me;
+	});
 }
 
 double position_sum(const CgognSurface& me)
@@ -65,9 +106,9 @@ double position_sum(const CgognSurface& me)
 	return s;
 }
 
-void circulator(benchmark::State& state, bool first)
+void circulator(benchmark::State& state, bool first, Mode mode)
 {
-	const CMap2& m = mesh().map;
+	const CMap2& m = mesh(mode).map;
 	int64 c = 0;
 	timed(
 		state, first, [] {},
@@ -80,9 +121,9 @@ void circulator(benchmark::State& state, bool first)
 	set_check(state, "check", double(c));
 }
 
-void barycenter(benchmark::State& state, bool first)
+void barycenter(benchmark::State& state, bool first, Mode mode)
 {
-	CgognSurface& me = mesh();
+	CgognSurface& me = mesh(mode);
 	const CMap2& m = me.map;
 	Attribute<Vec3>& pos = *me.position;
 	timed(
@@ -105,9 +146,9 @@ void barycenter(benchmark::State& state, bool first)
 	set_check(state, "check", s);
 }
 
-void normal(benchmark::State& state, bool first)
+void normal(benchmark::State& state, bool first, Mode mode)
 {
-	CgognSurface& me = mesh();
+	CgognSurface& me = mesh(mode);
 	const CMap2& m = me.map;
 	const Attribute<Vec3>& pos = *me.position;
 	Attribute<Vec3>& fn = *me.fnormal;
@@ -130,6 +171,53 @@ void normal(benchmark::State& state, bool first)
 	double s = 0;
 	foreach_cell(m, [&](Vertex v) { s += value<Vec3>(m, vn, v).sum(); });
 	set_check(state, "check", s);
+}
+
+void smoothing_quick(benchmark::State& state, bool first)
+{
+	CgognSurface& me = mesh(Mode::quick);
+	const CMap2& m = me.map;
+	Attribute<Vec3>& pos = *me.position;
+	const Attribute<uint8>& boundary = *me.boundary;
+	timed(
+		state, first, [&] { me.reset_positions(surface_soup()); },
+		[&] {
+			// the one-ring from the vertex -> vertex cache, the boundary from its flag
+			foreach_cell(m, [&](Vertex v) {
+				if (value<uint8>(m, boundary, v))
+					return;
+				Vec3 s = Vec3::Zero();
+				uint32 n = 0;
+				foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+					s += value<Vec3>(m, pos, w);
+					++n;
+				});
+				value<Vec3>(m, pos, v) = s / double(n);
+			});
+		});
+	set_check(state, "check", position_sum(me));
+}
+
+void cache_build(benchmark::State& state, bool)
+{
+	CgognSurface& me = mesh(Mode::quick);
+	double wall = 0;
+	for (auto _ : state)
+	{
+		// every table (and the flags) dropped, then built again: process CPU
+		// time, the build runs on the thread pool
+		IncidenceCache<CMap2, Vertex, Face>::remove(me.map);
+		IncidenceCache<CMap2, Face, Vertex>::remove(me.map);
+		IncidenceCache<CMap2, Vertex, Vertex, Edge>::remove(me.map);
+		const double c0 = process_seconds();
+		const auto t0 = std::chrono::steady_clock::now();
+		build_quick_caches(me);
+		const auto t1 = std::chrono::steady_clock::now();
+		state.SetIterationTime(process_seconds() - c0);
+		wall += std::chrono::duration<double>(t1 - t0).count();
+	}
+	state.counters["wall_ms"] = wall * 1e3;
+	state.counters["cache_MB"] = double(quick_cache_bytes(me)) / 1e6;
 }
 
 void smoothing(benchmark::State& state, bool first)
@@ -313,20 +401,21 @@ void dynamic(benchmark::State& state, bool)
 #endif
 
 const bool registered = [] {
-	register_bench("surface/circulator/cgogn", Kind::read_only, circulator);
-	register_bench("surface/barycenter/cgogn", Kind::read_only, barycenter);
-	register_bench("surface/normal/cgogn", Kind::read_only, normal);
+	using std::placeholders::_1, std::placeholders::_2;
+	register_bench("surface/circulator/cgogn", Kind::read_only, std::bind(circulator, _1, _2, Mode::plain));
+	register_bench("surface/barycenter/cgogn", Kind::read_only, std::bind(barycenter, _1, _2, Mode::plain));
+	register_bench("surface/normal/cgogn", Kind::read_only, std::bind(normal, _1, _2, Mode::plain));
 	register_bench("surface/smoothing/cgogn", Kind::read_only, smoothing);
+	register_bench("surface/cache_build/cgogn_quick", Kind::read_only, cache_build);
+	register_bench("surface/circulator/cgogn_quick", Kind::read_only, std::bind(circulator, _1, _2, Mode::quick));
+	register_bench("surface/barycenter/cgogn_quick", Kind::read_only, std::bind(barycenter, _1, _2, Mode::quick));
+	register_bench("surface/normal/cgogn_quick", Kind::read_only, std::bind(normal, _1, _2, Mode::quick));
+	register_bench("surface/smoothing/cgogn_quick", Kind::read_only, smoothing_quick);
 #if CGOGN_BENCH_HAS_TOPOLOGY
 	register_bench("surface/subdivision/cgogn", Kind::topology, subdivision);
 	register_bench("surface/collapse/cgogn", Kind::topology, collapse);
 	register_bench("surface/dynamic/cgogn", Kind::single, dynamic);
 #endif
-	// REGISTRATION POINT (cgogn_quick): with CGOGN_BENCH_HAS_QUICK, register
-	// surface/<workload>/cgogn_quick for the four read-only workloads above,
-	// running the same lambdas on the map with incidence caches enabled
-	// (vertex->face, face->vertex, vertex->vertex), the cache build reported
-	// as a separate benchmark surface/cache_build/cgogn_quick.
 	register_bench("memory/surface/cgogn", Kind::single, memory);
 	return true;
 }();

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "inputs.h"
 
-#include "soup_reader.h"
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/surface.h>
+#include <cgogn/io/volume.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -81,20 +84,74 @@ cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed)
 	return r;
 }
 
+namespace
+{
+
+// Soup vertex ids in the order of the vertex container (the file's order:
+// the io layer gives file vertex i the line vertex_offset + i), positions copied.
+template <typename MAP, typename SOUP>
+std::vector<uint32_t> number_vertices(const MAP& m, SOUP& s, const std::string& path)
+{
+	using Vertex = typename cgogn::mesh_traits<MAP>::Vertex;
+	const auto pos = cgogn::get_attribute<cgogn::Vec3, Vertex>(m, "position");
+	if (!pos)
+		throw std::runtime_error(path + ": no vertex positions");
+	std::vector<uint32_t> id(cgogn::container_of<Vertex::ORBIT>(m).end_index(), cgogn::INVALID_INDEX);
+	cgogn::foreach_cell(m, [&](Vertex v) {
+		const cgogn::Vec3& p = cgogn::value<cgogn::Vec3>(m, *pos, v);
+		id[cgogn::index_of(m, v)] = uint32_t(s.positions.size());
+		s.positions.push_back({p[0], p[1], p[2]});
+	});
+	s.nb_vertices = uint32_t(s.positions.size());
+	return id;
+}
+
+} // namespace
+
 cgogn::SurfaceSoup load_surface_soup(const std::string& path)
 {
-	auto s = read_obj_soup(path);
-	if (!s)
-		throw std::runtime_error("cannot read " + path);
-	return std::move(*s);
+	using Vertex = cgogn::CMap2::Vertex;
+	using Face = cgogn::CMap2::Face;
+	cgogn::CMap2 m;
+	cgogn::io::load_surface(m, path);
+	cgogn::SurfaceSoup s;
+	const std::vector<uint32_t> id = number_vertices(m, s, path);
+	// faces in dart order, i.e. the file's order; each from its first dart
+	cgogn::foreach_cell(m, [&](Face f) {
+		uint32_t n = 0;
+		cgogn::foreach_incident_vertex(m, f, [&](Vertex v) {
+			s.face_vertices.push_back(id[cgogn::index_of(m, v)]);
+			++n;
+		});
+		s.face_sizes.push_back(n);
+	});
+	return s;
 }
 
 cgogn::VolumeSoup load_volume_soup(const std::string& path)
 {
-	auto s = read_medit_tet_soup(path);
-	if (!s)
-		throw std::runtime_error("cannot read " + path);
-	return std::move(*s);
+	using Vertex = cgogn::CMap3::Vertex;
+	using Volume = cgogn::CMap3::Volume;
+	cgogn::CMap3 m;
+	cgogn::io::load_volume(m, path);
+	cgogn::VolumeSoup s;
+	const std::vector<uint32_t> id = number_vertices(m, s, path);
+	auto vertex = [&](cgogn::Dart d) { return id[cgogn::index_of(m, Vertex(d))]; };
+	cgogn::foreach_cell(m, [&](Volume w) {
+		// a tet in the builder's (MEDIT) order: the face of w.dart in reverse
+		// phi1 order, then the apex
+		uint32_t nv = 0;
+		cgogn::foreach_incident_vertex(m, w, [&](Vertex) { ++nv; });
+		if (nv != 4)
+			throw std::runtime_error(path + ": the benchmarks take tetrahedra only");
+		const cgogn::Dart d = w.dart;
+		const cgogn::Dart d1 = cgogn::phi_1(m, d), d2 = cgogn::phi_1(m, d1);
+		const cgogn::Dart apex = cgogn::phi_1(m, cgogn::phi2(m, d));
+		for (cgogn::Dart x : {d, d1, d2, apex})
+			s.cell_vertices.push_back(vertex(x));
+		s.cell_sizes.push_back(4);
+	});
+	return s;
 }
 
 const cgogn::SurfaceSoup& surface_soup()

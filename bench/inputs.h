@@ -40,12 +40,14 @@ cgogn::SurfaceSoup refine_1_to_4(const cgogn::SurfaceSoup& s);
 /// Swaps two vertices of every tet of negative signed volume.
 void orient_tets_positive(cgogn::VolumeSoup& s);
 
-/// Plug-in point for the io layer: the polygon soup of a surface file
-/// (today the bench-only OBJ reader of soup_reader.h). Throws std::runtime_error
-/// when the file cannot be read.
+/// The polygon soup of a surface file: read once by cgogn::io::load_surface
+/// into a CMap2, then extracted (vertices in file order, faces in file order,
+/// each from its first vertex). Throws cgogn::io::Error when the file cannot be
+/// read.
 cgogn::SurfaceSoup load_surface_soup(const std::string& path);
-/// Plug-in point for the io layer: the tets of a volume file (today the
-/// bench-only MEDIT reader of soup_reader.h).
+/// The tets of a volume file: read by cgogn::io::load_volume into a CMap3 (which
+/// turns negatively oriented cells over), then extracted in the builder's
+/// vertex order. Throws on cells that are not tetrahedra.
 cgogn::VolumeSoup load_volume_soup(const std::string& path);
 
 } // namespace cgogn_bench
