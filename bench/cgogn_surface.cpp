@@ -8,6 +8,7 @@
 // vertex -> vertices through edges (IncidenceCache), which the same local
 // traversals then read; built untimed before the runs, their build timed
 // separately (surface/cache_build/cgogn_quick).
+#include "cgogn_reorder.h"
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
@@ -43,6 +44,8 @@ struct CgognSurface
 	// filled with the caches
 	std::shared_ptr<Attribute<uint8>> boundary;
 	uint32 vertex_offset = 0;
+	// with --reorder: the vertex line of each soup vertex (else vertex_offset + i)
+	std::vector<uint32> line_of_soup_vertex;
 
 	explicit CgognSurface(const SurfaceSoup& s)
 	{
@@ -51,11 +54,13 @@ struct CgognSurface
 		vnormal = add_attribute<Vec3, Vertex>(map, "normal");
 		fnormal = add_attribute<Vec3, Face>(map, "normal");
 		reset_positions(s);
+		if (reorder_requested())
+			line_of_soup_vertex = reorder_by_morton(map, *position, vertex_offset, s.nb_vertices);
 	}
 	void reset_positions(const SurfaceSoup& s)
 	{
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
-			(*position)[vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	}
 };
 

@@ -7,6 +7,7 @@
 // volume -> vertices, vertex -> vertices through volumes and through edges
 // (IncidenceCache), read by the same local traversals; their build is timed
 // separately (volume/cache_build/cgogn_quick).
+#include "cgogn_reorder.h"
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
@@ -38,6 +39,8 @@ struct CgognVolume
 	CMap3 map;
 	std::shared_ptr<Attribute<Vec3>> position, position2, barycenter;
 	uint32 vertex_offset = 0;
+	// with --reorder: the vertex line of each soup vertex (else vertex_offset + i)
+	std::vector<uint32> line_of_soup_vertex;
 
 	CgognVolume(const VolumeSoup& s, bool with_work_attributes)
 	{
@@ -49,11 +52,13 @@ struct CgognVolume
 			barycenter = add_attribute<Vec3, Volume>(map, "barycenter");
 		}
 		reset_positions(s);
+		if (reorder_requested())
+			line_of_soup_vertex = reorder_by_morton(map, *position, vertex_offset, s.nb_vertices);
 	}
 	void reset_positions(const VolumeSoup& s)
 	{
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
-			(*position)[vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	}
 };
 

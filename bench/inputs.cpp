@@ -21,6 +21,38 @@ namespace
 
 std::string input_kind;
 uint32_t permutation_seed = 0;
+bool reorder_on = false;
+
+// vertex ids and cell order permuted: SOUP is a SurfaceSoup or a VolumeSoup
+template <typename SOUP>
+SOUP permute_cells(const SOUP& s, const std::vector<uint32_t>& sizes, const std::vector<uint32_t>& vertices,
+				   uint32_t seed, std::vector<uint32_t>& out_sizes, std::vector<uint32_t>& out_vertices)
+{
+	std::mt19937 rng(seed);
+	std::vector<uint32_t> new_id(s.nb_vertices);
+	std::iota(new_id.begin(), new_id.end(), 0u);
+	std::shuffle(new_id.begin(), new_id.end(), rng);
+	std::vector<uint32_t> offset(sizes.size() + 1, 0);
+	for (std::size_t f = 0; f < sizes.size(); ++f)
+		offset[f + 1] = offset[f] + sizes[f];
+	std::vector<uint32_t> order(sizes.size());
+	std::iota(order.begin(), order.end(), 0u);
+	std::shuffle(order.begin(), order.end(), rng);
+	SOUP r;
+	r.nb_vertices = s.nb_vertices;
+	r.positions.resize(s.nb_vertices);
+	for (uint32_t v = 0; v < s.nb_vertices; ++v)
+		r.positions[new_id[v]] = s.positions[v];
+	out_sizes.reserve(sizes.size());
+	out_vertices.reserve(vertices.size());
+	for (uint32_t f : order)
+	{
+		out_sizes.push_back(sizes[f]);
+		for (uint32_t k = offset[f]; k < offset[f + 1]; ++k)
+			out_vertices.push_back(new_id[vertices[k]]);
+	}
+	return r;
+}
 
 std::string data_path(const char* rel)
 {
@@ -58,30 +90,36 @@ void set_permutation_seed(uint32_t seed)
 
 cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed)
 {
-	std::mt19937 rng(seed);
-	std::vector<uint32_t> new_id(s.nb_vertices);
-	std::iota(new_id.begin(), new_id.end(), 0u);
-	std::shuffle(new_id.begin(), new_id.end(), rng);
-	std::vector<uint32_t> offset(s.face_sizes.size() + 1, 0);
-	for (std::size_t f = 0; f < s.face_sizes.size(); ++f)
-		offset[f + 1] = offset[f] + s.face_sizes[f];
-	std::vector<uint32_t> face_order(s.face_sizes.size());
-	std::iota(face_order.begin(), face_order.end(), 0u);
-	std::shuffle(face_order.begin(), face_order.end(), rng);
-	cgogn::SurfaceSoup r;
-	r.nb_vertices = s.nb_vertices;
-	r.positions.resize(s.nb_vertices);
-	for (uint32_t v = 0; v < s.nb_vertices; ++v)
-		r.positions[new_id[v]] = s.positions[v];
-	r.face_sizes.reserve(s.face_sizes.size());
-	r.face_vertices.reserve(s.face_vertices.size());
-	for (uint32_t f : face_order)
-	{
-		r.face_sizes.push_back(s.face_sizes[f]);
-		for (uint32_t k = offset[f]; k < offset[f + 1]; ++k)
-			r.face_vertices.push_back(new_id[s.face_vertices[k]]);
-	}
+	std::vector<uint32_t> sizes, vertices;
+	cgogn::SurfaceSoup r = permute_cells(s, s.face_sizes, s.face_vertices, seed, sizes, vertices);
+	r.face_sizes = std::move(sizes);
+	r.face_vertices = std::move(vertices);
 	return r;
+}
+
+cgogn::VolumeSoup permute_soup(const cgogn::VolumeSoup& s, uint32_t seed)
+{
+	std::vector<uint32_t> sizes, vertices;
+	cgogn::VolumeSoup r = permute_cells(s, s.cell_sizes, s.cell_vertices, seed, sizes, vertices);
+	r.cell_sizes = std::move(sizes);
+	r.cell_vertices = std::move(vertices);
+	return r;
+}
+
+void set_reorder(bool on)
+{
+	reorder_on = on;
+}
+
+bool reorder_requested()
+{
+	return reorder_on;
+}
+
+std::string order_description()
+{
+	std::string d = permutation_seed != 0 ? "permuted (seed " + std::to_string(permutation_seed) + ")" : "file";
+	return reorder_on ? d + ", cgogn reordered (morton)" : d;
 }
 
 namespace
@@ -180,7 +218,7 @@ const cgogn::VolumeSoup& volume_soup()
 		else
 			s = cgogn::tet_grid_soup(55, 55, 55);
 		orient_tets_positive(s);
-		return s;
+		return permutation_seed != 0 ? permute_soup(s, permutation_seed) : s;
 	}();
 	return soup;
 }
@@ -193,7 +231,9 @@ std::string input_description()
 									 : (kind() == "small" ? "small torus and tet grid"
 														  : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
 	if (permutation_seed != 0)
-		d += "; surface ids permuted with seed " + std::to_string(permutation_seed);
+		d += "; vertex ids and cell order permuted with seed " + std::to_string(permutation_seed);
+	if (reorder_on)
+		d += "; cgogn maps reordered by reorder() with Morton keys";
 	return d + " (surface V=" + std::to_string(s.nb_vertices) + " F=" + std::to_string(s.face_sizes.size()) +
 		   "; volume V=" + std::to_string(v.nb_vertices) + " T=" + std::to_string(v.cell_sizes.size()) + ")";
 }

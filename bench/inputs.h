@@ -20,12 +20,21 @@ namespace cgogn_bench
 
 /// Selects the input ("data", "generated", "small"); call before the benchmarks run.
 void set_input(const std::string& kind);
-/// --permute=SEED: the surface soup's vertex ids and face order are randomly
+/// --permute=SEED: the soups' vertex ids and face (cell) order are randomly
 /// permuted (std::mt19937 with this seed) before any library builds from it:
 /// badly ordered files are what users load, and order dominates traversal cost.
 void set_permutation_seed(uint32_t seed);
+/// --reorder: cgogn's maps are reordered after building (core reorder() with
+/// Morton keys, see cgogn_reorder.h); the peers are not affected.
+void set_reorder(bool on);
+bool reorder_requested();
 /// Returns s with vertex ids and face order permuted (same mesh).
 cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed);
+/// Returns s with vertex ids and cell order permuted (same mesh).
+cgogn::VolumeSoup permute_soup(const cgogn::VolumeSoup& s, uint32_t seed);
+/// The input order variant, for the benchmark context "order": "file",
+/// "permuted (seed N)", each followed by ", cgogn reordered (morton)" with --reorder.
+std::string order_description();
 /// What the inputs are, for the benchmark context (e.g. "nefertiti.obj x2 refined: V=..., F=...").
 std::string input_description();
 
