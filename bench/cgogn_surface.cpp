@@ -169,7 +169,8 @@ void normal(benchmark::State& state, bool first, Mode mode)
 			});
 			foreach_cell(m, [&](Vertex v) {
 				Vec3 n = Vec3::Zero();
-				foreach_incident_face(m, v, [&](Face f) { n += value<Vec3>(m, fn, f); });
+				// `auto`: a cached traversal gives LocatedCell, read without index lookup
+				foreach_incident_face(m, v, [&](auto f) { n += value<Vec3>(m, fn, f); });
 				value<Vec3>(m, vn, v) = n.normalized();
 			});
 		});
@@ -193,7 +194,7 @@ void smoothing_quick(benchmark::State& state, bool first)
 					return;
 				Vec3 s = Vec3::Zero();
 				uint32 n = 0;
-				foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+				foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
 					s += value<Vec3>(m, pos, w);
 					++n;
 				});

@@ -171,7 +171,8 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 			foreach_cell(m, [&](Volume w) {
 				Vec3 b = Vec3::Zero();
 				uint32 n = 0;
-				foreach_incident_vertex(m, w, [&](Vertex v) {
+				// `auto`: a cached traversal gives LocatedCell, read without index lookup
+				foreach_incident_vertex(m, w, [&](auto v) {
 					b += value<Vec3>(m, pos, v);
 					++n;
 				});
@@ -191,7 +192,7 @@ void smoothing_pass(CgognVolume& me)
 	foreach_cell(m, [&](Vertex v) {
 		Vec3 s = Vec3::Zero();
 		uint32 n = 0;
-		foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+		foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
 			s += value<Vec3>(m, pos, w);
 			++n;
 		});

@@ -76,9 +76,9 @@ const std::string& kind()
 
 void set_input(const std::string& k)
 {
-	if (k != "data" && k != "generated" && k != "small")
-		throw std::runtime_error("--input must be data, generated or small");
-	if (k == "data" && !data_present())
+	if (k != "data" && k != "data-unrefined" && k != "generated" && k != "small")
+		throw std::runtime_error("--input must be data, data-unrefined, generated or small");
+	if ((k == "data" || k == "data-unrefined") && !data_present())
 		throw std::runtime_error("--input=data: meshes not found in " + std::string(CGOGN_DATA_DIR));
 	input_kind = k;
 }
@@ -198,6 +198,8 @@ const cgogn::SurfaceSoup& surface_soup()
 		cgogn::SurfaceSoup s;
 		if (kind() == "data")
 			s = refine_1_to_4(refine_1_to_4(load_surface_soup(data_path("surface/nefertiti.obj"))));
+		else if (kind() == "data-unrefined")
+			s = load_surface_soup(data_path("surface/nefertiti.obj"));
 		else if (kind() == "small")
 			s = cgogn::torus_soup(40, 30, true);
 		else
@@ -211,7 +213,7 @@ const cgogn::VolumeSoup& volume_soup()
 {
 	static const cgogn::VolumeSoup soup = [] {
 		cgogn::VolumeSoup s;
-		if (kind() == "data")
+		if (kind() == "data" || kind() == "data-unrefined")
 			s = load_volume_soup(data_path("volume/armadillo_tet_461k.mesh"));
 		else if (kind() == "small")
 			s = cgogn::tet_grid_soup(6, 5, 4);
@@ -227,7 +229,8 @@ std::string input_description()
 {
 	const auto& s = surface_soup();
 	const auto& v = volume_soup();
-	std::string d = kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
+	std::string d = kind() == "data-unrefined" ? "surface: nefertiti.obj; volume: armadillo_tet_461k.mesh"
+					: kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
 									 : (kind() == "small" ? "small torus and tet grid"
 														  : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
 	if (permutation_seed != 0)

@@ -7,6 +7,8 @@
 // --input=data (default when CGOGN_DATA_DIR holds the files): nefertiti.obj
 //   refined twice by 1-to-4 midpoint subdivision (1,599,008 triangles) and
 //   armadillo_tet_461k.mesh (tets re-oriented to positive volume).
+// --input=data-unrefined: nefertiti.obj as it is (99,938 triangles) and
+//   armadillo_tet_461k.mesh.
 // --input=generated: torus_soup(1000, 800, true) (1,600,000 triangles) and
 //   tet_grid_soup(55, 55, 55) (998,250 tets): runs without the data folder.
 // --input=small: a small torus and tet grid (smoke test of the check values).
@@ -18,7 +20,7 @@
 namespace cgogn_bench
 {
 
-/// Selects the input ("data", "generated", "small"); call before the benchmarks run.
+/// Selects the input ("data", "data-unrefined", "generated", "small"); call before the benchmarks run.
 void set_input(const std::string& kind);
 /// --permute=SEED: the soups' vertex ids and face (cell) order are randomly
 /// permuted (std::mt19937 with this seed) before any library builds from it:
