@@ -210,22 +210,29 @@ def dynamic_table(runs):
     return "\n".join(head + rows) + "\n"
 
 
+def short_order(order):
+    if "reordered" in order:
+        return "permuted + reorder" if order.startswith("permuted") else "file + reorder"
+    return "permuted" if order.startswith("permuted") else order
+
+
 def order_tables(paths):
-    variants = []  # (order, runs) in the order of the files
+    # files with the same order variant are merged (a later file's runs replace an earlier one's)
+    variants = {}  # order -> runs, in the order of first appearance
     for p in paths:
         runs, context = load([p])
-        variants.append((context.get("order", p), runs))
-    out = []
+        variants.setdefault(context.get("order", p), {}).update(runs)
+    out = ["Orders: " + "; ".join(f"**{short_order(o)}** = {o}" for o in variants) + ".\n"]
     for suite, workloads in SUITES.items():
         cols = []
         for lib in LIBRARIES:
-            for order, runs in variants:
+            for order, runs in variants.items():
                 if any(f"{suite}/{w}/{lib}" in runs for w in workloads):
-                    cols.append((lib, order, runs))
+                    cols.append((lib, short_order(order), runs))
         if not cols:
             continue
         out.append(f"### {suite} suite by input order: time per run, median (min) in ms\n")
-        out.append("| workload | " + " | ".join(f"{l} ({o})" for l, o, _ in cols) + " |")
+        out.append("| workload | " + " | ".join(f"{l} {o}" for l, o, _ in cols) + " |")
         out.append("|---" * (len(cols) + 1) + "|")
         for w in workloads:
             row = [w]
