@@ -373,7 +373,10 @@ void collapse(benchmark::State& state, bool)
 	set_counts_and_checksum(state, *me);
 }
 
-void dynamic(benchmark::State& state, bool)
+// with_compact (surface/dynamic_compact/cgogn): each batch ends with
+// compact(m), timed, as the peers' batches end with their garbage collection
+// (without it the freed lines are reused by the next batches)
+void dynamic(benchmark::State& state, bool, bool with_compact)
 {
 	std::unique_ptr<CgognSurface> me = fresh();
 	trim_heap();
@@ -395,6 +398,8 @@ void dynamic(benchmark::State& state, bool)
 				added.push_back(triangulate_face(m, f));
 			for (Vertex v : added)
 				collapse_edge(m, Edge(v.dart));
+			if (with_compact)
+				compact(m);
 			const double dt = thread_seconds() - t0;
 			total += dt;
 			record_batch(state, b, dt);
@@ -420,7 +425,8 @@ const bool registered = [] {
 #if CGOGN_BENCH_HAS_TOPOLOGY
 	register_bench("surface/subdivision/cgogn", Kind::topology, subdivision);
 	register_bench("surface/collapse/cgogn", Kind::topology, collapse);
-	register_bench("surface/dynamic/cgogn", Kind::single, dynamic);
+	register_bench("surface/dynamic/cgogn", Kind::single, std::bind(dynamic, _1, _2, false));
+	register_bench("surface/dynamic_compact/cgogn", Kind::single, std::bind(dynamic, _1, _2, true));
 #endif
 	register_bench("memory/surface/cgogn", Kind::single, memory);
 	return true;
