@@ -1,8 +1,14 @@
 // SPDX-License-Identifier: MIT
 // cgogn's side of the surface suite: a CMap2 with double positions and
 // vertex and face normals (Vec3 attributes), built from the shared soup.
-// "plain" mode: no incidence cache; cells are visited by walking the indexed
-// containers (foreach_cell) and the local traversals of local_cmap2.h.
+// "plain" mode (library cgogn): no incidence cache; cells are visited by
+// walking the indexed containers (foreach_cell) and the local traversals of
+// local_cmap2.h. "quick" mode (library cgogn_quick): the same workloads on a
+// map holding the quick incidence caches vertex -> faces, face -> vertices and
+// vertex -> vertices through edges (IncidenceCache), which the same local
+// traversals then read; built untimed before the runs, their build timed
+// separately (surface/cache_build/cgogn_quick).
+#include "cgogn_reorder.h"
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
@@ -16,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 namespace cgogn_bench
@@ -33,7 +40,12 @@ struct CgognSurface
 {
 	CMap2 map;
 	std::shared_ptr<Attribute<Vec3>> position, vnormal, fnormal;
+	// quick mode: boundary flag per vertex (the flat arrays' boundary flags),
+	// filled with the caches
+	std::shared_ptr<Attribute<uint8>> boundary;
 	uint32 vertex_offset = 0;
+	// with --reorder: the vertex line of each soup vertex (else vertex_offset + i)
+	std::vector<uint32> line_of_soup_vertex;
 
 	explicit CgognSurface(const SurfaceSoup& s)
 	{
@@ -42,17 +54,51 @@ struct CgognSurface
 		vnormal = add_attribute<Vec3, Vertex>(map, "normal");
 		fnormal = add_attribute<Vec3, Face>(map, "normal");
 		reset_positions(s);
+		if (reorder_requested())
+			line_of_soup_vertex = reorder_by_morton(map, *position, vertex_offset, s.nb_vertices);
 	}
 	void reset_positions(const SurfaceSoup& s)
 	{
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
-			(*position)[vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	}
 };
 
-CgognSurface& mesh()
+enum class Mode
 {
-	return Cache::get<CgognSurface>("cgogn/surface", [] { return std::make_unique<CgognSurface>(surface_soup()); });
+	plain,
+	quick
+};
+
+// The caches of quick mode, and the boundary flags its smoothing reads.
+void build_quick_caches(CgognSurface& me)
+{
+	CMap2& m = me.map;
+	IncidenceCache<CMap2, Vertex, Face>::build(m);
+	IncidenceCache<CMap2, Face, Vertex>::build(m);
+	IncidenceCache<CMap2, Vertex, Vertex, Edge>::build(m);
+	if (!me.boundary)
+		me.boundary = add_attribute<uint8, Vertex>(m, "boundary");
+	Attribute<uint8>& b = *me.boundary;
+	parallel_foreach_cell(m, [&](Vertex v) { value<uint8>(m, b, v) = is_incident_to_boundary(m, v); });
+}
+
+std::size_t quick_cache_bytes(const CgognSurface& me)
+{
+	const CMap2& m = me.map;
+	return IncidenceCache<CMap2, Vertex, Face>::memory_bytes(m) + IncidenceCache<CMap2, Face, Vertex>::memory_bytes(m) +
+		   IncidenceCache<CMap2, Vertex, Vertex, Edge>::memory_bytes(m);
+}
+
+CgognSurface& mesh(Mode mode = Mode::plain)
+{
+	if (mode == Mode::plain)
+		return Cache::get<CgognSurface>("cgogn/surface", [] { return std::make_unique<CgognSurface>(surface_soup()); });
+	return Cache::get<CgognSurface>("cgogn_quick/surface", [] {
+		auto me = std::make_unique<CgognSurface>(surface_soup());
+		build_quick_caches(*me);
+		return me;
+	});
 }
 
 double position_sum(const CgognSurface& me)
@@ -65,9 +111,9 @@ double position_sum(const CgognSurface& me)
 	return s;
 }
 
-void circulator(benchmark::State& state, bool first)
+void circulator(benchmark::State& state, bool first, Mode mode)
 {
-	const CMap2& m = mesh().map;
+	const CMap2& m = mesh(mode).map;
 	int64 c = 0;
 	timed(
 		state, first, [] {},
@@ -80,9 +126,9 @@ void circulator(benchmark::State& state, bool first)
 	set_check(state, "check", double(c));
 }
 
-void barycenter(benchmark::State& state, bool first)
+void barycenter(benchmark::State& state, bool first, Mode mode)
 {
-	CgognSurface& me = mesh();
+	CgognSurface& me = mesh(mode);
 	const CMap2& m = me.map;
 	Attribute<Vec3>& pos = *me.position;
 	timed(
@@ -105,9 +151,9 @@ void barycenter(benchmark::State& state, bool first)
 	set_check(state, "check", s);
 }
 
-void normal(benchmark::State& state, bool first)
+void normal(benchmark::State& state, bool first, Mode mode)
 {
-	CgognSurface& me = mesh();
+	CgognSurface& me = mesh(mode);
 	const CMap2& m = me.map;
 	const Attribute<Vec3>& pos = *me.position;
 	Attribute<Vec3>& fn = *me.fnormal;
@@ -123,13 +169,61 @@ void normal(benchmark::State& state, bool first)
 			});
 			foreach_cell(m, [&](Vertex v) {
 				Vec3 n = Vec3::Zero();
-				foreach_incident_face(m, v, [&](Face f) { n += value<Vec3>(m, fn, f); });
+				// `auto`: a cached traversal gives LocatedCell, read without index lookup
+				foreach_incident_face(m, v, [&](auto f) { n += value<Vec3>(m, fn, f); });
 				value<Vec3>(m, vn, v) = n.normalized();
 			});
 		});
 	double s = 0;
 	foreach_cell(m, [&](Vertex v) { s += value<Vec3>(m, vn, v).sum(); });
 	set_check(state, "check", s);
+}
+
+void smoothing_quick(benchmark::State& state, bool first)
+{
+	CgognSurface& me = mesh(Mode::quick);
+	const CMap2& m = me.map;
+	Attribute<Vec3>& pos = *me.position;
+	const Attribute<uint8>& boundary = *me.boundary;
+	timed(
+		state, first, [&] { me.reset_positions(surface_soup()); },
+		[&] {
+			// the one-ring from the vertex -> vertex cache, the boundary from its flag
+			foreach_cell(m, [&](Vertex v) {
+				if (value<uint8>(m, boundary, v))
+					return;
+				Vec3 s = Vec3::Zero();
+				uint32 n = 0;
+				foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
+					s += value<Vec3>(m, pos, w);
+					++n;
+				});
+				value<Vec3>(m, pos, v) = s / double(n);
+			});
+		});
+	set_check(state, "check", position_sum(me));
+}
+
+void cache_build(benchmark::State& state, bool)
+{
+	CgognSurface& me = mesh(Mode::quick);
+	double wall = 0;
+	for (auto _ : state)
+	{
+		// every table (and the flags) dropped, then built again: process CPU
+		// time, the build runs on the thread pool
+		IncidenceCache<CMap2, Vertex, Face>::remove(me.map);
+		IncidenceCache<CMap2, Face, Vertex>::remove(me.map);
+		IncidenceCache<CMap2, Vertex, Vertex, Edge>::remove(me.map);
+		const double c0 = process_seconds();
+		const auto t0 = std::chrono::steady_clock::now();
+		build_quick_caches(me);
+		const auto t1 = std::chrono::steady_clock::now();
+		state.SetIterationTime(process_seconds() - c0);
+		wall += std::chrono::duration<double>(t1 - t0).count();
+	}
+	state.counters["wall_ms"] = wall * 1e3;
+	state.counters["cache_MB"] = double(quick_cache_bytes(me)) / 1e6;
 }
 
 void smoothing(benchmark::State& state, bool first)
@@ -279,7 +373,10 @@ void collapse(benchmark::State& state, bool)
 	set_counts_and_checksum(state, *me);
 }
 
-void dynamic(benchmark::State& state, bool)
+// with_compact (surface/dynamic_compact/cgogn): each batch ends with
+// compact(m), timed, as the peers' batches end with their garbage collection
+// (without it the freed lines are reused by the next batches)
+void dynamic(benchmark::State& state, bool, bool with_compact)
 {
 	std::unique_ptr<CgognSurface> me = fresh();
 	trim_heap();
@@ -301,6 +398,8 @@ void dynamic(benchmark::State& state, bool)
 				added.push_back(triangulate_face(m, f));
 			for (Vertex v : added)
 				collapse_edge(m, Edge(v.dart));
+			if (with_compact)
+				compact(m);
 			const double dt = thread_seconds() - t0;
 			total += dt;
 			record_batch(state, b, dt);
@@ -313,20 +412,22 @@ void dynamic(benchmark::State& state, bool)
 #endif
 
 const bool registered = [] {
-	register_bench("surface/circulator/cgogn", Kind::read_only, circulator);
-	register_bench("surface/barycenter/cgogn", Kind::read_only, barycenter);
-	register_bench("surface/normal/cgogn", Kind::read_only, normal);
+	using std::placeholders::_1, std::placeholders::_2;
+	register_bench("surface/circulator/cgogn", Kind::read_only, std::bind(circulator, _1, _2, Mode::plain));
+	register_bench("surface/barycenter/cgogn", Kind::read_only, std::bind(barycenter, _1, _2, Mode::plain));
+	register_bench("surface/normal/cgogn", Kind::read_only, std::bind(normal, _1, _2, Mode::plain));
 	register_bench("surface/smoothing/cgogn", Kind::read_only, smoothing);
+	register_bench("surface/cache_build/cgogn_quick", Kind::read_only, cache_build);
+	register_bench("surface/circulator/cgogn_quick", Kind::read_only, std::bind(circulator, _1, _2, Mode::quick));
+	register_bench("surface/barycenter/cgogn_quick", Kind::read_only, std::bind(barycenter, _1, _2, Mode::quick));
+	register_bench("surface/normal/cgogn_quick", Kind::read_only, std::bind(normal, _1, _2, Mode::quick));
+	register_bench("surface/smoothing/cgogn_quick", Kind::read_only, smoothing_quick);
 #if CGOGN_BENCH_HAS_TOPOLOGY
 	register_bench("surface/subdivision/cgogn", Kind::topology, subdivision);
 	register_bench("surface/collapse/cgogn", Kind::topology, collapse);
-	register_bench("surface/dynamic/cgogn", Kind::single, dynamic);
+	register_bench("surface/dynamic/cgogn", Kind::single, std::bind(dynamic, _1, _2, false));
+	register_bench("surface/dynamic_compact/cgogn", Kind::single, std::bind(dynamic, _1, _2, true));
 #endif
-	// REGISTRATION POINT (cgogn_quick): with CGOGN_BENCH_HAS_QUICK, register
-	// surface/<workload>/cgogn_quick for the four read-only workloads above,
-	// running the same lambdas on the map with incidence caches enabled
-	// (vertex->face, face->vertex, vertex->vertex), the cache build reported
-	// as a separate benchmark surface/cache_build/cgogn_quick.
 	register_bench("memory/surface/cgogn", Kind::single, memory);
 	return true;
 }();

@@ -21,12 +21,7 @@
 #define CGOGN_BENCH_HAS_TOPOLOGY 0
 #endif
 
-// REGISTRATION POINT for the "cgogn_quick" mode (incidence caches of the
-// parallel/views issue): the read-only workloads are run again with the
-// caches enabled, cache build time reported separately. Adjust at merge time.
-#if __has_include(<cgogn/core/types/incidence_cache.h>)
-#include <cgogn/core/types/incidence_cache.h>
-#define CGOGN_BENCH_HAS_QUICK 1
-#else
-#define CGOGN_BENCH_HAS_QUICK 0
-#endif
+// The "cgogn_quick" mode: the read-only workloads run again with the quick
+// incidence caches built (IncidenceCache), their build time reported as the
+// separate benchmarks surface|volume/cache_build/cgogn_quick.
+#include <cgogn/core/functions/incidence_cache.h>

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
 // cgogn's side of the volume suite: a CMap3 with double positions (and a
 // volume attribute for the stored barycenters), built from the shared tet
-// soup. "plain" mode: no incidence cache; the local traversals of
-// local_cmap3.h.
+// soup. "plain" mode (library cgogn): no incidence cache; the local
+// traversals of local_cmap3.h. "quick" mode (library cgogn_quick): the same
+// workloads on a map holding the quick incidence caches vertex -> volumes,
+// volume -> vertices, vertex -> vertices through volumes and through edges
+// (IncidenceCache), read by the same local traversals; their build is timed
+// separately (volume/cache_build/cgogn_quick).
+#include "cgogn_reorder.h"
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
@@ -11,7 +16,10 @@
 #include <cgogn/core.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
+#include <chrono>
 #include <cmath>
+#include <functional>
+#include <string>
 #include <limits>
 #include <vector>
 
@@ -31,6 +39,8 @@ struct CgognVolume
 	CMap3 map;
 	std::shared_ptr<Attribute<Vec3>> position, position2, barycenter;
 	uint32 vertex_offset = 0;
+	// with --reorder: the vertex line of each soup vertex (else vertex_offset + i)
+	std::vector<uint32> line_of_soup_vertex;
 
 	CgognVolume(const VolumeSoup& s, bool with_work_attributes)
 	{
@@ -42,23 +52,80 @@ struct CgognVolume
 			barycenter = add_attribute<Vec3, Volume>(map, "barycenter");
 		}
 		reset_positions(s);
+		if (reorder_requested())
+			line_of_soup_vertex = reorder_by_morton(map, *position, vertex_offset, s.nb_vertices);
 	}
 	void reset_positions(const VolumeSoup& s)
 	{
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
-			(*position)[vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	}
 };
 
-CgognVolume& mesh()
+enum class Mode
 {
-	return Cache::get<CgognVolume>("cgogn/volume",
-								   [] { return std::make_unique<CgognVolume>(volume_soup(), true); });
+	plain,
+	quick
+};
+
+void build_quick_caches(CMap3& m)
+{
+	IncidenceCache<CMap3, Vertex, Volume>::build(m);
+	IncidenceCache<CMap3, Volume, Vertex>::build(m);
+	IncidenceCache<CMap3, Vertex, Vertex, Volume>::build(m);
+	IncidenceCache<CMap3, Vertex, Vertex, Edge>::build(m);
 }
 
-void circulator(benchmark::State& state, bool first)
+void remove_quick_caches(CMap3& m)
 {
-	const CMap3& m = mesh().map;
+	IncidenceCache<CMap3, Vertex, Volume>::remove(m);
+	IncidenceCache<CMap3, Volume, Vertex>::remove(m);
+	IncidenceCache<CMap3, Vertex, Vertex, Volume>::remove(m);
+	IncidenceCache<CMap3, Vertex, Vertex, Edge>::remove(m);
+}
+
+std::size_t quick_cache_bytes(const CMap3& m)
+{
+	return IncidenceCache<CMap3, Vertex, Volume>::memory_bytes(m) +
+		   IncidenceCache<CMap3, Volume, Vertex>::memory_bytes(m) +
+		   IncidenceCache<CMap3, Vertex, Vertex, Volume>::memory_bytes(m) +
+		   IncidenceCache<CMap3, Vertex, Vertex, Edge>::memory_bytes(m);
+}
+
+CgognVolume& mesh(Mode mode = Mode::plain)
+{
+	if (mode == Mode::plain)
+		return Cache::get<CgognVolume>("cgogn/volume",
+									   [] { return std::make_unique<CgognVolume>(volume_soup(), true); });
+	return Cache::get<CgognVolume>("cgogn_quick/volume", [] {
+		auto me = std::make_unique<CgognVolume>(volume_soup(), true);
+		build_quick_caches(me->map);
+		return me;
+	});
+}
+
+void cache_build(benchmark::State& state, bool)
+{
+	CgognVolume& me = mesh(Mode::quick);
+	double wall = 0;
+	for (auto _ : state)
+	{
+		// the tables dropped, then built again: process CPU time (thread pool)
+		remove_quick_caches(me.map);
+		const double c0 = process_seconds();
+		const auto t0 = std::chrono::steady_clock::now();
+		build_quick_caches(me.map);
+		const auto t1 = std::chrono::steady_clock::now();
+		state.SetIterationTime(process_seconds() - c0);
+		wall += std::chrono::duration<double>(t1 - t0).count();
+	}
+	state.counters["wall_ms"] = wall * 1e3;
+	state.counters["cache_MB"] = double(quick_cache_bytes(me.map)) / 1e6;
+}
+
+void circulator(benchmark::State& state, bool first, Mode mode)
+{
+	const CMap3& m = mesh(mode).map;
 	int64 c = 0, incidences = 0;
 	timed(
 		state, first, [] {},
@@ -73,9 +140,9 @@ void circulator(benchmark::State& state, bool first)
 	set_check(state, "check_incidences", double(incidences));
 }
 
-void circulator2(benchmark::State& state, bool first)
+void circulator2(benchmark::State& state, bool first, Mode mode)
 {
-	const CMap3& m = mesh().map;
+	const CMap3& m = mesh(mode).map;
 	int64 total = 0;
 	timed(
 		state, first, [] {},
@@ -92,9 +159,9 @@ void circulator2(benchmark::State& state, bool first)
 	state.counters["naive_triples"] = double(naive);
 }
 
-void barycenter(benchmark::State& state, bool first)
+void barycenter(benchmark::State& state, bool first, Mode mode)
 {
-	CgognVolume& me = mesh();
+	CgognVolume& me = mesh(mode);
 	const CMap3& m = me.map;
 	const Attribute<Vec3>& pos = *me.position;
 	Attribute<Vec3>& bary = *me.barycenter;
@@ -104,7 +171,8 @@ void barycenter(benchmark::State& state, bool first)
 			foreach_cell(m, [&](Volume w) {
 				Vec3 b = Vec3::Zero();
 				uint32 n = 0;
-				foreach_incident_vertex(m, w, [&](Vertex v) {
+				// `auto`: a cached traversal gives LocatedCell, read without index lookup
+				foreach_incident_vertex(m, w, [&](auto v) {
 					b += value<Vec3>(m, pos, v);
 					++n;
 				});
@@ -124,7 +192,7 @@ void smoothing_pass(CgognVolume& me)
 	foreach_cell(m, [&](Vertex v) {
 		Vec3 s = Vec3::Zero();
 		uint32 n = 0;
-		foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+		foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
 			s += value<Vec3>(m, pos, w);
 			++n;
 		});
@@ -133,9 +201,9 @@ void smoothing_pass(CgognVolume& me)
 	std::swap(me.position, me.position2);
 }
 
-void smoothing(benchmark::State& state, bool first)
+void smoothing(benchmark::State& state, bool first, Mode mode)
 {
-	CgognVolume& me = mesh();
+	CgognVolume& me = mesh(mode);
 	timed(
 		state, first, [&] { me.reset_positions(volume_soup()); }, [&] { smoothing_pass(me); });
 	me.reset_positions(volume_soup());
@@ -237,17 +305,21 @@ void collapse(benchmark::State& state, bool)
 #endif
 
 const bool registered = [] {
-	register_bench("volume/circulator/cgogn", Kind::read_only, circulator);
-	register_bench("volume/circulator2/cgogn", Kind::read_only, circulator2);
-	register_bench("volume/barycenter/cgogn", Kind::read_only, barycenter);
-	register_bench("volume/smoothing/cgogn", Kind::read_only, smoothing);
+	using std::placeholders::_1, std::placeholders::_2;
+	for (Mode mode : {Mode::plain, Mode::quick})
+	{
+		const std::string lib = mode == Mode::plain ? "/cgogn" : "/cgogn_quick";
+		if (mode == Mode::quick)
+			register_bench("volume/cache_build" + lib, Kind::read_only, cache_build);
+		register_bench("volume/circulator" + lib, Kind::read_only, std::bind(circulator, _1, _2, mode));
+		register_bench("volume/circulator2" + lib, Kind::read_only, std::bind(circulator2, _1, _2, mode));
+		register_bench("volume/barycenter" + lib, Kind::read_only, std::bind(barycenter, _1, _2, mode));
+		register_bench("volume/smoothing" + lib, Kind::read_only, std::bind(smoothing, _1, _2, mode));
+	}
 #if CGOGN_BENCH_HAS_TOPOLOGY
 	register_bench("volume/split/cgogn", Kind::topology, split);
 	register_bench("volume/collapse/cgogn", Kind::topology, collapse);
 #endif
-	// REGISTRATION POINT (cgogn_quick): with CGOGN_BENCH_HAS_QUICK, register
-	// volume/<workload>/cgogn_quick for the four read-only workloads with the
-	// vertex->volume, volume->vertex and vertex->vertex caches enabled.
 	register_bench("memory/volume/cgogn", Kind::single, memory);
 	return true;
 }();

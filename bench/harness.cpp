@@ -61,6 +61,13 @@ double thread_seconds()
 	return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
+double process_seconds()
+{
+	timespec ts;
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+	return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 std::size_t heap_bytes()
 {
 	const struct mallinfo2 mi = mallinfo2();

@@ -34,6 +34,9 @@ void register_bench(const std::string& name, Kind kind, std::function<void(bench
 /// rather than wall time: the machine is shared, and descheduling would
 /// otherwise be counted (wall time is kept in the counter "wall_ms").
 double thread_seconds();
+/// CPU time of all threads of the process, in seconds (for parallel work such
+/// as the incidence caches' build, where the calling thread's time is a part).
+double process_seconds();
 
 /// Runs one repetition: reset() untimed, work() timed (thread CPU time, once
 /// per benchmark iteration), warm-up first when asked.

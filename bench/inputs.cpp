@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "inputs.h"
 
-#include "soup_reader.h"
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/surface.h>
+#include <cgogn/io/volume.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -18,6 +21,38 @@ namespace
 
 std::string input_kind;
 uint32_t permutation_seed = 0;
+bool reorder_on = false;
+
+// vertex ids and cell order permuted: SOUP is a SurfaceSoup or a VolumeSoup
+template <typename SOUP>
+SOUP permute_cells(const SOUP& s, const std::vector<uint32_t>& sizes, const std::vector<uint32_t>& vertices,
+				   uint32_t seed, std::vector<uint32_t>& out_sizes, std::vector<uint32_t>& out_vertices)
+{
+	std::mt19937 rng(seed);
+	std::vector<uint32_t> new_id(s.nb_vertices);
+	std::iota(new_id.begin(), new_id.end(), 0u);
+	std::shuffle(new_id.begin(), new_id.end(), rng);
+	std::vector<uint32_t> offset(sizes.size() + 1, 0);
+	for (std::size_t f = 0; f < sizes.size(); ++f)
+		offset[f + 1] = offset[f] + sizes[f];
+	std::vector<uint32_t> order(sizes.size());
+	std::iota(order.begin(), order.end(), 0u);
+	std::shuffle(order.begin(), order.end(), rng);
+	SOUP r;
+	r.nb_vertices = s.nb_vertices;
+	r.positions.resize(s.nb_vertices);
+	for (uint32_t v = 0; v < s.nb_vertices; ++v)
+		r.positions[new_id[v]] = s.positions[v];
+	out_sizes.reserve(sizes.size());
+	out_vertices.reserve(vertices.size());
+	for (uint32_t f : order)
+	{
+		out_sizes.push_back(sizes[f]);
+		for (uint32_t k = offset[f]; k < offset[f + 1]; ++k)
+			out_vertices.push_back(new_id[vertices[k]]);
+	}
+	return r;
+}
 
 std::string data_path(const char* rel)
 {
@@ -41,9 +76,9 @@ const std::string& kind()
 
 void set_input(const std::string& k)
 {
-	if (k != "data" && k != "generated" && k != "small")
-		throw std::runtime_error("--input must be data, generated or small");
-	if (k == "data" && !data_present())
+	if (k != "data" && k != "data-unrefined" && k != "generated" && k != "small")
+		throw std::runtime_error("--input must be data, data-unrefined, generated or small");
+	if ((k == "data" || k == "data-unrefined") && !data_present())
 		throw std::runtime_error("--input=data: meshes not found in " + std::string(CGOGN_DATA_DIR));
 	input_kind = k;
 }
@@ -55,46 +90,106 @@ void set_permutation_seed(uint32_t seed)
 
 cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed)
 {
-	std::mt19937 rng(seed);
-	std::vector<uint32_t> new_id(s.nb_vertices);
-	std::iota(new_id.begin(), new_id.end(), 0u);
-	std::shuffle(new_id.begin(), new_id.end(), rng);
-	std::vector<uint32_t> offset(s.face_sizes.size() + 1, 0);
-	for (std::size_t f = 0; f < s.face_sizes.size(); ++f)
-		offset[f + 1] = offset[f] + s.face_sizes[f];
-	std::vector<uint32_t> face_order(s.face_sizes.size());
-	std::iota(face_order.begin(), face_order.end(), 0u);
-	std::shuffle(face_order.begin(), face_order.end(), rng);
-	cgogn::SurfaceSoup r;
-	r.nb_vertices = s.nb_vertices;
-	r.positions.resize(s.nb_vertices);
-	for (uint32_t v = 0; v < s.nb_vertices; ++v)
-		r.positions[new_id[v]] = s.positions[v];
-	r.face_sizes.reserve(s.face_sizes.size());
-	r.face_vertices.reserve(s.face_vertices.size());
-	for (uint32_t f : face_order)
-	{
-		r.face_sizes.push_back(s.face_sizes[f]);
-		for (uint32_t k = offset[f]; k < offset[f + 1]; ++k)
-			r.face_vertices.push_back(new_id[s.face_vertices[k]]);
-	}
+	std::vector<uint32_t> sizes, vertices;
+	cgogn::SurfaceSoup r = permute_cells(s, s.face_sizes, s.face_vertices, seed, sizes, vertices);
+	r.face_sizes = std::move(sizes);
+	r.face_vertices = std::move(vertices);
 	return r;
 }
 
+cgogn::VolumeSoup permute_soup(const cgogn::VolumeSoup& s, uint32_t seed)
+{
+	std::vector<uint32_t> sizes, vertices;
+	cgogn::VolumeSoup r = permute_cells(s, s.cell_sizes, s.cell_vertices, seed, sizes, vertices);
+	r.cell_sizes = std::move(sizes);
+	r.cell_vertices = std::move(vertices);
+	return r;
+}
+
+void set_reorder(bool on)
+{
+	reorder_on = on;
+}
+
+bool reorder_requested()
+{
+	return reorder_on;
+}
+
+std::string order_description()
+{
+	std::string d = permutation_seed != 0 ? "permuted (seed " + std::to_string(permutation_seed) + ")" : "file";
+	return reorder_on ? d + ", cgogn reordered (morton)" : d;
+}
+
+namespace
+{
+
+// Soup vertex ids in the order of the vertex container (the file's order:
+// the io layer gives file vertex i the line vertex_offset + i), positions copied.
+template <typename MAP, typename SOUP>
+std::vector<uint32_t> number_vertices(const MAP& m, SOUP& s, const std::string& path)
+{
+	using Vertex = typename cgogn::mesh_traits<MAP>::Vertex;
+	const auto pos = cgogn::get_attribute<cgogn::Vec3, Vertex>(m, "position");
+	if (!pos)
+		throw std::runtime_error(path + ": no vertex positions");
+	std::vector<uint32_t> id(cgogn::container_of<Vertex::ORBIT>(m).end_index(), cgogn::INVALID_INDEX);
+	cgogn::foreach_cell(m, [&](Vertex v) {
+		const cgogn::Vec3& p = cgogn::value<cgogn::Vec3>(m, *pos, v);
+		id[cgogn::index_of(m, v)] = uint32_t(s.positions.size());
+		s.positions.push_back({p[0], p[1], p[2]});
+	});
+	s.nb_vertices = uint32_t(s.positions.size());
+	return id;
+}
+
+} // namespace
+
 cgogn::SurfaceSoup load_surface_soup(const std::string& path)
 {
-	auto s = read_obj_soup(path);
-	if (!s)
-		throw std::runtime_error("cannot read " + path);
-	return std::move(*s);
+	using Vertex = cgogn::CMap2::Vertex;
+	using Face = cgogn::CMap2::Face;
+	cgogn::CMap2 m;
+	cgogn::io::load_surface(m, path);
+	cgogn::SurfaceSoup s;
+	const std::vector<uint32_t> id = number_vertices(m, s, path);
+	// faces in dart order, i.e. the file's order; each from its first dart
+	cgogn::foreach_cell(m, [&](Face f) {
+		uint32_t n = 0;
+		cgogn::foreach_incident_vertex(m, f, [&](Vertex v) {
+			s.face_vertices.push_back(id[cgogn::index_of(m, v)]);
+			++n;
+		});
+		s.face_sizes.push_back(n);
+	});
+	return s;
 }
 
 cgogn::VolumeSoup load_volume_soup(const std::string& path)
 {
-	auto s = read_medit_tet_soup(path);
-	if (!s)
-		throw std::runtime_error("cannot read " + path);
-	return std::move(*s);
+	using Vertex = cgogn::CMap3::Vertex;
+	using Volume = cgogn::CMap3::Volume;
+	cgogn::CMap3 m;
+	cgogn::io::load_volume(m, path);
+	cgogn::VolumeSoup s;
+	const std::vector<uint32_t> id = number_vertices(m, s, path);
+	auto vertex = [&](cgogn::Dart d) { return id[cgogn::index_of(m, Vertex(d))]; };
+	cgogn::foreach_cell(m, [&](Volume w) {
+		// a tet in the builder's (MEDIT) order: the face of w.dart in reverse
+		// phi1 order, then the apex
+		uint32_t nv = 0;
+		cgogn::foreach_incident_vertex(m, w, [&](Vertex) { ++nv; });
+		if (nv != 4)
+			throw std::runtime_error(path + ": the benchmarks take tetrahedra only");
+		const cgogn::Dart d = w.dart;
+		const cgogn::Dart d1 = cgogn::phi_1(m, d), d2 = cgogn::phi_1(m, d1);
+		const cgogn::Dart apex = cgogn::phi_1(m, cgogn::phi2(m, d));
+		for (cgogn::Dart x : {d, d1, d2, apex})
+			s.cell_vertices.push_back(vertex(x));
+		s.cell_sizes.push_back(4);
+	});
+	return s;
 }
 
 const cgogn::SurfaceSoup& surface_soup()
@@ -103,6 +198,8 @@ const cgogn::SurfaceSoup& surface_soup()
 		cgogn::SurfaceSoup s;
 		if (kind() == "data")
 			s = refine_1_to_4(refine_1_to_4(load_surface_soup(data_path("surface/nefertiti.obj"))));
+		else if (kind() == "data-unrefined")
+			s = load_surface_soup(data_path("surface/nefertiti.obj"));
 		else if (kind() == "small")
 			s = cgogn::torus_soup(40, 30, true);
 		else
@@ -116,14 +213,14 @@ const cgogn::VolumeSoup& volume_soup()
 {
 	static const cgogn::VolumeSoup soup = [] {
 		cgogn::VolumeSoup s;
-		if (kind() == "data")
+		if (kind() == "data" || kind() == "data-unrefined")
 			s = load_volume_soup(data_path("volume/armadillo_tet_461k.mesh"));
 		else if (kind() == "small")
 			s = cgogn::tet_grid_soup(6, 5, 4);
 		else
 			s = cgogn::tet_grid_soup(55, 55, 55);
 		orient_tets_positive(s);
-		return s;
+		return permutation_seed != 0 ? permute_soup(s, permutation_seed) : s;
 	}();
 	return soup;
 }
@@ -132,11 +229,14 @@ std::string input_description()
 {
 	const auto& s = surface_soup();
 	const auto& v = volume_soup();
-	std::string d = kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
+	std::string d = kind() == "data-unrefined" ? "surface: nefertiti.obj; volume: armadillo_tet_461k.mesh"
+					: kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
 									 : (kind() == "small" ? "small torus and tet grid"
 														  : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
 	if (permutation_seed != 0)
-		d += "; surface ids permuted with seed " + std::to_string(permutation_seed);
+		d += "; vertex ids and cell order permuted with seed " + std::to_string(permutation_seed);
+	if (reorder_on)
+		d += "; cgogn maps reordered by reorder() with Morton keys";
 	return d + " (surface V=" + std::to_string(s.nb_vertices) + " F=" + std::to_string(s.face_sizes.size()) +
 		   "; volume V=" + std::to_string(v.nb_vertices) + " T=" + std::to_string(v.cell_sizes.size()) + ")";
 }

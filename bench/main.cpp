@@ -3,7 +3,8 @@
 // volume/<workload>/<library>, memory/<suite>/<library>. Libraries register
 // their workloads from their own translation unit; peers not found at
 // configure time are simply absent. Extra options: --input=data|generated|small,
-// --permute=SEED (surface soup with randomly permuted vertex ids and face order).
+// --permute=SEED (soups with randomly permuted vertex ids and face/cell order),
+// --reorder (cgogn's maps reordered by Morton keys after building).
 #include "inputs.h"
 
 #include <benchmark/benchmark.h>
@@ -23,6 +24,8 @@ int main(int argc, char** argv)
 		{
 			if (std::strncmp(argv[i], "--input=", 8) == 0)
 				cgogn_bench::set_input(argv[i] + 8);
+			else if (std::strcmp(argv[i], "--reorder") == 0)
+				cgogn_bench::set_reorder(true);
 			else if (std::strncmp(argv[i], "--permute=", 10) == 0)
 				cgogn_bench::set_permutation_seed(uint32_t(std::strtoul(argv[i] + 10, nullptr, 10)));
 			else
@@ -39,6 +42,7 @@ int main(int argc, char** argv)
 	if (benchmark::ReportUnrecognizedArguments(n, args.data()))
 		return 1;
 	benchmark::AddCustomContext("compiler_flags", "-O3 -DNDEBUG (no -march=native)");
+	benchmark::AddCustomContext("order", cgogn_bench::order_description());
 	bool listing = false;
 	for (int i = 0; i < n; ++i)
 		listing = listing || std::strncmp(args[std::size_t(i)], "--benchmark_list_tests", 22) == 0;

@@ -116,6 +116,7 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 
 CompactMaps compact(CMap1& m)
 {
+	detail::drop_incidence_caches(m); // relations are remapped below, behind set_phi*
 	CompactMaps maps;
 	maps.darts = m.darts_->compact();
 	remap_darts(m, maps.darts);

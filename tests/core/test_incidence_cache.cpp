@@ -161,3 +161,65 @@ TEST(IncidenceCache, VolumeVertexVolumeAndVertexThroughVolume)
 	};
 	EXPECT_EQ(ids(neighbours<V, V>(m, vvw)), ids(vvw0));
 }
+
+// Cached traversals report LocatedCell (cell + line) when the TO orbit is
+// indexed: value() reads at the stored line, which must be the cell's index.
+TEST(IncidenceCache, LocatedCellsCarryTheirLine)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(6, 5, true));
+	using V = CMap2::Vertex;
+	using E = CMap2::Edge;
+	auto id = add_attribute<uint32, V>(m, "id");
+	uint32 k = 0;
+	foreach_cell(m, [&](V v) { value<uint32>(m, *id, v) = k++; });
+	IncidenceCache<CMap2, V, V, E>::build(m);
+	IncidenceCache<CMap2, V, E>::build(m); // edges not indexed: no lines, plain cells
+	EXPECT_FALSE(is_indexed<E>(m));
+	uint32 located = 0, plain_edges = 0, total = 0;
+	foreach_cell(m, [&](V v) {
+		foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
+			if constexpr (std::is_same_v<decltype(w), LocatedCell<Orbit::PHI21>>)
+			{
+				++located;
+				EXPECT_EQ(w.line, index_of(m, V(w.dart)));
+				EXPECT_EQ(value<uint32>(m, *id, w), value<uint32>(m, *id, V(w.dart)));
+			}
+			++total;
+		});
+		foreach_incident_edge(m, v, [&](auto e) {
+			// both forms are compiled; the table holds no lines, so the plain one runs
+			plain_edges += std::is_same_v<decltype(e), E>;
+		});
+	});
+	// 30 vertices of valence 6 on the torus
+	EXPECT_EQ(total, 180u);
+	EXPECT_EQ(located, 180u);
+	EXPECT_EQ(plain_edges, 180u);
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+
+	// a wrong stored line is reported
+	for (auto& t : m.incidence_tables_)
+		if (!t->target_lines.empty())
+			std::swap(t->target_lines[0], t->target_lines[1]);
+	EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::IncidenceCacheStale));
+
+	// moving a cell to another line drops the tables (their lines would be stale)
+	IncidenceCache<CMap2, V, V, E>::update(m);
+	EXPECT_TRUE(check_integrity(m).ok());
+	V first;
+	foreach_cell(m, [&](V v) {
+		first = v;
+		return false;
+	});
+	const uint32 spare = container_of<V::ORBIT>(m).new_line(first.dart.index);
+	set_index(m, first, spare);
+	EXPECT_TRUE(m.incidence_tables_.empty());
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+
+	// so does compact (it renumbers every line)
+	IncidenceCache<CMap2, V, V, E>::build(m);
+	compact(m);
+	EXPECT_TRUE(m.incidence_tables_.empty());
+	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+}

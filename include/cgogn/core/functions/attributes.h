@@ -98,5 +98,26 @@ T& value(const MESH& m, const std::shared_ptr<Attribute<T>>& attr, Cell<O> c)
 {
 	return value<T>(m, *attr, c);
 }
+/// The same for a cell reported by a cached traversal: its stored line is
+/// used directly (no lookup of the dart's index). O(1).
+template <typename T, typename MESH, Orbit O>
+T& value([[maybe_unused]] const MESH& m, Attribute<T>& attr, LocatedCell<O> c)
+{
+	assert(attr.container() == &container_of<O>(map_of(m)) && "attribute of another orbit or map");
+	assert(c.line == index_of(map_of(m), Cell<O>(c)) && "stale cell line");
+	return attr[c.line];
+}
+template <typename T, typename MESH, Orbit O>
+const T& value([[maybe_unused]] const MESH& m, const Attribute<T>& attr, LocatedCell<O> c)
+{
+	assert(attr.container() == &container_of<O>(map_of(m)) && "attribute of another orbit or map");
+	assert(c.line == index_of(map_of(m), Cell<O>(c)) && "stale cell line");
+	return attr[c.line];
+}
+template <typename T, typename MESH, Orbit O>
+T& value(const MESH& m, const std::shared_ptr<Attribute<T>>& attr, LocatedCell<O> c)
+{
+	return value<T>(m, *attr, c);
+}
 
 } // namespace cgogn

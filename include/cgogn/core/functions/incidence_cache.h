@@ -113,7 +113,11 @@ constexpr bool incidence_cache_supported()
 /// remove() it); check_integrity reports a table that disagrees with the map
 /// (IncidenceCacheStale). Cells created after build() are traversed by
 /// walking darts. FROM cells are indexed by build() if they were not.
-/// Memory: 4 bytes per FROM container line + 4 bytes per stored neighbour.
+/// The neighbours are reported as LocatedCell<TO> (their lines stored too,
+/// when TO is indexed at build time): a callable taking `auto` reads their
+/// attributes at flat-array cost; one taking TO gets the plain cell.
+/// Memory: 4 bytes per FROM container line + 4 bytes per stored neighbour
+/// (8 with the lines).
 /// Supported: every local traversal of 2- and 3-maps but the O(1) ones
 /// (2-D edge -> vertex/face/volume, 3-D edge -> vertex, face -> volume, * ->
 /// connected component of a 2-map).
@@ -159,11 +163,20 @@ public:
 			t->offsets[i] += t->offsets[i - 1];
 		t->targets.resize(t->offsets.back());
 		Dart* targets = t->targets.data();
+		// the neighbours' lines too when TO is indexed (LocatedCell traversals)
+		const bool with_lines = is_indexed<TO>(m);
+		if (with_lines)
+			t->target_lines.resize(t->offsets.back());
+		uint32* lines = t->target_lines.data();
 		// pass 2: fill the rows
 		parallel_foreach_cell(m, [&](FROM c) {
 			detail::IncidenceCacheBypass bypass;
 			uint32 k = offsets[index_of(m, c)];
-			detail::foreach_neighbour<MAP, TO, THROUGH>(m, c, [&](TO x) { targets[k++] = x.dart; });
+			detail::foreach_neighbour<MAP, TO, THROUGH>(m, c, [&](TO x) {
+				if (with_lines)
+					lines[k] = index_of(m, x);
+				targets[k++] = x.dart;
+			});
 		});
 		m.incidence_tables_.push_back(std::move(t));
 	}
@@ -210,8 +223,9 @@ private:
 		detail::IncidenceCacheBypass bypass;
 		uint32 k = b;
 		bool ok = true;
+		const bool with_lines = !t.target_lines.empty();
 		detail::foreach_neighbour<MAP, TO, THROUGH>(m, FROM(Dart(from.key()[r])), [&](TO x) {
-			ok = k < e && t.targets[k] == x.dart;
+			ok = k < e && t.targets[k] == x.dart && (!with_lines || t.target_lines[k] == index_of(m, x));
 			++k;
 			return ok;
 		});

@@ -43,6 +43,13 @@ uint32 index_of(const CMapBase& m, Cell<O> c)
 	}
 }
 
+/// The line of a cell reported by a cached traversal (stored in the cache). O(1).
+template <Orbit O>
+uint32 index_of(const CMapBase&, LocatedCell<O> c)
+{
+	return c.line;
+}
+
 namespace detail
 {
 
@@ -121,6 +128,7 @@ void set_index(MAP& m, Cell<O> c, uint32 i)
 	const uint32 old = index_of(m, c);
 	if (old == i)
 		return;
+	detail::drop_incidence_caches(m); // their stored lines would be stale
 	detail::write_index(m, c, i);
 	if (old != INVALID_INDEX)
 		cont.release_line(old);

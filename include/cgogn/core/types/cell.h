@@ -39,12 +39,34 @@ struct Cell
 	}
 };
 
+/// A cell as reported by a quick (cached) local traversal: the cell and its
+/// line in the orbit's container, read from the incidence cache. It converts
+/// to Cell<O> (a callable taking `Vertex` gets the plain cell); a callable
+/// taking `auto` keeps the line, and value() then reads the attribute at that
+/// line without looking up the dart's index (the dependent, usually
+/// cache-missing load that separates a dart-based traversal from flat arrays).
+/// Valid while the cache is, i.e. until the next change of the map.
+template <Orbit O>
+struct LocatedCell : Cell<O>
+{
+	uint32 line = INVALID_INDEX;
+
+	constexpr LocatedCell() = default;
+	constexpr LocatedCell(Dart d, uint32 l) : Cell<O>(d), line(l)
+	{
+	}
+};
+
 template <typename T>
 struct is_cell : std::false_type
 {
 };
 template <Orbit O>
 struct is_cell<Cell<O>> : std::true_type
+{
+};
+template <Orbit O>
+struct is_cell<LocatedCell<O>> : std::true_type
 {
 };
 template <typename T>

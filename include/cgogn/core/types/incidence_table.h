@@ -25,6 +25,11 @@ struct IncidenceTable
 	uint32 through = NB_ORBITS;
 	std::vector<uint32> offsets;
 	std::vector<Dart> targets;
+	/// The line of each target cell in the TO container (same layout as
+	/// targets), so that a cached traversal reports LocatedCell values whose
+	/// attributes are read without a dart -> index lookup. Empty when the TO
+	/// orbit was not indexed at build time.
+	std::vector<uint32> target_lines;
 	/// Recomputes row r from the map (without caches) and tells whether the
 	/// stored row matches: used by check_integrity. Set by the builder.
 	bool (*row_is_valid)(const CMapBase& m, const IncidenceTable& t, uint32 r) = nullptr;
@@ -32,7 +37,8 @@ struct IncidenceTable
 	/// Bytes held by the table. O(1).
 	std::size_t memory_bytes() const
 	{
-		return offsets.capacity() * sizeof(uint32) + targets.capacity() * sizeof(Dart);
+		return offsets.capacity() * sizeof(uint32) + targets.capacity() * sizeof(Dart) +
+			   target_lines.capacity() * sizeof(uint32);
 	}
 };
 

@@ -51,8 +51,9 @@ inline const IncidenceTable* find_incidence_table(const CMapBase& m, uint32 key)
 /// The hook of the local traversals: when m holds a cache of FROM -> TO
 /// (through THROUGH) that covers c, calls f on the cached neighbours (f may
 /// stop by returning false) and returns true; otherwise returns false and the
-/// caller traverses the darts. One test of an empty vector when no cache is
-/// enabled.
+/// caller traverses the darts. The neighbours are given as LocatedCell (cell
+/// and line) when the table holds their lines, which converts to TO for a
+/// callable taking TO. One test of an empty vector when no cache is enabled.
 template <typename TO, typename THROUGH, typename FROM, typename FUNC>
 bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 {
@@ -64,9 +65,19 @@ bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 	const uint32 r = index_of(m, c);
 	if (r == INVALID_INDEX || std::size_t(r) + 1 >= t->offsets.size())
 		return false; // a cell created after the cache was built
-	for (uint32 i = t->offsets[r], e = t->offsets[r + 1]; i < e; ++i)
-		if (!call_and_continue(f, TO(t->targets[i])))
-			break;
+	const uint32 b = t->offsets[r], e = t->offsets[r + 1];
+	const Dart* targets = t->targets.data();
+	if (!t->target_lines.empty())
+	{
+		const uint32* lines = t->target_lines.data();
+		for (uint32 i = b; i < e; ++i)
+			if (!call_and_continue(f, LocatedCell<TO::ORBIT>(targets[i], lines[i])))
+				break;
+	}
+	else
+		for (uint32 i = b; i < e; ++i)
+			if (!call_and_continue(f, TO(targets[i])))
+				break;
 	return true;
 }
 
