@@ -184,6 +184,15 @@ public:
 		const uint64 bit = uint64(1) << (i & 63u);
 		return (word_ref(i).fetch_or(bit, std::memory_order_relaxed) & bit) == 0;
 	}
+	/// Sets bit i with a relaxed atomic load and store, no read-modify-write:
+	/// cheaper than atomic_test_and_set, but a set of another bit of the same
+	/// word by another thread at the same moment may be lost. For hints only
+	/// (e.g. "no need to look at this dart again"), never for decisions.
+	void atomic_set_lossy(uint32 i)
+	{
+		std::atomic_ref<uint64> w = word_ref(i);
+		w.store(w.load(std::memory_order_relaxed) | (uint64(1) << (i & 63u)), std::memory_order_relaxed);
+	}
 	void set_value(uint32 i, bool b)
 	{
 		if (b)

@@ -43,22 +43,27 @@ struct alignas(64) FloodWorker
 /// - Cyclic orbits (see orbit_is_cyclic): from each non-boundary dart d, walk
 ///   the orbit until a smaller non-boundary dart shows up (d is not the owner:
 ///   stop) or the walk ends (d is the owner: report). Read-only, no mark.
-/// - Flooded orbits (see orbit_is_flooded): darts are claimed in one mark
-///   shared by all workers, with atomic fetch_or (exactly one thread claims
-///   each dart). A worker skips the darts already claimed; at an unclaimed
-///   non-boundary dart it floods the cell (with a mark of its own, so that the
-///   flood sees the whole orbit whoever claims its darts), claims every dart
-///   and finds the owner; the worker that claimed the owner reports the cell
-///   once its flood is over. So each cell is reported exactly once, and is
-///   flooded once in total, except when two workers start on the same cell at
-///   the same moment (both flood it, one reports it). This matters for cells
-///   spread over the whole dart range, such as 3-D vertices, whose darts lie
-///   in all their incident volumes: a per-worker mark alone made every worker
-///   flood almost every vertex. Neither the orbit's darts nor the cells need
-///   to be contiguous. No pooled mark is reserved per cell (a per-cell
-///   reservation made the cores fight over the pool's cache line). Cost: one
-///   flood per cell plus one relaxed atomic per dart; the marks are cleared
-///   at the end by the workers, O(darts / 64) each.
+/// - Flooded orbits (see orbit_is_flooded): a worker scanning its chunk
+///   [b, e) skips the darts it has flooded (a mark of its own, kept for the
+///   whole traversal) and those marked "seen" by others; at any other
+///   non-boundary dart it floods the cell with its own mark, marks "seen" the
+///   cell's darts outside [b, e) (the darts other workers scan; those of
+///   [b, e) only this worker scans) and finds the cell's owner. The cell is
+///   reported by the worker that first sets the owner's bit in a "reported"
+///   mark (atomic fetch_or: one winner). So each cell is reported exactly
+///   once, and flooded once in total, except when two workers start on the
+///   same cell at the same moment (both flood it, one reports it). "seen" is
+///   a hint, written with relaxed loads and stores (no read-modify-write, as
+///   cheap as a plain mark): a bit lost to a concurrent write of the same
+///   word only costs a second flood, never a second report. Neither the darts
+///   of a cell nor the cells need to be contiguous: 3-D vertices, whose darts
+///   lie in all their incident volumes, are flooded once although most of
+///   their darts lie in other chunks (a per-worker mark alone made every
+///   worker flood almost every vertex). No pooled mark is reserved per cell
+///   (a per-cell reservation made the cores fight over the pool's cache
+///   line). Cost: one flood per cell, one atomic read-modify-write per cell;
+///   the marks are cleared at the end by the workers, O(darts / 64) each.
+///   Measured in bench/README.md ("Parallel").
 template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {
@@ -84,8 +89,9 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	{
 		static_assert(orbit_is_flooded(CELL::ORBIT));
 		std::vector<FloodWorker> workers(thread_pool()->nb_workers());
-		std::vector<MarkAttribute*> marks{m.darts_->acquire_mark()};
-		MarkAttribute& claimed = *marks[0];
+		std::vector<MarkAttribute*> marks{m.darts_->acquire_mark(), m.darts_->acquire_mark()};
+		MarkAttribute& seen = *marks[0];	 // darts flooded by a worker other than their scanner (hints)
+		MarkAttribute& reported = *marks[1]; // owners of the reported cells
 		auto clear_and_release = [&](bool in_parallel) {
 			for (FloodWorker& w : workers)
 				if (w.flooded != nullptr)
@@ -107,21 +113,22 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 				FloodWorker& w = workers[current_thread_index()];
 				if (w.flooded == nullptr)
 					w.flooded = m.darts_->acquire_mark();
-				for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+				const uint32 b = bb * 64, e = std::min(be * 64, end);
+				for (uint32 i = b; i < e; ++i)
 				{
-					if (key[i] == INVALID_INDEX || claimed.atomic_test(i) || is_boundary(m, Dart(i)))
+					if (key[i] == INVALID_INDEX || w.flooded->test(i) || seen.atomic_test(i) ||
+						is_boundary(m, Dart(i)))
 						continue;
 					uint32 owner = i;
-					bool owner_is_mine = false;
 					flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
-						const bool mine = claimed.atomic_test_and_set(x.index);
-						if (x.index <= owner && !is_boundary(m, x))
-						{
+						// the darts of [b, e) are scanned by this worker only:
+						// its own mark is enough to skip them
+						if (x.index < b || x.index >= e)
+							seen.atomic_set_lossy(x.index);
+						if (x.index < owner && !is_boundary(m, x))
 							owner = x.index;
-							owner_is_mine = mine;
-						}
 					});
-					if (owner_is_mine)
+					if (reported.atomic_test_and_set(owner))
 						f(CELL(Dart(owner)));
 				}
 			}));
