@@ -43,27 +43,28 @@ struct alignas(64) FloodWorker
 /// - Cyclic orbits (see orbit_is_cyclic): from each non-boundary dart d, walk
 ///   the orbit until a smaller non-boundary dart shows up (d is not the owner:
 ///   stop) or the walk ends (d is the owner: report). Read-only, no mark.
-/// - Flooded orbits (see orbit_is_flooded): a worker scanning its chunk
-///   [b, e) skips the darts it has flooded (a mark of its own, kept for the
-///   whole traversal) and those marked "seen" by others; at any other
-///   non-boundary dart it floods the cell with its own mark, marks "seen" the
-///   cell's darts outside [b, e) (the darts other workers scan; those of
-///   [b, e) only this worker scans) and finds the cell's owner. The cell is
-///   reported by the worker that first sets the owner's bit in a "reported"
-///   mark (atomic fetch_or: one winner). So each cell is reported exactly
+/// - Flooded orbits (see orbit_is_flooded): a worker scanning its chunk [b, e)
+///   skips the darts it has flooded (a mark of its own, kept for the whole
+///   traversal) and those marked "seen" by others; at any other non-boundary
+///   dart it floods the cell with its own mark, marks "seen" the cell's darts
+///   outside [b, e) (the darts other workers scan; those of [b, e) only this
+///   worker scans) and finds the cell's owner. The cell is reported by the
+///   worker that first sets the owner's bit in a "reported" mark (atomic
+///   fetch_or: one winner; a cell lying entirely in [b, e) is flooded by no
+///   other worker and is reported directly). So each cell is reported exactly
 ///   once, and flooded once in total, except when two workers start on the
-///   same cell at the same moment (both flood it, one reports it). "seen" is
-///   a hint, written with relaxed loads and stores (no read-modify-write, as
-///   cheap as a plain mark): a bit lost to a concurrent write of the same
-///   word only costs a second flood, never a second report. Neither the darts
-///   of a cell nor the cells need to be contiguous: 3-D vertices, whose darts
-///   lie in all their incident volumes, are flooded once although most of
-///   their darts lie in other chunks (a per-worker mark alone made every
-///   worker flood almost every vertex). No pooled mark is reserved per cell
-///   (a per-cell reservation made the cores fight over the pool's cache
-///   line). Cost: one flood per cell, one atomic read-modify-write per cell;
-///   the marks are cleared at the end by the workers, O(darts / 64) each.
-///   Measured in bench/README.md ("Parallel").
+///   same cell at the same moment (both flood it, one reports it). "seen" is a
+///   hint, written with relaxed loads and stores (no read-modify-write, as
+///   cheap as a plain mark): a bit lost to a concurrent write of the same word
+///   only costs a second flood, never a second report. Neither the darts of a
+///   cell nor the cells need to be contiguous: 3-D vertices, whose darts lie
+///   in all their incident volumes, are flooded once although most of their
+///   darts lie in other chunks (a per-worker mark alone made every worker
+///   flood almost every vertex). No pooled mark is reserved per cell (a per-
+///   cell reservation made the cores fight over the pool's cache line). Cost:
+///   one flood per cell, one atomic read-modify-write per cell that straddles
+///   chunks; the marks are cleared at the end by the workers, O(darts / 64)
+///   each. Measured in bench/README.md ("Parallel").
 template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {
@@ -120,15 +121,20 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 						is_boundary(m, Dart(i)))
 						continue;
 					uint32 owner = i;
+					bool inside = true; // all the cell's darts in [b, e)
 					flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
 						// the darts of [b, e) are scanned by this worker only:
 						// its own mark is enough to skip them
 						if (x.index < b || x.index >= e)
+						{
 							seen.atomic_set_lossy(x.index);
+							inside = false;
+						}
 						if (x.index < owner && !is_boundary(m, x))
 							owner = x.index;
 					});
-					if (reported.atomic_test_and_set(owner))
+					// a cell inside [b, e) is flooded by no other worker: no race
+					if (inside || reported.atomic_test_and_set(owner))
 						f(CELL(Dart(owner)));
 				}
 			}));
