@@ -24,7 +24,8 @@ struct SmoothOptions
 {
 	EditFiles files;
 	Method method = Method::Taubin;
-	uint32 iterations = 10;
+	/// 0: the method's default (10 passes of the explicit filters, 1 implicit step)
+	uint32 iterations = 0;
 	double lambda = 0.5;
 	double mu = -0.53;
 	double time_step = 1.0;
@@ -37,25 +38,26 @@ int run_smooth(const SmoothOptions& o)
 	CMap2 m;
 	load_surface_file(m, o.files.in, progress);
 	auto pos = positions(m);
+	const uint32 iterations = o.iterations > 0 ? o.iterations : (o.method == Method::Implicit ? 1 : 10);
 	progress.stage("smoothing");
 	switch (o.method)
 	{
 	case Method::Laplacian:
-		geometry::laplacian_smoothing(m, *pos, o.iterations, o.lambda, !o.move_boundary);
+		geometry::laplacian_smoothing(m, *pos, iterations, o.lambda, !o.move_boundary);
 		break;
 	case Method::Taubin:
-		geometry::taubin_smoothing(m, *pos, o.iterations, o.lambda, o.mu, !o.move_boundary);
+		geometry::taubin_smoothing(m, *pos, iterations, o.lambda, o.mu, !o.move_boundary);
 		break;
 	case Method::Bilateral: {
 		geometry::BilateralNormalFilteringParams p;
-		p.normal_iterations = o.iterations;
+		p.normal_iterations = iterations;
 		p.fix_boundary = !o.move_boundary;
 		geometry::bilateral_normal_filtering(m, *pos, p);
 		break;
 	}
 	case Method::Implicit: {
 		const double l = geometry::mean_edge_length(m, *pos);
-		geometry::implicit_smoothing(m, *pos, o.time_step * l * l, o.iterations, false, !o.move_boundary);
+		geometry::implicit_smoothing(m, *pos, o.time_step * l * l, iterations, false, !o.move_boundary);
 		break;
 	}
 	}
@@ -76,7 +78,7 @@ Command add_smooth_command(CLI::App& app)
 												   {"implicit", Method::Implicit}};
 	sub->add_option("--method", o->method, "filter (default taubin)")
 		->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
-	sub->add_option("--iterations,-n", o->iterations, "passes of the filter (default 10)")
+	sub->add_option("--iterations,-n", o->iterations, "passes of the filter (default 10; implicit: 1 step, each shrinks the shape further)")
 		->check(CLI::Range(1u, 1000000u));
 	sub->add_option("--lambda", o->lambda, "laplacian/taubin step in (0, 1] (default 0.5)")
 		->check(CLI::Range(1e-9, 1.0));

@@ -12,5 +12,10 @@ Command add_check_command(CLI::App& app);
 Command add_convert_command(CLI::App& app);
 Command add_smooth_command(CLI::App& app);
 Command add_triangulate_command(CLI::App& app);
+Command add_decimate_command(CLI::App& app);
+Command add_remesh_command(CLI::App& app);
+Command add_subdivide_command(CLI::App& app);
+Command add_fill_holes_command(CLI::App& app);
+Command add_dual_command(CLI::App& app);
 
 } // namespace cgogn::tool

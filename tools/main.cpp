@@ -15,6 +15,9 @@ int main(int argc, char** argv)
 	const std::vector<tool::Command> commands = {
 		tool::add_info_command(app),		tool::add_check_command(app),		tool::add_convert_command(app),
 		tool::add_smooth_command(app),		tool::add_triangulate_command(app),
+		tool::add_decimate_command(app),	tool::add_remesh_command(app),
+		tool::add_subdivide_command(app),
+		tool::add_fill_holes_command(app),	tool::add_dual_command(app),
 	};
 	try
 	{

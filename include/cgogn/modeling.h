@@ -3,5 +3,13 @@
 // filling, triangulation, duals (functions of CMap2/CMap3 and Vec3 positions).
 #pragma once
 
+#include <cgogn/modeling/decimation.h>
+#include <cgogn/modeling/dual.h>
+#include <cgogn/modeling/fairing.h>
+#include <cgogn/modeling/hole_filling.h>
 #include <cgogn/modeling/progress.h>
+#include <cgogn/modeling/quadric.h>
+#include <cgogn/modeling/remeshing.h>
+#include <cgogn/modeling/subdivision.h>
+#include <cgogn/modeling/triangle_tree.h>
 #include <cgogn/modeling/triangulation.h>

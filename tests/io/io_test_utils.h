@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <cstdlib>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace cgogn::io_test
@@ -72,5 +74,36 @@ BuildReport build_with_positions(MAP& m, const SOUP& s)
 			(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	return r;
 }
+
+#ifdef CGOGN_TOOL_PATH
+/// What a run of the `cgogn` program produced.
+struct ToolRun
+{
+	int status = -1;
+	std::string out;
+	std::string err;
+};
+
+/// Runs the `cgogn` program with the given arguments (shell-quoted by the
+/// caller, see quoted()); stdout and stderr are captured through files in
+/// dir, so neither is a terminal (no progress output expected).
+inline ToolRun run_tool(const std::string& args, const TempDir& dir)
+{
+	const std::string out = dir.file("stdout"), err = dir.file("stderr");
+	const std::string cmd = std::string("'") + CGOGN_TOOL_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
+	ToolRun r;
+	const int s = std::system(cmd.c_str());
+	r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+	r.out = read_text(out);
+	r.err = read_text(err);
+	return r;
+}
+
+/// A path quoted for the shell.
+inline std::string quoted(const std::string& path)
+{
+	return "'" + path + "'";
+}
+#endif
 
 } // namespace cgogn::io_test

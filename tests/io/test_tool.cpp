@@ -18,27 +18,6 @@ using namespace cgogn::io_test;
 namespace
 {
 
-struct ToolRun
-{
-	int status = -1;
-	std::string out;
-	std::string err;
-};
-
-// Runs the tool with the given arguments (shell-quoted by the caller);
-// stdout and stderr are captured through files, so neither is a terminal.
-ToolRun run_tool(const std::string& args, const TempDir& dir)
-{
-	const std::string out = dir.file("stdout"), err = dir.file("stderr");
-	const std::string cmd = std::string("'") + CGOGN_TOOL_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
-	ToolRun r;
-	const int s = std::system(cmd.c_str());
-	r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-	r.out = read_text(out);
-	r.err = read_text(err);
-	return r;
-}
-
 std::string example_mesh()
 {
 	return std::string(CGOGN_EXAMPLE_DATA_DIR) + "/spot_control_mesh.obj";

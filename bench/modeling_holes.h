@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// The hole-filling and triangulation benchmark (bench_modeling_holes): each
+// peer registers its benchmarks from its own translation unit.
+#pragma once
+
+#include <string>
+
+namespace cgogn::bench_holes
+{
+
+/// Meshes with holes, by benchmark name.
+struct HoleMesh
+{
+	const char *name;
+	const char *file; // under CGOGN_DATA_DIR/surface
+};
+inline constexpr HoleMesh hole_meshes[] = {{"bunny", "stanford-bunny.obj"}, {"elephant", "elephant-with-holes.off"}};
+inline constexpr const char *quad_mesh = "spot_quadrangulated.obj";
+
+inline std::string data_file(const char *file)
+{
+	return std::string(CGOGN_DATA_DIR) + "/surface/" + file;
+}
+
+void register_cgal_benchmarks();
+void register_openmesh_benchmarks();
+
+} // namespace cgogn::bench_holes

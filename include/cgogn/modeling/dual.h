@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// The dual of a closed polygonal surface.
+#pragma once
+
+#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include <memory>
+
+namespace cgogn::modeling
+{
+
+/// Appends to `out` the dual of the closed surface m: one vertex per face of m
+/// (at the face's vertex centroid), one face per vertex of m (joining the
+/// centroids of the faces around it), one edge per edge; the dual faces are
+/// oriented like m (a closed surface with outward faces gives outward faces).
+/// Returns the "position" attribute of out (created if out has none), filled
+/// for the new vertices. The dual of the dual has the counts of m.
+/// Throws TopologyError (nothing appended) when m has boundary (the dual of a
+/// surface with boundary is not a closed 2-map: choose to fill_holes first),
+/// or when a vertex has fewer than 3 edges or meets a face twice (its dual
+/// face would be degenerate). O(size of m).
+std::shared_ptr<Attribute<Vec3>> dual(const CMap2 &m, const Attribute<Vec3> &pos, CMap2 &out);
+
+} // namespace cgogn::modeling

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// Catmull-Clark subdivision of polygon meshes.
+#include <cgogn/core/operators/cmap2.h>
+
+#include "subdivision_common.h"
+
+namespace cgogn::modeling
+{
+
+using namespace detail;
+
+namespace
+{
+
+/// Vertex centroid of the face of d.
+Vec3 face_point(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+{
+	Vec3 sum = Vec3::Zero();
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, Face(d),
+	                      [&](Dart x)
+	                      {
+		                      sum += position(m, pos, x);
+		                      ++n;
+	                      });
+	return sum / double(n);
+}
+
+/// Cuts the face of d0 (a 2k-gon after the cut of its k edges; d0 starts at
+/// an old vertex) into k quads around a new vertex, which is returned.
+/// `midpoints` is scratch space.
+Vertex cut_into_quads(CMap2 &m, Dart d0, std::vector<Dart> &midpoints)
+{
+	midpoints.clear();
+	Dart d = phi1(m, d0);
+	do
+	{
+		midpoints.push_back(d); // starts at the vertex cut into an old edge
+		d = phi<1, 1>(m, d);
+	} while (d != phi1(m, d0));
+	// the corner at the end of midpoints[0] is cut off; the new edge is cut
+	// at the centre, which is then joined to the other midpoints in turn
+	const Edge first = cut_face(m, Vertex(midpoints[0]), Vertex(midpoints[1]));
+	// first.dart (midpoints[0] -> midpoints[1]) lies in the face left to cut:
+	// the centre's dart follows it there
+	const Vertex centre = cut_edge(m, first);
+	Dart from_centre = centre.dart; // centre -> midpoints[1]
+	for (std::size_t i = 2; i < midpoints.size(); ++i)
+		from_centre = cut_face(m, Vertex(from_centre), Vertex(midpoints[i])).dart;
+	return centre;
+}
+
+} // namespace
+
+SubdivisionResult catmull_clark_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress)
+{
+	StepProgress step(progress);
+	VertexPositions vertices(m);
+	const std::vector<Dart> edges = edge_snapshot(m);
+	const FaceSnapshot snapshot(m);
+	if (!snapshot.darts.empty() && snapshot.min_degree < 3)
+		throw SubdivisionError("Catmull-Clark subdivision: a face has fewer than 3 edges");
+	const std::vector<Dart> &faces = snapshot.darts;
+	const std::size_t total = vertices.vertices.size() + edges.size() + faces.size();
+
+	// 1. the face points, and for each dart the slot of its face's point
+	// (boundary darts have none), so that edges and vertices read them
+	std::vector<Vec3> face_points(faces.size());
+	std::vector<uint32> face_of_dart(m.darts_->end_index(), INVALID_INDEX);
+	for (std::size_t i = 0; i < faces.size(); ++i)
+	{
+		if (!step.computing(i, total))
+			return step.cancelled_before_change();
+		face_points[i] = face_point(m, pos, faces[i]);
+		foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) { face_of_dart[d.index] = uint32(i); });
+	}
+	// 2. the old vertices: (Q + 2R + (n - 3) p) / n
+	for (std::size_t i = 0; i < vertices.vertices.size(); ++i)
+	{
+		if (!step.computing(faces.size() + i, total))
+			return step.cancelled_before_change();
+		const Vertex v(vertices.vertices[i]);
+		if (boundary_vertex_rule(m, pos, v, vertices.positions[i]))
+			continue;
+		const Vec3 &p = position(m, pos, v.dart);
+		Vec3 q = Vec3::Zero(), r = Vec3::Zero();
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, v,
+		                      [&](Dart d)
+		                      {
+			                      q += face_points[face_of_dart[d.index]];
+			                      r += position(m, pos, phi2(m, d));
+			                      ++n;
+		                      });
+		// R, the mean of the edge midpoints, is (p + mean of the neighbours) / 2
+		const double dn = double(n);
+		vertices.positions[i] = (q / dn + (p + r / dn) + (dn - 3.0) * p) / dn;
+	}
+	// 3. the edge points
+	std::vector<Vec3> edge_points(edges.size());
+	for (std::size_t i = 0; i < edges.size(); ++i)
+	{
+		if (!step.computing(faces.size() + vertices.vertices.size() + i, total))
+			return step.cancelled_before_change();
+		const Dart d = edges[i], d2 = phi2(m, d);
+		const Vec3 ends = position(m, pos, d) + position(m, pos, d2);
+		if (is_boundary(m, d) || is_boundary(m, d2))
+			edge_points[i] = 0.5 * ends;
+		else
+			edge_points[i] = 0.25 * (ends + face_points[face_of_dart[d.index]] + face_points[face_of_dart[d2.index]]);
+	}
+
+	// 4. the connectivity (cut_edge keeps the origins of the existing darts,
+	// so the face snapshot still starts at old vertices)
+	vertices.commit(m, pos);
+	const std::size_t work = edges.size() + faces.size();
+	for (std::size_t i = 0; i < edges.size(); ++i)
+	{
+		step.changing(i, work);
+		pos[index_of(m, cut_edge(m, Edge(edges[i])))] = edge_points[i];
+	}
+	std::vector<Dart> midpoints;
+	for (std::size_t i = 0; i < faces.size(); ++i)
+	{
+		step.changing(edges.size() + i, work);
+		pos[index_of(m, cut_into_quads(m, faces[i], midpoints))] = face_points[i];
+	}
+	return step.finish();
+}
+
+} // namespace cgogn::modeling
