@@ -1,7 +1,7 @@
 // Parallel traversals and quick incidence caches, on the largest meshes of the
 // data folder (nefertiti.obj, armadillo_tet_461k.mesh) or, with
 // CGOGN_BENCH_GENERATED=1 or without the folder, on a generated closed
-// triangle torus of 1,000,000 faces and a 384,000-tet grid (see surface() and
+// triangle torus of 1,000,000 faces and a 998,250-tet grid (see surface() and
 // volume()). "seq" runs foreach_cell, "par" parallel_foreach_cell
 // with the default number of workers, "par1" parallel_foreach_cell limited to
 // one worker (its sequential fallback).
@@ -12,6 +12,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 #include <cmath>
 #include <sys/resource.h>
@@ -216,12 +217,17 @@ struct Volume3
 	CMap3 map;
 	Volume3()
 	{
-		// the largest tet mesh of the data folder, or a generated 384k-tet grid
-		const std::string file = std::string(CGOGN_DATA_DIR) + "/volume/armadillo_tet_461k.mesh";
+		// the largest tet mesh of the data folder; CGOGN_BENCH_VOLUME=elephant:
+		// the hex mesh of the data folder; CGOGN_BENCH_GENERATED=1 (or no data
+		// folder): a generated 998,250-tet grid
+		const char* which = std::getenv("CGOGN_BENCH_VOLUME");
+		const std::string name = which != nullptr && std::string(which) == "elephant" ? "elephant_hex_110k.mesh"
+																					  : "armadillo_tet_461k.mesh";
+		const std::string file = std::string(CGOGN_DATA_DIR) + "/volume/" + name;
 		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
 			io::load_volume(map, file);
 		else
-			build_volume(map, tet_grid_soup(40, 40, 40));
+			build_volume(map, tet_grid_soup(55, 55, 55));
 	}
 };
 
@@ -273,6 +279,7 @@ void edge_degrees_volume_unindexed(benchmark::State& state, Mode mode)
 void volume_sizes_unindexed(benchmark::State& state, Mode mode)
 {
 	const CMap3& m = volume().map;
+	const uint32 nb_volumes = nb_cells<CMap3::Volume>(m);
 	Workers w(state, mode);
 	for (auto _ : state)
 	{
@@ -280,6 +287,45 @@ void volume_sizes_unindexed(benchmark::State& state, Mode mode)
 		run(mode, m, [&](CMap3::Volume v) { sum[current_thread_index()].v += v.dart.index; });
 		benchmark::DoNotOptimize(sum.data());
 	}
+	state.counters["cells"] = double(nb_volumes);
+}
+
+// Hides the vertex index of a 3-map for one scope, so that the non-indexed
+// path is measured on the same map (the index attribute stays in the dart
+// container and is given back at the end of the scope).
+struct HideVertexIndex
+{
+	explicit HideVertexIndex(CMap3& m)
+		: m_(m), idx_(std::exchange(m.cell_index_[orbit_index(CMap3::Vertex::ORBIT)], nullptr))
+	{
+	}
+	~HideVertexIndex()
+	{
+		m_.cell_index_[orbit_index(CMap3::Vertex::ORBIT)] = idx_;
+	}
+	HideVertexIndex(const HideVertexIndex&) = delete;
+	HideVertexIndex& operator=(const HideVertexIndex&) = delete;
+
+private:
+	CMap3& m_;
+	Attribute<uint32>* idx_;
+};
+
+// 3-D vertices not indexed: flooded orbits (phi21 / phi31), each vertex spread
+// over the darts of all its incident volumes
+void vertices_volume_unindexed(benchmark::State& state, Mode mode)
+{
+	CMap3& m = volume().map;
+	HideVertexIndex hidden(m);
+	const uint32 nb_vertices = nb_cells<CMap3::Vertex>(m); // before Workers starts counting CPU time
+	Workers w(state, mode);
+	for (auto _ : state)
+	{
+		std::vector<PerThread<uint64>> sum(thread_pool()->nb_workers());
+		run(mode, m, [&](CMap3::Vertex v) { sum[current_thread_index()].v += v.dart.index; });
+		benchmark::DoNotOptimize(sum.data());
+	}
+	state.counters["cells"] = double(nb_vertices);
 }
 
 void cache_build_volume(benchmark::State& state, Mode mode)
@@ -306,6 +352,7 @@ CGOGN_PAR_BENCH(compute_heavy)
 CGOGN_PAR_BENCH(face_areas_unindexed)
 CGOGN_PAR_BENCH(edge_degrees_volume_unindexed)
 CGOGN_PAR_BENCH(volume_sizes_unindexed)
+CGOGN_PAR_BENCH(vertices_volume_unindexed)
 BENCHMARK_CAPTURE(circulator_surface, dart_walk, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(circulator_surface, cached, true)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(circulator_volume, dart_walk, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);

@@ -226,6 +226,160 @@ TEST_P(Parallel, ParallelIncidenceCacheBuildMatchesTraversal)
 	EXPECT_TRUE(check_integrity(m).ok());
 }
 
+namespace
+{
+
+// Removes the index of orbit O from m, as if no attribute had ever been added
+// on it (builders index 3-D vertices): the traversals then take the
+// non-indexed path.
+template <typename CELL, typename MAP>
+void drop_index(MAP& m)
+{
+	Attribute<uint32>*& idx = m.cell_index_[orbit_index(CELL::ORBIT)];
+	ASSERT_NE(idx, nullptr);
+	ASSERT_TRUE(m.darts_->remove_attribute(idx));
+	idx = nullptr;
+}
+
+} // namespace
+
+// The flooded orbits (3-D vertices, volumes, connected components), not
+// indexed, on maps large enough to be split among the workers (hundreds of
+// chunks): each cell exactly once, with boundary volumes, on tets and hexes.
+TEST_P(Parallel, FloodedOrbitsNotIndexedLargeMaps)
+{
+	using Vertex = CMap3::Vertex;
+	using Volume = CMap3::Volume;
+	for (bool hexes : {false, true})
+	{
+		SCOPED_TRACE(hexes ? "hexes" : "tets");
+		CMap3 m;
+		build_volume(m, hexes ? hex_grid_soup(20, 18, 16) : tet_grid_soup(14, 12, 11));
+		if (!hexes)
+			build_volume(m, tet_grid_soup(3, 3, 3)); // a second connected component
+		drop_index<Vertex>(m);
+		ASSERT_FALSE(is_indexed<Vertex>(m));
+		ASSERT_FALSE(is_indexed<Volume>(m));
+		const uint32 nx = hexes ? 20 : 14, ny = hexes ? 18 : 12, nz = hexes ? 16 : 11;
+		EXPECT_EQ(nb_cells<Vertex>(m), (nx + 1) * (ny + 1) * (nz + 1) + (hexes ? 0 : 64));
+		EXPECT_EQ(nb_cells<Volume>(m), nx * ny * nz * (hexes ? 1 : 6) + (hexes ? 0 : 27 * 6));
+		check_cells<Vertex>(m);
+		check_cells<Volume>(m);
+		check_cells<CMap3::CC>(m);
+		EXPECT_TRUE(check_integrity(m).ok()); // the claim and worker marks were given back cleared
+		// the same answer on the next traversals (the marks were cleared)
+		check_cells<Vertex>(m);
+		check_cells<Volume>(m);
+	}
+}
+
+// Each cell is reported from its smallest non-boundary dart, as foreach_cell
+// reports it.
+TEST_P(Parallel, FloodedOrbitReportedFromItsSmallestDart)
+{
+	using Vertex = CMap3::Vertex;
+	CMap3 m;
+	build_volume(m, tet_grid_soup(8, 7, 6));
+	drop_index<Vertex>(m);
+	std::vector<uint32> seq, par;
+	foreach_cell(m, [&](Vertex v) { seq.push_back(v.dart.index); });
+	std::vector<std::vector<uint32>> per_thread(thread_pool()->nb_workers());
+	parallel_foreach_cell(m, [&](Vertex v) {
+		uint32 smallest = INVALID_INDEX;
+		foreach_dart_of_orbit(m, v, [&](Dart d) {
+			if (!is_boundary(m, d))
+				smallest = std::min(smallest, d.index);
+		});
+		EXPECT_EQ(v.dart.index, smallest);
+		per_thread[current_thread_index()].push_back(v.dart.index);
+	});
+	for (const auto& t : per_thread)
+		par.insert(par.end(), t.begin(), t.end());
+	std::sort(seq.begin(), seq.end());
+	std::sort(par.begin(), par.end());
+	EXPECT_EQ(par, seq);
+}
+
+// Filters on non-indexed flooded orbits: exactly the accepted cells, once.
+TEST_P(Parallel, FloodedOrbitsNotIndexedThroughFilter)
+{
+	using Vertex = CMap3::Vertex;
+	using Volume = CMap3::Volume;
+	CMap3 m;
+	build_volume(m, tet_grid_soup(10, 9, 8));
+	drop_index<Vertex>(m);
+	CellFilter<CMap3> filter(m);
+	filter.set_filter<Vertex>([&](Vertex v) { return cell_id(m, v) % 3 == 0; });
+	filter.set_filter<Volume>([&](Volume w) { return cell_id(m, w) % 5 == 0; });
+	auto expected = [&]<typename CELL>(CELL*, auto pred) {
+		std::vector<uint32> ids;
+		foreach_cell(m, [&](CELL c) {
+			if (pred(cell_id(m, c)))
+				ids.push_back(cell_id(m, c));
+		});
+		std::sort(ids.begin(), ids.end());
+		return ids;
+	};
+	auto got = [&]<typename CELL>(CELL*) {
+		std::vector<std::vector<uint32>> per_thread(thread_pool()->nb_workers());
+		parallel_foreach_cell(filter, [&](CELL c) { per_thread[current_thread_index()].push_back(cell_id(m, c)); });
+		std::vector<uint32> ids;
+		for (const auto& t : per_thread)
+			ids.insert(ids.end(), t.begin(), t.end());
+		std::sort(ids.begin(), ids.end());
+		return ids;
+	};
+	const auto ev = expected(static_cast<Vertex*>(nullptr), [](uint32 id) { return id % 3 == 0; });
+	const auto ew = expected(static_cast<Volume*>(nullptr), [](uint32 id) { return id % 5 == 0; });
+	EXPECT_FALSE(ev.empty());
+	EXPECT_FALSE(ew.empty());
+	EXPECT_EQ(got(static_cast<Vertex*>(nullptr)), ev);
+	EXPECT_EQ(got(static_cast<Volume*>(nullptr)), ew);
+}
+
+// After operators changed the map (new darts in the middle of the dart range,
+// freed darts reused, cells merged), the non-indexed flooded orbits are still
+// reported once each.
+TEST_P(Parallel, FloodedOrbitsNotIndexedAfterOperators)
+{
+	using Vertex = CMap3::Vertex;
+	using Volume = CMap3::Volume;
+	using Edge = CMap3::Edge;
+	CMap3 m;
+	build_volume(m, tet_grid_soup(9, 8, 7));
+	drop_index<Vertex>(m);
+	const uint32 nv = nb_cells<Vertex>(m), nw = nb_cells<Volume>(m);
+	// split every 5th tetrahedron at its centre (+1 vertex, +3 volumes each),
+	// then collapse every other centre back (darts freed in the middle of the
+	// range), then cut every 7th edge (+1 vertex each; reuses freed darts)
+	std::vector<Volume> tets;
+	foreach_cell(m, [&](Volume w) { tets.push_back(w); });
+	std::vector<Vertex> centres;
+	for (std::size_t k = 0; k < tets.size(); k += 5)
+		centres.push_back(split_tetra(m, tets[k]));
+	check_cells<Vertex>(m);
+	check_cells<Volume>(m);
+	uint32 collapsed = 0;
+	for (std::size_t k = 0; k < centres.size(); k += 2, ++collapsed)
+	{
+		ASSERT_TRUE(edge_can_collapse(m, Edge(centres[k].dart)));
+		collapse_edge(m, Edge(centres[k].dart));
+	}
+	const uint32 split = uint32(centres.size()) - collapsed;
+	std::vector<Edge> edges;
+	foreach_cell(m, [&](Edge e) { edges.push_back(e); });
+	uint32 cut = 0;
+	for (std::size_t k = 0; k < edges.size(); k += 7, ++cut)
+		cut_edge(m, edges[k]);
+	ASSERT_TRUE(check_integrity(m).ok());
+	EXPECT_GT(collapsed, 0u);
+	EXPECT_EQ(nb_cells<Vertex>(m), nv + split + cut);
+	EXPECT_EQ(nb_cells<Volume>(m), nw + 3 * split);
+	check_cells<Vertex>(m);
+	check_cells<Volume>(m);
+	check_cells<CMap3::CC>(m);
+}
+
 INSTANTIATE_TEST_SUITE_P(Workers, Parallel, ::testing::Values(1u, 2u, 7u),
 						 [](const ::testing::TestParamInfo<uint32>& p) { return std::to_string(p.param) + "workers"; });
 

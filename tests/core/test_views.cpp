@@ -162,3 +162,85 @@ TEST(CacheVolume, DegreeFiveLikeSelection)
 	EXPECT_LE(nb_cells<W3>(cf), 8u);
 	EXPECT_EQ(nb_cells<CMap3::Face>(cf), 36u);
 }
+
+namespace
+{
+// generic code that asks topological questions: works on maps and views
+template <typename MESH>
+uint32 sum_of_vertex_degrees(const MESH& m)
+{
+	uint32 s = 0;
+	foreach_cell(m, [&](typename mesh_traits<MESH>::Vertex v) { s += degree(m, v); });
+	return s;
+}
+} // namespace
+
+// A view hides cells from traversals, not from the topology: phi, degree,
+// codegree, is_boundary, is_incident_to_boundary and same_cell answer for the
+// map under the view.
+TEST_F(ViewGrid, TopologicalQueriesPassThroughViews)
+{
+	CellFilter<CMap2> cf(m);
+	cf.set_filter<Face>([&](Face f) { return value<uint32>(m, face_id, f) % 2 == 0; });
+	cf.set_filter<Vertex>([&](Vertex v) { return !is_incident_to_boundary(cf, v); }); // the 6 inner vertices
+	CellCache<CMap2> cache(m);
+	cache.build<Vertex>();
+	uint32 inner = 0;
+	foreach_cell(cf, [&](Vertex v) {
+		++inner;
+		EXPECT_EQ(degree(cf, v), 4u); // all 4 edges, though half the faces are filtered out
+		EXPECT_EQ(degree(cache, v), 4u);
+		EXPECT_FALSE(is_incident_to_boundary(cache, v));
+	});
+	EXPECT_EQ(inner, 6u);
+	// sum of degrees = 2 * edges; the filter keeps the inner vertices only
+	EXPECT_EQ(sum_of_vertex_degrees(m), 62u);
+	EXPECT_EQ(sum_of_vertex_degrees(cache), 62u);
+	EXPECT_EQ(sum_of_vertex_degrees(cf), 24u);
+	foreach_dart(m, [&](Dart d) {
+		EXPECT_EQ(phi1(cf, d), phi1(m, d));
+		EXPECT_EQ(phi_1(cache, d), phi_1(m, d));
+		EXPECT_EQ(phi2(cf, d), phi2(m, d));
+		EXPECT_EQ((phi<1, 2, -1>(cache, d)), (phi<1, 2, -1>(m, d)));
+		EXPECT_EQ(is_boundary(cf, d), is_boundary(m, d));
+		EXPECT_TRUE(same_cell(cf, Vertex(d), Vertex(phi<2, 1>(cf, d))));
+		EXPECT_FALSE(same_cell(cache, Face(d), Face(phi2(m, d))));
+		return true;
+	});
+	foreach_cell(m, [&](Face f) { EXPECT_EQ(codegree(cf, f), 4u); });
+	foreach_cell(m, [&](Edge e) {
+		EXPECT_EQ(codegree(cache, e), 2u);
+		EXPECT_EQ(degree(cf, e), degree(m, e));
+	});
+}
+
+TEST(CacheVolume, TopologicalQueriesPassThroughViews)
+{
+	CMap3 m;
+	build_volume(m, hex_grid_soup(2, 2, 2));
+	using V3 = CMap3::Vertex;
+	using E3 = CMap3::Edge;
+	using F3 = CMap3::Face;
+	using W3 = CMap3::Volume;
+	CellFilter<CMap3> cf(m);
+	cf.set_filter<W3>([&](W3) { return false; }); // no volume at all
+	uint32 centre = 0;
+	foreach_cell(m, [&](V3 v) {
+		if (!is_incident_to_boundary(cf, v))
+		{
+			++centre;
+			EXPECT_EQ(degree(cf, v), 6u); // the centre of the 2x2x2 grid
+		}
+	});
+	EXPECT_EQ(centre, 1u);
+	foreach_cell(m, [&](E3 e) { EXPECT_EQ(degree(cf, e), degree(m, e)); });
+	foreach_cell(m, [&](F3 f) {
+		EXPECT_EQ(codegree(cf, f), 4u);
+		EXPECT_EQ(degree(cf, f), degree(m, f));
+	});
+	foreach_cell(m, [&](W3 w) {
+		EXPECT_EQ(codegree(cf, w), 6u);
+		EXPECT_EQ(phi3(cf, w.dart), phi3(m, w.dart));
+	});
+	EXPECT_EQ(nb_cells<W3>(cf), 0u);
+}

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/types/numeric.h>
 
+#include <atomic>
 #include <cassert>
 #include <memory>
 #include <string>
@@ -171,6 +172,27 @@ public:
 	{
 		chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] &= ~(uint64(1) << (i & 63u));
 	}
+	/// Atomic (relaxed) access, for a mark shared by the threads of a parallel
+	/// traversal: while threads share the mark, every access goes through these.
+	bool atomic_test(uint32 i) const
+	{
+		return (word_ref(i).load(std::memory_order_relaxed) >> (i & 63u)) & 1u;
+	}
+	/// Sets bit i atomically; true when this call set it (it was clear).
+	bool atomic_test_and_set(uint32 i)
+	{
+		const uint64 bit = uint64(1) << (i & 63u);
+		return (word_ref(i).fetch_or(bit, std::memory_order_relaxed) & bit) == 0;
+	}
+	/// Sets bit i with a relaxed atomic load and store, no read-modify-write:
+	/// cheaper than atomic_test_and_set, but a set of another bit of the same
+	/// word by another thread at the same moment may be lost. For hints only
+	/// (e.g. "no need to look at this dart again"), never for decisions.
+	void atomic_set_lossy(uint32 i)
+	{
+		std::atomic_ref<uint64> w = word_ref(i);
+		w.store(w.load(std::memory_order_relaxed) | (uint64(1) << (i & 63u)), std::memory_order_relaxed);
+	}
 	void set_value(uint32 i, bool b)
 	{
 		if (b)
@@ -213,6 +235,11 @@ public:
 	uint32 pool_slot = INVALID_INDEX;
 
 private:
+	std::atomic_ref<uint64> word_ref(uint32 i) const
+	{
+		return std::atomic_ref<uint64>(chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6]);
+	}
+
 	std::vector<std::unique_ptr<uint64[]>> chunks_;
 };
 

@@ -45,6 +45,82 @@ bool foreach_dart_flood(const MAP& m, Dart d, const FUNC& f, NEXT... next)
 	return go_on;
 }
 
+/// A dart mark reserved from the map's pool for the life of a scope, cleared
+/// (O(darts / 64)) and given back at its end, exceptions included.
+class ScopedDartMark
+{
+public:
+	explicit ScopedDartMark(const CMapBase& m) : darts_(*m.darts_), mark_(darts_.acquire_mark())
+	{
+	}
+	~ScopedDartMark()
+	{
+		mark_->clear_all();
+		darts_.release_mark(mark_);
+	}
+	ScopedDartMark(const ScopedDartMark&) = delete;
+	ScopedDartMark& operator=(const ScopedDartMark&) = delete;
+
+	MarkAttribute& operator*() const
+	{
+		return *mark_;
+	}
+
+private:
+	AttributeContainer& darts_;
+	MarkAttribute* mark_;
+};
+
+/// True for the orbits that foreach_dart_of_orbit floods with a mark and a
+/// work list (volumes, 3-D vertices, connected components); the others are
+/// walked as one or two cycles.
+constexpr bool orbit_is_flooded(Orbit o)
+{
+	return o == Orbit::PHI1_PHI2 || o == Orbit::PHI21_PHI31 || o == Orbit::PHI1_PHI2_PHI3;
+}
+
+/// Breadth-first visit of the orbit O of d with a mark and a work list owned by
+/// the caller: darts already set in `mark` are treated as visited, and the bits
+/// of the visited darts stay set (the caller clears them, possibly much later
+/// and all at once). Traversals that flood many cells use it to pay one mark
+/// for all of them instead of one pooled mark per cell. Calls f on each dart.
+template <Orbit O, typename MAP, typename FUNC>
+void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vector<Dart>& work, const FUNC& f)
+{
+	static_assert(orbit_is_flooded(O));
+	work.clear();
+	work.push_back(d);
+	mark.set(d.index);
+	auto visit = [&](Dart y) {
+		if (!mark.test(y.index))
+		{
+			mark.set(y.index);
+			work.push_back(y);
+		}
+	};
+	for (std::size_t i = 0; i < work.size(); ++i)
+	{
+		const Dart x = work[i];
+		f(x);
+		if constexpr (O == Orbit::PHI1_PHI2)
+		{
+			visit(phi1(m, x));
+			visit(phi2(m, x));
+		}
+		else if constexpr (O == Orbit::PHI21_PHI31)
+		{
+			visit(phi1(m, phi2(m, x)));
+			visit(phi1(m, phi3(m, x)));
+		}
+		else
+		{
+			visit(phi1(m, x));
+			visit(phi2(m, x));
+			visit(phi3(m, x));
+		}
+	}
+}
+
 } // namespace detail
 
 /// Calls f(Dart) on each dart of the orbit of cell c; f may return false to

@@ -45,6 +45,19 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 				return true;
 			});
 		}
+		else if constexpr (orbit_is_flooded(O))
+		{
+			// one mark for the whole traversal, also used by the floods (a cell
+			// is flooded once, from its first dart met, the smallest non-boundary one)
+			ScopedDartMark mark(m);
+			DartBuffer buffer;
+			foreach_dart(m, [&](Dart d) {
+				if (is_boundary(m, d) || (*mark).test(d.index))
+					return true;
+				flood_orbit_keep_marks<O>(m, d, *mark, *buffer, [](Dart) {});
+				return call_and_continue(f, CELL(d));
+			});
+		}
 		else
 		{
 			DartMarker<MAP> dm(m);

@@ -5,6 +5,7 @@
 #include <cgogn/core/parallel/thread_pool.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace cgogn
 {
@@ -26,21 +27,44 @@ constexpr bool orbit_is_cyclic(Orbit o)
 		   o == Orbit::PHI2_PHI3;
 }
 
+/// What one worker of a flooded traversal keeps from chunk to chunk: a mark
+/// of its own (no other thread touches it) and its work list, on cache lines
+/// of its own.
+struct alignas(64) FloodWorker
+{
+	MarkAttribute* flooded = nullptr; // darts of the cells this worker has flooded
+	std::vector<Dart> work;
+};
+
 /// Parallel traversal of the cells of a non-indexed orbit. The dart range is
 /// cut into chunks of whole 64-dart blocks, scheduled by work stealing. A cell
-/// is reported from its smallest non-boundary dart (its owner), by whichever
-/// chunk holds that dart; no thread waits for another or for a sequential pass.
+/// is reported from its smallest non-boundary dart (its owner); no thread
+/// waits for another or for a sequential pass.
 /// - Cyclic orbits (see orbit_is_cyclic): from each non-boundary dart d, walk
 ///   the orbit until a smaller non-boundary dart shows up (d is not the owner:
 ///   stop) or the walk ends (d is the owner: report). Read-only, no mark.
-/// - Flooded orbits: a chunk scans its darts in increasing order; at the first
-///   unseen non-boundary dart d of a cell it floods the orbit once, marks the
-///   cell's darts that lie in the chunk (so that the chunk does not flood it
-///   again) and reports the cell when d is the smallest non-boundary dart of
-///   the orbit. Each cell is flooded once per chunk it meets (about once in
-///   total for cells smaller than a chunk). The one mark is shared: a chunk
-///   only touches the bits of its own blocks, which are whole 64-bit words,
-///   and clears them when done.
+/// - Flooded orbits (see orbit_is_flooded): a worker scanning its chunk [b, e)
+///   skips the darts it has flooded (a mark of its own, kept for the whole
+///   traversal) and those marked "seen" by others; at any other non-boundary
+///   dart it floods the cell with its own mark, marks "seen" the cell's darts
+///   outside [b, e) (the darts other workers scan; those of [b, e) only this
+///   worker scans) and finds the cell's owner. The cell is reported by the
+///   worker that first sets the owner's bit in a "reported" mark (atomic
+///   fetch_or: one winner; a cell lying entirely in [b, e) is flooded by no
+///   other worker and is reported directly). So each cell is reported exactly
+///   once, and flooded once in total, except when two workers start on the
+///   same cell at the same moment (both flood it, one reports it). "seen" is a
+///   hint, written with relaxed loads and stores (no read-modify-write, as
+///   cheap as a plain mark): a bit lost to a concurrent write of the same word
+///   only costs a second flood, never a second report. Neither the darts of a
+///   cell nor the cells need to be contiguous: 3-D vertices, whose darts lie
+///   in all their incident volumes, are flooded once although most of their
+///   darts lie in other chunks (a per-worker mark alone made every worker
+///   flood almost every vertex). No pooled mark is reserved per cell (a per-
+///   cell reservation made the cores fight over the pool's cache line). Cost:
+///   one flood per cell, one atomic read-modify-write per cell that straddles
+///   chunks; the marks are cleared at the end by the workers, O(darts / 64)
+///   each. Measured in bench/README.md ("Parallel").
 template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {
@@ -64,27 +88,63 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	}
 	else
 	{
-		MarkAttribute* seen = m.darts_->acquire_mark();
-		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-			const uint32 b = bb * 64, e = std::min(be * 64, end);
-			for (uint32 i = b; i < e; ++i)
-			{
-				if (key[i] == INVALID_INDEX || seen->test(i) || is_boundary(m, Dart(i)))
-					continue;
-				uint32 smallest = i;
-				foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
-					if (x.index >= b && x.index < e)
-						seen->set(x.index);
-					if (x.index < smallest && !is_boundary(m, x))
-						smallest = x.index;
-				});
-				if (smallest == i)
-					f(CELL(Dart(i)));
-			}
-			for (uint32 i = b; i < e; ++i)
-				seen->reset(i);
-		}));
-		m.darts_->release_mark(seen);
+		static_assert(orbit_is_flooded(CELL::ORBIT));
+		std::vector<FloodWorker> workers(thread_pool()->nb_workers());
+		std::vector<MarkAttribute*> marks{m.darts_->acquire_mark(), m.darts_->acquire_mark()};
+		MarkAttribute& seen = *marks[0];	 // darts flooded by a worker other than their scanner (hints)
+		MarkAttribute& reported = *marks[1]; // owners of the reported cells
+		auto clear_and_release = [&](bool in_parallel) {
+			for (FloodWorker& w : workers)
+				if (w.flooded != nullptr)
+					marks.push_back(w.flooded);
+			auto clear = [&](uint32 b, uint32 e) {
+				for (uint32 k = b; k < e; ++k)
+					marks[k]->clear_all();
+			};
+			if (in_parallel)
+				parallel_for_chunks(uint32(marks.size()), 1, ChunkBody(clear));
+			else
+				clear(0, uint32(marks.size()));
+			for (MarkAttribute* mark : marks)
+				m.darts_->release_mark(mark);
+		};
+		try
+		{
+			parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+				FloodWorker& w = workers[current_thread_index()];
+				if (w.flooded == nullptr)
+					w.flooded = m.darts_->acquire_mark();
+				const uint32 b = bb * 64, e = std::min(be * 64, end);
+				for (uint32 i = b; i < e; ++i)
+				{
+					if (key[i] == INVALID_INDEX || w.flooded->test(i) || seen.atomic_test(i) ||
+						is_boundary(m, Dart(i)))
+						continue;
+					uint32 owner = i;
+					bool inside = true; // all the cell's darts in [b, e)
+					flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
+						// the darts of [b, e) are scanned by this worker only:
+						// its own mark is enough to skip them
+						if (x.index < b || x.index >= e)
+						{
+							seen.atomic_set_lossy(x.index);
+							inside = false;
+						}
+						if (x.index < owner && !is_boundary(m, x))
+							owner = x.index;
+					});
+					// a cell inside [b, e) is flooded by no other worker: no race
+					if (inside || reported.atomic_test_and_set(owner))
+						f(CELL(Dart(owner)));
+				}
+			}));
+		}
+		catch (...)
+		{
+			clear_and_release(false);
+			throw;
+		}
+		clear_and_release(true);
 	}
 }
 

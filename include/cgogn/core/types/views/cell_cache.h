@@ -4,6 +4,7 @@
 #include <cgogn/core/functions/traversals/local_views.h>
 #include <cgogn/core/functions/traversals/parallel.h>
 #include <cgogn/core/types/views/mesh_view.h>
+#include <cgogn/core/types/views/view_queries.h>
 
 namespace cgogn
 {
