@@ -5,20 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include "modeling_test_utils.h"
+
 #include <filesystem>
 #include <map>
 
 using namespace cgogn;
+using namespace cgogn::modeling_test;
 
 namespace
 {
 
 using Vertex = CMap2::Vertex;
-
-int64 euler_characteristic(const CMap2& m)
-{
-	return int64(nb_cells<Vertex>(m)) - int64(nb_cells<CMap2::Edge>(m)) + int64(nb_cells<CMap2::Face>(m));
-}
 
 uint32 count_faces(const CMap2& m)
 {
@@ -33,11 +31,6 @@ double max_sphere_deviation(const CMap2& m, const Attribute<Vec3>& pos)
 	double d = 0.0;
 	foreach_cell(m, [&](Vertex v) { d = std::max(d, std::abs(pos[index_of(m, v)].norm() - 1.0)); });
 	return d;
-}
-
-std::string data_file(const std::string& name)
-{
-	return std::string(CGOGN_DATA_DIR) + "/surface/" + name;
 }
 
 /// A sphere of 2 * 64 * 31 = 3968 triangles.
@@ -156,7 +149,7 @@ TEST(Decimation, TorusKeepsItsGenus)
 
 TEST(Decimation, NefertitiToTenPercent)
 {
-	const std::string path = data_file("nefertiti.obj");
+	const std::string path = data_path("nefertiti.obj");
 	if (!std::filesystem::exists(path))
 		GTEST_SKIP() << "no " << path;
 	CMap2 m;
@@ -175,7 +168,7 @@ TEST(Decimation, NefertitiToTenPercent)
 
 TEST(Decimation, HemisphereKeepsItsBoundaryWhenAsked)
 {
-	const std::string path = data_file("hemisphere.off");
+	const std::string path = data_path("hemisphere.off");
 	if (!std::filesystem::exists(path))
 		GTEST_SKIP() << "no " << path;
 	CMap2 m;
@@ -208,7 +201,7 @@ TEST(Decimation, HemisphereKeepsItsBoundaryWhenAsked)
 
 TEST(Decimation, HemisphereBoundaryMayCollapseOtherwise)
 {
-	const std::string path = data_file("hemisphere.off");
+	const std::string path = data_path("hemisphere.off");
 	if (!std::filesystem::exists(path))
 		GTEST_SKIP() << "no " << path;
 	CMap2 m;
@@ -229,7 +222,7 @@ TEST(Decimation, HemisphereBoundaryMayCollapseOtherwise)
 
 TEST(Decimation, BunnyWithHolesKeepsItsFiveBoundaryLoops)
 {
-	const std::string path = data_file("stanford-bunny.obj");
+	const std::string path = data_path("stanford-bunny.obj");
 	if (!std::filesystem::exists(path))
 		GTEST_SKIP() << "no " << path;
 	CMap2 m;

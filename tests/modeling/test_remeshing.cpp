@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "modeling_test_utils.h"
+
 #include <filesystem>
 #include <set>
 
 using namespace cgogn;
+using namespace cgogn::modeling_test;
 
 namespace
 {
@@ -50,11 +53,6 @@ bool all_triangles(const CMap2& m)
 	return ok;
 }
 
-std::string data_file(const std::string& name)
-{
-	return std::string(CGOGN_DATA_DIR) + "/surface/" + name;
-}
-
 } // namespace
 
 TEST(Remeshing, SphereGetsTheTargetLengthAndRegularValences)
@@ -84,7 +82,7 @@ TEST(Remeshing, SphereGetsTheTargetLengthAndRegularValences)
 
 TEST(Remeshing, HemisphereKeepsItsBoundaryLoop)
 {
-	const std::string path = data_file("hemisphere.off");
+	const std::string path = data_path("hemisphere.off");
 	if (!std::filesystem::exists(path))
 		GTEST_SKIP() << "no " << path;
 	CMap2 m;
@@ -195,7 +193,7 @@ TEST(TriangleTree, ClosestPointsOnAGrid)
 
 TEST(Remeshing, NefertitiAtItsMeanEdgeLength)
 {
-	const std::string path = data_file("nefertiti.obj");
+	const std::string path = data_path("nefertiti.obj");
 	if (!std::filesystem::exists(path))
 		GTEST_SKIP() << "no " << path;
 	CMap2 m;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "modeling_test_utils.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include "../geometry/geometry_test_meshes.h"
 
 using namespace cgogn;
+using namespace cgogn::modeling_test;
 using test::polygon_soup;
 
 namespace
@@ -58,11 +61,6 @@ void expect_positions(const CMap2 &m, const Attribute<Vec3> &pos, const std::vec
 		foreach_cell(m, [&](Vertex v) { close += (value<Vec3>(m, pos, v) - p).norm() < 1e-14 ? 1 : 0; });
 		EXPECT_EQ(close, 1u) << "expected a vertex at " << p.transpose();
 	}
-}
-
-int euler_characteristic(const CMap2 &m)
-{
-	return int(nb_cells<Vertex>(m)) - int(nb_cells<CMap2::Edge>(m)) + int(nb_cells<CMap2::Face>(m));
 }
 
 bool all_faces_of_degree(const CMap2 &m, uint32 k)
@@ -358,7 +356,7 @@ TEST(Subdivision, ElephantWithHolesEveryScheme)
 		auto pos = get_attribute<Vec3, Vertex>(m, "position");
 		const Counts c = counts(m);
 		const uint32 holes = nb_boundary_components(m);
-		const int chi = euler_characteristic(m);
+		const int64_t chi = euler_characteristic(m);
 		modeling::subdivide(m, *pos, scheme, 1);
 		EXPECT_TRUE(check_integrity(m).ok());
 		EXPECT_EQ(nb_boundary_components(m), holes);
