@@ -412,21 +412,24 @@ void dynamic(benchmark::State& state, bool, bool with_compact)
 #endif
 
 const bool registered = [] {
-	using std::placeholders::_1, std::placeholders::_2;
-	register_bench("surface/circulator/cgogn", Kind::read_only, std::bind(circulator, _1, _2, Mode::plain));
-	register_bench("surface/barycenter/cgogn", Kind::read_only, std::bind(barycenter, _1, _2, Mode::plain));
-	register_bench("surface/normal/cgogn", Kind::read_only, std::bind(normal, _1, _2, Mode::plain));
+	// a workload with its last argument fixed, as the harness registers it
+	const auto with = [](auto workload, auto last) {
+		return [workload, last](benchmark::State& state, bool first) { workload(state, first, last); };
+	};
+	register_bench("surface/circulator/cgogn", Kind::read_only, with(circulator, Mode::plain));
+	register_bench("surface/barycenter/cgogn", Kind::read_only, with(barycenter, Mode::plain));
+	register_bench("surface/normal/cgogn", Kind::read_only, with(normal, Mode::plain));
 	register_bench("surface/smoothing/cgogn", Kind::read_only, smoothing);
 	register_bench("surface/cache_build/cgogn_quick", Kind::read_only, cache_build);
-	register_bench("surface/circulator/cgogn_quick", Kind::read_only, std::bind(circulator, _1, _2, Mode::quick));
-	register_bench("surface/barycenter/cgogn_quick", Kind::read_only, std::bind(barycenter, _1, _2, Mode::quick));
-	register_bench("surface/normal/cgogn_quick", Kind::read_only, std::bind(normal, _1, _2, Mode::quick));
+	register_bench("surface/circulator/cgogn_quick", Kind::read_only, with(circulator, Mode::quick));
+	register_bench("surface/barycenter/cgogn_quick", Kind::read_only, with(barycenter, Mode::quick));
+	register_bench("surface/normal/cgogn_quick", Kind::read_only, with(normal, Mode::quick));
 	register_bench("surface/smoothing/cgogn_quick", Kind::read_only, smoothing_quick);
 #if CGOGN_BENCH_HAS_TOPOLOGY
 	register_bench("surface/subdivision/cgogn", Kind::topology, subdivision);
 	register_bench("surface/collapse/cgogn", Kind::topology, collapse);
-	register_bench("surface/dynamic/cgogn", Kind::single, std::bind(dynamic, _1, _2, false));
-	register_bench("surface/dynamic_compact/cgogn", Kind::single, std::bind(dynamic, _1, _2, true));
+	register_bench("surface/dynamic/cgogn", Kind::single, with(dynamic, false));
+	register_bench("surface/dynamic_compact/cgogn", Kind::single, with(dynamic, true));
 #endif
 	register_bench("memory/surface/cgogn", Kind::single, memory);
 	return true;

@@ -305,16 +305,19 @@ void collapse(benchmark::State& state, bool)
 #endif
 
 const bool registered = [] {
-	using std::placeholders::_1, std::placeholders::_2;
+	// a workload with its last argument fixed, as the harness registers it
+	const auto with = [](auto workload, auto last) {
+		return [workload, last](benchmark::State& state, bool first) { workload(state, first, last); };
+	};
 	for (Mode mode : {Mode::plain, Mode::quick})
 	{
 		const std::string lib = mode == Mode::plain ? "/cgogn" : "/cgogn_quick";
 		if (mode == Mode::quick)
 			register_bench("volume/cache_build" + lib, Kind::read_only, cache_build);
-		register_bench("volume/circulator" + lib, Kind::read_only, std::bind(circulator, _1, _2, mode));
-		register_bench("volume/circulator2" + lib, Kind::read_only, std::bind(circulator2, _1, _2, mode));
-		register_bench("volume/barycenter" + lib, Kind::read_only, std::bind(barycenter, _1, _2, mode));
-		register_bench("volume/smoothing" + lib, Kind::read_only, std::bind(smoothing, _1, _2, mode));
+		register_bench("volume/circulator" + lib, Kind::read_only, with(circulator, mode));
+		register_bench("volume/circulator2" + lib, Kind::read_only, with(circulator2, mode));
+		register_bench("volume/barycenter" + lib, Kind::read_only, with(barycenter, mode));
+		register_bench("volume/smoothing" + lib, Kind::read_only, with(smoothing, mode));
 	}
 #if CGOGN_BENCH_HAS_TOPOLOGY
 	register_bench("volume/split/cgogn", Kind::topology, split);

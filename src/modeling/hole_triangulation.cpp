@@ -167,22 +167,22 @@ bool optimal_hole_triangulation(const CMap2 &m, const Attribute<Vec3> &pos, cons
 void cut_hole(CMap2 &m, const std::vector<Dart> &loop, const HoleTriangulation &t)
 {
 	// each entry is a sub-polygon i..j, the face of loop[i], closed by phi_1(loop[i])
-	std::vector<std::pair<uint32, uint32>> todo = {{0u, t.n - 1}};
-	while (!todo.empty())
+	std::vector<std::pair<uint32, uint32>> pending = {{0u, t.n - 1}};
+	while (!pending.empty())
 	{
-		const auto [i, j] = todo.back();
-		todo.pop_back();
+		const auto [i, j] = pending.back();
+		pending.pop_back();
 		const uint32 k = t.apex(i, j);
 		const Dart closing = phi_1(m, loop[i]);
 		if (k > i + 1)
 		{
 			cut_face(m, CMap2::Vertex(loop[i]), CMap2::Vertex(loop[k]));
-			todo.emplace_back(i, k);
+			pending.emplace_back(i, k);
 		}
 		if (j > k + 1)
 		{
 			cut_face(m, CMap2::Vertex(loop[k]), CMap2::Vertex(closing));
-			todo.emplace_back(k, j);
+			pending.emplace_back(k, j);
 		}
 	}
 }
