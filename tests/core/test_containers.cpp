@@ -5,6 +5,7 @@
 #include <atomic>
 #include <set>
 #include <thread>
+#include <vector>
 
 using namespace cgogn;
 
@@ -51,6 +52,52 @@ TEST(AttributeContainer, RemovedLinesAreSkippedAndReusedFirstWithDefaultValues)
 	EXPECT_EQ(c.new_line(0), 3u);
 	EXPECT_EQ(c.new_line(0), 10u);
 	EXPECT_EQ(c.end_index(), 11u);
+}
+
+TEST(AttributeContainer, RangeForVisitsLiveLinesAcrossChunksInLineOrder)
+{
+	AttributeContainer c("key");
+	auto a = c.add_attribute<uint32>("a");
+	const uint32 n = 3 * CHUNK_SIZE + 17;
+	for (uint32 i = 0; i < n; ++i)
+		(*a)[c.new_line(0)] = i;
+	auto visited = [&]() {
+		std::vector<uint32> lines;
+		const Attribute<uint32>& ca = *a;
+		for (auto it = ca.begin(); it != ca.end(); ++it)
+		{
+			EXPECT_EQ(*it, it.index()); // the value is the line's own
+			lines.push_back(it.index());
+		}
+		return lines;
+	};
+	// dense: every line, in order
+	std::vector<uint32> lines = visited();
+	ASSERT_EQ(lines.size(), n);
+	for (uint32 i = 0; i < n; ++i)
+		ASSERT_EQ(lines[i], i);
+	// holes: the first line, both sides of a chunk border, a run, the last lines
+	const std::set<uint32> released = {0, CHUNK_SIZE - 1, CHUNK_SIZE, 2 * CHUNK_SIZE + 3, 2 * CHUNK_SIZE + 4,
+									   2 * CHUNK_SIZE + 5, n - 2, n - 1};
+	for (uint32 i : released)
+		c.release_line(i);
+	lines = visited();
+	ASSERT_EQ(lines.size(), n - released.size());
+	std::vector<uint32> expected;
+	for (uint32 i = 0; i < n; ++i)
+		if (!released.contains(i))
+			expected.push_back(i);
+	EXPECT_EQ(lines, expected);
+	// writing through the mutable range reaches the live lines only
+	for (uint32& v : *a)
+		v += 1;
+	for (uint32 i = 0; i < n; ++i)
+		ASSERT_TRUE(!c.is_live(i) || (*a)[i] == i + 1) << "line " << i;
+	// every line free: nothing
+	for (uint32 i = 0; i < n; ++i)
+		if (c.is_live(i))
+			c.release_line(i);
+	EXPECT_EQ(a->begin(), a->end());
 }
 
 TEST(AttributeContainer, AttributesByNameAndType)

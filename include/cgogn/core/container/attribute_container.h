@@ -8,6 +8,7 @@
 #include <atomic>
 #include <bit>
 #include <mutex>
+#include <type_traits>
 
 namespace cgogn
 {
@@ -350,40 +351,64 @@ std::shared_ptr<AttributeBase> Attribute<T>::clone_empty(AttributeContainer& to)
 	return to.add_attribute<T>(name_, default_value_);
 }
 
-/// Iterates the values of the live lines of an attribute.
+/// Iterates the values of the live lines of an attribute. It walks the chunks
+/// with pointers (one chunk-table lookup per 4096 lines) and reads the key
+/// only when the container has free lines, so that a range-for over a dense
+/// attribute costs what a loop over a plain array does.
 template <typename T>
-class Attribute<T>::iterator
+template <bool IS_CONST>
+class Attribute<T>::basic_iterator
 {
+	using Attr = std::conditional_t<IS_CONST, const Attribute<T>, Attribute<T>>;
+	using Value = std::conditional_t<IS_CONST, const T, T>;
+
 public:
 	using value_type = T;
 	using difference_type = std::ptrdiff_t;
-	using reference = T&;
+	using reference = Value&;
 	using iterator_category = std::forward_iterator_tag;
 
-	iterator() = default;
-	iterator(Attribute<T>* a, uint32 i) : attr_(a), index_(i)
+	basic_iterator() = default;
+	/// Positioned at line i (live, or end) of an attribute iterated up to line end.
+	basic_iterator(Attr* a, uint32 i, uint32 end) : attr_(a), index_(i), end_(end)
 	{
+		if (a->container() != nullptr)
+		{
+			key_ = &a->container()->key();
+			check_live_ = !a->container()->free_lines().empty();
+		}
+		point_at_line();
 	}
-	T& operator*() const
+	Value& operator*() const
 	{
-		return (*attr_)[index_];
+		return *value_;
 	}
-	T* operator->() const
+	Value* operator->() const
 	{
-		return &(*attr_)[index_];
+		return value_;
 	}
-	iterator& operator++()
+	basic_iterator& operator++()
 	{
-		index_ = attr_->container()->next_index(index_);
+		do
+		{
+			++index_;
+			if ((index_ & CHUNK_MASK) == 0)
+				point_at_line(); // next chunk
+			else
+			{
+				++value_;
+				++live_;
+			}
+		} while (check_live_ && index_ < end_ && *live_ == INVALID_INDEX);
 		return *this;
 	}
-	iterator operator++(int)
+	basic_iterator operator++(int)
 	{
-		iterator t = *this;
+		basic_iterator t = *this;
 		++*this;
 		return t;
 	}
-	bool operator==(const iterator& o) const
+	bool operator==(const basic_iterator& o) const
 	{
 		return index_ == o.index_;
 	}
@@ -394,76 +419,43 @@ public:
 	}
 
 private:
-	Attribute<T>* attr_ = nullptr;
+	void point_at_line()
+	{
+		if (index_ >= end_)
+			return;
+		value_ = &(*attr_)[index_];
+		live_ = &(*key_)[index_];
+	}
+
+	Attr* attr_ = nullptr;
+	const Attribute<uint32>* key_ = nullptr;
 	uint32 index_ = 0;
-};
-
-template <typename T>
-class Attribute<T>::const_iterator
-{
-public:
-	using value_type = T;
-	using difference_type = std::ptrdiff_t;
-	using reference = const T&;
-	using iterator_category = std::forward_iterator_tag;
-
-	const_iterator() = default;
-	const_iterator(const Attribute<T>* a, uint32 i) : attr_(a), index_(i)
-	{
-	}
-	const T& operator*() const
-	{
-		return (*attr_)[index_];
-	}
-	const T* operator->() const
-	{
-		return &(*attr_)[index_];
-	}
-	const_iterator& operator++()
-	{
-		index_ = attr_->container()->next_index(index_);
-		return *this;
-	}
-	const_iterator operator++(int)
-	{
-		const_iterator t = *this;
-		++*this;
-		return t;
-	}
-	bool operator==(const const_iterator& o) const
-	{
-		return index_ == o.index_;
-	}
-	uint32 index() const
-	{
-		return index_;
-	}
-
-private:
-	const Attribute<T>* attr_ = nullptr;
-	uint32 index_ = 0;
+	uint32 end_ = 0;
+	bool check_live_ = false;
+	Value* value_ = nullptr;
+	const uint32* live_ = nullptr;
 };
 
 // A removed attribute (no container) iterates over nothing.
 template <typename T>
 typename Attribute<T>::iterator Attribute<T>::begin()
 {
-	return container_ ? iterator(this, container_->first_index()) : iterator(this, 0);
+	return container_ ? iterator(this, container_->first_index(), container_->end_index()) : iterator();
 }
 template <typename T>
 typename Attribute<T>::iterator Attribute<T>::end()
 {
-	return container_ ? iterator(this, container_->end_index()) : iterator(this, 0);
+	return container_ ? iterator(this, container_->end_index(), container_->end_index()) : iterator();
 }
 template <typename T>
 typename Attribute<T>::const_iterator Attribute<T>::begin() const
 {
-	return container_ ? const_iterator(this, container_->first_index()) : const_iterator(this, 0);
+	return container_ ? const_iterator(this, container_->first_index(), container_->end_index()) : const_iterator();
 }
 template <typename T>
 typename Attribute<T>::const_iterator Attribute<T>::end() const
 {
-	return container_ ? const_iterator(this, container_->end_index()) : const_iterator(this, 0);
+	return container_ ? const_iterator(this, container_->end_index(), container_->end_index()) : const_iterator();
 }
 
 } // namespace cgogn

@@ -140,8 +140,10 @@ public:
 				c[i] = v;
 	}
 
-	class iterator;
-	class const_iterator;
+	template <bool IS_CONST>
+	class basic_iterator;
+	using iterator = basic_iterator<false>;
+	using const_iterator = basic_iterator<true>;
 	iterator begin();
 	iterator end();
 	const_iterator begin() const;
