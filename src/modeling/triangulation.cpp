@@ -10,7 +10,7 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace cgogn::modeling
@@ -26,17 +26,18 @@ double cross(const Vec2& a, const Vec2& b, const Vec2& c)
 	return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-/// Smallest angle of triangle abc (radians), 0 for a degenerate one.
-double min_angle(const Vec2& a, const Vec2& b, const Vec2& c)
+/// Cosine of the smallest angle of triangle abc (the largest of its three
+/// cosines), 1 for a degenerate one: ranking ears by it avoids acos.
+double smallest_angle_cos(const Vec2& a, const Vec2& b, const Vec2& c)
 {
-	const auto angle = [](const Vec2& o, const Vec2& p, const Vec2& q) {
+	const auto cos_at = [](const Vec2& o, const Vec2& p, const Vec2& q) {
 		const Vec2 u = p - o, v = q - o;
 		const double nu = u.norm(), nv = v.norm();
 		if (nu == 0.0 || nv == 0.0)
-			return 0.0;
-		return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
+			return 1.0;
+		return std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0);
 	};
-	return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+	return std::max({cos_at(a, b, c), cos_at(b, c, a), cos_at(c, a, b)});
 }
 
 /// The polygon being clipped: its corners (darts of the face, whose origins
@@ -78,7 +79,7 @@ struct Polygon
 	std::size_t best_corner() const
 	{
 		std::size_t best = 0;
-		double best_score = -1.0;
+		double best_score = -std::numeric_limits<double>::infinity();
 		bool best_is_ear = false;
 		for (std::size_t i = 0; i < darts.size(); ++i)
 		{
@@ -86,7 +87,8 @@ struct Polygon
 			if (best_is_ear && !ear)
 				continue;
 			const Vec2 &a = points[prev(i)], &b = points[i], &c = points[next(i)];
-			const double score = ear ? min_angle(a, b, c) : cross(a, b, c);
+			// ears: the larger the smallest angle, the smaller its cosine
+			const double score = ear ? -smallest_angle_cos(a, b, c) : cross(a, b, c);
 			if ((ear && !best_is_ear) || score > best_score)
 			{
 				best = i;
@@ -100,10 +102,15 @@ struct Polygon
 
 } // namespace
 
-uint32 ear_clip_face(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f)
+namespace
+{
+// ear_clip_face with the caller's buffers (triangulate_faces reuses one
+// Polygon for all faces: no allocation per face)
+uint32 ear_clip(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f, Polygon& poly)
 {
 	assert(!is_boundary(m, f.dart));
-	Polygon poly;
+	poly.darts.clear();
+	poly.points.clear();
 	foreach_dart_of_orbit(m, f, [&](Dart d) { poly.darts.push_back(d); });
 	if (poly.darts.size() <= 3)
 		return 0;
@@ -136,6 +143,13 @@ uint32 ear_clip_face(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f)
 	}
 	return nb_triangles + 1;
 }
+} // namespace
+
+uint32 ear_clip_face(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f)
+{
+	Polygon poly;
+	return ear_clip(m, pos, f, poly);
+}
 
 uint32 triangulate_faces(CMap2& m, const Attribute<Vec3>& pos)
 {
@@ -144,8 +158,9 @@ uint32 triangulate_faces(CMap2& m, const Attribute<Vec3>& pos)
 		if (codegree(m, f) > 3)
 			polygons.push_back(f);
 	});
+	Polygon poly;
 	for (CMap2::Face f : polygons)
-		ear_clip_face(m, pos, f);
+		ear_clip(m, pos, f, poly);
 	return uint32(polygons.size());
 }
 
