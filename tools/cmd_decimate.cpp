@@ -38,8 +38,7 @@ int run_decimate(const DecimateOptions& o)
 		d.target_faces = o.faces;
 	d.keep_boundary = o.keep_boundary;
 	d.placement = o.midedge ? modeling::CollapsePlacement::Midpoint : modeling::CollapsePlacement::Optimal;
-	d.progress = progress.percent("decimating");
-	modeling::decimate(m, *positions(m), d);
+	modeling::decimate(m, *positions(m), d, progress.percent("decimating"));
 	save_surface_file(m, o.files.out, o.files.binary, progress);
 	return 0;
 }

@@ -29,8 +29,7 @@ int run_remesh(const RemeshOptions& o)
 	r.target_edge_length = o.edge_length;
 	r.iterations = o.iterations;
 	r.feature_angle = o.feature_angle;
-	r.progress = progress.percent("remeshing");
-	modeling::isotropic_remeshing(m, *positions(m), r);
+	modeling::isotropic_remeshing(m, *positions(m), r, progress.percent("remeshing"));
 	save_surface_file(m, o.files.out, o.files.binary, progress);
 	return 0;
 }

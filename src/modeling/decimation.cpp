@@ -40,8 +40,8 @@ struct Candidate
 class Decimator
 {
 public:
-	Decimator(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& o)
-		: m_(m), pos_(pos), o_(o), progress_(o.progress)
+	Decimator(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& o, const ProgressCallback& progress)
+		: m_(m), pos_(pos), o_(o), progress_(progress)
 	{
 	}
 
@@ -259,9 +259,10 @@ private:
 
 } // namespace
 
-DecimationResult decimate(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& options)
+DecimationResult decimate(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& options,
+						  const ProgressCallback& progress)
 {
-	return Decimator(m, pos, options).run();
+	return Decimator(m, pos, options, progress).run();
 }
 
 } // namespace cgogn::modeling

@@ -30,7 +30,8 @@ using Face = CMap2::Face;
 class Remesher
 {
 public:
-	Remesher(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& o) : m_(m), pos_(pos), o_(o), progress_(o.progress)
+	Remesher(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& o, const ProgressCallback& progress)
+		: m_(m), pos_(pos), o_(o), progress_(progress)
 	{
 	}
 
@@ -390,9 +391,10 @@ private:
 
 } // namespace
 
-RemeshingResult isotropic_remeshing(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& options)
+RemeshingResult isotropic_remeshing(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& options,
+									const ProgressCallback& progress)
 {
-	return Remesher(m, pos, options).run();
+	return Remesher(m, pos, options, progress).run();
 }
 
 } // namespace cgogn::modeling

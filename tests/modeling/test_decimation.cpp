@@ -50,12 +50,12 @@ TEST(Decimation, SphereReachesTheTargetExactlyAndStaysOnTheSphere)
 	modeling::DecimationOptions o;
 	o.target_faces = 500;
 	// integrity at intermediate states (the callback runs every 1/256 of the work)
-	o.progress = [&](double) {
+	const auto check = [&](double) {
 		EXPECT_TRUE(check_integrity(m).ok());
 		++checks;
 		return true;
 	};
-	const modeling::DecimationResult r = modeling::decimate(m, *pos, o);
+	const modeling::DecimationResult r = modeling::decimate(m, *pos, o, check);
 	EXPECT_EQ(r.faces, 500u);
 	EXPECT_EQ(count_faces(m), 500u);
 	EXPECT_EQ(r.collapses, (3968u - 500u) / 2);
@@ -115,8 +115,7 @@ TEST(Decimation, CancellationLeavesAValidMap)
 	auto pos = fine_sphere(m);
 	modeling::DecimationOptions o;
 	o.target_faces = 100;
-	o.progress = [](double f) { return f < 0.3; };
-	const auto r = modeling::decimate(m, *pos, o);
+	const auto r = modeling::decimate(m, *pos, o, [](double f) { return f < 0.3; });
 	EXPECT_TRUE(r.cancelled);
 	EXPECT_GT(r.faces, 100u);
 	EXPECT_LT(r.faces, 3968u);

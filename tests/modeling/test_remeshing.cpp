@@ -157,8 +157,7 @@ TEST(Remeshing, CancellationLeavesAValidMap)
 	auto pos = test::build_with_positions(m, sphere_soup(32, 16, true));
 	modeling::RemeshingOptions o;
 	o.target_edge_length = 0.05;
-	o.progress = [](double f) { return f < 0.3; };
-	const auto r = modeling::isotropic_remeshing(m, *pos, o);
+	const auto r = modeling::isotropic_remeshing(m, *pos, o, [](double f) { return f < 0.3; });
 	EXPECT_TRUE(r.cancelled);
 	EXPECT_LT(r.iterations, 10u);
 	EXPECT_TRUE(check_integrity(m).ok());

@@ -48,7 +48,6 @@ struct DecimationOptions
 	/// than the angle whose cosine this is (0: rejects fold-overs, normals
 	/// turning by 90 degrees or more), or when a face degenerates.
 	double min_normal_cosine = 0.0;
-	ProgressCallback progress;
 };
 
 struct DecimationResult
@@ -71,6 +70,9 @@ struct DecimationResult
 /// stays closed, manifold and valid (check_integrity) after every collapse,
 /// also when the progress callback cancels. Throws cgogn::Error when a face
 /// is not a triangle. O(n log n).
-DecimationResult decimate(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& options);
+/// `progress` (optional, as for every modeling function) receives the
+/// fraction done and may return false to stop.
+DecimationResult decimate(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& options,
+						  const ProgressCallback& progress = {});
 
 } // namespace cgogn::modeling

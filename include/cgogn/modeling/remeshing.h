@@ -20,7 +20,6 @@ struct RemeshingOptions
 	/// Project the moved vertices back onto the input surface after each
 	/// relaxation (recommended; false lets the surface shrink slowly).
 	bool project = true;
-	ProgressCallback progress;
 };
 
 struct RemeshingResult
@@ -51,6 +50,7 @@ struct RemeshingResult
 /// after each phase and a cancel stops between phases. Throws cgogn::Error
 /// when a face is not a triangle or L is not a positive finite number.
 /// O(iterations n log n).
-RemeshingResult isotropic_remeshing(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& options = {});
+RemeshingResult isotropic_remeshing(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& options = {},
+									const ProgressCallback& progress = {});
 
 } // namespace cgogn::modeling
