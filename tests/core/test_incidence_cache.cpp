@@ -223,3 +223,48 @@ TEST(IncidenceCache, LocatedCellsCarryTheirLine)
 	EXPECT_TRUE(m.incidence_tables_.empty());
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 }
+
+// foreach_cell gives each cell with its line to a callable taking Located<CELL>;
+// a cached traversal started from such a cell reads the row at that line.
+TEST(IncidenceCache, ForeachCellGivesLocatedCellsToCachedTraversals)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(6, 5, true));
+	using V = CMap2::Vertex;
+	using E = CMap2::Edge;
+	uint32 nb = 0;
+	foreach_cell(m, [&](Located<V> v) {
+		EXPECT_EQ(v.line, index_of(m, V(v.dart)));
+		++nb;
+	});
+	EXPECT_EQ(nb, 30u);
+	// edges are not indexed: their cells come without a line
+	uint32 nb_edges = 0;
+	foreach_cell(m, [&](Located<E> e) {
+		EXPECT_EQ(e.line, INVALID_INDEX);
+		++nb_edges;
+	});
+	EXPECT_EQ(nb_edges, 90u);
+
+	IncidenceCache<CMap2, V, V, E>::build(m);
+	auto around = [&](auto v) {
+		std::vector<uint32> r;
+		foreach_adjacent_vertex_through_edge(m, v, [&](V w) { r.push_back(index_of(m, w)); });
+		return r;
+	};
+	std::vector<std::vector<uint32>> from_plain, from_located;
+	foreach_cell(m, [&](V v) { from_plain.push_back(around(v)); });
+	foreach_cell(m, [&](Located<V> v) { from_located.push_back(around(v)); });
+	EXPECT_EQ(from_located, from_plain);
+
+	// the row comes from the given line, not from the dart: a cell located at
+	// another vertex's line gets that vertex's neighbours
+	V a, b;
+	uint32 k = 0;
+	foreach_cell(m, [&](V v) {
+		(k++ == 0 ? a : b) = v;
+		return k < 2;
+	});
+	EXPECT_EQ(around(Located<V>(a.dart, index_of(m, b))), around(b));
+	EXPECT_NE(around(a), around(b));
+}

@@ -57,6 +57,28 @@ struct LocatedCell : Cell<O>
 	}
 };
 
+/// `Located<Vertex>`: the located form of a cell type, e.g. the parameter of
+/// a foreach_cell callable that wants each cell with its line.
+template <typename CELL>
+using Located = LocatedCell<CELL::ORBIT>;
+
+/// The cell parameter of the local traversals: a cell, plus its line when the
+/// caller has it (a LocatedCell from foreach_cell or from a cached
+/// traversal), so that a cached traversal finds its row without reading the
+/// dart's index. Built implicitly from either; behaves as the cell.
+template <typename CELL>
+struct CellParam : CELL
+{
+	uint32 line = INVALID_INDEX; ///< INVALID_INDEX: unknown, looked up when needed
+
+	constexpr CellParam(CELL c) : CELL(c)
+	{
+	}
+	constexpr CellParam(LocatedCell<CELL::ORBIT> c) : CELL(c), line(c.line)
+	{
+	}
+};
+
 template <typename T>
 struct is_cell : std::false_type
 {

@@ -12,13 +12,24 @@ namespace detail
 {
 
 /// Visits every real cell of type CELL of map m (see foreach_cell).
+/// The cell given to a foreach_cell callable: with its line when the
+/// callable takes a LocatedCell (INVALID_INDEX when the orbit is not indexed).
+template <typename CELL>
+constexpr CELL reported_cell(Dart d, uint32 line = INVALID_INDEX)
+{
+	if constexpr (std::is_same_v<CELL, LocatedCell<CELL::ORBIT>>)
+		return CELL(d, line);
+	else
+		return CELL(d);
+}
+
 template <typename CELL, typename MAP, typename FUNC>
 void foreach_cell_of_map(const MAP& m, const FUNC& f)
 {
 	constexpr Orbit O = CELL::ORBIT;
 	if constexpr (O == Orbit::DART)
 	{
-		foreach_dart(m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, CELL(d)); });
+		foreach_dart(m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, reported_cell<CELL>(d)); });
 	}
 	else
 	{
@@ -29,7 +40,9 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 			for (uint32 i = 0, end = m.cells_[orbit_index(O)]->end_index(); i < end; ++i)
 			{
 				const uint32 d = rep[i];
-				if (d != INVALID_INDEX && !call_and_continue(f, CELL(Dart(d))))
+				if (d == INVALID_INDEX)
+					continue;
+				if (!call_and_continue(f, reported_cell<CELL>(Dart(d), i)))
 					return;
 			}
 		}
@@ -41,7 +54,7 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 					return true;
 				const Dart e = phi2(m, d);
 				if (d.index < e.index || is_boundary(m, e))
-					return call_and_continue(f, CELL(d));
+					return call_and_continue(f, reported_cell<CELL>(d));
 				return true;
 			});
 		}
@@ -55,7 +68,7 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 				if (is_boundary(m, d) || (*mark).test(d.index))
 					return true;
 				flood_orbit_keep_marks<O>(m, d, *mark, *buffer, [](Dart) {});
-				return call_and_continue(f, CELL(d));
+				return call_and_continue(f, reported_cell<CELL>(d));
 			});
 		}
 		else
@@ -64,8 +77,8 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 			foreach_dart(m, [&](Dart d) {
 				if (is_boundary(m, d) || dm.is_marked(d))
 					return true;
-				dm.mark_orbit(CELL(d));
-				return call_and_continue(f, CELL(d));
+				dm.mark_orbit(Cell<O>(d));
+				return call_and_continue(f, reported_cell<CELL>(d));
 			});
 		}
 	}
@@ -77,7 +90,10 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 /// boundary cells excluded. f may return false to stop. O(number of cells)
 /// when the orbit is indexed (the cell container is walked), O(number of
 /// darts) otherwise. No assumption can be made on the dart representing each
-/// cell. Works on maps and on views (CellFilter, CellCache).
+/// cell. Works on maps and on views (CellFilter, CellCache). On a map, a
+/// callable taking `Located<Vertex>` (LocatedCell) gets each cell with its
+/// line: value() and the cached local traversals then skip the dart -> index
+/// lookup (the quick mode's fastest form).
 template <typename MESH, typename FUNC>
 void foreach_cell(const MESH& m, const FUNC& f)
 {

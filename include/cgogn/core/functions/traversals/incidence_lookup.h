@@ -62,7 +62,11 @@ bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 	const IncidenceTable* t = find_incidence_table(m, incidence_key<FROM, TO, THROUGH>());
 	if (t == nullptr)
 		return false;
-	const uint32 r = index_of(m, c);
+	uint32 r;
+	if constexpr (requires { c.line; })
+		r = c.line != INVALID_INDEX ? c.line : index_of(m, Cell<FROM::ORBIT>(c));
+	else
+		r = index_of(m, c);
 	if (r == INVALID_INDEX || std::size_t(r) + 1 >= t->offsets.size())
 		return false; // a cell created after the cache was built
 	const uint32 b = t->offsets[r], e = t->offsets[r + 1];

@@ -15,7 +15,7 @@ namespace cgogn
 
 /// Edges incident to vertex v, in cyclic order.
 template <typename FUNC>
-void foreach_incident_edge(const CMap2& m, CMap2::Vertex v, const FUNC& f)
+void foreach_incident_edge(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Edge, void>(m, v, f))
 		return;
@@ -24,7 +24,7 @@ void foreach_incident_edge(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 
 /// Faces incident to vertex v, in cyclic order (boundary faces skipped).
 template <typename FUNC>
-void foreach_incident_face(const CMap2& m, CMap2::Vertex v, const FUNC& f)
+void foreach_incident_face(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Face, void>(m, v, f))
 		return;
@@ -33,14 +33,14 @@ void foreach_incident_face(const CMap2& m, CMap2::Vertex v, const FUNC& f)
 
 /// The connected component of vertex v.
 template <typename FUNC>
-void foreach_incident_volume(const CMap2&, CMap2::Vertex v, const FUNC& f)
+void foreach_incident_volume(const CMap2&, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	call_and_continue(f, CMap2::Volume(v.dart));
 }
 
 /// Vertices joined to v by an edge, in cyclic order.
 template <typename FUNC>
-void foreach_adjacent_vertex_through_edge(const CMap2& m, CMap2::Vertex v, const FUNC& f)
+void foreach_adjacent_vertex_through_edge(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Vertex, CMap2::Edge>(m, v, f))
 		return;
@@ -51,7 +51,7 @@ void foreach_adjacent_vertex_through_edge(const CMap2& m, CMap2::Vertex v, const
 /// the edge neighbours in cyclic order, each followed by the other vertices of
 /// the next incident face.
 template <typename FUNC>
-void foreach_adjacent_vertex_through_face(const CMap2& m, CMap2::Vertex v, const FUNC& f)
+void foreach_adjacent_vertex_through_face(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Vertex, CMap2::Face>(m, v, f))
 		return;
@@ -69,7 +69,7 @@ void foreach_adjacent_vertex_through_face(const CMap2& m, CMap2::Vertex v, const
 
 /// The two vertices of edge e: the origin of e.dart first.
 template <typename FUNC>
-void foreach_incident_vertex(const CMap2& m, CMap2::Edge e, const FUNC& f)
+void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Edge> e, const FUNC& f)
 {
 	if (call_and_continue(f, CMap2::Vertex(e.dart)))
 		call_and_continue(f, CMap2::Vertex(phi2(m, e.dart)));
@@ -77,7 +77,7 @@ void foreach_incident_vertex(const CMap2& m, CMap2::Edge e, const FUNC& f)
 
 /// The one or two faces incident to edge e (boundary faces skipped).
 template <typename FUNC>
-void foreach_incident_face(const CMap2& m, CMap2::Edge e, const FUNC& f)
+void foreach_incident_face(const CMap2& m, CellParam<CMap2::Edge> e, const FUNC& f)
 {
 	if (!is_boundary(m, e.dart) && !call_and_continue(f, CMap2::Face(e.dart)))
 		return;
@@ -88,7 +88,7 @@ void foreach_incident_face(const CMap2& m, CMap2::Edge e, const FUNC& f)
 
 /// The connected component of edge e.
 template <typename FUNC>
-void foreach_incident_volume(const CMap2&, CMap2::Edge e, const FUNC& f)
+void foreach_incident_volume(const CMap2&, CellParam<CMap2::Edge> e, const FUNC& f)
 {
 	call_and_continue(f, CMap2::Volume(e.dart));
 }
@@ -96,7 +96,7 @@ void foreach_incident_volume(const CMap2&, CMap2::Edge e, const FUNC& f)
 /// Edges sharing a vertex with e (e excluded): around the origin of e.dart,
 /// then around the other end.
 template <typename FUNC>
-void foreach_adjacent_edge_through_vertex(const CMap2& m, CMap2::Edge e, const FUNC& f)
+void foreach_adjacent_edge_through_vertex(const CMap2& m, CellParam<CMap2::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Edge, CMap2::Vertex>(m, e, f))
 		return;
@@ -110,7 +110,7 @@ void foreach_adjacent_edge_through_vertex(const CMap2& m, CMap2::Edge e, const F
 
 /// Edges sharing a (non-boundary) face with e, e excluded.
 template <typename FUNC>
-void foreach_adjacent_edge_through_face(const CMap2& m, CMap2::Edge e, const FUNC& f)
+void foreach_adjacent_edge_through_face(const CMap2& m, CellParam<CMap2::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Edge, CMap2::Face>(m, e, f))
 		return;
@@ -126,7 +126,7 @@ void foreach_adjacent_edge_through_face(const CMap2& m, CMap2::Edge e, const FUN
 
 /// Vertices of face f in phi1 order.
 template <typename FUNC>
-void foreach_incident_vertex(const CMap2& m, CMap2::Face f, const FUNC& fn)
+void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap2::Vertex, void>(m, f, fn))
 		return;
@@ -135,7 +135,7 @@ void foreach_incident_vertex(const CMap2& m, CMap2::Face f, const FUNC& fn)
 
 /// Edges of face f in phi1 order.
 template <typename FUNC>
-void foreach_incident_edge(const CMap2& m, CMap2::Face f, const FUNC& fn)
+void foreach_incident_edge(const CMap2& m, CellParam<CMap2::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap2::Edge, void>(m, f, fn))
 		return;
@@ -144,14 +144,14 @@ void foreach_incident_edge(const CMap2& m, CMap2::Face f, const FUNC& fn)
 
 /// The connected component of face f.
 template <typename FUNC>
-void foreach_incident_volume(const CMap2&, CMap2::Face f, const FUNC& fn)
+void foreach_incident_volume(const CMap2&, CellParam<CMap2::Face> f, const FUNC& fn)
 {
 	call_and_continue(fn, CMap2::Volume(f.dart));
 }
 
 /// Faces across the edges of f (boundary faces skipped), in phi1 order.
 template <typename FUNC>
-void foreach_adjacent_face_through_edge(const CMap2& m, CMap2::Face f, const FUNC& fn)
+void foreach_adjacent_face_through_edge(const CMap2& m, CellParam<CMap2::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap2::Face, CMap2::Edge>(m, f, fn))
 		return;
@@ -164,7 +164,7 @@ void foreach_adjacent_face_through_edge(const CMap2& m, CMap2::Face f, const FUN
 /// Faces sharing at least a vertex with f (f excluded), each once on a
 /// manifold mesh: around each vertex of f in turn.
 template <typename FUNC>
-void foreach_adjacent_face_through_vertex(const CMap2& m, CMap2::Face f, const FUNC& fn)
+void foreach_adjacent_face_through_vertex(const CMap2& m, CellParam<CMap2::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap2::Face, CMap2::Vertex>(m, f, fn))
 		return;
@@ -208,7 +208,7 @@ void foreach_cell_of_volume(const MAP& m, Dart start, const FUNC& f)
 
 /// Vertices of connected component w (no defined order).
 template <typename FUNC>
-void foreach_incident_vertex(const CMap2& m, CMap2::Volume w, const FUNC& f)
+void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Vertex, void>(m, w, f))
 		return;
@@ -216,7 +216,7 @@ void foreach_incident_vertex(const CMap2& m, CMap2::Volume w, const FUNC& f)
 }
 /// Edges of connected component w (no defined order).
 template <typename FUNC>
-void foreach_incident_edge(const CMap2& m, CMap2::Volume w, const FUNC& f)
+void foreach_incident_edge(const CMap2& m, CellParam<CMap2::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Edge, void>(m, w, f))
 		return;
@@ -224,7 +224,7 @@ void foreach_incident_edge(const CMap2& m, CMap2::Volume w, const FUNC& f)
 }
 /// Faces of connected component w, boundary faces skipped (no defined order).
 template <typename FUNC>
-void foreach_incident_face(const CMap2& m, CMap2::Volume w, const FUNC& f)
+void foreach_incident_face(const CMap2& m, CellParam<CMap2::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Face, void>(m, w, f))
 		return;

@@ -54,7 +54,7 @@ void foreach_cell_around_vertex3(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 
 /// Edges incident to vertex v.
 template <typename FUNC>
-void foreach_incident_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+void foreach_incident_edge(const CMap3& m, CellParam<CMap3::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Edge, void>(m, v, f))
 		return;
@@ -62,7 +62,7 @@ void foreach_incident_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 }
 /// Faces incident to vertex v.
 template <typename FUNC>
-void foreach_incident_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+void foreach_incident_face(const CMap3& m, CellParam<CMap3::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Face, void>(m, v, f))
 		return;
@@ -70,7 +70,7 @@ void foreach_incident_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 }
 /// Volumes incident to vertex v (boundary volumes skipped).
 template <typename FUNC>
-void foreach_incident_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+void foreach_incident_volume(const CMap3& m, CellParam<CMap3::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Volume, void>(m, v, f))
 		return;
@@ -81,14 +81,14 @@ void foreach_incident_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 
 /// The two vertices of edge e: the origin of e.dart first.
 template <typename FUNC>
-void foreach_incident_vertex(const CMap3& m, CMap3::Edge e, const FUNC& f)
+void foreach_incident_vertex(const CMap3& m, CellParam<CMap3::Edge> e, const FUNC& f)
 {
 	if (call_and_continue(f, CMap3::Vertex(e.dart)))
 		call_and_continue(f, CMap3::Vertex(phi1(m, e.dart)));
 }
 /// Faces around edge e, in cyclic order.
 template <typename FUNC>
-void foreach_incident_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
+void foreach_incident_face(const CMap3& m, CellParam<CMap3::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Face, void>(m, e, f))
 		return;
@@ -102,7 +102,7 @@ void foreach_incident_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
 }
 /// Volumes around edge e, in cyclic order (boundary volumes skipped).
 template <typename FUNC>
-void foreach_incident_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
+void foreach_incident_volume(const CMap3& m, CellParam<CMap3::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Volume, void>(m, e, f))
 		return;
@@ -119,7 +119,7 @@ void foreach_incident_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
 
 /// Vertices of face f in phi1 order.
 template <typename FUNC>
-void foreach_incident_vertex(const CMap3& m, CMap3::Face f, const FUNC& fn)
+void foreach_incident_vertex(const CMap3& m, CellParam<CMap3::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap3::Vertex, void>(m, f, fn))
 		return;
@@ -127,7 +127,7 @@ void foreach_incident_vertex(const CMap3& m, CMap3::Face f, const FUNC& fn)
 }
 /// Edges of face f in phi1 order.
 template <typename FUNC>
-void foreach_incident_edge(const CMap3& m, CMap3::Face f, const FUNC& fn)
+void foreach_incident_edge(const CMap3& m, CellParam<CMap3::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap3::Edge, void>(m, f, fn))
 		return;
@@ -135,7 +135,7 @@ void foreach_incident_edge(const CMap3& m, CMap3::Face f, const FUNC& fn)
 }
 /// The one or two volumes of face f (boundary volumes skipped).
 template <typename FUNC>
-void foreach_incident_volume(const CMap3& m, CMap3::Face f, const FUNC& fn)
+void foreach_incident_volume(const CMap3& m, CellParam<CMap3::Face> f, const FUNC& fn)
 {
 	if (!is_boundary(m, f.dart) && !call_and_continue(fn, CMap3::Volume(f.dart)))
 		return;
@@ -148,7 +148,7 @@ void foreach_incident_volume(const CMap3& m, CMap3::Face f, const FUNC& fn)
 
 /// Vertices of volume w.
 template <typename FUNC>
-void foreach_incident_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
+void foreach_incident_vertex(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Vertex, void>(m, w, f))
 		return;
@@ -156,7 +156,7 @@ void foreach_incident_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
 }
 /// Edges of volume w.
 template <typename FUNC>
-void foreach_incident_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
+void foreach_incident_edge(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Edge, void>(m, w, f))
 		return;
@@ -164,7 +164,7 @@ void foreach_incident_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
 }
 /// Faces of volume w.
 template <typename FUNC>
-void foreach_incident_face(const CMap3& m, CMap3::Volume w, const FUNC& f)
+void foreach_incident_face(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Face, void>(m, w, f))
 		return;
@@ -209,7 +209,7 @@ void foreach_adjacent3(const CMap3& m, X x, const FUNC& f)
 } // namespace detail
 
 template <typename FUNC>
-void foreach_adjacent_vertex_through_edge(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+void foreach_adjacent_vertex_through_edge(const CMap3& m, CellParam<CMap3::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Vertex, CMap3::Edge>(m, v, f))
 		return;
@@ -219,77 +219,77 @@ void foreach_adjacent_vertex_through_edge(const CMap3& m, CMap3::Vertex v, const
 	});
 }
 template <typename FUNC>
-void foreach_adjacent_vertex_through_face(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+void foreach_adjacent_vertex_through_face(const CMap3& m, CellParam<CMap3::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Vertex, CMap3::Face>(m, v, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Vertex, CMap3::Face>(m, v, f);
 }
 template <typename FUNC>
-void foreach_adjacent_vertex_through_volume(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+void foreach_adjacent_vertex_through_volume(const CMap3& m, CellParam<CMap3::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Vertex, CMap3::Volume>(m, v, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Vertex, CMap3::Volume>(m, v, f);
 }
 template <typename FUNC>
-void foreach_adjacent_edge_through_vertex(const CMap3& m, CMap3::Edge e, const FUNC& f)
+void foreach_adjacent_edge_through_vertex(const CMap3& m, CellParam<CMap3::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Edge, CMap3::Vertex>(m, e, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Edge, CMap3::Vertex>(m, e, f);
 }
 template <typename FUNC>
-void foreach_adjacent_edge_through_face(const CMap3& m, CMap3::Edge e, const FUNC& f)
+void foreach_adjacent_edge_through_face(const CMap3& m, CellParam<CMap3::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Edge, CMap3::Face>(m, e, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Edge, CMap3::Face>(m, e, f);
 }
 template <typename FUNC>
-void foreach_adjacent_edge_through_volume(const CMap3& m, CMap3::Edge e, const FUNC& f)
+void foreach_adjacent_edge_through_volume(const CMap3& m, CellParam<CMap3::Edge> e, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Edge, CMap3::Volume>(m, e, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Edge, CMap3::Volume>(m, e, f);
 }
 template <typename FUNC>
-void foreach_adjacent_face_through_vertex(const CMap3& m, CMap3::Face fc, const FUNC& f)
+void foreach_adjacent_face_through_vertex(const CMap3& m, CellParam<CMap3::Face> fc, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Face, CMap3::Vertex>(m, fc, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Face, CMap3::Vertex>(m, fc, f);
 }
 template <typename FUNC>
-void foreach_adjacent_face_through_edge(const CMap3& m, CMap3::Face fc, const FUNC& f)
+void foreach_adjacent_face_through_edge(const CMap3& m, CellParam<CMap3::Face> fc, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Face, CMap3::Edge>(m, fc, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Face, CMap3::Edge>(m, fc, f);
 }
 template <typename FUNC>
-void foreach_adjacent_face_through_volume(const CMap3& m, CMap3::Face fc, const FUNC& f)
+void foreach_adjacent_face_through_volume(const CMap3& m, CellParam<CMap3::Face> fc, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Face, CMap3::Volume>(m, fc, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Face, CMap3::Volume>(m, fc, f);
 }
 template <typename FUNC>
-void foreach_adjacent_volume_through_vertex(const CMap3& m, CMap3::Volume w, const FUNC& f)
+void foreach_adjacent_volume_through_vertex(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Volume, CMap3::Vertex>(m, w, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Volume, CMap3::Vertex>(m, w, f);
 }
 template <typename FUNC>
-void foreach_adjacent_volume_through_edge(const CMap3& m, CMap3::Volume w, const FUNC& f)
+void foreach_adjacent_volume_through_edge(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Volume, CMap3::Edge>(m, w, f))
 		return;
 	detail::foreach_adjacent3<CMap3::Volume, CMap3::Edge>(m, w, f);
 }
 template <typename FUNC>
-void foreach_adjacent_volume_through_face(const CMap3& m, CMap3::Volume w, const FUNC& f)
+void foreach_adjacent_volume_through_face(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Volume, CMap3::Face>(m, w, f))
 		return;
