@@ -4,6 +4,7 @@
 // call, this one touches 48 darts and allocates nothing.
 #include <cgogn/core/functions/indexing.h>
 #include <cgogn/core/operators/cmap3.h>
+#include <cgogn/core/types/error.h>
 
 #include <array>
 
@@ -260,8 +261,11 @@ CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices)
 {
 	OldDarts old;
 	Opposite opp;
-	[[maybe_unused]] const bool tet = collect(m, w.dart, old, opp);
-	assert(tet && !is_boundary(m, w.dart) && "split_tetra: w must be a tetrahedron");
+	// the check is a by-product of reading the darts: refuse rather than damage
+	if (is_boundary(m, w.dart))
+		throw TopologyError("split_tetra: the volume is a boundary volume (the outside of the mesh)");
+	if (!collect(m, w.dart, old, opp))
+		throw TopologyError("split_tetra: the volume is not a tetrahedron (four triangles glued pairwise)");
 
 	// The old darts stay, each on the outer face of the new tet of its face
 	// (so phi3 to the outside, and every index of the outer faces, is kept);

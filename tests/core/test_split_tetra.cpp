@@ -192,6 +192,34 @@ TEST(SplitTetra, PureTopology)
 	EXPECT_EQ(counts(m), (Counts{5, 10, 10, 4}));
 }
 
+TEST(SplitTetra, RefusesOtherVolumes)
+{
+	CMap3 m = build(hex_grid_soup(1, 1, 1));
+	Volume hex;
+	foreach_cell(m, [&](Volume w) { hex = w; });
+	const uint32 darts = nb_darts(m);
+	EXPECT_THROW(split_tetra(m, hex), TopologyError);
+	// the boundary volume of a single tet is made of four triangles too
+	CMap3 t;
+	const Volume w = add_tetra(t);
+	const Volume outside(phi3(t, w.dart));
+	EXPECT_THROW(split_tetra(t, outside), TopologyError);
+	// a triangular bipyramid: six triangles
+	CMap3 b = build(tet_grid_soup(1, 1, 1));
+	Face inner;
+	foreach_cell(b, [&](Face f) {
+		if (!is_boundary(b, phi3(b, f.dart)) && !is_boundary(b, f.dart))
+			inner = f;
+	});
+	const Volume bipyramid = merge_incident_volumes(b, inner);
+	EXPECT_THROW(split_tetra(b, bipyramid), TopologyError);
+	EXPECT_EQ(nb_darts(m), darts);
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_EQ(nb_darts(t), 24u);
+	EXPECT_TRUE(check_integrity(t).ok());
+	EXPECT_TRUE(check_integrity(b).ok());
+}
+
 TEST(SplitTetra, EveryTetOfAGridSameAsCavity)
 {
 	const VolumeSoup s = tet_grid_soup(3, 2, 2);
