@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Operators of tetrahedral 3-maps: 1-to-4 split, edge collapse, flips.
+// Operators of tetrahedral 3-maps: edge collapse, flips (the 1-to-4 split is
+// in cmap3_split_tetra.cpp).
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
@@ -67,16 +68,6 @@ Tet corners(const CMap3& m, Dart w, VertexLabels& label)
 	return {label(w), label(phi1(m, w)), label(phi_1(m, w)), label(phi_1(m, phi2(m, w)))};
 }
 } // namespace
-
-Vertex split_tetra(CMap3& m, Volume w, bool set_indices)
-{
-	assert(!is_boundary(m, w.dart) && is_tetra(m, w.dart));
-	detail::Cavity cavity(m, {w.dart});
-	const auto [p, q, r, s] = cavity.tetra_labels(w.dart);
-	const uint32 c = cavity.new_vertex();
-	cavity.fill({{c, q, r, s}, {p, c, r, s}, {p, q, c, s}, {p, q, r, c}}, set_indices);
-	return Vertex(cavity.vertex_dart(c));
-}
 
 bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 {

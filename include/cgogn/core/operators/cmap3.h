@@ -89,7 +89,11 @@ CMap3::Face merge_incident_faces(CMap3& m, CMap3::Edge e, bool set_indices = tru
 // ---- tetrahedral meshes
 
 /// Splits tetrahedron w into 4 tetrahedra around a new vertex (1-to-4).
-/// Returns the new vertex. Precondition: w is a tetrahedron. O(1).
+/// Returns the new vertex; its dart goes from the new vertex to the origin of
+/// w.dart, in the new tet that holds w.dart (which keeps w's volume line; the
+/// other cells of w keep theirs, see the note at the top). Throws
+/// TopologyError (map unchanged) when w is not a tetrahedron or is a boundary
+/// volume. O(1): 36 new darts, no allocation beyond the containers' growth.
 CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices = true);
 
 /// True when edge e of a tetrahedral region can be contracted: every volume

@@ -4,6 +4,8 @@
 #include <cgogn/core/functions/traversals/local_cell_set.h>
 #include <cgogn/core/functions/traversals/local_cmap2.h>
 
+#include <array>
+
 namespace cgogn
 {
 
@@ -146,12 +148,49 @@ void foreach_incident_volume(const CMap3& m, CellParam<CMap3::Face> f, const FUN
 
 // ---- incidences of a volume
 
-/// Vertices of volume w.
+namespace detail
+{
+/// When the volume of d is a tetrahedron (four distinct triangles glued
+/// pairwise), writes its corners' darts in `corners` (d, phi1 d, phi_1 d and
+/// the apex phi_1 phi2 d) and returns true; false otherwise. O(1): 12 phi1 and
+/// 6 phi2 reads, no marks, so tet meshes skip the flooding of the general case.
+inline bool tetra_corners(const CMap3& m, Dart d, std::array<Dart, 4>& corners)
+{
+	auto triangle = [&](Dart x, std::array<Dart, 3>& t) {
+		t = {x, phi1(m, x), phi1(m, phi1(m, x))};
+		return phi1(m, t[2]) == x;
+	};
+	auto in = [](Dart x, const std::array<Dart, 3>& t) { return x == t[0] || x == t[1] || x == t[2]; };
+	// f0 = (d: A -> B, B -> C, C -> A); f1, f2, f3 across its edges, whose
+	// other edges must meet two by two at the apex D
+	std::array<Dart, 3> f0, f1, f2, f3;
+	if (!triangle(d, f0) || !triangle(phi2(m, f0[0]), f1) || !triangle(phi2(m, f0[1]), f2) ||
+		!triangle(phi2(m, f0[2]), f3))
+		return false;
+	if (phi2(m, f1[1]) != f3[2] || phi2(m, f1[2]) != f2[1] || phi2(m, f2[2]) != f3[1])
+		return false;
+	// a volume of fewer darts glued to itself could pass the tests above
+	if (in(f1[0], f0) || in(f2[0], f0) || in(f2[0], f1) || in(f3[0], f0) || in(f3[0], f1) || in(f3[0], f2))
+		return false;
+	corners = {f0[0], f0[1], f0[2], f1[2]};
+	return true;
+}
+} // namespace detail
+
+/// Vertices of volume w. A tetrahedron's four corners are read directly
+/// (detail::tetra_corners); other volumes are flooded with marks.
 template <typename FUNC>
 void foreach_incident_vertex(const CMap3& m, CellParam<CMap3::Volume> w, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap3::Vertex, void>(m, w, f))
 		return;
+	if (std::array<Dart, 4> c; detail::tetra_corners(m, w.dart, c))
+	{
+		for (Dart d : c)
+			if (!call_and_continue(f, CMap3::Vertex(d)))
+				return;
+		return;
+	}
 	detail::foreach_cell_of_volume<CMap3::Vertex>(m, w.dart, f);
 }
 /// Edges of volume w.
