@@ -5,6 +5,7 @@
 #include <cgogn/core/operators/index_helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 
 namespace cgogn
@@ -171,6 +172,18 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 	const Dart d2 = phi2(m, d); // b -> a
 	const uint32 a_line = detail::index_or_invalid<V>(m, d);
 	const uint32 b_line = detail::index_or_invalid<V>(m, d2);
+	// the darts leaving a: only they need b's line afterwards (b's darts are
+	// often far apart in memory: rewriting them all cost more than the rest
+	// of the collapse); a vertex too large for the buffer is rewritten whole
+	std::array<Dart, 32> a_darts;
+	uint32 nb_a_darts = 0;
+	const bool relabel_a_only = set_indices && a_line != INVALID_INDEX && b_line != INVALID_INDEX &&
+								foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
+									if (nb_a_darts == a_darts.size())
+										return false;
+									a_darts[nb_a_darts++] = x;
+									return true;
+								});
 	const Dart p1 = phi_1(m, d), n1 = phi1(m, d);
 	const Dart p2 = phi_1(m, d2), n2 = phi1(m, d2);
 	// 1. take the edge out of both faces
@@ -195,7 +208,16 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 		remove_two_gon(m, p1, {&keep, &second}, set_indices);
 	if (phi1(m, phi1(m, second)) == second)
 		remove_two_gon(m, second, {&keep}, set_indices);
-	if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
+	if (relabel_a_only)
+	{
+		// a's surviving darts: still live, not reused (a collapse allocates nothing)
+		for (uint32 i = 0; i < nb_a_darts; ++i)
+			if (is_dart_valid(m, a_darts[i]))
+				detail::set_dart_index<V>(m, a_darts[i], b_line);
+		detail::set_representative<V>(m, keep);
+		detail::release_index<V>(m, a_line);
+	}
+	else if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
 		detail::merge_cell_indices(m, CMap2::Vertex(keep), b_line, a_line);
 	return CMap2::Vertex(keep);
 }
