@@ -99,6 +99,20 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
 
 namespace
 {
+// When `from`, about to be removed, represents its cell of orbit O, `to` (a
+// dart of the same cell) does instead.
+template <Orbit O>
+void hand_over_representative(CMap2& m, Dart from, Dart to)
+{
+	const uint32 line = detail::index_or_invalid<O>(m, from);
+	if (line != INVALID_INDEX)
+	{
+		uint32& key = m.cells_[orbit_index(O)]->key()[line];
+		if (key == from.index)
+			key = to.index;
+	}
+}
+
 // Dart s takes the place of dart t in t's face (t is about to be removed):
 // same neighbours in the cycle, same boundary mark, same face and volume lines.
 void take_place_in_face(CMap2& m, Dart s, Dart t, bool set_indices)
@@ -143,9 +157,10 @@ void remove_two_gon(CMap2& m, Dart p, std::initializer_list<Dart*> held, bool se
 	{
 		detail::release_index<E>(m, gone_edge_line);
 		detail::set_representative<E>(m, s);
-		// r and s2 start at the same vertex (as do t and s)
-		detail::set_representative<V>(m, s2);
-		detail::set_representative<V>(m, s);
+		// r and s2 start at the same vertex (as do t and s); s2 is a dart of a
+		// neighbouring face, often far in memory: read the (smaller) vertex keys instead
+		hand_over_representative<V>(m, r, s2);
+		hand_over_representative<V>(m, t, s);
 		const uint32 face_line = detail::index_or_invalid<F>(m, s);
 		if (two_gon_line != INVALID_INDEX && face_line != INVALID_INDEX && two_gon_line < face_line)
 		{
