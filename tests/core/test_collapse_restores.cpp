@@ -20,6 +20,22 @@ using Volume = CMap2::Volume;
 
 namespace
 {
+struct Counts
+{
+	uint32 v, e, f, w;
+	bool operator==(const Counts&) const = default;
+};
+Counts counts(const CMap2& m)
+{
+	return {nb_cells<Vertex>(m), nb_cells<Edge>(m), nb_cells<Face>(m), nb_cells<Volume>(m)};
+}
+uint32 faces_of_degree(const CMap2& m, uint32 k)
+{
+	uint32 n = 0;
+	foreach_cell(m, [&](Face f) { n += codegree(m, f) == k ? 1 : 0; });
+	return n;
+}
+
 // Everything a dart line holds that a split/collapse pair could change.
 struct DartState
 {
@@ -215,4 +231,41 @@ TEST(CollapseRestores, TenPercentBatchesOnARealMesh)
 		ASSERT_EQ(snapshot(m), before) << "batch " << batch;
 	}
 	EXPECT_INTEGRITY(m);
+}
+
+TEST(CollapseRestores, ATriangleSharingTwoEdgesWithTheOtherFace)
+{
+	// b of degree 2 between a triangle (a, b, c) and a heptagon: collapsing an
+	// edge of b merges two edges of the triangle, one of which borders the
+	// heptagon too (the surviving edge may replace the heptagon's dart)
+	for (uint32 which = 0; which < 4; ++which)
+	{
+		CMap2 m = indexed(torus_soup(6, 5, true));
+		const Vertex b = test::all<Vertex>(m)[9];
+		ASSERT_EQ(degree(m, b), 6u);
+		// remove 4 of b's 6 edges: a triangle and a heptagon are left around b
+		for (int k = 0; k < 4; ++k)
+		{
+			const Edge e(phi<2, 1>(m, b.dart));
+			ASSERT_TRUE(can_merge_incident_faces(m, e));
+			merge_incident_faces(m, e);
+		}
+		ASSERT_EQ(degree(m, b), 2u);
+		ASSERT_EQ(faces_of_degree(m, 7), 1u);
+		const Counts before = counts(m);
+		std::vector<Dart> around_b;
+		foreach_dart_of_orbit(m, b, [&](Dart d) {
+			around_b.push_back(d);
+			around_b.push_back(phi2(m, d));
+		});
+		const Edge e(around_b[which]); // b -> x or x -> b
+		ASSERT_TRUE(edge_can_collapse(m, e)) << which;
+		const uint32 survivor = index_of(m, Vertex(phi2(m, e.dart)));
+		const Vertex v = collapse_edge(m, e);
+		EXPECT_EQ(index_of(m, v), survivor);
+		EXPECT_EQ(counts(m), (Counts{before.v - 1, before.e - 2, before.f - 1, 1})) << which;
+		EXPECT_EQ(faces_of_degree(m, 7), 0u) << which;
+		EXPECT_EQ(faces_of_degree(m, 6), 1u) << which; // the heptagon lost b's edge
+		EXPECT_INTEGRITY(m);
+	}
 }
