@@ -4,6 +4,10 @@
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/index_helpers.h>
 
+#include <algorithm>
+#include <array>
+#include <initializer_list>
+
 namespace cgogn
 {
 
@@ -93,13 +97,108 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
 	return ok;
 }
 
+namespace
+{
+// When `from`, about to be removed, represents its cell of orbit O, `to` (a
+// dart of the same cell) does instead.
+template <Orbit O>
+void hand_over_representative(CMap2& m, Dart from, Dart to)
+{
+	const uint32 line = detail::index_or_invalid<O>(m, from);
+	if (line != INVALID_INDEX)
+	{
+		uint32& key = m.cells_[orbit_index(O)]->key()[line];
+		if (key == from.index)
+			key = to.index;
+	}
+}
+
+// Dart s takes the place of dart t in t's face (t is about to be removed):
+// same neighbours in the cycle, same boundary mark, same face and volume lines.
+void take_place_in_face(CMap2& m, Dart s, Dart t, bool set_indices)
+{
+	const Dart next = phi1(m, t);
+	const Dart prev = phi_1(m, t);
+	detail::set_phi1(m, s, next == t ? s : next);
+	detail::set_phi1(m, prev == t ? s : prev, s);
+	detail::set_boundary(m, s, is_boundary(m, t));
+	if (set_indices)
+	{
+		detail::copy_dart_index<F>(m, s, t);
+		detail::copy_dart_index<W>(m, s, t);
+		detail::set_representative<F>(m, s);
+		detail::set_representative<W>(m, s);
+	}
+}
+
+// Removes the face {p, n} reduced to two edges after a collapse. Its two edges
+// {p, pp} and {n, nn} (pp = phi2(p), nn = phi2(n)) become one: the one whose
+// lower dart is lower survives whole (both darts, its line), its 2-gon dart
+// taking the place of the outer dart of the other edge. So a collapse that
+// undoes a split gives back the darts the split found (they are older, hence
+// lower, than the ones it added) instead of scattering new ones among them.
+// The face that receives the dart takes the lower of its line and the 2-gon's
+// (the other is released). The darts the caller still holds (`held`) that
+// this removes are replaced by the dart that takes their place (same face
+// position, same origin).
+void remove_two_gon(CMap2& m, Dart p, std::initializer_list<Dart*> held, bool set_indices)
+{
+	const Dart n = phi1(m, p);
+	const Dart pp = phi2(m, p), nn = phi2(m, n);
+	const bool keep_n = std::min(n.index, nn.index) < std::min(p.index, pp.index);
+	const Dart s = keep_n ? n : p;	 // 2-gon dart of the surviving edge
+	const Dart s2 = keep_n ? nn : pp; // its phi2, stays in place
+	const Dart t = keep_n ? pp : nn;  // outer dart of the other edge: s takes its place
+	const Dart r = keep_n ? p : n;	 // 2-gon dart of the other edge (t == phi2(r))
+	const uint32 two_gon_line = detail::index_or_invalid<F>(m, s);
+	const uint32 gone_edge_line = detail::index_or_invalid<E>(m, r);
+	take_place_in_face(m, s, t, set_indices);
+	if (set_indices)
+	{
+		detail::release_index<E>(m, gone_edge_line);
+		detail::set_representative<E>(m, s);
+		// r and s2 start at the same vertex (as do t and s); s2 is a dart of a
+		// neighbouring face, often far in memory: read the (smaller) vertex keys instead
+		hand_over_representative<V>(m, r, s2);
+		hand_over_representative<V>(m, t, s);
+		const uint32 face_line = detail::index_or_invalid<F>(m, s);
+		if (two_gon_line != INVALID_INDEX && face_line != INVALID_INDEX && two_gon_line < face_line)
+		{
+			detail::write_index(m, CMap2::Face(s), two_gon_line);
+			detail::release_index<F>(m, face_line);
+		}
+		else
+			detail::release_index<F>(m, two_gon_line);
+	}
+	detail::remove_dart(m, r);
+	detail::remove_dart(m, t);
+	for (Dart* h : held)
+		if (*h == r)
+			*h = s2; // r is a 2-gon dart: no face position to keep, s2 leaves the same vertex
+		else if (*h == t)
+			*h = s;
+}
+} // namespace
+
 CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 {
 	assert(edge_can_collapse(m, e));
-	const Dart d = e.dart;   // a -> b, a disappears
+	const Dart d = e.dart;	  // a -> b, a disappears
 	const Dart d2 = phi2(m, d); // b -> a
 	const uint32 a_line = detail::index_or_invalid<V>(m, d);
 	const uint32 b_line = detail::index_or_invalid<V>(m, d2);
+	// the darts leaving a: only they need b's line afterwards (b's darts are
+	// often far apart in memory: rewriting them all cost more than the rest
+	// of the collapse); a vertex too large for the buffer is rewritten whole
+	std::array<Dart, 32> a_darts;
+	uint32 nb_a_darts = 0;
+	const bool relabel_a_only = set_indices && a_line != INVALID_INDEX && b_line != INVALID_INDEX &&
+								foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
+									if (nb_a_darts == a_darts.size())
+										return false;
+									a_darts[nb_a_darts++] = x;
+									return true;
+								});
 	const Dart p1 = phi_1(m, d), n1 = phi1(m, d);
 	const Dart p2 = phi_1(m, d2), n2 = phi1(m, d2);
 	// 1. take the edge out of both faces
@@ -117,32 +216,23 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 	// the surviving vertex: n1 starts at b (and so does n2 now)
 	Dart keep = n1;
 	// 2. remove the faces reduced to 2 edges: their two edges become one
-	for (Dart p : {p1, p2})
+	// (the first removal may replace p2: when the first triangle shares an
+	// edge with the second face, of degree >= 4 then)
+	Dart second = p2;
+	if (phi1(m, phi1(m, p1)) == p1)
+		remove_two_gon(m, p1, {&keep, &second}, set_indices);
+	if (phi1(m, phi1(m, second)) == second)
+		remove_two_gon(m, second, {&keep}, set_indices);
+	if (relabel_a_only)
 	{
-		const Dart n = phi1(m, p);
-		if (phi1(m, n) != p)
-			continue;
-		// the 2-gon {p, n}: sew phi2(p) with phi2(n), keep n's edge line
-		const Dart pp = phi2(m, p), nn = phi2(m, n);
-		if (set_indices)
-		{
-			detail::release_index<F>(m, detail::index_or_invalid<F>(m, p));
-			const uint32 edge_line = detail::index_or_invalid<E>(m, n);
-			detail::release_index<E>(m, detail::index_or_invalid<E>(m, p));
-			detail::set_dart_index<E>(m, pp, edge_line);
-			detail::set_representative<E>(m, nn);
-			detail::set_representative<V>(m, pp);
-			detail::set_representative<V>(m, nn);
-			detail::set_representative<W>(m, pp);
-		}
-		if (keep == n || keep == p)
-			keep = pp; // pp leaves the merged vertex
-		detail::remove_dart(m, p);
-		detail::remove_dart(m, n);
-		detail::set_phi2(m, pp, nn);
-		detail::set_phi2(m, nn, pp);
+		// a's surviving darts: still live, not reused (a collapse allocates nothing)
+		for (uint32 i = 0; i < nb_a_darts; ++i)
+			if (is_dart_valid(m, a_darts[i]))
+				detail::set_dart_index<V>(m, a_darts[i], b_line);
+		detail::set_representative<V>(m, keep);
+		detail::release_index<V>(m, a_line);
 	}
-	if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
+	else if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
 		detail::merge_cell_indices(m, CMap2::Vertex(keep), b_line, a_line);
 	return CMap2::Vertex(keep);
 }

@@ -274,11 +274,20 @@ private:
 		if (!stays_short(gone, x) || !normals_stay(gone, x) || !edge_can_collapse(m_, Edge(gone)))
 			return false;
 		const uint8 kept_flags = uint8(flags(d) | flags(d2)); // at most one end is locked
+		// a vanished triangle merges its two other edges (collapse_edge keeps
+		// one of them whole): flag both beforehand, so the survivor is a
+		// feature if either was
+		for (Dart side : {d, d2})
+			if (phi<1, 1, 1>(m_, side) == side)
+			{
+				const Dart a = phi1(m_, side), b = phi_1(m_, side);
+				const bool f = is_feature(a) || is_feature(b);
+				set_feature(a, f);
+				set_feature(b, f);
+			}
 		const Vertex v = collapse_edge(m_, Edge(gone));
 		position(v.dart) = x;
 		flags(v.dart) = kept_flags;
-		// a vanished triangle merges two of its edges: the result is a feature if either was
-		foreach_dart_of_orbit(m_, v, [&](Dart s) { set_feature(s, is_feature(s) || is_feature(phi2(m_, s))); });
 		++r_.collapses;
 		return true;
 	}

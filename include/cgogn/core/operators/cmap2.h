@@ -34,10 +34,17 @@ CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 bool edge_can_collapse(const CMap2& m, CMap2::Edge e);
 
 /// Contracts edge e: the origin of e.dart disappears, the other end survives
-/// with its line. Incident triangles degenerate and are removed (their two
-/// other edges merge, keeping the line of the one after e.dart in the face).
-/// Returns the surviving vertex. Precondition: edge_can_collapse(m, e).
-/// O(degree of the two vertices + degree of the two faces).
+/// with its line. Incident triangles degenerate and are removed: their two
+/// other edges merge into the one whose lower dart is lower, which survives
+/// whole (both darts, its line) while the other edge's darts and line go;
+/// the face next to the triangle that receives a dart of it keeps the lower
+/// of its line and the triangle's. Older darts and lines thus survive: the
+/// collapse of a vertex added by triangulate_face in a triangle gives back
+/// exactly the darts, relations and lines the split found. Dart handles to
+/// the edges around the vanished triangles may be invalidated (check with
+/// is_dart_valid). Returns the surviving vertex.
+/// Precondition: edge_can_collapse(m, e).
+/// O(degree of the two vertices + degree of the faces around the triangles).
 CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
 /// True when edge e can be flipped: both sides are non-boundary faces with at
