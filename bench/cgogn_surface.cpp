@@ -315,23 +315,32 @@ void subdivision(benchmark::State& state, bool)
 			// new positions of the original vertices, kept aside (by vertex line)
 			std::vector<Vec3> moved(container_of<Vertex::ORBIT>(m).end_index());
 			std::vector<Vertex> old_vertices;
+			old_vertices.reserve(nb_cells<Vertex>(m));
 			foreach_cell(m, [&](Vertex v) {
 				old_vertices.push_back(v);
-				if (is_incident_to_boundary(m, v))
+				// one walk around v for the boundary test and the neighbours' sum
+				// (is_incident_to_boundary would walk the vertex's darts a second
+				// time: cgogn has no O(1) boundary flag per vertex, unlike
+				// Surface_mesh's border-halfedge invariant); phi2(d) starts at the
+				// neighbour along d
+				Vec3 s = Vec3::Zero();
+				uint32 n = 0;
+				bool boundary = false;
+				foreach_dart_of_orbit(m, v, [&](Dart d) {
+					boundary = boundary || is_boundary(m, d);
+					s += value<Vec3>(m, pos, Vertex(phi2(m, d)));
+					++n;
+				});
+				if (boundary)
 				{
 					moved[index_of(m, v)] = value<Vec3>(m, pos, v);
 					return;
 				}
-				Vec3 s = Vec3::Zero();
-				uint32 n = 0;
-				foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
-					s += value<Vec3>(m, pos, w);
-					++n;
-				});
 				const double a = sqrt3_alpha(n);
 				moved[index_of(m, v)] = (1 - a) * value<Vec3>(m, pos, v) + a / n * s;
 			});
 			std::vector<Face> faces;
+			faces.reserve(nb_cells<Face>(m));
 			foreach_cell(m, [&](Face f) { faces.push_back(f); });
 			std::vector<Edge> edges;
 			foreach_cell(m, [&](Edge e) { edges.push_back(e); });

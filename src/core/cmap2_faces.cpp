@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Face and vertex operators of 2-maps: cut and merge faces, merge edges,
 // split vertices, triangulate and remove faces.
+#include <cgogn/core/functions/dart_buffer.h>
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/index_helpers.h>
@@ -223,49 +224,50 @@ CMap2::Edge split_vertex(CMap2& m, Dart d1, Dart d2, bool set_indices)
 CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices)
 {
 	assert(!is_boundary(m, f.dart));
-	std::vector<Dart> sides; // d_i: v_i -> v_i+1
-	foreach_dart_of_orbit(m, f, [&](Dart d) { sides.push_back(d); });
-	const std::size_t k = sides.size();
-	std::vector<Dart> to_centre(k), from_centre(k); // x_i: v_i+1 -> c, y_i: c -> v_i
+	// one pooled buffer (no allocation once warm): the sides d_i: v_i -> v_i+1,
+	// then for each side the pair x_i: v_i+1 -> c, y_i: c -> v_i
+	detail::DartBuffer buffer;
+	std::vector<Dart>& darts = *buffer;
+	foreach_dart_of_orbit(m, f, [&](Dart d) { darts.push_back(d); });
+	const std::size_t k = darts.size();
+	for (std::size_t i = 0; i < 2 * k; ++i)
+		darts.push_back(detail::add_dart(m));
+	auto side = [&](std::size_t i) { return darts[i]; };
+	auto to_centre = [&](std::size_t i) { return darts[k + 2 * i]; };
+	auto from_centre = [&](std::size_t i) { return darts[k + 2 * i + 1]; };
 	for (std::size_t i = 0; i < k; ++i)
 	{
-		to_centre[i] = detail::add_dart(m);
-		from_centre[i] = detail::add_dart(m);
-	}
-	for (std::size_t i = 0; i < k; ++i)
-	{
-		detail::set_phi1(m, sides[i], to_centre[i]);
-		detail::set_phi1(m, to_centre[i], from_centre[i]);
-		detail::set_phi1(m, from_centre[i], sides[i]);
-		phi2_sew(m, to_centre[i], from_centre[(i + 1) % k]);
+		const std::size_t next = i + 1 == k ? 0 : i + 1;
+		detail::set_phi1(m, side(i), to_centre(i));
+		detail::set_phi1(m, to_centre(i), from_centre(i));
+		detail::set_phi1(m, from_centre(i), side(i));
+		phi2_sew(m, to_centre(i), from_centre(next));
 	}
 	if (set_indices)
 	{
 		for (std::size_t i = 0; i < k; ++i)
 		{
-			detail::copy_dart_index<V>(m, to_centre[i], sides[(i + 1) % k]);
-			detail::copy_dart_index<W>(m, to_centre[i], sides[i]);
-			detail::copy_dart_index<W>(m, from_centre[i], sides[i]);
-			detail::index_new_cell(m, CMap2::Edge(to_centre[i]));
+			const std::size_t next = i + 1 == k ? 0 : i + 1;
+			detail::copy_dart_index<V>(m, to_centre(i), side(next));
+			detail::copy_dart_index<W>(m, to_centre(i), side(i));
+			detail::copy_dart_index<W>(m, from_centre(i), side(i));
+			detail::index_new_cell(m, CMap2::Edge(to_centre(i)));
 		}
-		detail::index_new_cell(m, CMap2::Vertex(from_centre[0]));
-		const bool faces_indexed = m.cell_index_[orbit_index(F)] != nullptr;
-		for (std::size_t i = 0; i < k; ++i)
-		{
-			if (i == 0)
+		detail::index_new_cell(m, CMap2::Vertex(from_centre(0)));
+		// the triangle on d_0 keeps the face's line, the others get new ones
+		detail::copy_dart_index<F>(m, to_centre(0), side(0));
+		detail::copy_dart_index<F>(m, from_centre(0), side(0));
+		detail::set_representative<F>(m, side(0));
+		if (m.cell_index_[orbit_index(F)] != nullptr)
+			for (std::size_t i = 1; i < k; ++i)
 			{
-				detail::copy_dart_index<F>(m, to_centre[0], sides[0]);
-				detail::copy_dart_index<F>(m, from_centre[0], sides[0]);
-				detail::set_representative<F>(m, sides[0]);
+				const uint32 line = m.cells_[orbit_index(F)]->new_line(side(i).index);
+				detail::set_dart_index<F>(m, side(i), line);
+				detail::set_dart_index<F>(m, to_centre(i), line);
+				detail::set_dart_index<F>(m, from_centre(i), line);
 			}
-			else if (faces_indexed)
-			{
-				detail::set_dart_index<F>(m, sides[i], INVALID_INDEX);
-				detail::new_index(m, CMap2::Face(sides[i]));
-			}
-		}
 	}
-	return CMap2::Vertex(from_centre[0]);
+	return CMap2::Vertex(from_centre(0));
 }
 
 void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
