@@ -54,17 +54,28 @@ bool adjacent_or_same_by_topology(const CMap2& m, CMap2::Vertex c, CMap2::Vertex
 
 // The same in O(degree of c) when vertices are indexed: the lines of c's
 // neighbours are compared with y's (reading an index is cheaper than marking
-// y's darts: 1.7x faster on the sqrt(3) benchmark's flips). The indices must
-// be up to date, as every operator called with set_indices = true keeps them.
+// y's darts: 1.7x faster on the sqrt(3) benchmark's flips). Darts left
+// without a line (set_indices = false) send it to the topology; lines that
+// are wrong (changed behind the library's back) are caught in debug builds.
 bool adjacent_or_same(const CMap2& m, CMap2::Vertex c, CMap2::Vertex y)
 {
 	const Attribute<uint32>* idx = m.cell_index_[orbit_index(V)];
 	const uint32 iy = idx ? (*idx)[y.dart.index] : INVALID_INDEX;
 	if (iy == INVALID_INDEX)
 		return adjacent_or_same_by_topology(m, c, y);
-	bool adjacent = (*idx)[c.dart.index] == iy;
+	// a dart without a line (an operator called with set_indices = false):
+	// the lines cannot tell, the topology does
+	bool unindexed = false;
+	const auto same_as_y = [&](Dart x) {
+		const uint32 ix = (*idx)[x.index];
+		unindexed = unindexed || ix == INVALID_INDEX;
+		return ix == iy;
+	};
+	bool adjacent = same_as_y(c.dart);
 	if (!adjacent)
-		foreach_dart_of_orbit(m, c, [&](Dart x) { return !(adjacent = (*idx)[phi2(m, x).index] == iy); });
+		foreach_dart_of_orbit(m, c, [&](Dart x) { return !(adjacent = same_as_y(phi2(m, x))); });
+	if (unindexed && !adjacent)
+		return adjacent_or_same_by_topology(m, c, y);
 	assert(adjacent == adjacent_or_same_by_topology(m, c, y) && "vertex indices out of date (see index_cells)");
 	return adjacent;
 }

@@ -179,3 +179,24 @@ TEST(Operators2FanFlip, EdgeCanFlipAgreesWithItsDefinition)
 	EXPECT_EQ(nb_cells<Vertex>(indexed_map), 20u);
 	EXPECT_EQ(nb_cells<Face>(indexed_map), 36u);
 }
+
+TEST(Operators2FanFlip, EdgeCanFlipOnAnIndexedMapEditedWithoutIndices)
+{
+	// vertices indexed, but the fans and flips are made with set_indices =
+	// false: the centres and many darts of the old vertices have no line, so
+	// the predicate cannot trust the lines and must still equal the definition
+	CMap2 m;
+	index_vertices_and_faces(m);
+	add_prism(m, 6);
+	for (Face f : all<Face>(m))
+		triangulate_face(m, f, false);
+	FlipTally total;
+	for (int round = 0; round < 3; ++round)
+	{
+		const FlipTally t = flip_all_allowed(m, false);
+		total.allowed += t.allowed;
+		total.refused += t.refused;
+	}
+	EXPECT_GT(total.allowed, 0u);
+	EXPECT_GT(total.refused, 0u);
+}

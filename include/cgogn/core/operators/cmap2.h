@@ -51,10 +51,11 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 /// least 3 edges, distinct, both end vertices have degree >= 3, and the new
 /// edge's end vertices are distinct and not already adjacent. When vertices
 /// are indexed, the lines of one new end's neighbours are compared with the
-/// other end's: O(degree of that end), and the vertex indices must be
-/// consistent (every operator keeps them so unless called with set_indices =
-/// false; checked by an assertion in debug builds). Otherwise O(degree of
-/// both new ends) with a dart mark.
+/// other end's: O(degree of that end); darts left without a line by an
+/// operator called with set_indices = false make it fall back to the
+/// topology, lines changed behind the library's back are caught by an
+/// assertion in debug builds. Otherwise O(degree of both new ends) with a
+/// dart mark.
 bool edge_can_flip(const CMap2& m, CMap2::Edge e);
 
 /// Rotates edge e forward inside its two faces: each end moves to the next
