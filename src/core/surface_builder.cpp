@@ -147,6 +147,7 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	detail::assign_vertex_lines<CMap2::Vertex>(m, darts, vertices, vidx, offset, nb_vertices, report);
 
 	detail::index_new_darts(m, darts);
+	detail::release_idle_marks(m);
 	return report;
 }
 

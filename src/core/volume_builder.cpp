@@ -146,6 +146,7 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	detail::assign_vertex_lines<CMap3::Vertex>(m, darts, vertices, vidx, offset, nb_vertices, report);
 
 	detail::index_new_darts(m, darts);
+	detail::release_idle_marks(m);
 	return report;
 }
 

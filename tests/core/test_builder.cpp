@@ -255,3 +255,25 @@ TEST(VolumeBuilder, FacesAreOrientedOutward)
 		EXPECT_NEAR(vol, 1.0, 1e-12);
 	});
 }
+
+// A build leaves no idle pooled mark behind: the map holds its attributes
+// and its boundary mark only (the bytes per face of the benchmarks).
+TEST(Builder, LeavesNoIdleMarkAllocated)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(40, 30, true));
+	std::size_t expected = 0;
+	for (const AttributeContainer* c : {m.darts_.get(), m.cells_[orbit_index(Orbit::PHI21)].get()})
+	{
+		std::size_t attributes = 0;
+		for (const auto& a : c->attributes())
+			attributes += a->memory_bytes();
+		expected += attributes;
+	}
+	// the darts' boundary mark: one bit per dart line, in whole chunks
+	expected += (m.darts_->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
+	std::size_t held = m.darts_->memory_bytes() + m.cells_[orbit_index(Orbit::PHI21)]->memory_bytes();
+	held -= m.darts_->free_lines().capacity() * sizeof(uint32);
+	held -= m.cells_[orbit_index(Orbit::PHI21)]->free_lines().capacity() * sizeof(uint32);
+	EXPECT_EQ(held, expected);
+}

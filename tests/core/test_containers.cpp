@@ -124,6 +124,39 @@ TEST(AttributeContainer, AttributesByNameAndType)
 	EXPECT_EQ((*b)[0], 7);
 }
 
+TEST(AttributeContainer, IdleMarksAreCountedAndCanBeFreed)
+{
+	AttributeContainer c("key");
+	for (uint32 i = 0; i < 2 * CHUNK_SIZE; ++i)
+		c.new_line(i);
+	const std::size_t bare = c.memory_bytes();
+	MarkAttribute* a = c.acquire_mark();
+	MarkAttribute* b = c.acquire_mark();
+	const std::size_t one_mark = a->memory_bytes();
+	EXPECT_GT(one_mark, 0u);
+	EXPECT_EQ(c.memory_bytes(), bare + 2 * one_mark);
+	a->set(5);
+	a->reset(5);
+	c.release_mark(a);
+	// released but kept for reuse: still held, still counted
+	EXPECT_EQ(c.memory_bytes(), bare + 2 * one_mark);
+	c.release_idle_marks();
+	// the idle one is freed, the held one stays usable
+	EXPECT_EQ(c.memory_bytes(), bare + one_mark);
+	b->set(7);
+	EXPECT_TRUE(b->test(7));
+	b->reset(7);
+	c.release_mark(b);
+	c.release_idle_marks();
+	EXPECT_EQ(c.memory_bytes(), bare);
+	// acquiring again allocates a cleared mark
+	MarkAttribute* again = c.acquire_mark();
+	EXPECT_EQ(c.memory_bytes(), bare + one_mark);
+	for (uint32 i = 0; i < 2 * CHUNK_SIZE; ++i)
+		ASSERT_FALSE(again->test(i));
+	c.release_mark(again);
+}
+
 TEST(AttributeContainer, ManyMarksAtOnceAreIndependentAndComeBackCleared)
 {
 	AttributeContainer c("key");

@@ -232,6 +232,23 @@ public:
 		std::lock_guard lock(mutex_);
 		overflow_free_.push_back(m);
 	}
+	/// Frees the memory of the pooled marks nobody holds (released marks keep
+	/// their chunks to be reused at once; a later acquire_mark allocates them
+	/// again). Builders call it when they are done, so that the marks a build
+	/// used do not stay allocated next to the mesh (one bit per line each).
+	/// Not thread-safe: no mark may be acquired or released meanwhile.
+	void release_idle_marks()
+	{
+		std::lock_guard lock(mutex_);
+		const uint64 used = used_slots_.load(std::memory_order_acquire);
+		for (uint32 s = 0; s < slots_.size(); ++s)
+			if (((used >> s) & 1u) == 0)
+				slots_[s].reset();
+		for (MarkAttribute* idle : overflow_free_)
+			std::erase_if(overflow_, [&](const auto& m) { return m.get() == idle; });
+		overflow_free_.clear();
+	}
+
 	/// A mark attribute owned by the container for its whole life (e.g. the
 	/// boundary mark of the darts).
 	MarkAttribute* add_persistent_mark()
@@ -241,13 +258,19 @@ public:
 		return persistent_marks_.back().get();
 	}
 
-	/// Bytes held by attributes and marks (allocated chunks, live or not).
+	/// Bytes held by attributes and marks (allocated chunks, live or not;
+	/// pooled marks too, held or idle).
 	std::size_t memory_bytes() const
 	{
 		std::size_t b = 0;
 		for (const auto& a : attributes_)
 			b += a->memory_bytes();
 		for (const auto& m : persistent_marks_)
+			b += m->memory_bytes();
+		for (const auto& m : slots_)
+			if (m)
+				b += m->memory_bytes();
+		for (const auto& m : overflow_)
 			b += m->memory_bytes();
 		return b + free_lines_.capacity() * sizeof(uint32);
 	}

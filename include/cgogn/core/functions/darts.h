@@ -128,6 +128,14 @@ inline void drop_incidence_caches(CMapBase& m)
 	if (!m.incidence_tables_.empty())
 		m.incidence_tables_.clear();
 }
+/// Frees the pooled marks nobody holds in every container of m (see
+/// AttributeContainer::release_idle_marks; builders call it at the end).
+inline void release_idle_marks(CMapBase& m)
+{
+	m.darts_->release_idle_marks();
+	for (auto& c : m.cells_)
+		c->release_idle_marks();
+}
 inline void set_phi1(CMap1& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
