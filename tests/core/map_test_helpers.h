@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <vector>
 
 namespace cgogn::test
@@ -32,6 +33,55 @@ CELL find(const MAP& m, P pred)
 		return false;
 	});
 	return r;
+}
+
+/// Indexes every orbit of m (an attribute per orbit), so that the operators'
+/// index maintenance is exercised on all of them.
+inline void index_everything(CMap2& m)
+{
+	add_attribute<uint32, CMap2::Vertex>(m, "vtag");
+	add_attribute<uint32, CMap2::Edge>(m, "etag");
+	add_attribute<uint32, CMap2::Face>(m, "ftag");
+	add_attribute<uint32, CMap2::Volume>(m, "wtag");
+}
+inline void index_everything(CMap3& m)
+{
+	add_attribute<uint32, CMap3::Vertex>(m, "vtag");
+	add_attribute<uint32, CMap3::Edge>(m, "etag");
+	add_attribute<uint32, CMap3::Face>(m, "ftag");
+	add_attribute<uint32, CMap3::Volume>(m, "wtag");
+	add_attribute<uint32, CMap3::Face2>(m, "f2tag");
+	add_attribute<uint32, CMap3::Edge2>(m, "e2tag");
+	add_attribute<uint32, CMap3::Vertex2>(m, "v2tag");
+	add_attribute<uint32, CMap3::CC>(m, "cctag");
+}
+
+/// Numbers of vertices, edges, faces and volumes of a map (for a 2-map, w
+/// counts its connected components), compared in one assertion.
+struct Counts
+{
+	uint32 v = 0, e = 0, f = 0, w = 0;
+	uint32 dimension = 0; ///< of the map counted (not compared)
+
+	bool operator==(const Counts& o) const
+	{
+		return v == o.v && e == o.e && f == o.f && w == o.w;
+	}
+	/// v - e + f on a 2-map, v - e + f - w on a 3-map.
+	int64 euler() const
+	{
+		return int64(v) - int64(e) + int64(f) - (dimension == 3 ? int64(w) : 0);
+	}
+};
+inline std::ostream& operator<<(std::ostream& o, const Counts& c)
+{
+	return o << "{" << c.v << ", " << c.e << ", " << c.f << ", " << c.w << "}";
+}
+template <typename MAP>
+Counts counts(const MAP& m)
+{
+	return {nb_cells<typename MAP::Vertex>(m), nb_cells<typename MAP::Edge>(m), nb_cells<typename MAP::Face>(m),
+			nb_cells<typename MAP::Volume>(m), MAP::dimension};
 }
 
 } // namespace cgogn::test

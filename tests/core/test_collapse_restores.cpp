@@ -18,17 +18,11 @@ using Edge = CMap2::Edge;
 using Face = CMap2::Face;
 using Volume = CMap2::Volume;
 
+using test::Counts;
+using test::counts;
+
 namespace
 {
-struct Counts
-{
-	uint32 v, e, f, w;
-	bool operator==(const Counts&) const = default;
-};
-Counts counts(const CMap2& m)
-{
-	return {nb_cells<Vertex>(m), nb_cells<Edge>(m), nb_cells<Face>(m), nb_cells<Volume>(m)};
-}
 uint32 faces_of_degree(const CMap2& m, uint32 k)
 {
 	uint32 n = 0;

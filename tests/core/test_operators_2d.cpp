@@ -12,28 +12,12 @@ using Edge = CMap2::Edge;
 using Face = CMap2::Face;
 using Volume = CMap2::Volume;
 
+using test::Counts;
+using test::counts;
+using test::index_everything;
+
 namespace
 {
-struct Counts
-{
-	uint32 v, e, f, w;
-	bool operator==(const Counts&) const = default;
-	int64 euler() const
-	{
-		return int64(v) - e + f;
-	}
-};
-Counts counts(const CMap2& m)
-{
-	return {nb_cells<Vertex>(m), nb_cells<Edge>(m), nb_cells<Face>(m), nb_cells<Volume>(m)};
-}
-void index_everything(CMap2& m)
-{
-	add_attribute<uint32, Vertex>(m, "vtag");
-	add_attribute<uint32, Edge>(m, "etag");
-	add_attribute<uint32, Face>(m, "ftag");
-	add_attribute<uint32, Volume>(m, "wtag");
-}
 CMap2 indexed(const SurfaceSoup& s)
 {
 	CMap2 m;

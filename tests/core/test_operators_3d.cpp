@@ -12,36 +12,12 @@ using Edge = CMap3::Edge;
 using Face = CMap3::Face;
 using Volume = CMap3::Volume;
 
+using test::Counts;
+using test::counts;
+using test::index_everything;
+
 namespace
 {
-struct Counts
-{
-	uint32 v, e, f, w;
-	bool operator==(const Counts&) const = default;
-	int64 euler() const
-	{
-		return int64(v) - e + f - w;
-	}
-};
-std::ostream& operator<<(std::ostream& o, const Counts& c)
-{
-	return o << "{" << c.v << ", " << c.e << ", " << c.f << ", " << c.w << "}";
-}
-Counts counts(const CMap3& m)
-{
-	return {nb_cells<Vertex>(m), nb_cells<Edge>(m), nb_cells<Face>(m), nb_cells<Volume>(m)};
-}
-void index_everything(CMap3& m)
-{
-	add_attribute<uint32, Vertex>(m, "vtag");
-	add_attribute<uint32, Edge>(m, "etag");
-	add_attribute<uint32, Face>(m, "ftag");
-	add_attribute<uint32, Volume>(m, "wtag");
-	add_attribute<uint32, CMap3::Face2>(m, "f2tag");
-	add_attribute<uint32, CMap3::Edge2>(m, "e2tag");
-	add_attribute<uint32, CMap3::Vertex2>(m, "v2tag");
-	add_attribute<uint32, CMap3::CC>(m, "cctag");
-}
 CMap3 indexed(const VolumeSoup& s)
 {
 	CMap3 m;

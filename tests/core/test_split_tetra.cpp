@@ -5,6 +5,8 @@
 
 #include "../../src/core/cmap3_cavity.h"
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,36 +20,13 @@ using Edge = CMap3::Edge;
 using Face = CMap3::Face;
 using Volume = CMap3::Volume;
 
+using test::Counts;
+using test::counts;
+using test::index_everything;
+
 namespace
 {
-struct Counts
-{
-	uint32 v, e, f, w;
-	bool operator==(const Counts&) const = default;
-	int64 euler() const
-	{
-		return int64(v) - e + f - w;
-	}
-};
-std::ostream& operator<<(std::ostream& o, const Counts& c)
-{
-	return o << "{" << c.v << ", " << c.e << ", " << c.f << ", " << c.w << "}";
-}
-Counts counts(const CMap3& m)
-{
-	return {nb_cells<Vertex>(m), nb_cells<Edge>(m), nb_cells<Face>(m), nb_cells<Volume>(m)};
-}
 
-void index_every_orbit(CMap3& m)
-{
-	add_attribute<uint32, Edge>(m, "etag");
-	add_attribute<uint32, Face>(m, "ftag");
-	add_attribute<uint32, Volume>(m, "wtag");
-	add_attribute<uint32, CMap3::Face2>(m, "f2tag");
-	add_attribute<uint32, CMap3::Edge2>(m, "e2tag");
-	add_attribute<uint32, CMap3::Vertex2>(m, "v2tag");
-	add_attribute<uint32, CMap3::CC>(m, "cctag");
-}
 
 // a map of the soup with its positions
 CMap3 build(const VolumeSoup& s)
@@ -163,7 +142,7 @@ TEST(SplitTetra, SingleTet)
 {
 	VolumeSoup s{4, {4}, {0, 1, 2, 3}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 	CMap3 m = build(s);
-	index_every_orbit(m);
+	index_everything(m);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
 	Volume w;
 	foreach_cell(m, [&](Volume x) { w = x; });
@@ -187,7 +166,7 @@ TEST(SplitTetra, PureTopology)
 	foreach_incident_volume(m, c, [&](Volume) { ++around; });
 	EXPECT_EQ(around, 4u);
 	// indexing afterwards gives the same counts
-	index_every_orbit(m);
+	index_everything(m);
 	EXPECT_TRUE(check_integrity(m).ok());
 	EXPECT_EQ(counts(m), (Counts{5, 10, 10, 4}));
 }
@@ -224,8 +203,8 @@ TEST(SplitTetra, EveryTetOfAGridSameAsCavity)
 {
 	const VolumeSoup s = tet_grid_soup(3, 2, 2);
 	CMap3 m = build(s), ref = build(s);
-	index_every_orbit(m);
-	index_every_orbit(ref);
+	index_everything(m);
+	index_everything(ref);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
 	auto ref_pos = get_attribute<Vec3, Vertex>(ref, "position");
 	const Counts before = counts(m);
@@ -255,7 +234,7 @@ TEST(SplitTetra, EveryTetOfAGridSameAsCavity)
 TEST(SplitTetra, RepeatedSplitsOfRandomTets)
 {
 	CMap3 m = build(tet_grid_soup(2, 2, 1));
-	index_every_orbit(m);
+	index_everything(m);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
 	std::mt19937 rng(2024);
 	Vertex last;
