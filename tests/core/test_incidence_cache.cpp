@@ -245,6 +245,13 @@ TEST(IncidenceCache, ForeachCellGivesLocatedCellsToCachedTraversals)
 		++nb_edges;
 	});
 	EXPECT_EQ(nb_edges, 90u);
+	// a dart's line is its index
+	uint32 nb_darts_seen = 0;
+	foreach_cell(m, [&](LocatedCell<Orbit::DART> d) {
+		EXPECT_EQ(d.line, d.dart.index);
+		++nb_darts_seen;
+	});
+	EXPECT_EQ(nb_darts_seen, 180u);
 
 	IncidenceCache<CMap2, V, V, E>::build(m);
 	auto around = [&](auto v) {

@@ -11,7 +11,6 @@ namespace cgogn
 namespace detail
 {
 
-/// Visits every real cell of type CELL of map m (see foreach_cell).
 /// The cell given to a foreach_cell callable: with its line when the
 /// callable takes a LocatedCell (INVALID_INDEX when the orbit is not indexed).
 template <typename CELL>
@@ -23,13 +22,15 @@ constexpr CELL reported_cell(Dart d, uint32 line = INVALID_INDEX)
 		return CELL(d);
 }
 
+/// Visits every real cell of type CELL of map m (see foreach_cell).
 template <typename CELL, typename MAP, typename FUNC>
 void foreach_cell_of_map(const MAP& m, const FUNC& f)
 {
 	constexpr Orbit O = CELL::ORBIT;
 	if constexpr (O == Orbit::DART)
 	{
-		foreach_dart(m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, reported_cell<CELL>(d)); });
+		// a dart's line is its index
+		foreach_dart(m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, reported_cell<CELL>(d, d.index)); });
 	}
 	else
 	{
