@@ -3,6 +3,8 @@
 // characteristic unchanged, untouched vertices keep their positions.
 #include <cgogn/cgogn.h>
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,14 +12,10 @@
 
 using namespace cgogn;
 
+using test::data_file;
+
 namespace
 {
-std::string data_file(const std::string& name)
-{
-	const std::string path = std::string(CGOGN_DATA_DIR) + "/" + name;
-	return std::filesystem::exists(path) ? path : std::string();
-}
-
 template <typename MAP>
 int64 euler(const MAP& m)
 {

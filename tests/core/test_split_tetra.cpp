@@ -23,11 +23,10 @@ using Volume = CMap3::Volume;
 using test::Counts;
 using test::counts;
 using test::index_everything;
+using test::data_file;
 
 namespace
 {
-
-
 // a map of the soup with its positions
 CMap3 build(const VolumeSoup& s)
 {
@@ -131,11 +130,6 @@ Vertex split_and_check(CMap3& m, Attribute<Vec3>& pos, Volume w)
 	return c;
 }
 
-std::string data_file(const std::string& name)
-{
-	const std::string path = std::string(CGOGN_DATA_DIR) + "/" + name;
-	return std::filesystem::exists(path) ? path : std::string();
-}
 } // namespace
 
 TEST(SplitTetra, SingleTet)

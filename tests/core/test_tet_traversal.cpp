@@ -3,6 +3,8 @@
 // edited meshes, boundary volumes included.
 #include <cgogn/cgogn.h>
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +14,8 @@ using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Face = CMap3::Face;
 using Volume = CMap3::Volume;
+
+using test::data_file;
 
 namespace
 {
@@ -54,11 +58,6 @@ Compared compare_with_flooding(CMap3& m)
 	return c;
 }
 
-std::string data_file(const std::string& name)
-{
-	const std::string path = std::string(CGOGN_DATA_DIR) + "/" + name;
-	return std::filesystem::exists(path) ? path : std::string();
-}
 } // namespace
 
 TEST(TetTraversal, SingleTetAndItsBoundary)
