@@ -270,8 +270,11 @@ TEST(Builder, LeavesNoIdleMarkAllocated)
 			attributes += a->memory_bytes();
 		expected += attributes;
 	}
-	// the darts' boundary mark: one bit per dart line, in whole chunks
-	expected += (m.darts_->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
+	// the darts' boundary mark: one bit per dart line, in whole chunks, in
+	// whole pages
+	const std::size_t mark_bytes = (m.darts_->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
+	const std::size_t page = detail::page_size();
+	expected += (mark_bytes + page - 1) / page * page;
 	std::size_t held = m.darts_->memory_bytes() + m.cells_[orbit_index(Orbit::PHI21)]->memory_bytes();
 	held -= m.darts_->free_lines().capacity() * sizeof(uint32);
 	held -= m.cells_[orbit_index(Orbit::PHI21)]->free_lines().capacity() * sizeof(uint32);

@@ -9,9 +9,18 @@
 
 using namespace cgogn;
 
-TEST(AttributeContainer, GrowsAcrossChunksWithoutMovingElements)
+// The container tests that walk many lines run with the attributes' values in
+// their reserved range (the default), with one chunk there and the rest in
+// blocks, and with blocks only (LineStorage).
+class AttributeContainerLayout : public ::testing::TestWithParam<uint64>
 {
-	AttributeContainer c("key");
+};
+INSTANTIATE_TEST_SUITE_P(ReservedRangeAndBlocks, AttributeContainerLayout,
+						 ::testing::Values(~uint64(0), uint64(CHUNK_SIZE), uint64(0)));
+
+TEST_P(AttributeContainerLayout, GrowsAcrossChunksWithoutMovingElements)
+{
+	AttributeContainer c("key", GetParam());
 	auto a = c.add_attribute<int>("a");
 	const uint32 n = 3 * CHUNK_SIZE + 5;
 	c.new_line(0);
@@ -20,11 +29,16 @@ TEST(AttributeContainer, GrowsAcrossChunksWithoutMovingElements)
 	for (uint32 i = 1; i < n; ++i)
 		(*a)[c.new_line(0)] = int(i);
 	EXPECT_EQ(c.nb_lines(), n);
-	EXPECT_EQ(&(*a)[0], first); // chunks never move
+	EXPECT_EQ(&(*a)[0], first); // values never move
 	EXPECT_EQ((*a)[0], 42);
 	for (uint32 i = 1; i < n; ++i)
 		ASSERT_EQ((*a)[i], int(i));
 	EXPECT_EQ(a->memory_bytes(), 4 * CHUNK_SIZE * sizeof(int));
+	// shrinking gives the memory back; growing again starts from defaults
+	c.clear();
+	EXPECT_EQ(a->memory_bytes(), 0u);
+	c.new_line(0);
+	EXPECT_EQ((*a)[0], 0);
 }
 
 TEST(AttributeContainer, RemovedLinesAreSkippedAndReusedFirstWithDefaultValues)
@@ -54,9 +68,9 @@ TEST(AttributeContainer, RemovedLinesAreSkippedAndReusedFirstWithDefaultValues)
 	EXPECT_EQ(c.end_index(), 11u);
 }
 
-TEST(AttributeContainer, RangeForVisitsLiveLinesAcrossChunksInLineOrder)
+TEST_P(AttributeContainerLayout, RangeForVisitsLiveLinesAcrossChunksInLineOrder)
 {
-	AttributeContainer c("key");
+	AttributeContainer c("key", GetParam());
 	auto a = c.add_attribute<uint32>("a");
 	const uint32 n = 3 * CHUNK_SIZE + 17;
 	for (uint32 i = 0; i < n; ++i)

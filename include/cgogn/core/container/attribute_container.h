@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/container/chunk_array.h>
+#include <cgogn/core/container/attribute.h>
 
 #include <algorithm>
 #include <array>
@@ -22,7 +22,11 @@ namespace cgogn
 class AttributeContainer
 {
 public:
-	explicit AttributeContainer(const std::string& key_name)
+	/// `max_contiguous_lines` caps the lines each attribute and mark keeps in
+	/// its reserved range (see LineStorage); the lines beyond go to blocks.
+	/// Only tests lower it, to exercise the blocks with small containers.
+	explicit AttributeContainer(const std::string& key_name, uint64 max_contiguous_lines = ~uint64(0))
+		: max_contiguous_lines_(max_contiguous_lines)
 	{
 		key_ = add_attribute<uint32>(key_name, INVALID_INDEX).get();
 	}
@@ -40,7 +44,9 @@ public:
 	{
 		if (find(name) != nullptr)
 			return nullptr;
-		auto a = std::make_shared<Attribute<T>>(this, name, std::move(default_value));
+		auto a = std::make_shared<Attribute<T>>(
+			this, name, std::move(default_value),
+			std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
 		a->set_nb_chunks(nb_chunks_);
 		attributes_.push_back(a);
 		return a;
@@ -203,7 +209,7 @@ public:
 				if (!slots_[s])
 				{
 					std::lock_guard lock(mutex_);
-					slots_[s] = std::make_unique<MarkAttribute>();
+					slots_[s] = new_mark();
 					slots_[s]->set_nb_chunks(nb_chunks_);
 					slots_[s]->pool_slot = s;
 				}
@@ -213,7 +219,7 @@ public:
 		std::lock_guard lock(mutex_);
 		if (overflow_free_.empty())
 		{
-			overflow_.push_back(std::make_unique<MarkAttribute>());
+			overflow_.push_back(new_mark());
 			overflow_.back()->set_nb_chunks(nb_chunks_);
 			return overflow_.back().get();
 		}
@@ -253,7 +259,7 @@ public:
 	/// boundary mark of the darts).
 	MarkAttribute* add_persistent_mark()
 	{
-		persistent_marks_.push_back(std::make_unique<MarkAttribute>());
+		persistent_marks_.push_back(new_mark());
 		persistent_marks_.back()->set_nb_chunks(nb_chunks_);
 		return persistent_marks_.back().get();
 	}
@@ -340,6 +346,11 @@ public:
 	}
 
 private:
+	std::unique_ptr<MarkAttribute> new_mark() const
+	{
+		return std::make_unique<MarkAttribute>(std::min(max_contiguous_lines_, MarkAttribute::default_contiguous_lines()));
+	}
+
 	void set_nb_chunks(uint32 n)
 	{
 		for (auto& a : attributes_)
@@ -354,6 +365,7 @@ private:
 		nb_chunks_ = n;
 	}
 
+	uint64 max_contiguous_lines_;
 	std::vector<std::shared_ptr<AttributeBase>> attributes_;
 	Attribute<uint32>* key_ = nullptr;
 	uint32 size_ = 0;

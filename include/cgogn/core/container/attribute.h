@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/container/line_storage.h>
 #include <cgogn/core/types/numeric.h>
 
 #include <atomic>
@@ -13,9 +14,8 @@
 namespace cgogn
 {
 
-/// Chunk size of every attribute: 2^12 lines. Access is a shift and a mask;
-/// elements never move when a container grows. See bench/README.md for the
-/// measurement behind the choice.
+/// Containers grow and shrink by chunks of 2^12 lines. Elements never move
+/// when a container grows; access to line i is one add (see LineStorage).
 inline constexpr uint32 CHUNK_SHIFT = 12;
 inline constexpr uint32 CHUNK_SIZE = 1u << CHUNK_SHIFT;
 inline constexpr uint32 CHUNK_MASK = CHUNK_SIZE - 1u;
@@ -62,29 +62,31 @@ protected:
 	std::string name_;
 };
 
-/// A typed attribute: one value of type T per line of its container, stored in
-/// fixed-size chunks. `(*attr)[i]` is the value of line i; a range-for visits
-/// the values of the live lines.
+/// A typed attribute: one value of type T per line of its container (see
+/// LineStorage for where values live). `(*attr)[i]` is the value of line i; a
+/// range-for visits the values of the live lines.
 template <typename T>
 class Attribute : public AttributeBase
 {
 public:
 	using value_type = T;
 
-	Attribute(AttributeContainer* container, std::string name, T default_value = T())
-		: AttributeBase(container, std::move(name)), default_value_(std::move(default_value))
+	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
+	Attribute(AttributeContainer* container, std::string name, T default_value = T(),
+			  uint64 contiguous_lines = LineStorage<T, CHUNK_SHIFT>::default_contiguous())
+		: AttributeBase(container, std::move(name)), values_(contiguous_lines), default_value_(std::move(default_value))
 	{
 	}
 
 	T& operator[](uint32 i)
 	{
-		assert((i >> CHUNK_SHIFT) < chunks_.size());
-		return chunks_[i >> CHUNK_SHIFT][i & CHUNK_MASK];
+		assert(i < values_.size());
+		return values_[i];
 	}
 	const T& operator[](uint32 i) const
 	{
-		assert((i >> CHUNK_SHIFT) < chunks_.size());
-		return chunks_[i >> CHUNK_SHIFT][i & CHUNK_MASK];
+		assert(i < values_.size());
+		return values_[i];
 	}
 
 	/// The value given to lines when they are created.
@@ -99,14 +101,7 @@ public:
 	}
 	void set_nb_chunks(uint32 nb_chunks) override
 	{
-		while (chunks_.size() < nb_chunks)
-		{
-			auto chunk = std::make_unique<T[]>(CHUNK_SIZE);
-			for (uint32 i = 0; i < CHUNK_SIZE; ++i)
-				chunk[i] = default_value_;
-			chunks_.push_back(std::move(chunk));
-		}
-		chunks_.resize(nb_chunks);
+		values_.resize(nb_chunks * CHUNK_SIZE, default_value_);
 	}
 	void reset_line(uint32 i) override
 	{
@@ -128,16 +123,15 @@ public:
 	}
 	std::size_t memory_bytes() const override
 	{
-		return chunks_.size() * CHUNK_SIZE * sizeof(T);
+		return values_.memory_bytes();
 	}
 	std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const override;
 
 	/// Sets every allocated line (live or not) to v.
 	void fill(const T& v)
 	{
-		for (auto& c : chunks_)
-			for (uint32 i = 0; i < CHUNK_SIZE; ++i)
-				c[i] = v;
+		for (uint32 i = 0; i < values_.size(); ++i)
+			values_[i] = v;
 	}
 
 	template <bool IS_CONST>
@@ -150,29 +144,38 @@ public:
 	const_iterator end() const;
 
 private:
-	std::vector<std::unique_ptr<T[]>> chunks_;
+	LineStorage<T, CHUNK_SHIFT> values_;
 	T default_value_;
 };
 
-/// A bit per line, in chunks of the same line count as attributes. Used for
-/// markers and the persistent boundary mark. Not safe for concurrent writes
-/// to the same 64-line word; parallel traversals give each thread its own.
+/// A bit per line, growing by chunks of the same line count as attributes.
+/// Used for markers and the persistent boundary mark. Not safe for concurrent
+/// writes to the same 64-line word; parallel traversals give each thread its own.
 class MarkAttribute
 {
 public:
 	static constexpr uint32 WORDS_PER_CHUNK = CHUNK_SIZE / 64;
 
+	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
+	explicit MarkAttribute(uint64 contiguous_lines = default_contiguous_lines()) : words_(contiguous_lines / 64)
+	{
+	}
+	static constexpr uint64 default_contiguous_lines()
+	{
+		return uint64(1) << 28;
+	}
+
 	bool test(uint32 i) const
 	{
-		return (chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] >> (i & 63u)) & 1u;
+		return (words_[i >> 6] >> (i & 63u)) & 1u;
 	}
 	void set(uint32 i)
 	{
-		chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] |= (uint64(1) << (i & 63u));
+		words_[i >> 6] |= (uint64(1) << (i & 63u));
 	}
 	void reset(uint32 i)
 	{
-		chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6] &= ~(uint64(1) << (i & 63u));
+		words_[i >> 6] &= ~(uint64(1) << (i & 63u));
 	}
 	/// Atomic (relaxed) access, for a mark shared by the threads of a parallel
 	/// traversal: while threads share the mark, every access goes through these.
@@ -204,23 +207,19 @@ public:
 	}
 	void clear_all()
 	{
-		for (auto& c : chunks_)
-			for (uint32 w = 0; w < WORDS_PER_CHUNK; ++w)
-				c[w] = 0;
+		for (uint32 w = 0; w < words_.size(); ++w)
+			words_[w] = 0;
 	}
 	bool all_clear() const
 	{
-		for (const auto& c : chunks_)
-			for (uint32 w = 0; w < WORDS_PER_CHUNK; ++w)
-				if (c[w] != 0)
-					return false;
+		for (uint32 w = 0; w < words_.size(); ++w)
+			if (words_[w] != 0)
+				return false;
 		return true;
 	}
 	void set_nb_chunks(uint32 nb_chunks)
 	{
-		while (chunks_.size() < nb_chunks)
-			chunks_.push_back(std::make_unique<uint64[]>(WORDS_PER_CHUNK)); // zeroed
-		chunks_.resize(nb_chunks);
+		words_.resize(nb_chunks * WORDS_PER_CHUNK, 0);
 	}
 	void swap_lines(uint32 a, uint32 b)
 	{
@@ -230,7 +229,7 @@ public:
 	}
 	std::size_t memory_bytes() const
 	{
-		return chunks_.size() * WORDS_PER_CHUNK * sizeof(uint64);
+		return words_.memory_bytes();
 	}
 
 	/// Slot of the container's lock-free pool that owns this mark, if any.
@@ -239,10 +238,10 @@ public:
 private:
 	std::atomic_ref<uint64> word_ref(uint32 i) const
 	{
-		return std::atomic_ref<uint64>(chunks_[i >> CHUNK_SHIFT][(i & CHUNK_MASK) >> 6]);
+		return std::atomic_ref<uint64>(const_cast<uint64&>(words_[i >> 6]));
 	}
 
-	std::vector<std::unique_ptr<uint64[]>> chunks_;
+	LineStorage<uint64, CHUNK_SHIFT - 6> words_;
 };
 
 } // namespace cgogn
