@@ -102,7 +102,8 @@ private:
 /// resident memory of the process and the bytes held by the allocator (MB).
 void record_batch(benchmark::State& state, unsigned b, double seconds);
 
-/// Bytes currently allocated by malloc (mallinfo2().uordblks + hblkhd).
+/// Bytes currently allocated by malloc (mallinfo2().uordblks + hblkhd) plus the
+/// pages cgogn commits for its attributes (cgogn::committed_storage_bytes()).
 std::size_t heap_bytes();
 /// Resident set size of the process, in bytes (/proc/self/statm).
 std::size_t resident_bytes();

@@ -9,7 +9,22 @@
 #define CGOGN_HAS_MMAP 0
 #endif
 
-namespace cgogn::detail
+#include <atomic>
+
+namespace cgogn
+{
+
+namespace
+{
+std::atomic<std::size_t> committed_bytes{0};
+}
+
+std::size_t committed_storage_bytes()
+{
+	return committed_bytes.load(std::memory_order_relaxed);
+}
+
+namespace detail
 {
 
 #if CGOGN_HAS_MMAP
@@ -28,6 +43,7 @@ void commit_pages(void* p, std::size_t bytes)
 {
 	if (mprotect(p, bytes, PROT_READ | PROT_WRITE) != 0)
 		throw std::bad_alloc();
+	committed_bytes.fetch_add(bytes, std::memory_order_relaxed);
 }
 
 void decommit_pages(void* p, std::size_t bytes)
@@ -36,6 +52,7 @@ void decommit_pages(void* p, std::size_t bytes)
 	// so that a stale access faults instead of reading zeros
 	madvise(p, bytes, MADV_DONTNEED);
 	mprotect(p, bytes, PROT_NONE);
+	committed_bytes.fetch_sub(bytes, std::memory_order_relaxed);
 }
 
 void release_address_space(void* p, std::size_t bytes)
@@ -71,4 +88,6 @@ std::size_t page_size()
 
 #endif
 
-} // namespace cgogn::detail
+} // namespace detail
+
+} // namespace cgogn

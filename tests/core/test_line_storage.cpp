@@ -94,3 +94,19 @@ TEST(LineStorage, DefaultRangeIsBoundedInBytesAndLines)
 	};
 	EXPECT_EQ((LineStorage<Big, 12>::default_contiguous()), (uint64(1) << 31) / sizeof(Big));
 }
+
+// The pages a storage commits are counted process-wide (the allocator does
+// not see them) and given back when it shrinks or dies.
+TEST(LineStorage, CommittedPagesAreCountedUntilGivenBack)
+{
+	const std::size_t before = committed_storage_bytes();
+	{
+		LineStorage<double, 12> s;
+		s.resize(16 * 4096, 1.0);
+		EXPECT_EQ(s.memory_bytes(), 16 * 4096 * sizeof(double));
+		EXPECT_EQ(committed_storage_bytes(), before + s.memory_bytes());
+		s.resize(4096, 1.0);
+		EXPECT_EQ(committed_storage_bytes(), before + 4096 * sizeof(double));
+	}
+	EXPECT_EQ(committed_storage_bytes(), before);
+}

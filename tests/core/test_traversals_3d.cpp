@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <type_traits>
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -202,4 +203,65 @@ TEST(Traversals3D, TetGridIncidenceSums)
 	EXPECT_EQ(vv_edge, 2u * E);
 	EXPECT_EQ(vv_vol, 2u * E); // in a tet mesh, vertices of a common tet share an edge
 	EXPECT_EQ(et, 6u * T);
+}
+
+// The neighbours through edges are told apart by their vertex line when the
+// vertices are indexed: the same sets as the other ends of the incident
+// edges, each once, located at their own line; a vertex made without a line
+// (set_indices = false) falls back to the dart walk and still gets its
+// neighbours, and a callable may stop early.
+TEST(Traversals3D, AdjacentVerticesThroughEdgesByLineAndWithoutLines)
+{
+	CMap3 m;
+	build_volume(m, tet_grid_soup(3, 2, 2));
+	auto by_edges = [&](Vertex v) {
+		std::multiset<uint32> r;
+		foreach_incident_edge(m, v, [&](Edge e) {
+			foreach_incident_vertex(m, e, [&](Vertex w) {
+				if (index_of(m, w) != index_of(m, v))
+					r.insert(index_of(m, w));
+			});
+		});
+		return r;
+	};
+	uint32 checked = 0;
+	foreach_cell(m, [&](Vertex v) {
+		std::multiset<uint32> adjacent;
+		uint32 located = 0;
+		// a generic callable is instantiated for both paths; the line path gives lines
+		foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
+			if constexpr (std::is_same_v<decltype(w), LocatedCell<Vertex::ORBIT>>)
+			{
+				EXPECT_EQ(w.line, index_of(m, Vertex(w.dart)));
+				++located;
+			}
+			adjacent.insert(index_of(m, Vertex(w.dart)));
+		});
+		EXPECT_EQ(adjacent, by_edges(v));
+		EXPECT_EQ(located, adjacent.size());
+		++checked;
+		uint32 calls = 0;
+		foreach_adjacent_vertex_through_edge(m, v, [&](Vertex) { return ++calls < 2; });
+		EXPECT_EQ(calls, 2u);
+	});
+	EXPECT_EQ(checked, nb_cells<Vertex>(m));
+
+	// a vertex without a line in the middle of an edge: its neighbours are the
+	// two ends, found through the fallback; the ends see it too
+	Edge e;
+	foreach_cell(m, [&](Edge x) {
+		e = x;
+		return false;
+	});
+	const uint32 a = index_of(m, Vertex(e.dart)), b = index_of(m, Vertex(phi1(m, e.dart)));
+	const Vertex mid = cut_edge(m, e, false);
+	ASSERT_EQ(index_of(m, mid), INVALID_INDEX);
+	std::multiset<uint32> ends;
+	foreach_adjacent_vertex_through_edge(m, mid, [&](Vertex w) { ends.insert(index_of(m, w)); });
+	EXPECT_EQ(ends, (std::multiset<uint32>{a, b}));
+	uint32 unindexed_seen = 0;
+	foreach_adjacent_vertex_through_edge(m, Vertex(e.dart), [&](Vertex w) {
+		unindexed_seen += index_of(m, w) == INVALID_INDEX;
+	});
+	EXPECT_EQ(unindexed_seen, 1u);
 }

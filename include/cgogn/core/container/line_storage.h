@@ -31,6 +31,11 @@ std::size_t page_size();
 
 } // namespace detail
 
+/// Bytes of committed pages held by all the LineStorages of the process (the
+/// attributes and marks of every map): memory the allocator does not see, for
+/// tools and benchmarks that account memory with mallinfo. Thread-safe.
+std::size_t committed_storage_bytes();
+
 /// The values of one attribute (or the words of one mark): elements
 /// [0, size()) that never move once created, whatever the storage grows to.
 ///
