@@ -78,12 +78,12 @@ public:
 	{
 	}
 
-	T& operator[](uint32 i)
+	CGOGN_INLINE T& operator[](uint32 i)
 	{
 		assert(i < values_.size());
 		return values_[i];
 	}
-	const T& operator[](uint32 i) const
+	CGOGN_INLINE const T& operator[](uint32 i) const
 	{
 		assert(i < values_.size());
 		return values_[i];
@@ -165,15 +165,15 @@ public:
 		return uint64(1) << 28;
 	}
 
-	bool test(uint32 i) const
+	CGOGN_INLINE bool test(uint32 i) const
 	{
 		return (words_[i >> 6] >> (i & 63u)) & 1u;
 	}
-	void set(uint32 i)
+	CGOGN_INLINE void set(uint32 i)
 	{
 		words_[i >> 6] |= (uint64(1) << (i & 63u));
 	}
-	void reset(uint32 i)
+	CGOGN_INLINE void reset(uint32 i)
 	{
 		words_[i >> 6] &= ~(uint64(1) << (i & 63u));
 	}

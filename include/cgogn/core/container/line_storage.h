@@ -80,13 +80,13 @@ public:
 		return by_bytes < (uint64(1) << 28) ? by_bytes : (uint64(1) << 28);
 	}
 
-	T& operator[](uint32 i)
+	CGOGN_INLINE T& operator[](uint32 i)
 	{
 		if (i < contiguous_) [[likely]]
 			return base_[i];
 		return in_block(i);
 	}
-	const T& operator[](uint32 i) const
+	CGOGN_INLINE const T& operator[](uint32 i) const
 	{
 		if (i < contiguous_) [[likely]]
 			return base_[i];

@@ -80,42 +80,42 @@ bool remove_attribute(MESH& m, const std::shared_ptr<A>& attr)
 /// The value of attribute attr for cell c. O(1). Precondition: attr is an
 /// attribute of c's orbit in m (checked in debug builds).
 template <typename T, typename MESH, Orbit O>
-inline T& value(const MESH& m, Attribute<T>& attr, Cell<O> c)
+CGOGN_INLINE T& value(const MESH& m, Attribute<T>& attr, Cell<O> c)
 {
 	const auto& map = map_of(m);
 	assert(attr.container() == &container_of<O>(map) && "attribute of another orbit or map");
 	return attr[index_of(map, c)];
 }
 template <typename T, typename MESH, Orbit O>
-inline const T& value(const MESH& m, const Attribute<T>& attr, Cell<O> c)
+CGOGN_INLINE const T& value(const MESH& m, const Attribute<T>& attr, Cell<O> c)
 {
 	const auto& map = map_of(m);
 	assert(attr.container() == &container_of<O>(map) && "attribute of another orbit or map");
 	return attr[index_of(map, c)];
 }
 template <typename T, typename MESH, Orbit O>
-inline T& value(const MESH& m, const std::shared_ptr<Attribute<T>>& attr, Cell<O> c)
+CGOGN_INLINE T& value(const MESH& m, const std::shared_ptr<Attribute<T>>& attr, Cell<O> c)
 {
 	return value<T>(m, *attr, c);
 }
 /// The same for a cell reported by a cached traversal: its stored line is
 /// used directly (no lookup of the dart's index). O(1).
 template <typename T, typename MESH, Orbit O>
-inline T& value([[maybe_unused]] const MESH& m, Attribute<T>& attr, LocatedCell<O> c)
+CGOGN_INLINE T& value([[maybe_unused]] const MESH& m, Attribute<T>& attr, LocatedCell<O> c)
 {
 	assert(attr.container() == &container_of<O>(map_of(m)) && "attribute of another orbit or map");
 	assert(c.line == index_of(map_of(m), Cell<O>(c)) && "stale cell line");
 	return attr[c.line];
 }
 template <typename T, typename MESH, Orbit O>
-inline const T& value([[maybe_unused]] const MESH& m, const Attribute<T>& attr, LocatedCell<O> c)
+CGOGN_INLINE const T& value([[maybe_unused]] const MESH& m, const Attribute<T>& attr, LocatedCell<O> c)
 {
 	assert(attr.container() == &container_of<O>(map_of(m)) && "attribute of another orbit or map");
 	assert(c.line == index_of(map_of(m), Cell<O>(c)) && "stale cell line");
 	return attr[c.line];
 }
 template <typename T, typename MESH, Orbit O>
-inline T& value(const MESH& m, const std::shared_ptr<Attribute<T>>& attr, LocatedCell<O> c)
+CGOGN_INLINE T& value(const MESH& m, const std::shared_ptr<Attribute<T>>& attr, LocatedCell<O> c)
 {
 	return value<T>(m, *attr, c);
 }

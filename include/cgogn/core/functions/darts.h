@@ -10,7 +10,7 @@ namespace cgogn
 {
 
 /// Next dart in the face cycle. O(1).
-inline Dart phi1(const CMap1& m, Dart d)
+CGOGN_INLINE Dart phi1(const CMap1& m, Dart d)
 {
 	return Dart((*m.phi1_)[d.index]);
 }
@@ -26,13 +26,13 @@ inline Dart phi_1(const CMap1& m, Dart d)
 }
 
 /// The dart of the adjacent face along the same edge, opposite direction. O(1).
-inline Dart phi2(const CMap2& m, Dart d)
+CGOGN_INLINE Dart phi2(const CMap2& m, Dart d)
 {
 	return Dart((*m.phi2_)[d.index]);
 }
 
 /// The dart of the adjacent volume along the same face, opposite direction. O(1).
-inline Dart phi3(const CMap3& m, Dart d)
+CGOGN_INLINE Dart phi3(const CMap3& m, Dart d)
 {
 	return Dart((*m.phi3_)[d.index]);
 }
@@ -72,7 +72,7 @@ inline uint32 nb_darts(const CMapBase& m)
 
 /// True when the dart belongs to a boundary cell (a boundary face of a 2-map,
 /// a boundary volume of a 3-map). O(1).
-inline bool is_boundary(const CMapBase& m, Dart d)
+CGOGN_INLINE bool is_boundary(const CMapBase& m, Dart d)
 {
 	return m.boundary_->test(d.index);
 }

@@ -32,7 +32,7 @@ bool is_indexed(const CMapBase& m)
 /// values. INVALID_INDEX for boundary cells and cells created with
 /// set_indices = false. Precondition: the orbit is indexed. O(1).
 template <Orbit O>
-inline uint32 index_of(const CMapBase& m, Cell<O> c)
+CGOGN_INLINE uint32 index_of(const CMapBase& m, Cell<O> c)
 {
 	if constexpr (O == Orbit::DART)
 		return c.dart.index;
@@ -45,7 +45,7 @@ inline uint32 index_of(const CMapBase& m, Cell<O> c)
 
 /// The line of a cell reported by a cached traversal (stored in the cache). O(1).
 template <Orbit O>
-inline uint32 index_of(const CMapBase&, LocatedCell<O> c)
+CGOGN_INLINE uint32 index_of(const CMapBase&, LocatedCell<O> c)
 {
 	return c.line;
 }

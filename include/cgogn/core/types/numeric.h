@@ -15,6 +15,17 @@ using uint16 = std::uint16_t;
 using uint32 = std::uint32_t;
 using uint64 = std::uint64_t;
 
+/// Forces inlining of the small hot functions (relation and attribute
+/// accessors, the cached row walk, local traversals): GCC otherwise keeps some
+/// of them out of line once the caller is large, and then the caller's
+/// accumulators live in memory across every call (measured: quick surface
+/// smoothing spent its time reloading and storing its sum).
+#if defined(__GNUC__) || defined(__clang__)
+#define CGOGN_INLINE [[gnu::always_inline]] inline
+#else
+#define CGOGN_INLINE inline
+#endif
+
 /// The value of an index (dart, cell line) that designates nothing.
 inline constexpr uint32 INVALID_INDEX = std::numeric_limits<uint32>::max();
 

@@ -55,7 +55,7 @@ inline const IncidenceTable* find_incidence_table(const CMapBase& m, uint32 key)
 /// and line) when the table holds their lines, which converts to TO for a
 /// callable taking TO. One test of an empty vector when no cache is enabled.
 template <typename TO, typename THROUGH, typename FROM, typename FUNC>
-bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
+CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 {
 	if (m.incidence_tables_.empty())
 		return false;

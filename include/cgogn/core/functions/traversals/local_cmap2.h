@@ -40,7 +40,7 @@ void foreach_incident_volume(const CMap2&, CellParam<CMap2::Vertex> v, const FUN
 
 /// Vertices joined to v by an edge, in cyclic order.
 template <typename FUNC>
-void foreach_adjacent_vertex_through_edge(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
+CGOGN_INLINE void foreach_adjacent_vertex_through_edge(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Vertex, CMap2::Edge>(m, v, f))
 		return;
