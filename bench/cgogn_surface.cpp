@@ -236,21 +236,18 @@ void smoothing(benchmark::State& state, bool first)
 	timed(
 		state, first, [&] { me.reset_positions(surface_soup()); },
 		[&] {
-			// one walk around each vertex finds the neighbours and the boundary
-			// (is_incident_to_boundary then foreach_adjacent_vertex_through_edge
-			// would walk twice): dart d leaves v, phi2(d) leaves the neighbour
+			// is_incident_to_boundary is O(1) on a closed map (the map counts its
+			// boundary darts); on an open one it walks v's darts before the ring
 			foreach_cell(m, [&](Located<Vertex> v) {
+				if (is_incident_to_boundary(m, v))
+					return;
 				Vec3 s = Vec3::Zero();
 				uint32 n = 0;
-				const bool inner = foreach_dart_of_orbit(m, v, [&](Dart d) {
-					if (is_boundary(m, d))
-						return false;
-					s += value<Vec3>(m, pos, Vertex(phi2(m, d)));
+				foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+					s += value<Vec3>(m, pos, w);
 					++n;
-					return true;
 				});
-				if (inner)
-					value<Vec3>(m, pos, v) = s / double(n);
+				value<Vec3>(m, pos, v) = s / double(n);
 			});
 		});
 	set_check(state, "check", position_sum(me));

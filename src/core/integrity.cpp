@@ -91,8 +91,10 @@ void check_relations(const MAP& m, Checker& ck)
 	}
 	if constexpr (MAP::dimension >= 2)
 	{
+		uint32 marked = 0;
 		foreach_dart(m, [&](Dart d) {
 			const bool b = is_boundary(m, d);
+			marked += b;
 			Dart top;
 			if constexpr (MAP::dimension == 2)
 				top = phi2(m, d);
@@ -108,6 +110,10 @@ void check_relations(const MAP& m, Checker& ck)
 				ck.add(Kind::BoundaryMarkNotConstant, Orbit::DART, d.index, INVALID_INDEX,
 					   "the boundary mark is not constant on a boundary cell");
 		});
+		if (marked != m.nb_boundary_darts_)
+			ck.add(Kind::BoundaryCountWrong, Orbit::DART, INVALID_INDEX, INVALID_INDEX,
+				   "the map counts " + std::to_string(m.nb_boundary_darts_) + " boundary darts, " +
+					   std::to_string(marked) + " are marked");
 	}
 }
 

@@ -115,6 +115,7 @@ void rebuild(CMap3 &m, Attribute<Vec3> &pos, const Refinement &r, uint32 cell_si
 {
 	m.incidence_tables_.clear();
 	m.darts_->clear();
+	m.nb_boundary_darts_ = 0;
 	for (auto &c : m.cells_)
 		c->clear();
 	const std::vector<uint32> sizes(r.cell_vertices.size() / cell_size, cell_size);

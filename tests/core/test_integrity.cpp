@@ -91,6 +91,31 @@ TEST(Integrity, BoundaryMarks)
 	}
 }
 
+// The map counts its boundary darts (has_boundary, O(1) is_incident_to_boundary
+// of a vertex): the count follows the operators, and a mark written behind
+// its back is reported.
+TEST(Integrity, BoundaryDartCount)
+{
+	CMap2 m = indexed_grid();
+	ASSERT_TRUE(has_boundary(m));
+	EXPECT_TRUE(check_integrity(m).ok());
+	uint32 marked = 0;
+	foreach_dart(m, [&](Dart d) { marked += is_boundary(m, d); });
+	EXPECT_EQ(m.nb_boundary_darts_, marked);
+	Dart b;
+	foreach_dart(m, [&](Dart d) {
+		b = d;
+		return !is_boundary(m, d);
+	});
+	fill_hole(m, b); // the grid's only hole
+	EXPECT_FALSE(has_boundary(m));
+	EXPECT_EQ(m.nb_boundary_darts_, 0u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	foreach_cell(m, [&](CMap2::Vertex v) { EXPECT_FALSE(is_incident_to_boundary(m, v)); });
+	m.boundary_->set(inner_dart(m).index); // behind the count's back
+	EXPECT_TRUE(check_integrity(m).has(Kind::BoundaryCountWrong));
+}
+
 TEST(Integrity, IndexNotConstantOnAnOrbit)
 {
 	CMap2 m = indexed_grid();

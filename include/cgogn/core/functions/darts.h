@@ -109,15 +109,21 @@ inline Dart add_dart(CMapBase& m)
 	return Dart(i);
 }
 
-inline void remove_dart(CMapBase& m, Dart d)
-{
-	m.boundary_->reset(d.index);
-	m.darts_->release_line(d.index);
-}
-
 inline void set_boundary(CMapBase& m, Dart d, bool b)
 {
+	if (m.boundary_->test(d.index) == b)
+		return;
 	m.boundary_->set_value(d.index, b);
+	if (b)
+		++m.nb_boundary_darts_;
+	else
+		--m.nb_boundary_darts_;
+}
+
+inline void remove_dart(CMapBase& m, Dart d)
+{
+	set_boundary(m, d, false);
+	m.darts_->release_line(d.index);
 }
 
 /// Every change of a relation goes through these: a topological change makes

@@ -21,6 +21,7 @@ struct IntegrityError
 		Phi1Phi3NotInvolution, // phi3 o phi1 is not an involution (3-maps)
 		BoundaryLinked,        // phi_n links two boundary darts
 		BoundaryMarkNotConstant, // a boundary cell is only partly marked
+		BoundaryCountWrong,    // the map's count of boundary darts is not the number of marked darts
 		IndexNotConstant,      // two darts of one orbit have different indices
 		MissingIndex,          // a cell of an indexed orbit has no index
 		BoundaryCellIndexed,   // a boundary cell has an index

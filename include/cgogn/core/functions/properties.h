@@ -69,9 +69,19 @@ inline uint32 codegree(const CMap3& m, CMap3::Volume w)
 
 // ---- boundary
 
-/// True when vertex v touches a boundary face. O(degree).
+/// True when the map has boundary cells (an open surface, a volume mesh with
+/// an outside). O(1): the map counts its boundary darts.
+inline bool has_boundary(const CMapBase& m)
+{
+	return m.nb_boundary_darts_ != 0;
+}
+
+/// True when vertex v touches a boundary face. O(1) on a map without
+/// boundary, else O(degree).
 inline bool is_incident_to_boundary(const CMap2& m, CMap2::Vertex v)
 {
+	if (!has_boundary(m))
+		return false;
 	bool b = false;
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return !(b = is_boundary(m, d)); });
 	return b;
@@ -88,9 +98,12 @@ inline bool is_incident_to_boundary(const CMap2& m, CMap2::Face f)
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return !(b = is_boundary(m, phi2(m, d))); });
 	return b;
 }
-/// True when vertex v touches a boundary volume. O(size of the vertex orbit).
+/// True when vertex v touches a boundary volume. O(1) on a map without
+/// boundary, else O(size of the vertex orbit).
 inline bool is_incident_to_boundary(const CMap3& m, CMap3::Vertex v)
 {
+	if (!has_boundary(m))
+		return false;
 	bool b = false;
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return !(b = is_boundary(m, d)); });
 	return b;

@@ -48,6 +48,10 @@ public:
 	/// phi1, phi2, ... phin in this order.
 	std::vector<Attribute<uint32>*> relations_;
 	MarkAttribute* boundary_ = nullptr;
+	/// Number of live darts carrying the boundary mark (kept by
+	/// detail::set_boundary and remove_dart): a map without boundary answers
+	/// is_incident_to_boundary in O(1).
+	uint32 nb_boundary_darts_ = 0;
 	/// Quick incidence caches (see IncidenceCache); empty unless enabled.
 	std::vector<std::unique_ptr<IncidenceTable>> incidence_tables_;
 
