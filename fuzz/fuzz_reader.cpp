@@ -33,33 +33,33 @@ enum Kind
 	TETGEN
 };
 
-detail::MeshData parse(std::string_view in, const std::string& path)
+io::detail::MeshData parse(std::string_view in, const std::string& path)
 {
 	switch (CGOGN_FUZZ_FORMAT)
 	{
 	case OFF:
-		return detail::read_off(in, path);
+		return io::detail::read_off(in, path);
 	case OBJ:
-		return detail::read_obj(in, path);
+		return io::detail::read_obj(in, path);
 	case PLY:
-		return detail::read_ply(in, path);
+		return io::detail::read_ply(in, path);
 	case STL:
-		return detail::read_stl(in, path);
+		return io::detail::read_stl(in, path);
 	case MEDIT:
-		return detail::read_medit(in, path);
+		return io::detail::read_medit(in, path);
 	case VTK:
-		return detail::read_vtk(in, path);
+		return io::detail::read_vtk(in, path);
 	case VTU:
-		return detail::read_vtu(in, path);
+		return io::detail::read_vtu(in, path);
 	case GMSH:
-		return detail::read_gmsh(in, path);
+		return io::detail::read_gmsh(in, path);
 	default:
 	{
 		// the .node and .ele contents, separated by the first NUL byte
 		const std::size_t sep = in.find('\0');
 		const std::string_view node = in.substr(0, sep);
 		const std::string_view ele = sep == std::string_view::npos ? std::string_view() : in.substr(sep + 1);
-		return detail::read_tetgen(node, path + ".node", ele, path + ".ele");
+		return io::detail::read_tetgen(node, path + ".node", ele, path + ".ele");
 	}
 	}
 }
@@ -70,11 +70,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
 	const std::string path = "fuzz-input";
 	const std::string_view in(reinterpret_cast<const char*>(data), size);
-	detail::MeshData d;
+	io::detail::MeshData d;
 	try
 	{
 		d = parse(in, path);
-		detail::validate(d, path);
+		io::detail::validate(d, path);
 	}
 	catch (const io::Error&)
 	{
@@ -85,16 +85,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	{
 		if (volume)
 		{
-			detail::orient_cells(d);
+			io::detail::orient_cells(d);
 			CMap3 m;
-			detail::build_map(m, d, path);
+			io::detail::build_map(m, d, path);
 			if (!check_integrity(m).ok())
 				std::abort();
 		}
 		else
 		{
 			CMap2 m;
-			detail::build_map(m, d, path);
+			io::detail::build_map(m, d, path);
 			if (!check_integrity(m).ok())
 				std::abort();
 		}

@@ -1,0 +1,363 @@
+// SPDX-License-Identifier: MIT
+// Which dart layout makes the vertex walk fast: the surface suite's smoothing
+// (one Gauss-Seidel pass, boundary vertices skipped) over the same map and
+// the same positions, with the relations stored five ways:
+//   soa          one plain array per relation (phi1, phi2, vertex index) and a
+//                boundary bit array: the limit for this walk
+//   aos16        one 16-byte record per dart {phi1, phi2, vertex, face}
+//   block_table  the plain arrays reached through a table of 4096-element
+//                blocks (cgogn's storage before LineStorage)
+//   range_check  the plain arrays behind a `i < size ? base[i] : block(i)`
+//                test (LineStorage's access)
+//   cgogn        the library's accessors and traversal (bench_suite's
+//                surface/smoothing/cgogn)
+// Same input as bench_suite (--input=data|generated|small); the numbers are
+// in bench/README.md.
+#include "harness.h"
+#include "inputs.h"
+
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <vector>
+
+using namespace cgogn;
+using Vertex = CMap2::Vertex;
+using Face = CMap2::Face;
+
+namespace
+{
+
+constexpr uint32 BLOCK_SHIFT = 12, BLOCK_MASK = (1u << BLOCK_SHIFT) - 1u;
+
+struct Layouts
+{
+	CMap2 map;
+	std::shared_ptr<Attribute<Vec3>> position;
+	uint32 nb_vertices = 0;
+	std::vector<uint32> vertex_dart; // INVALID_INDEX for free lines
+	std::vector<Vec3> initial;       // per vertex line
+	// soa
+	std::vector<uint32> phi1, phi2, vertex;
+	std::vector<uint64> boundary_bits;
+	std::vector<Vec3> pos;
+	// aos16
+	struct Record
+	{
+		uint32 phi1, phi2, vertex, face;
+	};
+	std::vector<Record> records;
+	// block_table: block pointers into the soa arrays
+	std::vector<uint32*> phi1_blocks, phi2_blocks, vertex_blocks;
+	std::vector<uint64*> boundary_blocks;
+	std::vector<Vec3*> pos_blocks;
+
+	Layouts()
+	{
+		const SurfaceSoup& s = cgogn_bench::surface_soup();
+		const uint32 offset = build_surface(map, s).vertex_offset;
+		position = add_attribute<Vec3, Vertex>(map, "position");
+		add_attribute<Vec3, Face>(map, "normal"); // indexes faces, as the suite's map
+		for (uint32 i = 0; i < s.nb_vertices; ++i)
+			(*position)[offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+		const uint32 nd = map.darts_->end_index();
+		const Attribute<uint32>& vidx = *map.cell_index_[orbit_index(Orbit::PHI21)];
+		const Attribute<uint32>& fidx = *map.cell_index_[orbit_index(Orbit::PHI1)];
+		phi1.resize(nd);
+		phi2.resize(nd);
+		vertex.resize(nd);
+		boundary_bits.assign(nd / 64 + 1 + 64, 0);
+		records.resize(nd);
+		for (uint32 d = 0; d < nd; ++d)
+		{
+			phi1[d] = (*map.phi1_)[d];
+			phi2[d] = (*map.phi2_)[d];
+			vertex[d] = vidx[d];
+			if (is_boundary(map, Dart(d)))
+				boundary_bits[d >> 6] |= uint64(1) << (d & 63u);
+			records[d] = {phi1[d], phi2[d], vertex[d], fidx[d]};
+		}
+		const AttributeContainer& vertices = *map.cells_[orbit_index(Orbit::PHI21)];
+		nb_vertices = vertices.end_index();
+		vertex_dart.resize(nb_vertices);
+		initial.resize(nb_vertices);
+		for (uint32 v = 0; v < nb_vertices; ++v)
+		{
+			vertex_dart[v] = vertices.key()[v];
+			initial[v] = (*position)[v];
+		}
+		pos = initial;
+		for (uint32 b = 0; (b << BLOCK_SHIFT) < nd; ++b)
+		{
+			phi1_blocks.push_back(phi1.data() + (b << BLOCK_SHIFT));
+			phi2_blocks.push_back(phi2.data() + (b << BLOCK_SHIFT));
+			vertex_blocks.push_back(vertex.data() + (b << BLOCK_SHIFT));
+			boundary_blocks.push_back(boundary_bits.data() + (b << (BLOCK_SHIFT - 6)));
+		}
+		for (uint32 b = 0; (b << BLOCK_SHIFT) < nb_vertices; ++b)
+			pos_blocks.push_back(pos.data() + (b << BLOCK_SHIFT));
+	}
+
+	// The same walk for every layout: ACCESS gives (boundary?, phi2, vertex,
+	// phi1, position) for darts and vertex lines.
+	template <typename A>
+	void smooth(const A& access)
+	{
+		for (uint32 v = 0; v < nb_vertices; ++v)
+		{
+			const uint32 d = vertex_dart[v];
+			if (d == INVALID_INDEX)
+				continue;
+			Vec3 sum = Vec3::Zero();
+			uint32 n = 0, it = d;
+			bool inner = true;
+			do
+			{
+				if (access.boundary(it))
+				{
+					inner = false;
+					break;
+				}
+				const uint32 e = access.phi2(it);
+				sum += access.pos(access.vertex(e));
+				++n;
+				it = access.phi1(e);
+			} while (it != d);
+			if (inner)
+				access.pos(v) = sum / double(n);
+		}
+	}
+};
+
+Layouts& layouts()
+{
+	static Layouts l;
+	return l;
+}
+
+struct Soa
+{
+	Layouts& l;
+	bool boundary(uint32 d) const
+	{
+		return (l.boundary_bits[d >> 6] >> (d & 63u)) & 1u;
+	}
+	uint32 phi1(uint32 d) const
+	{
+		return l.phi1[d];
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return l.phi2[d];
+	}
+	uint32 vertex(uint32 d) const
+	{
+		return l.vertex[d];
+	}
+	Vec3& pos(uint32 v) const
+	{
+		return l.pos[v];
+	}
+};
+
+struct Aos16 : Soa
+{
+	uint32 phi1(uint32 d) const
+	{
+		return l.records[d].phi1;
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return l.records[d].phi2;
+	}
+	uint32 vertex(uint32 d) const
+	{
+		return l.records[d].vertex;
+	}
+};
+
+struct BlockTable
+{
+	Layouts& l;
+	bool boundary(uint32 d) const
+	{
+		return (l.boundary_blocks[d >> BLOCK_SHIFT][(d & BLOCK_MASK) >> 6] >> (d & 63u)) & 1u;
+	}
+	uint32 phi1(uint32 d) const
+	{
+		return l.phi1_blocks[d >> BLOCK_SHIFT][d & BLOCK_MASK];
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return l.phi2_blocks[d >> BLOCK_SHIFT][d & BLOCK_MASK];
+	}
+	uint32 vertex(uint32 d) const
+	{
+		return l.vertex_blocks[d >> BLOCK_SHIFT][d & BLOCK_MASK];
+	}
+	Vec3& pos(uint32 v) const
+	{
+		return l.pos_blocks[v >> BLOCK_SHIFT][v & BLOCK_MASK];
+	}
+};
+
+// An array whose elements past `limit` would live in blocks (never here: the
+// limit is out of reach but unknown to the compiler, as in LineStorage)
+template <typename T>
+struct Checked
+{
+	T* base;
+	uint32 limit;
+	[[gnu::noinline]] T& in_block(uint32) const
+	{
+		std::abort();
+	}
+	T& operator[](uint32 i) const
+	{
+		if (i < limit) [[likely]]
+			return base[i];
+		return in_block(i);
+	}
+};
+
+struct RangeCheck
+{
+	Checked<uint32> phi1_, phi2_, vertex_;
+	Checked<uint64> bits_;
+	Checked<Vec3> pos_;
+	bool boundary(uint32 d) const
+	{
+		return (bits_[d >> 6] >> (d & 63u)) & 1u;
+	}
+	uint32 phi1(uint32 d) const
+	{
+		return phi1_[d];
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return phi2_[d];
+	}
+	uint32 vertex(uint32 d) const
+	{
+		return vertex_[d];
+	}
+	Vec3& pos(uint32 v) const
+	{
+		return pos_[v];
+	}
+};
+
+volatile uint32 far_limit = 0xF0000000u;
+
+template <typename F>
+void run(benchmark::State& state, Layouts& l, F&& pass, std::vector<Vec3>& positions)
+{
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		positions = l.initial;
+		state.ResumeTiming();
+		pass();
+	}
+	double check = 0;
+	for (const Vec3& p : positions)
+		check += p.sum();
+	state.counters["check"] = check;
+}
+
+void soa(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(Soa{l}); }, l.pos);
+}
+void aos16(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(Aos16{{l}}); }, l.pos);
+}
+void block_table(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(BlockTable{l}); }, l.pos);
+}
+void range_check(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	const uint32 lim = far_limit;
+	run(
+		state, l,
+		[&] {
+			l.smooth(RangeCheck{{l.phi1.data(), lim}, {l.phi2.data(), lim}, {l.vertex.data(), lim},
+								{l.boundary_bits.data(), lim}, {l.pos.data(), lim}});
+		},
+		l.pos);
+}
+void cgogn_library(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	const CMap2& m = l.map;
+	Attribute<Vec3>& pos = *l.position;
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		for (uint32 v = 0; v < l.nb_vertices; ++v)
+			pos[v] = l.initial[v];
+		state.ResumeTiming();
+		foreach_cell(m, [&](Located<Vertex> v) {
+			Vec3 s = Vec3::Zero();
+			uint32 n = 0;
+			const bool inner = foreach_dart_of_orbit(m, v, [&](Dart d) {
+				if (is_boundary(m, d))
+					return false;
+				s += value<Vec3>(m, pos, Vertex(phi2(m, d)));
+				++n;
+				return true;
+			});
+			if (inner)
+				value<Vec3>(m, pos, v) = s / double(n);
+		});
+	}
+	double check = 0;
+	for (const Vec3& p : pos)
+		check += p.sum();
+	state.counters["check"] = check;
+}
+
+} // namespace
+
+BENCHMARK(soa)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(aos16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(block_table)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(range_check)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(cgogn_library)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+int main(int argc, char** argv)
+{
+	std::vector<char*> args;
+	try
+	{
+		for (int i = 0; i < argc; ++i)
+			if (std::strncmp(argv[i], "--input=", 8) == 0)
+				cgogn_bench::set_input(argv[i] + 8);
+			else
+				args.push_back(argv[i]);
+	}
+	catch (const std::exception& e)
+	{
+		std::fprintf(stderr, "bench_dart_layout: %s\n", e.what());
+		return 2;
+	}
+	int n = int(args.size());
+	benchmark::Initialize(&n, args.data());
+	if (benchmark::ReportUnrecognizedArguments(n, args.data()))
+		return 1;
+	benchmark::RunSpecifiedBenchmarks();
+	benchmark::Shutdown();
+	return 0;
+}
