@@ -260,3 +260,30 @@ TEST(Traversals2D, TrianglesOfASphere)
 	EXPECT_EQ(vv_face, 2u * E); // triangles: the neighbours through faces are the edge neighbours
 	EXPECT_EQ(int64(nb_cells<Vertex>(m)) - E + nb_cells<Face>(m), 2);
 }
+
+// Faces around a vertex on a closed map (no boundary bit read) and on the
+// same map once a face is removed (the boundary face is skipped): every
+// vertex-face incidence once, from both sides.
+TEST(Traversals2D, IncidentFacesOfVerticesClosedAndOpen)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(6, 5, true));
+	auto incidences = [&] {
+		uint32 from_vertices = 0, from_faces = 0;
+		foreach_cell(m, [&](Vertex v) { foreach_incident_face(m, v, [&](Face) { ++from_vertices; }); });
+		foreach_cell(m, [&](Face f) { from_faces += codegree(m, f); });
+		EXPECT_EQ(from_vertices, from_faces);
+		return from_vertices;
+	};
+	ASSERT_FALSE(has_boundary(m));
+	EXPECT_EQ(incidences(), 3u * 60u);
+	Face first;
+	foreach_cell(m, [&](Face f) {
+		first = f;
+		return false;
+	});
+	remove_face(m, first);
+	ASSERT_TRUE(has_boundary(m));
+	EXPECT_EQ(incidences(), 3u * 59u);
+	EXPECT_TRUE(check_integrity(m).ok());
+}

@@ -77,6 +77,13 @@ CGOGN_INLINE bool is_boundary(const CMapBase& m, Dart d)
 	return m.boundary_->test(d.index);
 }
 
+/// True when the map has boundary cells (an open surface, a volume mesh with
+/// an outside). O(1): the map counts its boundary darts.
+CGOGN_INLINE bool has_boundary(const CMapBase& m)
+{
+	return m.nb_boundary_darts_ != 0;
+}
+
 /// True when d is a live dart of m. O(1).
 inline bool is_dart_valid(const CMapBase& m, Dart d)
 {

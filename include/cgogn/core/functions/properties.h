@@ -69,13 +69,6 @@ inline uint32 codegree(const CMap3& m, CMap3::Volume w)
 
 // ---- boundary
 
-/// True when the map has boundary cells (an open surface, a volume mesh with
-/// an outside). O(1): the map counts its boundary darts.
-inline bool has_boundary(const CMapBase& m)
-{
-	return m.nb_boundary_darts_ != 0;
-}
-
 /// True when vertex v touches a boundary face. O(1) on a map without
 /// boundary, else O(degree).
 inline bool is_incident_to_boundary(const CMap2& m, CMap2::Vertex v)

@@ -28,7 +28,10 @@ void foreach_incident_face(const CMap2& m, CellParam<CMap2::Vertex> v, const FUN
 {
 	if (detail::foreach_cached<CMap2::Face, void>(m, v, f))
 		return;
-	foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, CMap2::Face(d)); });
+	if (!has_boundary(m)) // a closed map: no boundary bit to read per dart
+		foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, CMap2::Face(d)); });
+	else
+		foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, CMap2::Face(d)); });
 }
 
 /// The connected component of vertex v.
