@@ -342,11 +342,7 @@ int main(int argc, char** argv)
 	std::vector<char*> args;
 	try
 	{
-		for (int i = 0; i < argc; ++i)
-			if (std::strncmp(argv[i], "--input=", 8) == 0)
-				cgogn_bench::set_input(argv[i] + 8);
-			else
-				args.push_back(argv[i]);
+		args = cgogn_bench::take_input_options(argc, argv);
 	}
 	catch (const std::exception& e)
 	{

@@ -7,6 +7,8 @@
 #include <cgogn/io/volume.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <numeric>
 #include <random>
@@ -296,6 +298,23 @@ void orient_tets_positive(cgogn::VolumeSoup& s)
 		}
 		k += n;
 	}
+}
+
+std::vector<char*> take_input_options(int argc, char** argv)
+{
+	std::vector<char*> rest;
+	for (int i = 0; i < argc; ++i)
+	{
+		if (std::strncmp(argv[i], "--input=", 8) == 0)
+			set_input(argv[i] + 8);
+		else if (std::strcmp(argv[i], "--reorder") == 0)
+			set_reorder(true);
+		else if (std::strncmp(argv[i], "--permute=", 10) == 0)
+			set_permutation_seed(uint32_t(std::strtoul(argv[i] + 10, nullptr, 10)));
+		else
+			rest.push_back(argv[i]);
+	}
+	return rest;
 }
 
 } // namespace cgogn_bench

@@ -16,6 +16,7 @@
 #include <cgogn/core/builder/generators.h>
 
 #include <string>
+#include <vector>
 
 namespace cgogn_bench
 {
@@ -29,6 +30,11 @@ void set_permutation_seed(uint32_t seed);
 /// --reorder: cgogn's maps are reordered after building (core reorder() with
 /// Morton keys, see cgogn_reorder.h); the peers are not affected.
 void set_reorder(bool on);
+
+/// Applies the input options of the benchmark programs (--input=,
+/// --reorder, --permute=) and returns the other arguments, argv[0] first,
+/// for benchmark::Initialize. Throws std::runtime_error on a bad value.
+std::vector<char*> take_input_options(int argc, char** argv);
 bool reorder_requested();
 /// Returns s with vertex ids and face order permuted (same mesh).
 cgogn::SurfaceSoup permute_soup(const cgogn::SurfaceSoup& s, uint32_t seed);
