@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
+#include <iterator>
 #include <set>
 #include <thread>
+#include <utility>
 #include <vector>
 
 using namespace cgogn;
@@ -112,6 +115,29 @@ TEST_P(AttributeContainerLayout, RangeForVisitsLiveLinesAcrossChunksInLineOrder)
 		if (c.is_live(i))
 			c.release_line(i);
 	EXPECT_EQ(a->begin(), a->end());
+}
+
+TEST_P(AttributeContainerLayout, RangeForStopsAtTheLastLineWhenItEndsAChunk)
+{
+	// the walk steps with a pointer through runs of consecutive values; when
+	// the last line ends a chunk (and a block), end() must still be where it stops
+	AttributeContainer c("key", GetParam());
+	auto a = c.add_attribute<std::array<double, 3>>("a");
+	EXPECT_EQ(a->begin(), a->end()); // no line yet
+	const uint32 n = 2 * CHUNK_SIZE;
+	for (uint32 i = 0; i < n; ++i)
+		(*a)[c.new_line(0)] = {double(i), 1.0, 0.0};
+	auto count_and_sum = [&]() {
+		std::pair<uint32, double> r{0, 0.0};
+		for (const auto& v : std::as_const(*a))
+			++r.first, r.second += v[0] * v[1];
+		return r;
+	};
+	EXPECT_EQ(count_and_sum(), std::make_pair(n, double(n) * double(n - 1) / 2));
+	c.release_line(n - 1);
+	c.release_line(CHUNK_SIZE);
+	EXPECT_EQ(count_and_sum(), std::make_pair(n - 2, double(n) * double(n - 1) / 2 - (n - 1) - CHUNK_SIZE));
+	EXPECT_EQ(std::next(a->begin(), n - 2), a->end());
 }
 
 TEST(AttributeContainer, AttributesByNameAndType)

@@ -89,6 +89,13 @@ public:
 		return values_[i];
 	}
 
+	/// One past the last line of the run of lines whose values are at
+	/// consecutive addresses from line i's (see LineStorage::run_end).
+	uint32 run_end(uint32 i) const
+	{
+		return values_.run_end(i);
+	}
+
 	/// The value given to lines when they are created.
 	const T& default_value() const
 	{

@@ -386,10 +386,13 @@ std::shared_ptr<AttributeBase> Attribute<T>::clone_empty(AttributeContainer& to)
 	return to.add_attribute<T>(name_, default_value_);
 }
 
-/// Iterates the values of the live lines of an attribute. It walks the chunks
-/// with pointers (one chunk-table lookup per 4096 lines) and reads the key
-/// only when the container has free lines, so that a range-for over a dense
-/// attribute costs what a loop over a plain array does.
+/// Iterates the values of the live lines of an attribute. It steps with a
+/// pointer through each run of lines whose values are at consecutive addresses
+/// (one run below 2 GiB of values, then one per block, see LineStorage) and
+/// reads the key only when the container has free lines, so that a range-for
+/// over a dense attribute costs what a loop over a plain array does: one
+/// increment and two pointer compares per value. Iterators compare by the
+/// address of their value; end() is one past the last line's value.
 template <typename T>
 template <bool IS_CONST>
 class Attribute<T>::basic_iterator
@@ -405,36 +408,39 @@ public:
 
 	basic_iterator() = default;
 	/// Positioned at line i (live, or end) of an attribute iterated up to line end.
-	basic_iterator(Attr* a, uint32 i, uint32 end) : attr_(a), index_(i), end_(end)
+	CGOGN_INLINE basic_iterator(Attr* a, uint32 i, uint32 end) : attr_(a), end_(end)
 	{
 		if (a->container() != nullptr)
 		{
 			key_ = &a->container()->key();
 			check_live_ = !a->container()->free_lines().empty();
 		}
-		point_at_line();
+		if (i < end)
+		{
+			enter_run(i);
+			if (check_live_)
+				skip_free_lines();
+		}
+		else if (end > 0)
+		{
+			// where the walk over the last run stops
+			run_first_line_ = end;
+			run_first_value_ = value_ = run_end_ = &(*a)[end - 1] + 1;
+		}
 	}
-	Value& operator*() const
+	CGOGN_INLINE Value& operator*() const
 	{
 		return *value_;
 	}
-	Value* operator->() const
+	CGOGN_INLINE Value* operator->() const
 	{
 		return value_;
 	}
-	basic_iterator& operator++()
+	CGOGN_INLINE basic_iterator& operator++()
 	{
-		do
-		{
-			++index_;
-			if ((index_ & CHUNK_MASK) == 0)
-				point_at_line(); // next chunk
-			else
-			{
-				++value_;
-				++live_;
-			}
-		} while (check_live_ && index_ < end_ && *live_ == INVALID_INDEX);
+		step();
+		if (check_live_) [[unlikely]]
+			skip_free_lines();
 		return *this;
 	}
 	basic_iterator operator++(int)
@@ -443,32 +449,51 @@ public:
 		++*this;
 		return t;
 	}
-	bool operator==(const basic_iterator& o) const
+	CGOGN_INLINE bool operator==(const basic_iterator& o) const
 	{
-		return index_ == o.index_;
+		return value_ == o.value_;
 	}
 	/// The line of the current value.
 	uint32 index() const
 	{
-		return index_;
+		return run_first_line_ + uint32(value_ - run_first_value_);
 	}
 
 private:
-	void point_at_line()
+	CGOGN_INLINE void step()
 	{
-		if (index_ >= end_)
-			return;
-		value_ = &(*attr_)[index_];
-		live_ = &(*key_)[index_];
+		if (++value_ == run_end_) [[unlikely]]
+			next_run();
+	}
+	CGOGN_INLINE void next_run()
+	{
+		const uint32 i = index();
+		if (i < end_)
+			enter_run(i);
+		// else: value_ is one past the last line's value, as end()'s
+	}
+	CGOGN_INLINE void enter_run(uint32 i)
+	{
+		run_first_line_ = i;
+		run_first_value_ = value_ = &(*attr_)[i];
+		const uint32 run_end = std::min(end_, attr_->run_end(i));
+		run_end_ = value_ + (run_end - i);
+	}
+	void skip_free_lines()
+	{
+		while (index() < end_ && (*key_)[index()] == INVALID_INDEX)
+			step();
 	}
 
 	Attr* attr_ = nullptr;
 	const Attribute<uint32>* key_ = nullptr;
-	uint32 index_ = 0;
 	uint32 end_ = 0;
 	bool check_live_ = false;
 	Value* value_ = nullptr;
-	const uint32* live_ = nullptr;
+	/// The current run: its first line, that line's value, one past its last value.
+	uint32 run_first_line_ = 0;
+	Value* run_first_value_ = nullptr;
+	Value* run_end_ = nullptr;
 };
 
 // A removed attribute (no container) iterates over nothing.

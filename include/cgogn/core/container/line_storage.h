@@ -93,6 +93,17 @@ public:
 		return const_cast<LineStorage*>(this)->in_block(i);
 	}
 
+	/// One past the last element of the run of consecutive addresses that holds
+	/// element i (i < size()): &(*this)[i] + k is element i + k for every
+	/// i + k < run_end(i). Lets a walk over the elements step with a pointer.
+	uint32 run_end(uint32 i) const
+	{
+		assert(i < size_);
+		if (i < contiguous_)
+			return contiguous_;
+		return contiguous_ + ((i - contiguous_) / BLOCK_SIZE + 1) * BLOCK_SIZE;
+	}
+
 	/// Number of elements (a multiple of BLOCK_SIZE).
 	uint32 size() const
 	{
