@@ -10,6 +10,7 @@
 #endif
 
 #include <atomic>
+#include <cstdint>
 
 namespace cgogn
 {
@@ -33,10 +34,34 @@ void* reserve_address_space(std::size_t bytes)
 {
 	if (bytes == 0)
 		return nullptr;
+	// Each range starts 37 pages further, modulo 2 MiB, than the previous one.
+	// Why: the storages of a map are walked together at nearby lines (phi2 of
+	// d, the vertex line at phi2(d), phi1, the position), and equal-sized
+	// reservations placed next to each other start at exact multiples of 1 GiB
+	// apart, so line i of every storage has the same address bits 12-29. On an
+	// AMD EPYC that made the library's vertex walk (bench_dart_layout) 203 ms
+	// against 147 ms with staggered starts; plain arrays in such aligned
+	// reservations took 136-172 ms against 101-109 ms staggered.
+	static std::atomic<uint32> reservations{0};
+	const std::size_t page = page_size();
+	const std::size_t span = 512 * page;
+	const std::size_t shift = std::size_t(reservations.fetch_add(1, std::memory_order_relaxed) * 37u % 512u) * page;
+	const std::size_t mapped = bytes + 2 * span;
 	// PROT_NONE + MAP_NORESERVE: address space only, nothing counted against
 	// the memory of the process until commit_pages
-	void* p = mmap(nullptr, bytes, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
-	return p == MAP_FAILED ? nullptr : p;
+	void* m = mmap(nullptr, mapped, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+	if (m == MAP_FAILED)
+		return nullptr;
+	char* const raw = static_cast<char*>(m);
+	const std::uintptr_t aligned = (reinterpret_cast<std::uintptr_t>(raw) + span - 1) / span * span;
+	char* const p = raw + (aligned - reinterpret_cast<std::uintptr_t>(raw)) + shift;
+	// keep exactly [p, p + bytes) reserved
+	if (p > raw)
+		munmap(raw, std::size_t(p - raw));
+	char* const tail = p + bytes;
+	if (tail < raw + mapped)
+		munmap(tail, std::size_t(raw + mapped - tail));
+	return p;
 }
 
 void commit_pages(void* p, std::size_t bytes)

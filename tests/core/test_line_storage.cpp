@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -109,4 +111,35 @@ TEST(LineStorage, CommittedPagesAreCountedUntilGivenBack)
 		EXPECT_EQ(committed_storage_bytes(), before + 4096 * sizeof(double));
 	}
 	EXPECT_EQ(committed_storage_bytes(), before);
+}
+
+TEST(LineStorage, ReservedRangesStartAtStaggeredOffsets)
+{
+	// storages walked together must not start at the same offset modulo a
+	// large power of two (see reserve_address_space); each range is usable
+	// over its whole length
+	const std::size_t page = detail::page_size();
+	const std::size_t bytes = 64 * page;
+	std::vector<char*> ranges;
+	for (int i = 0; i < 8; ++i)
+	{
+		char* p = static_cast<char*>(detail::reserve_address_space(bytes));
+		ASSERT_NE(p, nullptr);
+		ASSERT_EQ(reinterpret_cast<std::uintptr_t>(p) % page, 0u);
+		detail::commit_pages(p, bytes);
+		p[0] = 1;
+		p[bytes - 1] = 2;
+		EXPECT_EQ(p[0] + p[bytes - 1], 3);
+		ranges.push_back(p);
+	}
+	const std::uintptr_t two_mib = 512 * page;
+	std::set<std::uintptr_t> offsets;
+	for (char* p : ranges)
+		offsets.insert(reinterpret_cast<std::uintptr_t>(p) % two_mib);
+	EXPECT_EQ(offsets.size(), ranges.size());
+	for (char* p : ranges)
+	{
+		detail::decommit_pages(p, bytes);
+		detail::release_address_space(p, bytes);
+	}
 }
