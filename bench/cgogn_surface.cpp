@@ -171,7 +171,7 @@ void normal(benchmark::State& state, bool first, Mode mode)
 			});
 			foreach_cell(m, [&](Located<Vertex> v) {
 				Vec3 n = Vec3::Zero();
-				// `auto`: a cached traversal gives LocatedCell, read without index lookup
+				// `auto`: the face comes with its line (LocatedCell), read without index lookup
 				foreach_incident_face(m, v, [&](auto f) { n += value<Vec3>(m, fn, f); });
 				value<Vec3>(m, vn, v) = n.normalized();
 			});
@@ -243,7 +243,8 @@ void smoothing(benchmark::State& state, bool first)
 					return;
 				Vec3 s = Vec3::Zero();
 				uint32 n = 0;
-				foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+				// `auto`: the neighbour comes with its line, read without index lookup
+				foreach_adjacent_vertex_through_edge(m, v, [&](auto w) {
 					s += value<Vec3>(m, pos, w);
 					++n;
 				});

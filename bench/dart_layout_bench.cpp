@@ -9,6 +9,12 @@
 //                blocks (cgogn's storage before LineStorage)
 //   range_check  the plain arrays behind a `i < size ? base[i] : block(i)`
 //                test (LineStorage's access)
+//   lib_memory   the range_check walk over the library's own storages (the
+//                map's phi1, phi2, vertex index and positions) through
+//                pointers held in locals: where the values live
+//   lib_access   the same walk through the library's accessors (phi1(m, d),
+//                phi2(m, d), is_boundary, the index attribute, value):
+//                how the compiler handles them in a loop
 //   cgogn        the library's accessors and traversal (bench_suite's
 //                surface/smoothing/cgogn)
 // Same input as bench_suite (--input=data|generated|small); the numbers are
@@ -253,6 +259,33 @@ struct RangeCheck
 	}
 };
 
+struct LibAccess
+{
+	const CMap2& m;
+	Attribute<Vec3>& p;
+	const Attribute<uint32>& vidx;
+	bool boundary(uint32 d) const
+	{
+		return is_boundary(m, Dart(d));
+	}
+	uint32 phi1(uint32 d) const
+	{
+		return cgogn::phi1(m, Dart(d)).index;
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return cgogn::phi2(m, Dart(d)).index;
+	}
+	uint32 vertex(uint32 d) const
+	{
+		return vidx[d];
+	}
+	Vec3& pos(uint32 v) const
+	{
+		return p[v];
+	}
+};
+
 volatile uint32 far_limit = 0xF0000000u;
 
 template <typename F>
@@ -298,6 +331,44 @@ void range_check(benchmark::State& state)
 		},
 		l.pos);
 }
+void lib_access(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	const CMap2& m = l.map;
+	Attribute<Vec3>& pos = *l.position;
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		for (uint32 v = 0; v < l.nb_vertices; ++v)
+			pos[v] = l.initial[v];
+		state.ResumeTiming();
+		l.smooth(LibAccess{m, pos, *m.cell_index_[orbit_index(Orbit::PHI21)]});
+	}
+	double check = 0;
+	for (const Vec3& p : pos)
+		check += p.sum();
+	state.counters["check"] = check;
+}
+void lib_memory(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	const CMap2& m = l.map;
+	Attribute<Vec3>& pos = *l.position;
+	const uint32 lim = far_limit;
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		for (uint32 v = 0; v < l.nb_vertices; ++v)
+			pos[v] = l.initial[v];
+		state.ResumeTiming();
+		l.smooth(RangeCheck{{&(*m.phi1_)[0], lim}, {&(*m.phi2_)[0], lim}, {&(*m.cell_index_[orbit_index(Orbit::PHI21)])[0], lim},
+							{l.boundary_bits.data(), lim}, {&pos[0], lim}});
+	}
+	double check = 0;
+	for (const Vec3& p : pos)
+		check += p.sum();
+	state.counters["check"] = check;
+}
 void cgogn_library(benchmark::State& state)
 {
 	Layouts& l = layouts();
@@ -335,6 +406,8 @@ BENCHMARK(soa)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesO
 BENCHMARK(aos16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(block_table)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(range_check)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(lib_access)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(lib_memory)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(cgogn_library)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
 int main(int argc, char** argv)

@@ -42,6 +42,35 @@ TEST(LineStorage, ElementsKeepTheirAddressAndValueWhileGrowing)
 	}
 }
 
+TEST(LineStorage, ViewsAndRunsReachEveryElement)
+{
+	// in the reserved range, in blocks, and across the border between them
+	for (uint64 contiguous : {uint64(1) << 20, uint64(64), uint64(0)})
+	{
+		Small s(contiguous);
+		s.resize(256, 0);
+		for (uint32 i = 0; i < 256; ++i)
+			s[i] = 3 * i + 1;
+		const Small::View v = s.view();
+		for (uint32 i = 0; i < 256; ++i)
+			ASSERT_EQ(&v[i], &s[i]) << "contiguous " << contiguous << " element " << i;
+		// a run holds consecutive addresses and ends where the next element is elsewhere
+		for (uint32 i = 0; i < 256;)
+		{
+			const uint32 end = s.run_end(i);
+			ASSERT_GT(end, i);
+			ASSERT_LE(end, 256u);
+			for (uint32 k = i; k < end; ++k)
+				ASSERT_EQ(&s[k], &s[i] + (k - i));
+			if (contiguous == 0 || i >= 64)
+				EXPECT_EQ(end - i, Small::BLOCK_SIZE); // one block
+			else
+				EXPECT_EQ(end, contiguous == 64 ? 64u : 256u); // the reserved range
+			i = end;
+		}
+	}
+}
+
 TEST(LineStorage, ShrinkingGivesMemoryBackAndGrowingAgainStartsFromTheValue)
 {
 	for (uint64 contiguous : {uint64(1) << 20, uint64(64), uint64(0)})

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <set>
+#include <vector>
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -286,4 +287,74 @@ TEST(Traversals2D, IncidentFacesOfVerticesClosedAndOpen)
 	ASSERT_TRUE(has_boundary(m));
 	EXPECT_EQ(incidences(), 3u * 59u);
 	EXPECT_TRUE(check_integrity(m).ok());
+}
+
+namespace
+{
+// What `traversal(v, f)` reports from every vertex v: the darts given to a
+// callable taking TO, the darts given to a callable taking `auto` as a
+// LocatedCell (whose line is checked against index_of), and how many cells
+// the latter got without a line.
+struct Reported
+{
+	std::vector<uint32> plain, located;
+	uint32 without_line = 0;
+};
+template <typename TO, typename TRAVERSAL>
+Reported reported(const CMap2& m, const TRAVERSAL& traversal)
+{
+	Reported r;
+	foreach_cell(m, [&](Vertex v) { traversal(v, [&](TO c) { r.plain.push_back(c.dart.index); }); });
+	foreach_cell(m, [&](Vertex v) {
+		traversal(v, [&](auto c) {
+			if constexpr (requires { c.line; })
+			{
+				r.located.push_back(c.dart.index);
+				EXPECT_EQ(c.line, index_of(m, TO(c.dart)));
+			}
+			else
+				++r.without_line;
+		});
+	});
+	return r;
+}
+} // namespace
+
+// Without caches, the traversals around a vertex and of a face give a callable
+// taking `auto` each neighbour with its line (LocatedCell) when the
+// neighbour's orbit is indexed, the plain cell otherwise; the neighbours and
+// their order are those a callable taking the cell type gets.
+TEST(Traversals2D, UncachedTraversalsGiveLinesToAutoCallables)
+{
+	for (bool closed : {true, false})
+	{
+		CMap2 m;
+		build_surface(m, closed ? torus_soup(6, 5, true) : grid_soup(6, 5, true));
+		add_attribute<uint32, Vertex>(m, "v");
+		auto ring = [&](Vertex v, const auto& f) { foreach_adjacent_vertex_through_edge(m, v, f); };
+		auto faces = [&](Vertex v, const auto& f) { foreach_incident_face(m, v, f); };
+		auto corners = [&](Vertex v, const auto& f) {
+			foreach_incident_face(m, v, [&](Face x) { foreach_incident_vertex(m, x, f); });
+		};
+		// vertices indexed: located neighbours, in the plain order
+		const Reported r1 = reported<Vertex>(m, ring);
+		EXPECT_FALSE(r1.plain.empty());
+		EXPECT_EQ(r1.located, r1.plain);
+		EXPECT_EQ(r1.without_line, 0u);
+		// faces not indexed yet: plain faces
+		const Reported r2 = reported<Face>(m, faces);
+		EXPECT_TRUE(r2.located.empty());
+		EXPECT_EQ(r2.without_line, r2.plain.size());
+		// faces indexed: located faces, boundary faces still skipped
+		add_attribute<uint32, Face>(m, "f");
+		const Reported r3 = reported<Face>(m, faces);
+		EXPECT_EQ(r3.plain, r2.plain);
+		EXPECT_EQ(r3.located, r3.plain);
+		EXPECT_EQ(r3.without_line, 0u);
+		// the vertices of each of those faces: three per triangle
+		const Reported r4 = reported<Vertex>(m, corners);
+		EXPECT_EQ(r4.plain.size(), 3 * r3.plain.size());
+		EXPECT_EQ(r4.located, r4.plain);
+		EXPECT_EQ(r4.without_line, 0u);
+	}
 }

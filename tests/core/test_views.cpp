@@ -95,6 +95,28 @@ TEST_F(ViewGrid, FilterRestrictsLocalTraversals)
 	EXPECT_EQ(marked, 14u);
 }
 
+// Traversals that report cells with their lines (an incidence cache, or a
+// callable taking `auto` on an indexed orbit) are filtered as plain ones.
+TEST_F(ViewGrid, FilterAppliesToLocatedNeighbours)
+{
+	CellFilter<CMap2> cf(m);
+	cf.set_filter<Vertex>([&](Vertex v) { return is_incident_to_boundary(m, v); });
+	auto count = [&]() {
+		uint32 as_vertex = 0, as_auto = 0;
+		foreach_cell(m, [&](Vertex v) {
+			foreach_adjacent_vertex_through_edge(cf, v, [&](Vertex) { ++as_vertex; });
+			foreach_adjacent_vertex_through_edge(cf, v, [&](auto) { ++as_auto; });
+		});
+		EXPECT_EQ(as_vertex, as_auto);
+		return as_vertex;
+	};
+	EXPECT_EQ(count(), 14u * 2 + 10); // as in FilterRestrictsLocalTraversals
+	add_attribute<uint32, Vertex>(m, "vertex_id"); // neighbours come with their lines
+	EXPECT_EQ(count(), 14u * 2 + 10);
+	IncidenceCache<CMap2, Vertex, Vertex, Edge>::build(m);
+	EXPECT_EQ(count(), 14u * 2 + 10);
+}
+
 TEST_F(ViewGrid, CacheBuildAddClear)
 {
 	CellCache cache(m); // class template argument deduction, as in the API guide

@@ -89,6 +89,13 @@ public:
 		return values_[i];
 	}
 
+	/// A read-only view of the values for a loop in which the attribute does
+	/// not grow (see LineStorage::View).
+	CGOGN_INLINE typename LineStorage<T, CHUNK_SHIFT>::View view() const
+	{
+		return values_.view();
+	}
+
 	/// One past the last line of the run of lines whose values are at
 	/// consecutive addresses from line i's (see LineStorage::run_end).
 	uint32 run_end(uint32 i) const

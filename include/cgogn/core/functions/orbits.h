@@ -136,12 +136,13 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 		return call_and_continue(f, d);
 	else if constexpr (O == Orbit::PHI1)
 	{
+		const auto phi1_of = m.phi1_->view(); // see LineStorage::View
 		Dart it = d;
 		do
 		{
 			if (!call_and_continue(f, it))
 				return false;
-			it = phi1(m, it);
+			it = Dart(phi1_of[it.index]);
 		} while (it != d);
 		return true;
 	}
@@ -153,12 +154,15 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 	else if constexpr (O == Orbit::PHI21)
 	{
 		static_assert(MAP::dimension >= 2);
+		// relations read through views held in locals (see LineStorage::View)
+		const auto phi1_of = m.phi1_->view();
+		const auto phi2_of = m.phi2_->view();
 		Dart it = d;
 		do
 		{
 			if (!call_and_continue(f, it))
 				return false;
-			it = phi1(m, phi2(m, it));
+			it = Dart(phi1_of[phi2_of[it.index]]);
 		} while (it != d);
 		return true;
 	}

@@ -85,4 +85,25 @@ CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 	return true;
 }
 
+/// The uncached form of the hook: `walk(report)` calls report(Dart e) on the
+/// darts of the neighbours, and f receives each as a LocatedCell<TO> (the
+/// cell and its line) when TO's orbit is indexed, as TO otherwise. The line is
+/// read here through a view of the index held in a local (LineStorage::View),
+/// so a callable taking `auto` reads its attributes with value(m, attr, c)
+/// without the index lookup, whose storage the compiler would otherwise load
+/// again at every neighbour; a callable taking TO drops the line and the
+/// compiler the read.
+template <typename TO, typename WALK, typename FUNC>
+CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const FUNC& f)
+{
+	const Attribute<uint32>* index = m.cell_index_[orbit_index(TO::ORBIT)];
+	if (index == nullptr)
+	{
+		walk([&](Dart e) { return call_and_continue(f, TO(e)); });
+		return;
+	}
+	const auto line_of = index->view();
+	walk([&](Dart e) { return call_and_continue(f, LocatedCell<TO::ORBIT>(e, line_of[e.index])); });
+}
+
 } // namespace cgogn::detail

@@ -29,9 +29,13 @@ void foreach_incident_face(const CMap2& m, CellParam<CMap2::Vertex> v, const FUN
 	if (detail::foreach_cached<CMap2::Face, void>(m, v, f))
 		return;
 	if (!has_boundary(m)) // a closed map: no boundary bit to read per dart
-		foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, CMap2::Face(d)); });
+		detail::report_with_lines<CMap2::Face>(
+			m, [&](const auto& report) { foreach_dart_of_orbit(m, v, report); }, f);
 	else
-		foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, CMap2::Face(d)); });
+		detail::report_with_lines<CMap2::Face>(
+			m,
+			[&](const auto& report) { foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || report(d); }); },
+			f);
 }
 
 /// The connected component of vertex v.
@@ -47,7 +51,10 @@ CGOGN_INLINE void foreach_adjacent_vertex_through_edge(const CMap2& m, CellParam
 {
 	if (detail::foreach_cached<CMap2::Vertex, CMap2::Edge>(m, v, f))
 		return;
-	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, CMap2::Vertex(phi2(m, d))); });
+	const auto phi2_of = m.phi2_->view(); // see LineStorage::View
+	detail::report_with_lines<CMap2::Vertex>(
+		m, [&](const auto& report) { foreach_dart_of_orbit(m, v, [&](Dart d) { return report(Dart(phi2_of[d.index])); }); },
+		f);
 }
 
 /// Vertices sharing a face with v (v excluded), each once on a manifold mesh:
@@ -133,7 +140,7 @@ void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Face> f, const FUN
 {
 	if (detail::foreach_cached<CMap2::Vertex, void>(m, f, fn))
 		return;
-	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, CMap2::Vertex(d)); });
+	detail::report_with_lines<CMap2::Vertex>(m, [&](const auto& report) { foreach_dart_of_orbit(m, f, report); }, fn);
 }
 
 /// Edges of face f in phi1 order.

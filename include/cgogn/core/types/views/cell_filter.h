@@ -61,11 +61,14 @@ public:
 	}
 
 	/// True when c passes this filter's predicate for its type (the viewed
-	/// mesh's own filters, if it is a view, are not evaluated). O(cost of the
-	/// predicate).
-	template <typename CELL>
-	bool accepts(CELL c) const
+	/// mesh's own filters, if it is a view, are not evaluated). A LocatedCell
+	/// (from a traversal that knows the line) is judged as its cell. O(cost of
+	/// the predicate).
+	template <CellType C>
+	bool accepts(C located_or_not) const
 	{
+		using CELL = Cell<C::ORBIT>;
+		const CELL c(located_or_not.dart);
 		if constexpr (has_cell_type_v<MESH, CELL>)
 		{
 			const auto& p = std::get<detail::CellPredicate<CELL>>(filters_);
