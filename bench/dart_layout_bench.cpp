@@ -288,13 +288,16 @@ struct LibAccess
 
 volatile uint32 far_limit = 0xF0000000u;
 
-template <typename F>
-void run(benchmark::State& state, Layouts& l, F&& pass, std::vector<Vec3>& positions)
+// Positions restored (untimed) from l.initial before each pass, then summed
+// into the check value. POSITIONS: the soa vector or the library's attribute.
+template <typename F, typename POSITIONS>
+void run(benchmark::State& state, Layouts& l, F&& pass, POSITIONS& positions)
 {
 	for (auto _ : state)
 	{
 		state.PauseTiming();
-		positions = l.initial;
+		for (uint32 v = 0; v < l.nb_vertices; ++v)
+			positions[v] = l.initial[v];
 		state.ResumeTiming();
 		pass();
 	}
@@ -335,51 +338,30 @@ void lib_access(benchmark::State& state)
 {
 	Layouts& l = layouts();
 	const CMap2& m = l.map;
-	Attribute<Vec3>& pos = *l.position;
-	for (auto _ : state)
-	{
-		state.PauseTiming();
-		for (uint32 v = 0; v < l.nb_vertices; ++v)
-			pos[v] = l.initial[v];
-		state.ResumeTiming();
-		l.smooth(LibAccess{m, pos, *m.cell_index_[orbit_index(Orbit::PHI21)]});
-	}
-	double check = 0;
-	for (const Vec3& p : pos)
-		check += p.sum();
-	state.counters["check"] = check;
+	run(state, l, [&] { l.smooth(LibAccess{m, *l.position, *m.cell_index_[orbit_index(Orbit::PHI21)]}); }, *l.position);
 }
 void lib_memory(benchmark::State& state)
 {
 	Layouts& l = layouts();
 	const CMap2& m = l.map;
-	Attribute<Vec3>& pos = *l.position;
 	const uint32 lim = far_limit;
-	for (auto _ : state)
-	{
-		state.PauseTiming();
-		for (uint32 v = 0; v < l.nb_vertices; ++v)
-			pos[v] = l.initial[v];
-		state.ResumeTiming();
-		l.smooth(RangeCheck{{&(*m.phi1_)[0], lim}, {&(*m.phi2_)[0], lim}, {&(*m.cell_index_[orbit_index(Orbit::PHI21)])[0], lim},
-							{l.boundary_bits.data(), lim}, {&pos[0], lim}});
-	}
-	double check = 0;
-	for (const Vec3& p : pos)
-		check += p.sum();
-	state.counters["check"] = check;
+	run(
+		state, l,
+		[&] {
+			l.smooth(RangeCheck{{&(*m.phi1_)[0], lim},
+								{&(*m.phi2_)[0], lim},
+								{&(*m.cell_index_[orbit_index(Orbit::PHI21)])[0], lim},
+								{l.boundary_bits.data(), lim},
+								{&(*l.position)[0], lim}});
+		},
+		*l.position);
 }
 void cgogn_library(benchmark::State& state)
 {
 	Layouts& l = layouts();
 	const CMap2& m = l.map;
 	Attribute<Vec3>& pos = *l.position;
-	for (auto _ : state)
-	{
-		state.PauseTiming();
-		for (uint32 v = 0; v < l.nb_vertices; ++v)
-			pos[v] = l.initial[v];
-		state.ResumeTiming();
+	auto pass = [&] {
 		foreach_cell(m, [&](Located<Vertex> v) {
 			Vec3 s = Vec3::Zero();
 			uint32 n = 0;
@@ -393,11 +375,8 @@ void cgogn_library(benchmark::State& state)
 			if (inner)
 				value<Vec3>(m, pos, v) = s / double(n);
 		});
-	}
-	double check = 0;
-	for (const Vec3& p : pos)
-		check += p.sum();
-	state.counters["check"] = check;
+	};
+	run(state, l, pass, pos);
 }
 
 } // namespace
