@@ -224,6 +224,62 @@ TEST(IncidenceCache, LocatedCellsCarryTheirLine)
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 }
 
+// A callable taking exactly the plain cell type is served from the table's
+// darts alone (the lines are not looked at), one taking `auto` or a
+// LocatedCell gets the lines: both see the rows of the table, in its order.
+TEST(IncidenceCache, PlainAndLocatedCallablesReadTheSameRows)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(6, 5, true));
+	using V = CMap2::Vertex;
+	using F = CMap2::Face;
+	static_assert(detail::takes_plain_cell<void (*)(F), F>() == false); // not a class type: no deduction, lines read
+	auto takes_face = [](F) {};
+	auto takes_located = [](Located<F>) {};
+	auto takes_auto = [](auto) {};
+	static_assert(detail::takes_plain_cell<decltype(takes_face), F>());
+	static_assert(!detail::takes_plain_cell<decltype(takes_located), F>());
+	static_assert(!detail::takes_plain_cell<decltype(takes_auto), F>());
+	add_attribute<uint32, F>(m, "face id"); // indexes the faces: the table holds their lines
+	IncidenceCache<CMap2, V, F>::build(m);
+	// swap the first two entries of every row: the walk of the darts would not
+	// give that order, so equal sequences prove both callables read the table
+	for (auto& t : m.incidence_tables_)
+		for (std::size_t r = 0; r + 1 < t->offsets.size(); ++r)
+		{
+			ASSERT_FALSE(t->target_lines.empty());
+			if (t->offsets[r + 1] - t->offsets[r] < 2) // a free line
+				continue;
+			std::swap(t->targets[t->offsets[r]], t->targets[t->offsets[r] + 1]);
+			std::swap(t->target_lines[t->offsets[r]], t->target_lines[t->offsets[r] + 1]);
+		}
+	uint32 rows = 0, located = 0;
+	foreach_cell(m, [&](V v) {
+		std::vector<uint32> from_plain, from_auto, from_darts;
+		foreach_incident_face(m, v, [&](F f) { from_plain.push_back(f.dart.index); });
+		foreach_incident_face(m, v, [&](auto f) {
+			// both forms are compiled; the table holds lines, so the located one runs
+			if constexpr (std::is_same_v<decltype(f), Located<F>>)
+			{
+				EXPECT_EQ(f.line, index_of(m, F(f.dart)));
+				++located;
+			}
+			from_auto.push_back(f.dart.index);
+		});
+		{
+			detail::IncidenceCacheBypass bypass;
+			foreach_incident_face(m, v, [&](F f) { from_darts.push_back(f.dart.index); });
+		}
+		EXPECT_EQ(from_plain, from_auto);
+		ASSERT_EQ(from_plain.size(), 6u);
+		std::swap(from_darts[0], from_darts[1]);
+		EXPECT_EQ(from_plain, from_darts);
+		++rows;
+	});
+	EXPECT_EQ(rows, 30u);
+	EXPECT_EQ(located, 180u);
+}
+
 // foreach_cell gives each cell with its line to a callable taking Located<CELL>;
 // a cached traversal started from such a cell reads the row at that line.
 TEST(IncidenceCache, ForeachCellGivesLocatedCellsToCachedTraversals)

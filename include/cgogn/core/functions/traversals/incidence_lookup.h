@@ -48,6 +48,18 @@ inline const IncidenceTable* find_incidence_table(const CMapBase& m, uint32 key)
 	return nullptr;
 }
 
+/// Whether callable FUNC takes exactly the plain cell type TO (not a
+/// LocatedCell, not `auto`): it never reads a neighbour's line, so the
+/// traversals need not look for lines at all.
+template <typename FUNC, typename TO>
+constexpr bool takes_plain_cell()
+{
+	if constexpr (requires { &std::remove_cvref_t<FUNC>::operator(); })
+		return std::is_same_v<func_parameter_type<FUNC>, TO>;
+	else
+		return false;
+}
+
 /// The hook of the local traversals: when m holds a cache of FROM -> TO
 /// (through THROUGH) that covers c, calls f on the cached neighbours (f may
 /// stop by returning false) and returns true; otherwise returns false and the
@@ -71,7 +83,7 @@ CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 		return false; // a cell created after the cache was built
 	const uint32 b = t->offsets[r], e = t->offsets[r + 1];
 	const Dart* targets = t->targets.data();
-	if (!t->target_lines.empty())
+	if (!takes_plain_cell<FUNC, TO>() && !t->target_lines.empty())
 	{
 		const uint32* lines = t->target_lines.data();
 		for (uint32 i = b; i < e; ++i)
@@ -97,7 +109,7 @@ template <typename TO, typename WALK, typename FUNC>
 CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const FUNC& f)
 {
 	const Attribute<uint32>* index = m.cell_index_[orbit_index(TO::ORBIT)];
-	if (index == nullptr)
+	if (takes_plain_cell<FUNC, TO>() || index == nullptr)
 	{
 		walk([&](Dart e) { return call_and_continue(f, TO(e)); });
 		return;

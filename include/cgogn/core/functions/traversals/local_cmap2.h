@@ -24,7 +24,7 @@ void foreach_incident_edge(const CMap2& m, CellParam<CMap2::Vertex> v, const FUN
 
 /// Faces incident to vertex v, in cyclic order (boundary faces skipped).
 template <typename FUNC>
-void foreach_incident_face(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
+CGOGN_INLINE void foreach_incident_face(const CMap2& m, CellParam<CMap2::Vertex> v, const FUNC& f)
 {
 	if (detail::foreach_cached<CMap2::Face, void>(m, v, f))
 		return;
@@ -136,7 +136,7 @@ void foreach_adjacent_edge_through_face(const CMap2& m, CellParam<CMap2::Edge> e
 
 /// Vertices of face f in phi1 order.
 template <typename FUNC>
-void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Face> f, const FUNC& fn)
+CGOGN_INLINE void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Face> f, const FUNC& fn)
 {
 	if (detail::foreach_cached<CMap2::Vertex, void>(m, f, fn))
 		return;
