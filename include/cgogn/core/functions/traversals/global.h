@@ -37,8 +37,9 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 		if (is_indexed<CELL>(m))
 		{
 			// walk the cell container: one representative dart per live line
-			// the keys through a view held in a local: f's stores would otherwise
-			// make the compiler reload the storage's base and bound at each line
+			// the keys through a view held in a local: the compiler would otherwise
+			// reload the storage's base and bound at each line (f, when it is not
+			// inlined, might change them as far as the compiler knows)
 			const auto rep = m.cells_[orbit_index(O)]->key().view();
 			for (uint32 i = 0, end = m.cells_[orbit_index(O)]->end_index(); i < end; ++i)
 			{
