@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Which dart layout makes the vertex walk fast: the surface suite's smoothing
 // (one Gauss-Seidel pass, boundary vertices skipped) over the same map and
-// the same positions, with the relations stored five ways:
+// the same positions, with the relations stored in several ways:
 //   soa          one plain array per relation (phi1, phi2, vertex index) and a
 //                boundary bit array: the limit for this walk
 //   aos16        one 16-byte record per dart {phi1, phi2, vertex, face}
+//   aos8         one 8-byte record per dart {phi1, phi2}, the vertex index
+//                in its own array
+//   soa_prefetch soa, prefetching phi2's cache line at phi2(d) as soon as it
+//                is known (the next step reads phi2 in that dart's face)
 //   block_table  the plain arrays reached through a table of 4096-element
 //                blocks (cgogn's storage before LineStorage)
 //   range_check  the plain arrays behind a `i < size ? base[i] : block(i)`
@@ -17,6 +21,12 @@
 //                how the compiler handles them in a loop
 //   cgogn        the library's accessors and traversal (bench_suite's
 //                surface/smoothing/cgogn)
+//   paired_explicit  soa with the darts renumbered so that the two darts of
+//                an edge are 2k and 2k+1 (pairs in order of first use by the
+//                original dart order), phi2 still read from its array
+//   paired       the same numbering with phi2(d) = d ^ 1 computed, not read:
+//                one dependent load per step around a vertex (phi1 of d ^ 1)
+//                instead of two (phi2, then phi1), as a half-edge structure
 // Same input as bench_suite (--input=data|generated|small); the numbers are
 // in bench/README.md.
 #include "harness.h"
@@ -59,10 +69,19 @@ struct Layouts
 		uint32 phi1, phi2, vertex, face;
 	};
 	std::vector<Record> records;
+	// aos8: {phi1, phi2} interleaved, vertex index in its own array
+	struct Links
+	{
+		uint32 phi1, phi2;
+	};
+	std::vector<Links> links;
 	// block_table: block pointers into the soa arrays
 	std::vector<uint32*> phi1_blocks, phi2_blocks, vertex_blocks;
 	std::vector<uint64*> boundary_blocks;
 	std::vector<Vec3*> pos_blocks;
+	// paired: darts renumbered in edge pairs (see the header comment)
+	std::vector<uint32> paired_phi1, paired_phi2, paired_vertex, paired_vertex_dart;
+	std::vector<uint64> paired_boundary_bits;
 
 	Layouts()
 	{
@@ -80,6 +99,7 @@ struct Layouts
 		vertex.resize(nd);
 		boundary_bits.assign(nd / 64 + 1 + 64, 0);
 		records.resize(nd);
+		links.resize(nd);
 		for (uint32 d = 0; d < nd; ++d)
 		{
 			phi1[d] = (*map.phi1_)[d];
@@ -88,6 +108,7 @@ struct Layouts
 			if (is_boundary(map, Dart(d)))
 				boundary_bits[d >> 6] |= uint64(1) << (d & 63u);
 			records[d] = {phi1[d], phi2[d], vertex[d], fidx[d]};
+			links[d] = {phi1[d], phi2[d]};
 		}
 		const AttributeContainer& vertices = *map.cells_[orbit_index(Orbit::PHI21)];
 		nb_vertices = vertices.end_index();
@@ -108,6 +129,36 @@ struct Layouts
 		}
 		for (uint32 b = 0; (b << BLOCK_SHIFT) < nb_vertices; ++b)
 			pos_blocks.push_back(pos.data() + (b << BLOCK_SHIFT));
+		pair_darts(nd);
+	}
+
+	void pair_darts(uint32 nd)
+	{
+		std::vector<uint32> renumber(nd, INVALID_INDEX);
+		uint32 next = 0;
+		for (uint32 d = 0; d < nd; ++d)
+			if (phi1[d] != INVALID_INDEX && renumber[d] == INVALID_INDEX)
+			{
+				renumber[d] = next++;
+				renumber[phi2[d]] = next++;
+			}
+		paired_phi1.assign(next, INVALID_INDEX);
+		paired_phi2.assign(next, INVALID_INDEX);
+		paired_vertex.assign(next, INVALID_INDEX);
+		paired_boundary_bits.assign(next / 64 + 1 + 64, 0);
+		for (uint32 d = 0; d < nd; ++d)
+			if (renumber[d] != INVALID_INDEX)
+			{
+				const uint32 n = renumber[d];
+				paired_phi1[n] = renumber[phi1[d]];
+				paired_phi2[n] = renumber[phi2[d]];
+				paired_vertex[n] = vertex[d];
+				if ((boundary_bits[d >> 6] >> (d & 63u)) & 1u)
+					paired_boundary_bits[n >> 6] |= uint64(1) << (n & 63u);
+			}
+		paired_vertex_dart.resize(nb_vertices);
+		for (uint32 v = 0; v < nb_vertices; ++v)
+			paired_vertex_dart[v] = vertex_dart[v] == INVALID_INDEX ? INVALID_INDEX : renumber[vertex_dart[v]];
 	}
 
 	// The same walk for every layout: ACCESS gives (boundary?, phi2, vertex,
@@ -115,9 +166,14 @@ struct Layouts
 	template <typename A>
 	void smooth(const A& access)
 	{
+		smooth(access, vertex_dart);
+	}
+	template <typename A>
+	void smooth(const A& access, const std::vector<uint32>& starts)
+	{
 		for (uint32 v = 0; v < nb_vertices; ++v)
 		{
-			const uint32 d = vertex_dart[v];
+			const uint32 d = starts[v];
 			if (d == INVALID_INDEX)
 				continue;
 			Vec3 sum = Vec3::Zero();
@@ -185,6 +241,65 @@ struct Aos16 : Soa
 	uint32 vertex(uint32 d) const
 	{
 		return l.records[d].vertex;
+	}
+};
+
+// soa, and as soon as phi2(d) = e is known, a prefetch of phi2's cache line
+// at e: the next step reads phi2 at phi1(e), a dart of e's face, whose darts
+// are usually consecutive (the builder allocates a face's darts together), so
+// that miss overlaps the phi1(e) one instead of following it
+struct SoaPrefetch : Soa
+{
+	uint32 phi2(uint32 d) const
+	{
+		const uint32 e = l.phi2[d];
+		__builtin_prefetch(&l.phi2[e]);
+		return e;
+	}
+};
+
+struct Aos8 : Soa
+{
+	uint32 phi1(uint32 d) const
+	{
+		return l.links[d].phi1;
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return l.links[d].phi2;
+	}
+};
+
+struct PairedExplicit
+{
+	Layouts& l;
+	bool boundary(uint32 d) const
+	{
+		return (l.paired_boundary_bits[d >> 6] >> (d & 63u)) & 1u;
+	}
+	uint32 phi1(uint32 d) const
+	{
+		return l.paired_phi1[d];
+	}
+	uint32 phi2(uint32 d) const
+	{
+		return l.paired_phi2[d];
+	}
+	uint32 vertex(uint32 d) const
+	{
+		return l.paired_vertex[d];
+	}
+	Vec3& pos(uint32 v) const
+	{
+		return l.pos[v];
+	}
+};
+
+struct Paired : PairedExplicit
+{
+	uint32 phi2(uint32 d) const
+	{
+		return d ^ 1u;
 	}
 };
 
@@ -317,6 +432,26 @@ void aos16(benchmark::State& state)
 	Layouts& l = layouts();
 	run(state, l, [&] { l.smooth(Aos16{{l}}); }, l.pos);
 }
+void soa_prefetch(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(SoaPrefetch{{l}}); }, l.pos);
+}
+void aos8(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(Aos8{{l}}); }, l.pos);
+}
+void paired_explicit(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(PairedExplicit{l}, l.paired_vertex_dart); }, l.pos);
+}
+void paired(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(Paired{{l}}, l.paired_vertex_dart); }, l.pos);
+}
 void block_table(benchmark::State& state)
 {
 	Layouts& l = layouts();
@@ -388,6 +523,10 @@ BENCHMARK(range_check)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAgg
 BENCHMARK(lib_access)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(lib_memory)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(cgogn_library)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(soa_prefetch)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(aos8)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(paired_explicit)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(paired)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
 int main(int argc, char** argv)
 {

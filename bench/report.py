@@ -8,7 +8,11 @@ counts exactly, real values to 1e-9 relative).
 
 usage: report.py RESULT.json [MORE.json ...] [--check]
        report.py --orders RUN.json [MORE.json ...]
+       report.py --same-check RESULT.json
   --check   only verify the check values; exit status 1 on disagreement
+  --same-check  every benchmark of the file reports the same "check" counter
+            (bench_dart_layout: each layout does the same work); exit status
+            1 on disagreement
   --orders  one table per suite comparing runs made on differently ordered
             inputs (bench_suite --permute=SEED [--reorder]): each file is one
             run, its context "order" names the variant ("file",
@@ -250,6 +254,27 @@ def order_tables(paths):
     return 0
 
 
+def same_check(paths):
+    """(number of benchmarks, disagreements with the first one's check).
+    Aggregates count too: bench_dart_layout reports only those."""
+    runs = {}
+    for p in paths:
+        with open(p) as f:
+            for b in json.load(f).get("benchmarks", []):
+                runs.setdefault(b["name"].split("/")[0], b)
+    ref_name, ref = None, None
+    problems = [] if runs else ["no benchmark ran"]
+    for name, entry in runs.items():
+        value = entry.get("check")
+        if value is None:
+            problems.append(f"{name}: no check value")
+        elif ref is None:
+            ref_name, ref = name, value
+        elif not close(ref, value):
+            problems.append(f"{name}: check {value!r} != {ref_name}={ref!r}")
+    return len(runs), problems
+
+
 def main(argv):
     check_only = "--check" in argv
     paths = [a for a in argv if not a.startswith("--")]
@@ -258,6 +283,12 @@ def main(argv):
         return 2
     if "--orders" in argv:
         return order_tables(paths)
+    if "--same-check" in argv:
+        count, problems = same_check(paths)
+        for p in problems:
+            print("MISMATCH", p)
+        print(f"check values of {count} benchmarks: " + ("all agree" if not problems else "disagree"))
+        return 1 if problems else 0
     runs, context = load(paths)
     problems = checks_agree(runs, reordered="reordered" in (context or {}).get("order", ""))
     if check_only:

@@ -26,6 +26,14 @@ using uint64 = std::uint64_t;
 #define CGOGN_INLINE inline
 #endif
 
+/// Asks the processor to start loading the cache line of `address` for a read
+/// (a hint: no fault, no effect on the program's results).
+#if defined(__GNUC__) || defined(__clang__)
+#define CGOGN_PREFETCH(address) __builtin_prefetch(address)
+#else
+#define CGOGN_PREFETCH(address) ((void)(address))
+#endif
+
 /// The value of an index (dart, cell line) that designates nothing.
 inline constexpr uint32 INVALID_INDEX = std::numeric_limits<uint32>::max();
 
