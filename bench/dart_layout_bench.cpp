@@ -52,6 +52,13 @@ namespace
 
 constexpr uint32 BLOCK_SHIFT = 12, BLOCK_MASK = (1u << BLOCK_SHIFT) - 1u;
 
+// One array per relation and a boundary bit array, indexed by dart.
+struct DartArrays
+{
+	std::vector<uint32> phi1, phi2, vertex;
+	std::vector<uint64> boundary_bits;
+};
+
 struct Layouts
 {
 	CMap2 map;
@@ -60,8 +67,7 @@ struct Layouts
 	std::vector<uint32> vertex_dart; // INVALID_INDEX for free lines
 	std::vector<Vec3> initial;       // per vertex line
 	// soa
-	std::vector<uint32> phi1, phi2, vertex;
-	std::vector<uint64> boundary_bits;
+	DartArrays plain;
 	std::vector<Vec3> pos;
 	// aos16
 	struct Record
@@ -80,8 +86,8 @@ struct Layouts
 	std::vector<uint64*> boundary_blocks;
 	std::vector<Vec3*> pos_blocks;
 	// paired: darts renumbered in edge pairs (see the header comment)
-	std::vector<uint32> paired_phi1, paired_phi2, paired_vertex, paired_vertex_dart;
-	std::vector<uint64> paired_boundary_bits;
+	DartArrays paired;
+	std::vector<uint32> paired_vertex_dart;
 
 	Layouts()
 	{
@@ -94,6 +100,7 @@ struct Layouts
 		const uint32 nd = map.darts_->end_index();
 		const Attribute<uint32>& vidx = *map.cell_index_[orbit_index(Orbit::PHI21)];
 		const Attribute<uint32>& fidx = *map.cell_index_[orbit_index(Orbit::PHI1)];
+		auto& [phi1, phi2, vertex, boundary_bits] = plain;
 		phi1.resize(nd);
 		phi2.resize(nd);
 		vertex.resize(nd);
@@ -134,6 +141,7 @@ struct Layouts
 
 	void pair_darts(uint32 nd)
 	{
+		const auto& [phi1, phi2, vertex, boundary_bits] = plain;
 		std::vector<uint32> renumber(nd, INVALID_INDEX);
 		uint32 next = 0;
 		for (uint32 d = 0; d < nd; ++d)
@@ -142,19 +150,19 @@ struct Layouts
 				renumber[d] = next++;
 				renumber[phi2[d]] = next++;
 			}
-		paired_phi1.assign(next, INVALID_INDEX);
-		paired_phi2.assign(next, INVALID_INDEX);
-		paired_vertex.assign(next, INVALID_INDEX);
-		paired_boundary_bits.assign(next / 64 + 1 + 64, 0);
+		paired.phi1.assign(next, INVALID_INDEX);
+		paired.phi2.assign(next, INVALID_INDEX);
+		paired.vertex.assign(next, INVALID_INDEX);
+		paired.boundary_bits.assign(next / 64 + 1 + 64, 0);
 		for (uint32 d = 0; d < nd; ++d)
 			if (renumber[d] != INVALID_INDEX)
 			{
 				const uint32 n = renumber[d];
-				paired_phi1[n] = renumber[phi1[d]];
-				paired_phi2[n] = renumber[phi2[d]];
-				paired_vertex[n] = vertex[d];
+				paired.phi1[n] = renumber[phi1[d]];
+				paired.phi2[n] = renumber[phi2[d]];
+				paired.vertex[n] = vertex[d];
 				if ((boundary_bits[d >> 6] >> (d & 63u)) & 1u)
-					paired_boundary_bits[n >> 6] |= uint64(1) << (n & 63u);
+					paired.boundary_bits[n >> 6] |= uint64(1) << (n & 63u);
 			}
 		paired_vertex_dart.resize(nb_vertices);
 		for (uint32 v = 0; v < nb_vertices; ++v)
@@ -203,24 +211,26 @@ Layouts& layouts()
 	return l;
 }
 
+// The plain arrays of one dart numbering (l.plain or l.paired).
 struct Soa
 {
 	Layouts& l;
+	const DartArrays& a;
 	bool boundary(uint32 d) const
 	{
-		return (l.boundary_bits[d >> 6] >> (d & 63u)) & 1u;
+		return (a.boundary_bits[d >> 6] >> (d & 63u)) & 1u;
 	}
 	uint32 phi1(uint32 d) const
 	{
-		return l.phi1[d];
+		return a.phi1[d];
 	}
 	uint32 phi2(uint32 d) const
 	{
-		return l.phi2[d];
+		return a.phi2[d];
 	}
 	uint32 vertex(uint32 d) const
 	{
-		return l.vertex[d];
+		return a.vertex[d];
 	}
 	Vec3& pos(uint32 v) const
 	{
@@ -228,21 +238,29 @@ struct Soa
 	}
 };
 
-struct Aos16 : Soa
+// phi1 and phi2 read from the per-dart records l.*RECORDS
+template <auto RECORDS>
+struct Records : Soa
 {
 	uint32 phi1(uint32 d) const
 	{
-		return l.records[d].phi1;
+		return (l.*RECORDS)[d].phi1;
 	}
 	uint32 phi2(uint32 d) const
 	{
-		return l.records[d].phi2;
+		return (l.*RECORDS)[d].phi2;
 	}
+};
+
+struct Aos16 : Records<&Layouts::records>
+{
 	uint32 vertex(uint32 d) const
 	{
 		return l.records[d].vertex;
 	}
 };
+
+using Aos8 = Records<&Layouts::links>;
 
 // soa, and as soon as phi2(d) = e is known, a prefetch of phi2's cache line
 // at e: the next step reads phi2 at phi1(e), a dart of e's face, whose darts
@@ -252,50 +270,14 @@ struct SoaPrefetch : Soa
 {
 	uint32 phi2(uint32 d) const
 	{
-		const uint32 e = l.phi2[d];
-		__builtin_prefetch(&l.phi2[e]);
+		const uint32 e = a.phi2[d];
+		__builtin_prefetch(&a.phi2[e]);
 		return e;
 	}
 };
 
-struct Aos8 : Soa
-{
-	uint32 phi1(uint32 d) const
-	{
-		return l.links[d].phi1;
-	}
-	uint32 phi2(uint32 d) const
-	{
-		return l.links[d].phi2;
-	}
-};
-
-struct PairedExplicit
-{
-	Layouts& l;
-	bool boundary(uint32 d) const
-	{
-		return (l.paired_boundary_bits[d >> 6] >> (d & 63u)) & 1u;
-	}
-	uint32 phi1(uint32 d) const
-	{
-		return l.paired_phi1[d];
-	}
-	uint32 phi2(uint32 d) const
-	{
-		return l.paired_phi2[d];
-	}
-	uint32 vertex(uint32 d) const
-	{
-		return l.paired_vertex[d];
-	}
-	Vec3& pos(uint32 v) const
-	{
-		return l.pos[v];
-	}
-};
-
-struct Paired : PairedExplicit
+// l.paired's numbering: phi2 computed, never read
+struct Paired : Soa
 {
 	uint32 phi2(uint32 d) const
 	{
@@ -425,32 +407,32 @@ void run(benchmark::State& state, Layouts& l, F&& pass, POSITIONS& positions)
 void soa(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Soa{l}); }, l.pos);
+	run(state, l, [&] { l.smooth(Soa{l, l.plain}); }, l.pos);
 }
 void aos16(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Aos16{{l}}); }, l.pos);
+	run(state, l, [&] { l.smooth(Aos16{{{l, l.plain}}}); }, l.pos);
 }
 void soa_prefetch(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(SoaPrefetch{{l}}); }, l.pos);
+	run(state, l, [&] { l.smooth(SoaPrefetch{{l, l.plain}}); }, l.pos);
 }
 void aos8(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Aos8{{l}}); }, l.pos);
+	run(state, l, [&] { l.smooth(Aos8{{l, l.plain}}); }, l.pos);
 }
 void paired_explicit(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(PairedExplicit{l}, l.paired_vertex_dart); }, l.pos);
+	run(state, l, [&] { l.smooth(Soa{l, l.paired}, l.paired_vertex_dart); }, l.pos);
 }
 void paired(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Paired{{l}}, l.paired_vertex_dart); }, l.pos);
+	run(state, l, [&] { l.smooth(Paired{{l, l.paired}}, l.paired_vertex_dart); }, l.pos);
 }
 void block_table(benchmark::State& state)
 {
@@ -464,8 +446,8 @@ void range_check(benchmark::State& state)
 	run(
 		state, l,
 		[&] {
-			l.smooth(RangeCheck{{l.phi1.data(), lim}, {l.phi2.data(), lim}, {l.vertex.data(), lim},
-								{l.boundary_bits.data(), lim}, {l.pos.data(), lim}});
+			l.smooth(RangeCheck{{l.plain.phi1.data(), lim}, {l.plain.phi2.data(), lim}, {l.plain.vertex.data(), lim},
+								{l.plain.boundary_bits.data(), lim}, {l.pos.data(), lim}});
 		},
 		l.pos);
 }
@@ -486,7 +468,7 @@ void lib_memory(benchmark::State& state)
 			l.smooth(RangeCheck{{&(*m.phi1_)[0], lim},
 								{&(*m.phi2_)[0], lim},
 								{&(*m.cell_index_[orbit_index(Orbit::PHI21)])[0], lim},
-								{l.boundary_bits.data(), lim},
+								{l.plain.boundary_bits.data(), lim},
 								{&(*l.position)[0], lim}});
 		},
 		*l.position);
