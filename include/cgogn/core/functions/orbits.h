@@ -171,6 +171,9 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 			// the walk stays among one volume's darts, allocated together.
 			if constexpr (MAP::dimension == 2)
 				CGOGN_PREFETCH(&phi2_of[e]);
+			// the same for the line f reads at phi1(e) (detail::LineReport)
+			if constexpr (requires { f.prefetch_line(e); })
+				f.prefetch_line(e);
 			it = Dart(phi1_of[e]);
 		} while (it != d);
 		return true;

@@ -105,6 +105,27 @@ CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 /// without the index lookup, whose storage the compiler would otherwise load
 /// again at every neighbour; a callable taking TO drops the line and the
 /// compiler the read.
+/// What report_with_lines gives a walk when f takes the lines: report(e)
+/// reads e's line and calls f. A 2-D vertex walk given it directly (see
+/// foreach_dart_of_orbit) also calls prefetch_line(e) with e = phi2(d) before
+/// it reads phi1(e), the next dart it reports: that dart is in e's face, so
+/// its line is usually in the cache line of e's, and its miss overlaps the
+/// phi1(e) one instead of following it.
+template <typename TO, typename FUNC, typename VIEW>
+struct LineReport
+{
+	const FUNC& f;
+	VIEW line_of;
+	CGOGN_INLINE bool operator()(Dart e) const
+	{
+		return call_and_continue(f, LocatedCell<TO::ORBIT>(e, line_of[e.index]));
+	}
+	CGOGN_INLINE void prefetch_line(uint32 e) const
+	{
+		CGOGN_PREFETCH(&line_of[e]);
+	}
+};
+
 template <typename TO, typename WALK, typename FUNC>
 CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const FUNC& f)
 {
@@ -114,8 +135,7 @@ CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const F
 		walk([&](Dart e) { return call_and_continue(f, TO(e)); });
 		return;
 	}
-	const auto line_of = index->view();
-	walk([&](Dart e) { return call_and_continue(f, LocatedCell<TO::ORBIT>(e, line_of[e.index])); });
+	walk(LineReport<TO, FUNC, decltype(index->view())>{f, index->view()});
 }
 
 } // namespace cgogn::detail
