@@ -126,7 +126,10 @@ void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vect
 /// Calls f(Dart) on each dart of the orbit of cell c; f may return false to
 /// stop. Returns false when stopped. O(size of the orbit). Faces, 2-D vertices
 /// and edges are visited in their cyclic order; volumes and 3-D vertices by a
-/// flood with a pooled mark (no allocation once warm).
+/// flood with a pooled mark (no allocation once warm). Around a 2-D vertex, a
+/// callable with a member prefetch_line(uint32) is told each e = phi2(d)
+/// before the walk reads phi1(e), the next dart it receives (a hint; see
+/// detail::LineReport).
 template <typename MAP, Orbit O, typename FUNC>
 	requires std::derived_from<MAP, CMapBase>
 bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)

@@ -97,14 +97,6 @@ CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 	return true;
 }
 
-/// The uncached form of the hook: `walk(report)` calls report(Dart e) on the
-/// darts of the neighbours, and f receives each as a LocatedCell<TO> (the
-/// cell and its line) when TO's orbit is indexed, as TO otherwise. The line is
-/// read here through a view of the index held in a local (LineStorage::View),
-/// so a callable taking `auto` reads its attributes with value(m, attr, c)
-/// without the index lookup, whose storage the compiler would otherwise load
-/// again at every neighbour; a callable taking TO drops the line and the
-/// compiler the read.
 /// What report_with_lines gives a walk when f takes the lines: report(e)
 /// reads e's line and calls f. A 2-D vertex walk given it directly (see
 /// foreach_dart_of_orbit) also calls prefetch_line(e) with e = phi2(d) before
@@ -126,6 +118,14 @@ struct LineReport
 	}
 };
 
+/// The uncached form of the hook: `walk(report)` calls report(Dart e) on the
+/// darts of the neighbours, and f receives each as a LocatedCell<TO> (the
+/// cell and its line) when TO's orbit is indexed, as TO otherwise. The line is
+/// read here through a view of the index held in a local (LineStorage::View),
+/// so a callable taking `auto` reads its attributes with value(m, attr, c)
+/// without the index lookup, whose storage the compiler would otherwise load
+/// again at every neighbour; a callable taking TO drops the line and the
+/// compiler the read.
 template <typename TO, typename WALK, typename FUNC>
 CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const FUNC& f)
 {
