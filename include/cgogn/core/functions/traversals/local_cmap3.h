@@ -66,7 +66,7 @@ bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC
 {
 	using Neighbour = LocatedCell<CMap3::Vertex::ORBIT>;
 	AttributeContainer& vertices = *m.cells_[orbit_index(CMap3::Vertex::ORBIT)];
-	const Attribute<uint32>& line_of = *m.cell_index_[orbit_index(CMap3::Vertex::ORBIT)];
+	const auto line_of = m.cell_index_[orbit_index(CMap3::Vertex::ORBIT)]->view();
 	// up to 64 neighbours on the stack (a tet mesh vertex has ~14), more on the heap
 	std::array<Neighbour, 64> few;
 	std::vector<Neighbour> many;
@@ -91,8 +91,9 @@ bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC
 			}
 		} guard{vertices, few, many, n};
 		MarkAttribute& seen = guard.mark;
-		foreach_dart_of_orbit(m, v, [&](Dart d) {
-			const Dart e = phi1(m, d);
+		const auto phi1_of = m.phi1_->view();
+		auto collect = [&](Dart d) {
+			const Dart e(phi1_of[d.index]);
 			const uint32 w = line_of[e.index];
 			if (w == INVALID_INDEX)
 			{
@@ -108,7 +109,24 @@ bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC
 				many.emplace_back(e, w);
 			++n;
 			return true;
-		});
+		};
+		// told by the walk which dart comes later (foreach_dart_of_vertex3),
+		// loads the vertex line of its phi1, read above, ahead of time
+		using View = decltype(phi1_of);
+		struct Collect
+		{
+			const decltype(collect)& f;
+			View lines, phi1s;
+			CGOGN_INLINE bool operator()(Dart d) const
+			{
+				return f(d);
+			}
+			CGOGN_INLINE void prefetch_line(uint32 d) const
+			{
+				CGOGN_PREFETCH(&lines[phi1s[d]]);
+			}
+		};
+		foreach_dart_of_orbit(m, v, Collect{collect, line_of, phi1_of});
 	}
 	if (!all_lines)
 		return false;
