@@ -1,9 +1,14 @@
-#include <cgogn/core.h>
+#include <cgogn/cgogn.h>
+
+#include "map_test_helpers.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <set>
 #include <type_traits>
+#include <vector>
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -264,4 +269,51 @@ TEST(Traversals3D, AdjacentVerticesThroughEdgesByLineAndWithoutLines)
 		unindexed_seen += index_of(m, w) == INVALID_INDEX;
 	});
 	EXPECT_EQ(unindexed_seen, 1u);
+}
+
+// The darts of a 3-D vertex (foreach_dart_of_orbit on PHI21_PHI31, a flood
+// with prefetches) on real tet and hex-dominant meshes in file order: from
+// any of its darts, exactly the darts holding the vertex's line, each once;
+// the vertices' orbits cover every dart; a walk stopped early leaves no mark
+// behind (the next full walk from the same dart sees the whole orbit).
+TEST(Traversals3D, VertexDartsOnRealMeshes)
+{
+	for (const char* name : {"volume/armadillo_tet_4k.mesh", "volume/hex_dominant_11k.mesh"})
+	{
+		const std::string path = test::data_file(name);
+		if (path.empty())
+			GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no " << name;
+		SCOPED_TRACE(name);
+		CMap3 m;
+		io::load_volume(m, path);
+		std::map<uint32, uint32> darts_of_line;
+		foreach_dart(m, [&](Dart d) { ++darts_of_line[index_of(m, Vertex(d))]; });
+		EXPECT_EQ(darts_of_line.size(), nb_cells<Vertex>(m));
+		uint64 covered = 0;
+		uint32 bad = 0;
+		foreach_cell(m, [&](Vertex v) {
+			const uint32 line = index_of(m, v);
+			std::vector<uint32> orbit;
+			foreach_dart_of_orbit(m, v, [&](Dart d) {
+				orbit.push_back(d.index);
+				bad += index_of(m, Vertex(d)) != line;
+			});
+			std::sort(orbit.begin(), orbit.end());
+			bad += std::adjacent_find(orbit.begin(), orbit.end()) != orbit.end();
+			bad += orbit.size() != darts_of_line[line];
+			covered += orbit.size();
+			// from another dart of the orbit, stopped after half of it, then in full
+			const Dart other(orbit[orbit.size() / 2]);
+			const uint32 half = uint32(orbit.size() / 2) + 1;
+			uint32 calls = 0;
+			foreach_dart_of_orbit(m, Vertex(other), [&](Dart) { return ++calls < half; });
+			bad += calls != half;
+			std::vector<uint32> again;
+			foreach_dart_of_orbit(m, Vertex(other), [&](Dart d) { again.push_back(d.index); });
+			std::sort(again.begin(), again.end());
+			bad += again != orbit;
+		});
+		EXPECT_EQ(bad, 0u);
+		EXPECT_EQ(covered, nb_darts(m));
+	}
 }
