@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -316,4 +317,58 @@ TEST(Traversals3D, VertexDartsOnRealMeshes)
 		EXPECT_EQ(bad, 0u);
 		EXPECT_EQ(covered, nb_darts(m));
 	}
+}
+
+// A callable may throw out of a flooded walk (a 3-D vertex, a volume): the
+// walk's marks are cleared and given back, so later walks see whole orbits.
+TEST(Traversals3D, ThrowingCallableLeavesNoMark)
+{
+	CMap3 m;
+	build_volume(m, tet_grid_soup(3, 2, 2));
+	Vertex centre;
+	uint32 most = 0;
+	foreach_cell(m, [&](Vertex v) {
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, v, [&](Dart) { ++n; });
+		if (n > most)
+		{
+			most = n;
+			centre = v;
+		}
+	});
+	const uint32 volume_darts = [&] {
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, Volume(centre.dart), [&](Dart) { ++n; });
+		return n;
+	}();
+	auto first_free_mark = [&] {
+		MarkAttribute* mark = m.darts_->acquire_mark();
+		m.darts_->release_mark(mark);
+		return mark;
+	};
+	MarkAttribute* const free_before = first_free_mark();
+	for (int round = 0; round < 100; ++round)
+	{
+		uint32 calls = 0;
+		EXPECT_THROW(foreach_dart_of_orbit(m, centre, [&](Dart) {
+			if (++calls == most / 2)
+				throw std::runtime_error("stop");
+		}),
+					 std::runtime_error);
+		calls = 0;
+		EXPECT_THROW(foreach_dart_of_orbit(m, Volume(centre.dart), [&](Dart) {
+			if (++calls == volume_darts / 2)
+				throw std::runtime_error("stop");
+		}),
+					 std::runtime_error);
+	}
+	// every mark given back (the same first free one) and cleared
+	EXPECT_EQ(first_free_mark(), free_before);
+	EXPECT_TRUE(free_before->all_clear());
+	uint32 n = 0, w = 0;
+	foreach_dart_of_orbit(m, centre, [&](Dart) { ++n; });
+	foreach_dart_of_orbit(m, Volume(centre.dart), [&](Dart) { ++w; });
+	EXPECT_EQ(n, most);
+	EXPECT_EQ(w, volume_darts);
+	EXPECT_GT(most, 12u);
 }

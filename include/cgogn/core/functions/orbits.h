@@ -12,13 +12,26 @@ namespace detail
 
 /// Breadth-first visit of the darts reachable from d through the given
 /// relations, with a pooled mark and work list: allocation-free once warm.
-/// Returns false when f stopped the traversal.
+/// Returns false when f stopped the traversal. The bits set are cleared and
+/// the mark given back also when f throws.
 template <typename MAP, typename FUNC, typename... NEXT>
 bool foreach_dart_flood(const MAP& m, Dart d, const FUNC& f, NEXT... next)
 {
-	MarkAttribute* mark = m.darts_->acquire_mark();
 	DartBuffer buffer;
 	std::vector<Dart>& darts = *buffer;
+	struct Release // before the buffer's destructor empties the list
+	{
+		AttributeContainer& pool;
+		MarkAttribute* mark;
+		const std::vector<Dart>& darts;
+		~Release()
+		{
+			for (Dart x : darts)
+				mark->reset(x.index);
+			pool.release_mark(mark);
+		}
+	} release{*m.darts_, m.darts_->acquire_mark(), darts};
+	MarkAttribute* mark = release.mark;
 	darts.push_back(d);
 	mark->set(d.index);
 	bool go_on = true;
@@ -33,15 +46,12 @@ bool foreach_dart_flood(const MAP& m, Dart d, const FUNC& f, NEXT... next)
 		auto visit = [&](Dart y) {
 			if (!mark->test(y.index))
 			{
+				darts.push_back(y); // first: a set bit is always in the list
 				mark->set(y.index);
-				darts.push_back(y);
 			}
 		};
 		(visit(next(x)), ...);
 	}
-	for (Dart x : darts)
-		mark->reset(x.index);
-	m.darts_->release_mark(mark);
 	return go_on;
 }
 
