@@ -167,7 +167,8 @@ void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vect
 /// flood with a pooled mark (no allocation once warm). Around a 2-D vertex, a
 /// callable with a member prefetch_line(uint32) is told each e = phi2(d)
 /// before the walk reads phi1(e), the next dart it receives (a hint; see
-/// detail::LineReport).
+/// detail::LineReport); around a 3-D vertex, of each dart found in the next
+/// volume, which it receives later (see detail::foreach_dart_of_vertex3).
 template <typename MAP, Orbit O, typename FUNC>
 	requires std::derived_from<MAP, CMapBase>
 bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
