@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/dart_buffer.h>
 #include <cgogn/core/functions/darts.h>
+#include <cgogn/core/types/dart_marker.h>
 
 namespace cgogn
 {
@@ -11,48 +11,24 @@ namespace detail
 {
 
 /// Breadth-first visit of the darts reachable from d through the given
-/// relations, with a pooled mark and work list: allocation-free once warm.
-/// Returns false when f stopped the traversal. The bits set are cleared and
-/// the mark given back also when f throws.
+/// relations; the darts marked so far are the work list (DartMarkerStore:
+/// pooled mark and buffer, no allocation once warm, cleared and given back on
+/// every exit, a throwing f included). Returns false when f stopped the
+/// traversal.
 template <typename MAP, typename FUNC, typename... NEXT>
 bool foreach_dart_flood(const MAP& m, Dart d, const FUNC& f, NEXT... next)
 {
-	DartBuffer buffer;
-	std::vector<Dart>& darts = *buffer;
-	struct Release // before the buffer's destructor empties the list
-	{
-		AttributeContainer& pool;
-		MarkAttribute* mark;
-		const std::vector<Dart>& darts;
-		~Release()
-		{
-			for (Dart x : darts)
-				mark->reset(x.index);
-			pool.release_mark(mark);
-		}
-	} release{*m.darts_, m.darts_->acquire_mark(), darts};
-	MarkAttribute* mark = release.mark;
-	darts.push_back(d);
-	mark->set(d.index);
-	bool go_on = true;
+	DartMarkerStore<MAP> seen(m);
+	const std::vector<Dart>& darts = seen.marked_darts();
+	seen.mark(d);
 	for (std::size_t i = 0; i < darts.size(); ++i)
 	{
-		Dart x = darts[i];
+		const Dart x = darts[i];
 		if (!call_and_continue(f, x))
-		{
-			go_on = false;
-			break;
-		}
-		auto visit = [&](Dart y) {
-			if (!mark->test(y.index))
-			{
-				darts.push_back(y); // first: a set bit is always in the list
-				mark->set(y.index);
-			}
-		};
-		(visit(next(x)), ...);
+			return false;
+		(seen.mark(next(x)), ...);
 	}
-	return go_on;
+	return true;
 }
 
 /// The darts of a 3-D vertex, breadth first: phi1 o phi2 turns around the
