@@ -6,7 +6,9 @@
 #include <atomic>
 #include <iterator>
 #include <set>
+#include <stdexcept>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -219,6 +221,39 @@ TEST(AttributeContainer, ManyMarksAtOnceAreIndependentAndComeBackCleared)
 	MarkAttribute* m = c.acquire_mark();
 	EXPECT_TRUE(m->all_clear());
 	c.release_mark(m);
+}
+
+TEST(AttributeContainer, ReservedMarkIsGivenBackAlsoWhenItsScopeThrows)
+{
+	AttributeContainer c("key");
+	for (uint32 i = 0; i < 10; ++i)
+		c.new_line(0);
+	MarkAttribute* first = nullptr;
+	{
+		ReservedMark r(c);
+		first = &*r;
+		r->set(3);
+		EXPECT_TRUE(first->test(3));
+		r->reset(3);
+	}
+	// the lowest free slot comes back: the same mark, so it was given back
+	MarkAttribute* m = c.acquire_mark();
+	EXPECT_EQ(m, first);
+	c.release_mark(m);
+	EXPECT_THROW(
+		{
+			ReservedMark r(c);
+			EXPECT_EQ(&*r, first);
+			throw std::runtime_error("callable failed");
+		},
+		std::runtime_error);
+	m = c.acquire_mark();
+	EXPECT_EQ(m, first);
+	MarkAttribute* other = c.acquire_mark();
+	EXPECT_NE(other, first);
+	c.release_mark(other);
+	c.release_mark(m);
+	static_assert(!std::is_copy_constructible_v<ReservedMark>);
 }
 
 TEST(AttributeContainer, MarkReservationIsThreadSafe)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <type_traits>
 
 using namespace cgogn;
 
@@ -131,3 +132,9 @@ TEST(Markers, ManyMarkersAliveAtOnce)
 		EXPECT_EQ(n, 1u);
 	}
 }
+
+// a copy would give the same reserved bit back twice
+static_assert(!std::is_copy_constructible_v<DartMarker<CMap2>> && !std::is_copy_assignable_v<DartMarker<CMap2>>);
+static_assert(!std::is_copy_constructible_v<DartMarkerStore<CMap2>>);
+static_assert(!std::is_copy_constructible_v<CellMarker<CMap2, CMap2::Vertex>>);
+static_assert(!std::is_copy_constructible_v<CellMarkerStore<CMap3, CMap3::Volume>>);

@@ -380,6 +380,36 @@ private:
 	std::vector<MarkAttribute*> overflow_free_;
 };
 
+/// A mark reserved from a container's pool for the life of its owner and given
+/// back when it dies, exceptions included. The owner clears the bits it set
+/// before then, in its own way: all at once, or only those it recorded.
+class ReservedMark
+{
+public:
+	explicit ReservedMark(AttributeContainer& c) : container_(c), mark_(c.acquire_mark())
+	{
+	}
+	~ReservedMark()
+	{
+		container_.release_mark(mark_);
+	}
+	ReservedMark(const ReservedMark&) = delete;
+	ReservedMark& operator=(const ReservedMark&) = delete;
+
+	MarkAttribute& operator*() const
+	{
+		return *mark_;
+	}
+	MarkAttribute* operator->() const
+	{
+		return mark_;
+	}
+
+private:
+	AttributeContainer& container_;
+	MarkAttribute* mark_;
+};
+
 template <typename T>
 std::shared_ptr<AttributeBase> Attribute<T>::clone_empty(AttributeContainer& to) const
 {

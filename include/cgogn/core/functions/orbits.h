@@ -64,16 +64,13 @@ bool foreach_dart_of_vertex3(const MAP& m, Dart d, const FUNC& f)
 class ScopedDartMark
 {
 public:
-	explicit ScopedDartMark(const CMapBase& m) : darts_(*m.darts_), mark_(darts_.acquire_mark())
+	explicit ScopedDartMark(const CMapBase& m) : mark_(*m.darts_)
 	{
 	}
 	~ScopedDartMark()
 	{
 		mark_->clear_all();
-		darts_.release_mark(mark_);
 	}
-	ScopedDartMark(const ScopedDartMark&) = delete;
-	ScopedDartMark& operator=(const ScopedDartMark&) = delete;
 
 	MarkAttribute& operator*() const
 	{
@@ -81,8 +78,7 @@ public:
 	}
 
 private:
-	AttributeContainer& darts_;
-	MarkAttribute* mark_;
+	ReservedMark mark_;
 };
 
 /// True for the orbits that foreach_dart_of_orbit floods with a mark and a

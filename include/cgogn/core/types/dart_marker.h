@@ -24,16 +24,13 @@ class DartMarker
 public:
 	using MapType = typename mesh_traits<MESH>::MapType;
 
-	explicit DartMarker(const MESH& m) : map_(map_of(m)), mark_(map_.darts_->acquire_mark())
+	explicit DartMarker(const MESH& m) : map_(map_of(m)), mark_(*map_.darts_)
 	{
 	}
 	~DartMarker()
 	{
 		mark_->clear_all();
-		map_.darts_->release_mark(mark_);
 	}
-	DartMarker(const DartMarker&) = delete;
-	DartMarker& operator=(const DartMarker&) = delete;
 
 	void mark(Dart d)
 	{
@@ -64,7 +61,7 @@ public:
 
 protected:
 	const MapType& map_;
-	MarkAttribute* mark_;
+	ReservedMark mark_; // not copyable: neither is the marker
 };
 
 /// A DartMarker that also records the marked darts, so that clearing is
@@ -75,16 +72,13 @@ class DartMarkerStore
 public:
 	using MapType = typename mesh_traits<MESH>::MapType;
 
-	explicit DartMarkerStore(const MESH& m) : map_(map_of(m)), mark_(map_.darts_->acquire_mark())
+	explicit DartMarkerStore(const MESH& m) : map_(map_of(m)), mark_(*map_.darts_)
 	{
 	}
 	~DartMarkerStore()
 	{
 		unmark_all();
-		map_.darts_->release_mark(mark_);
 	}
-	DartMarkerStore(const DartMarkerStore&) = delete;
-	DartMarkerStore& operator=(const DartMarkerStore&) = delete;
 
 	void mark(Dart d)
 	{
@@ -129,7 +123,7 @@ public:
 
 private:
 	const MapType& map_;
-	MarkAttribute* mark_;
+	ReservedMark mark_; // not copyable: neither is the marker
 	// borrowed from a per-thread pool: no allocation once warm
 	mutable detail::DartBuffer marked_;
 };

@@ -25,17 +25,13 @@ public:
 
 	explicit CellMarker(const MESH& m)
 		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
-		  container_(indexed_ ? &container_of<CELL::ORBIT>(map_) : map_.darts_.get()),
-		  mark_(container_->acquire_mark())
+		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *map_.darts_)
 	{
 	}
 	~CellMarker()
 	{
 		mark_->clear_all();
-		container_->release_mark(mark_);
 	}
-	CellMarker(const CellMarker&) = delete;
-	CellMarker& operator=(const CellMarker&) = delete;
 
 	void mark(CELL c)
 	{
@@ -63,8 +59,7 @@ public:
 protected:
 	const MapType& map_;
 	bool indexed_;
-	AttributeContainer* container_;
-	MarkAttribute* mark_;
+	ReservedMark mark_; // not copyable: neither is the marker
 };
 
 /// A CellMarker that records the marked cells: unmark_all is O(number of
@@ -80,17 +75,13 @@ public:
 
 	explicit CellMarkerStore(const MESH& m)
 		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
-		  container_(indexed_ ? &container_of<CELL::ORBIT>(map_) : map_.darts_.get()),
-		  mark_(container_->acquire_mark())
+		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *map_.darts_)
 	{
 	}
 	~CellMarkerStore()
 	{
 		unmark_all();
-		container_->release_mark(mark_);
 	}
-	CellMarkerStore(const CellMarkerStore&) = delete;
-	CellMarkerStore& operator=(const CellMarkerStore&) = delete;
 
 	void mark(CELL c)
 	{
@@ -138,8 +129,7 @@ private:
 
 	const MapType& map_;
 	bool indexed_;
-	AttributeContainer* container_;
-	MarkAttribute* mark_;
+	ReservedMark mark_; // not copyable: neither is the marker
 	std::vector<CELL> marked_;
 };
 

@@ -17,17 +17,14 @@ class LocalCellSet
 public:
 	explicit LocalCellSet(const MAP& m)
 		: map_(m), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(m)),
-		  container_(indexed_ ? &container_of<CELL::ORBIT>(m) : m.darts_.get()), mark_(container_->acquire_mark())
+		  mark_(indexed_ ? container_of<CELL::ORBIT>(m) : *m.darts_)
 	{
 	}
 	~LocalCellSet()
 	{
 		for (Dart d : *marked_)
 			mark_->reset(d.index);
-		container_->release_mark(mark_);
 	}
-	LocalCellSet(const LocalCellSet&) = delete;
-	LocalCellSet& operator=(const LocalCellSet&) = delete;
 
 	/// Adds c; true when it was not in the set.
 	bool insert(CELL c)
@@ -37,15 +34,15 @@ public:
 			const uint32 i = index_of(map_, c);
 			if (mark_->test(i))
 				return false;
+			marked_->push_back(Dart(i)); // first: a set bit is always recorded (bad_alloc)
 			mark_->set(i);
-			marked_->push_back(Dart(i));
 			return true;
 		}
 		if (mark_->test(c.dart.index))
 			return false;
 		foreach_dart_of_orbit(map_, c, [&](Dart d) {
-			mark_->set(d.index);
 			marked_->push_back(d);
+			mark_->set(d.index);
 		});
 		return true;
 	}
@@ -53,8 +50,7 @@ public:
 private:
 	const MAP& map_;
 	bool indexed_;
-	AttributeContainer* container_;
-	MarkAttribute* mark_;
+	ReservedMark mark_; // not copyable: neither is the set
 	DartBuffer marked_;
 };
 

@@ -80,17 +80,16 @@ bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC
 			const std::array<Neighbour, 64>& few;
 			const std::vector<Neighbour>& many;
 			const uint32& n;
-			MarkAttribute& mark = *vertices.acquire_mark();
+			ReservedMark mark{vertices};
 			~Seen()
 			{
 				for (uint32 i = 0; i < std::min<uint32>(n, uint32(few.size())); ++i)
-					mark.reset(few[i].line);
+					mark->reset(few[i].line);
 				for (const Neighbour& w : many)
-					mark.reset(w.line);
-				vertices.release_mark(&mark);
+					mark->reset(w.line);
 			}
 		} guard{vertices, few, many, n};
-		MarkAttribute& seen = guard.mark;
+		MarkAttribute& seen = *guard.mark;
 		const auto phi1_of = m.phi1_->view();
 		auto collect = [&](Dart d) {
 			const Dart e(phi1_of[d.index]);
@@ -102,12 +101,12 @@ bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC
 			}
 			if (seen.test(w))
 				return true;
-			seen.set(w);
 			if (n < few.size())
 				few[n] = Neighbour(e, w);
 			else
 				many.emplace_back(e, w);
 			++n;
+			seen.set(w); // last: a set bit is always recorded (bad_alloc)
 			return true;
 		};
 		// told by the walk which dart comes later (foreach_dart_of_vertex3),
