@@ -59,28 +59,6 @@ bool foreach_dart_of_vertex3(const MAP& m, Dart d, const FUNC& f)
 	return foreach_dart_flood(m, d, f, turn, cross);
 }
 
-/// A dart mark reserved from the map's pool for the life of a scope, cleared
-/// (O(darts / 64)) and given back at its end, exceptions included.
-class ScopedDartMark
-{
-public:
-	explicit ScopedDartMark(const CMapBase& m) : mark_(*m.darts_)
-	{
-	}
-	~ScopedDartMark()
-	{
-		mark_->clear_all();
-	}
-
-	MarkAttribute& operator*() const
-	{
-		return *mark_;
-	}
-
-private:
-	ReservedMark mark_;
-};
-
 /// True for the orbits that foreach_dart_of_orbit floods with a mark and a
 /// work list (volumes, 3-D vertices, connected components); the others are
 /// walked as one or two cycles.

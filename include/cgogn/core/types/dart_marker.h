@@ -2,7 +2,8 @@
 #pragma once
 
 // The dart markers on their own, below orbits.h: the floods of
-// foreach_dart_of_orbit use DartMarkerStore as their mark and work list.
+// foreach_dart_of_orbit use DartMarkerStore as their mark and work list, the
+// whole-map floods a ScopedDartMark (a DartMarker's raw mark).
 // mark_orbit and unmark_orbit find foreach_dart_of_orbit when instantiated.
 
 #include <cgogn/core/functions/dart_buffer.h>
@@ -14,6 +15,38 @@
 namespace cgogn
 {
 
+namespace detail
+{
+
+/// A dart mark reserved from the map's pool for the life of a scope, cleared
+/// (O(darts / 64)) and given back at its end, exceptions included. The raw
+/// mark of a DartMarker, for the floods that take a MarkAttribute.
+class ScopedDartMark
+{
+public:
+	explicit ScopedDartMark(const CMapBase& m) : mark_(*m.darts_)
+	{
+	}
+	~ScopedDartMark()
+	{
+		mark_->clear_all();
+	}
+
+	MarkAttribute& operator*() const
+	{
+		return *mark_;
+	}
+	MarkAttribute* operator->() const
+	{
+		return &*mark_;
+	}
+
+private:
+	ReservedMark mark_;
+};
+
+} // namespace detail
+
 /// Marks darts with a bit reserved from the map's pool; the bits are cleared
 /// and the reservation given back when the marker dies. Any number of markers
 /// may be alive at once. Clearing (unmark_all, destruction) is O(number of
@@ -24,12 +57,8 @@ class DartMarker
 public:
 	using MapType = typename mesh_traits<MESH>::MapType;
 
-	explicit DartMarker(const MESH& m) : map_(map_of(m)), mark_(*map_.darts_)
+	explicit DartMarker(const MESH& m) : map_(map_of(m)), mark_(map_)
 	{
-	}
-	~DartMarker()
-	{
-		mark_->clear_all();
 	}
 
 	void mark(Dart d)
@@ -61,7 +90,7 @@ public:
 
 protected:
 	const MapType& map_;
-	ReservedMark mark_; // not copyable: neither is the marker
+	detail::ScopedDartMark mark_; // cleared and given back with the marker; not copyable
 };
 
 /// A DartMarker that also records the marked darts, so that clearing is
