@@ -64,7 +64,7 @@ TEST(IncidenceCache, SurfaceVertexFaceAndVertexVertex)
 	EXPECT_LE(n, 2u);
 
 	// the table really is read: a corrupted row is reported and traversed
-	auto& t = *m.incidence_tables_.front();
+	auto& t = **m.incidence_tables_.begin();
 	ASSERT_GT(t.targets.size(), 1u);
 	std::swap(t.targets[0], t.targets[1]);
 	IntegrityReport r = check_integrity(m);

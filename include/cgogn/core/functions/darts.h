@@ -134,8 +134,8 @@ inline void remove_dart(CMapBase& m, Dart d)
 }
 
 /// Every change of a relation goes through these: a topological change makes
-/// the quick incidence caches wrong, so they are dropped (one test of an empty
-/// vector when there are none).
+/// the quick incidence caches wrong, so they are dropped (one test of a
+/// null pointer when there are none).
 inline void drop_incidence_caches(CMapBase& m)
 {
 	if (!m.incidence_tables_.empty())

@@ -117,7 +117,8 @@ constexpr bool incidence_cache_supported()
 /// when TO is indexed at build time): a callable taking `auto` reads their
 /// attributes at flat-array cost; one taking TO gets the plain cell.
 /// Memory: 4 bytes per FROM container line + 4 bytes per stored neighbour
-/// (8 with the lines).
+/// (8 with the lines), and 30 KB per map holding any cache (the lookup array
+/// of IncidenceTables).
 /// Supported: every local traversal of 2- and 3-maps but the O(1) ones
 /// (2-D edge -> vertex/face/volume, 3-D edge -> vertex, face -> volume, * ->
 /// connected component of a 2-map).
@@ -149,7 +150,8 @@ public:
 			t->through = orbit_index(THROUGH::ORBIT);
 		t->row_is_valid = &row_is_valid;
 		const AttributeContainer& from = container_of<FROM::ORBIT>(m);
-		t->offsets.assign(std::size_t(from.end_index()) + 1, 0);
+		t->nb_rows = from.end_index();
+		t->offsets.assign(std::size_t(t->nb_rows) + 1, 0);
 		uint32* offsets = t->offsets.data();
 		// pass 1: row sizes (row i + 1 of offsets), each FROM cell writes its own slot
 		// the rows are the pure dart walks (other caches bypassed), as check_integrity expects
@@ -178,7 +180,7 @@ public:
 				targets[k++] = x.dart;
 			});
 		});
-		m.incidence_tables_.push_back(std::move(t));
+		m.incidence_tables_.add(std::move(t));
 	}
 
 	/// Recomputes the table after topological changes (same as build). Cost of build.
@@ -190,24 +192,20 @@ public:
 	/// Frees the table; traversals walk the darts again. O(number of tables).
 	static void remove(MAP& m)
 	{
-		auto& v = m.incidence_tables_;
-		v.erase(std::remove_if(v.begin(), v.end(), [](const auto& t) { return t->key == key; }), v.end());
+		m.incidence_tables_.remove(key);
 	}
 
-	/// True when the table is built. O(number of tables).
+	/// True when the table is built. O(1).
 	static bool is_built(const MAP& m)
 	{
-		return std::any_of(m.incidence_tables_.begin(), m.incidence_tables_.end(),
-						   [](const auto& t) { return t->key == key; });
+		return m.incidence_tables_.find(key) != nullptr;
 	}
 
-	/// Bytes held by the table (0 when not built). O(number of tables).
+	/// Bytes held by the table (0 when not built). O(1).
 	static std::size_t memory_bytes(const MAP& m)
 	{
-		for (const auto& t : m.incidence_tables_)
-			if (t->key == key)
-				return t->memory_bytes();
-		return 0;
+		const IncidenceTable* t = m.incidence_tables_.find(key);
+		return t == nullptr ? 0 : t->memory_bytes();
 	}
 
 private:

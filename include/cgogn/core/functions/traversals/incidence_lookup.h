@@ -15,7 +15,9 @@ constexpr uint32 incidence_key()
 	uint32 through = NB_ORBITS;
 	if constexpr (!std::is_void_v<THROUGH>)
 		through = orbit_index(THROUGH::ORBIT);
-	return (orbit_index(FROM::ORBIT) * N + orbit_index(TO::ORBIT)) * N + through;
+	const uint32 key = (orbit_index(FROM::ORBIT) * N + orbit_index(TO::ORBIT)) * N + through;
+	static_assert(N * N * NB_ORBITS == NB_INCIDENCE_KEYS);
+	return key;
 }
 
 /// Depth of "compute without caches" requests on this thread (builders and
@@ -42,10 +44,7 @@ inline const IncidenceTable* find_incidence_table(const CMapBase& m, uint32 key)
 {
 	if (incidence_cache_bypass != 0)
 		return nullptr;
-	for (const auto& t : m.incidence_tables_)
-		if (t->key == key)
-			return t.get();
-	return nullptr;
+	return m.incidence_tables_.find(key);
 }
 
 /// Whether callable FUNC takes exactly the plain cell type TO (not a
@@ -65,7 +64,8 @@ constexpr bool takes_plain_cell()
 /// stop by returning false) and returns true; otherwise returns false and the
 /// caller traverses the darts. The neighbours are given as LocatedCell (cell
 /// and line) when the table holds their lines, which converts to TO for a
-/// callable taking TO. One test of an empty vector when no cache is enabled.
+/// callable taking TO. One test of a null pointer when no cache is enabled,
+/// one array read to find the table otherwise.
 template <typename TO, typename THROUGH, typename FROM, typename FUNC>
 CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 {
@@ -79,8 +79,8 @@ CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 		r = c.line != INVALID_INDEX ? c.line : index_of(m, Cell<FROM::ORBIT>(c));
 	else
 		r = index_of(m, c);
-	if (r == INVALID_INDEX || std::size_t(r) + 1 >= t->offsets.size())
-		return false; // a cell created after the cache was built
+	if (r >= t->nb_rows)
+		return false; // a cell created after the cache was built (or r == INVALID_INDEX)
 	const uint32 b = t->offsets[r], e = t->offsets[r + 1];
 	const Dart* targets = t->targets.data();
 	if (!takes_plain_cell<FUNC, TO>() && !t->target_lines.empty())

@@ -53,7 +53,7 @@ public:
 	/// is_incident_to_boundary in O(1).
 	uint32 nb_boundary_darts_ = 0;
 	/// Quick incidence caches (see IncidenceCache); empty unless enabled.
-	std::vector<std::unique_ptr<IncidenceTable>> incidence_tables_;
+	IncidenceTables incidence_tables_;
 
 protected:
 	Attribute<uint32>* add_relation(const std::string& name)
