@@ -332,3 +332,48 @@ TEST(IncidenceCache, ForeachCellGivesLocatedCellsToCachedTraversals)
 	EXPECT_EQ(around(Located<V>(a.dart, index_of(m, b))), around(b));
 	EXPECT_NE(around(a), around(b));
 }
+
+// The map's set of tables: one per relation key, found by key, and no lookup
+// array left behind once the last table is gone (empty() is what every local
+// traversal tests first).
+TEST(IncidenceCache, TablesAreFoundByKeyAndReplacedPerKey)
+{
+	auto table = [](uint32 key, uint32 rows) {
+		auto t = std::make_unique<IncidenceTable>();
+		t->key = key;
+		t->nb_rows = rows;
+		return t;
+	};
+	IncidenceTables ts;
+	EXPECT_TRUE(ts.empty());
+	EXPECT_EQ(ts.find(0), nullptr);
+	EXPECT_EQ(ts.find(NB_INCIDENCE_KEYS - 1), nullptr);
+	ts.add(table(7, 1));
+	ts.add(table(NB_INCIDENCE_KEYS - 1, 2));
+	EXPECT_FALSE(ts.empty());
+	EXPECT_EQ(ts.size(), 2u);
+	ASSERT_NE(ts.find(7), nullptr);
+	EXPECT_EQ(ts.find(7)->nb_rows, 1u);
+	EXPECT_EQ(ts.find(NB_INCIDENCE_KEYS - 1)->nb_rows, 2u);
+	EXPECT_EQ(ts.find(8), nullptr);
+	// a second table of a key replaces the first
+	ts.add(table(7, 3));
+	EXPECT_EQ(ts.size(), 2u);
+	EXPECT_EQ(ts.find(7)->nb_rows, 3u);
+	ts.remove(7);
+	ts.remove(7); // absent: nothing happens
+	EXPECT_EQ(ts.find(7), nullptr);
+	EXPECT_EQ(ts.size(), 1u);
+	EXPECT_FALSE(ts.empty());
+	ts.remove(NB_INCIDENCE_KEYS - 1);
+	EXPECT_TRUE(ts.empty());
+	ts.add(table(5, 1));
+	ts.clear();
+	EXPECT_TRUE(ts.empty());
+	EXPECT_EQ(ts.size(), 0u);
+	EXPECT_EQ(ts.find(5), nullptr);
+
+	// every relation of the 2- and 3-maps has a key inside the array
+	static_assert(detail::incidence_key<CMap3::Volume, CMap3::Volume, CMap3::Vertex>() < NB_INCIDENCE_KEYS);
+	static_assert(detail::incidence_key<CMap3::Vertex, CMap3::Vertex, void>() < NB_INCIDENCE_KEYS);
+}
