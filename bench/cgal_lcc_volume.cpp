@@ -5,9 +5,17 @@
 // Linear_cell_complex_incremental_builder_3 (one closed surface per tet,
 // 3-sewn to its neighbours by the builder); cells walked through their
 // attribute containers and one_dart_per_incident_cell ranges.
-// Split and collapse are not run for the LCC: it has no public operator that
-// inserts a vertex in a 3-cell (insert_point_in_cell is for 1- and 2-cells)
-// nor a tet-mesh edge collapse; see bench/README.md.
+// Split: the LCC has no operator that inserts a vertex in a 3-cell
+// (insert_point_in_cell is for 1- and 2-cells), so each tet is replaced by
+// four with its public construction API: make_tetrahedron on the existing
+// vertex attributes and the new centre, sew<3> between them, remove_cell<3>
+// of the old tet, sew<3> to its former neighbours, all without attribute
+// updates (every dart of the new tets already holds the right vertex
+// attribute; with updates, remove_cell<3> walks the 3-D star of each of the
+// four vertices to see whether it was split: 29.8 s instead of 1.5 s on
+// armadillo_tet_461k). Collapse is not run: the
+// LCC has no tet-mesh edge collapse (contract_cell<1> leaves degenerate faces
+// and volumes to contract one by one); see bench/README.md.
 #include "harness.h"
 #include "inputs.h"
 #include "workload_rules.h"
@@ -208,6 +216,96 @@ void smoothing(benchmark::State& state, bool first)
 	set_check(state, "check", s);
 }
 
+// ---- split: every original tet 1-to-4 at its barycenter
+
+// Sews the triangle of dart a to the triangle of dart b (opposite
+// orientations): beta3 links the two darts of an edge, one from each face,
+// that run in opposite directions (beta3 of A->B is B->A), so b is first
+// turned to the dart starting where a ends.
+void sew_triangles(Lcc& m, DH a, DH b)
+{
+	const VAH end_of_a = m.vertex_attribute(m.beta<1>(a));
+	for (int k = 0; k < 3 && m.vertex_attribute(b) != end_of_a; ++k)
+		b = m.beta<1>(b);
+	m.sew<3>(a, b, false);
+}
+
+// Replaces the tet of w by four tets around a new vertex at its barycenter.
+// The tet's faces, seen from w = A->B in face (A, B, C), with D the fourth
+// vertex: F0 = (A, B, C) at w, F1 = (B, A, D) at beta2(w), F2 = (C, B, D) at
+// beta2(beta1(w)), F3 = (A, C, D) at beta2(beta0(w)); the new tet i is
+// make_tetrahedron(Fi, X), whose returned dart is the old face's dart at the
+// same edge in the same direction, so it is 3-sewn to the old face's
+// neighbour directly.
+void split_tet(Lcc& m, DH w, uint32_t new_info)
+{
+	const DH face[4] = {w, m.beta<2>(w), m.beta<2>(m.beta<1>(w)), m.beta<2>(m.beta<0>(w))};
+	VAH v[4][3];
+	DH outside[4];
+	for (int i = 0; i < 4; ++i)
+	{
+		v[i][0] = m.vertex_attribute(face[i]);
+		v[i][1] = m.vertex_attribute(m.beta<1>(face[i]));
+		v[i][2] = m.vertex_attribute(m.beta<0>(face[i]));
+		outside[i] = m.is_free<3>(face[i]) ? m.null_handle : m.beta<3>(face[i]);
+	}
+	const VAH A = v[0][0], B = v[0][1], C = v[0][2], D = v[1][2];
+	const Vector b = ((A->point() - CGAL::ORIGIN) + (B->point() - CGAL::ORIGIN) + (C->point() - CGAL::ORIGIN) +
+					  (D->point() - CGAL::ORIGIN)) /
+					 4.0;
+	const VAH X = m.create_vertex_attribute(CGAL::ORIGIN + b);
+	X->info() = new_info;
+	DH t[4];
+	for (int i = 0; i < 4; ++i)
+		t[i] = m.make_tetrahedron(v[i][0], v[i][1], v[i][2], X);
+	// the six inner faces, each at the shared edge of two outer faces (see the
+	// faces of make_tetrahedron(h0, h1, h2, h3): beta2 of its dart h0->h1 is
+	// (h1, h0, h3), of h1->h2 is (h1, h3, h2), of h2->h0 is (h3, h0, h2))
+	auto e01 = [&](DH d) { return m.beta<2>(d); };
+	auto e12 = [&](DH d) { return m.beta<2>(m.beta<1>(d)); };
+	auto e20 = [&](DH d) { return m.beta<2>(m.beta<0>(d)); };
+	sew_triangles(m, e01(t[0]), e01(t[1])); // edge AB
+	sew_triangles(m, e12(t[0]), e01(t[2])); // edge BC
+	sew_triangles(m, e20(t[0]), e01(t[3])); // edge CA
+	sew_triangles(m, e12(t[1]), e20(t[3])); // edge AD
+	sew_triangles(m, e20(t[1]), e12(t[2])); // edge DB
+	sew_triangles(m, e20(t[2]), e12(t[3])); // edge DC
+	m.remove_cell<3>(w, false);
+	for (int i = 0; i < 4; ++i)
+		if (outside[i] != m.null_handle)
+			m.sew<3>(t[i], outside[i], false);
+}
+
+std::unique_ptr<LccVolume> fresh()
+{
+	Cache::clear();
+	return std::make_unique<LccVolume>(volume_soup(), false);
+}
+
+void split(benchmark::State& state, bool)
+{
+	std::unique_ptr<LccVolume> me;
+	timed(
+		state, false, [&] { me = fresh(); },
+		[&] {
+			Lcc& m = me->m;
+			std::vector<DH> tets;
+			for (auto d = m.one_dart_per_cell<3>().begin(); d != m.one_dart_per_cell<3>().end(); ++d)
+				tets.push_back(d);
+			uint32_t next = uint32_t(me->vertices.size());
+			for (DH w : tets)
+				split_tet(m, w, next++);
+		});
+	Lcc& m = me->m;
+	set_check(state, "check_V", double(m.vertex_attributes().size()));
+	set_check(state, "check_T", double(m.one_dart_per_cell<3>().size()));
+	double sum = 0; // the new vertices at the barycenters
+	for (auto& v : m.vertex_attributes())
+		sum += v.point().x() + v.point().y() + v.point().z();
+	set_check(state, "check_position_sum", sum);
+	set_check(state, "check_valid", m.is_valid() ? 1.0 : 0.0);
+}
+
 void memory(benchmark::State& state, bool)
 {
 	Cache::clear();
@@ -235,6 +333,7 @@ const bool registered = [] {
 	register_bench("volume/circulator2/cgal_lcc", Kind::read_only, circulator2);
 	register_bench("volume/barycenter/cgal_lcc", Kind::read_only, barycenter);
 	register_bench("volume/smoothing/cgal_lcc", Kind::read_only, smoothing);
+	register_bench("volume/split/cgal_lcc", Kind::topology, split);
 	register_bench("memory/volume/cgal_lcc", Kind::single, memory);
 	return true;
 }();

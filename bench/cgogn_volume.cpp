@@ -265,6 +265,10 @@ void split(benchmark::State& state, bool)
 		});
 	set_check(state, "check_V", double(nb_cells<Vertex>(me->map)));
 	set_check(state, "check_T", double(nb_cells<Volume>(me->map)));
+	double sum = 0; // the new vertices at the barycenters
+	foreach_cell(me->map, [&](Vertex v) { sum += value<Vec3>(me->map, *me->position, v).sum(); });
+	set_check(state, "check_position_sum", sum);
+	set_check(state, "check_valid", check_integrity(me->map).ok() ? 1.0 : 0.0);
 }
 
 void collapse(benchmark::State& state, bool)
