@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // CGAL Linear_cell_complex_for_combinatorial_map<3>'s side of the volume
-// suite (read-only workloads): vertex attributes with the point and the soup
+// suite: vertex attributes with the point and the soup
 // index (info), 3-attributes holding the stored barycenter. Built with
 // Linear_cell_complex_incremental_builder_3 (one closed surface per tet,
 // 3-sewn to its neighbours by the builder); cells walked through their
@@ -13,9 +13,10 @@
 // updates (every dart of the new tets already holds the right vertex
 // attribute; with updates, remove_cell<3> walks the 3-D star of each of the
 // four vertices to see whether it was split: 29.8 s instead of 1.5 s on
-// armadillo_tet_461k). Collapse is not run: the
-// LCC has no tet-mesh edge collapse (contract_cell<1> leaves degenerate faces
-// and volumes to contract one by one); see bench/README.md.
+// armadillo_tet_461k). Collapse: the LCC has no tet-mesh edge collapse
+// either; contract_cell<1> of the edge, then contract_cell<2> of the
+// triangles around it (2-gons by then) and contract_cell<3> of the tets
+// around it (two faces left each) do it. See bench/README.md.
 #include "harness.h"
 #include "inputs.h"
 #include "workload_rules.h"
@@ -24,7 +25,9 @@
 #include <CGAL/Linear_cell_complex_incremental_builder.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace cgogn_bench
@@ -306,6 +309,86 @@ void split(benchmark::State& state, bool)
 	set_check(state, "check_valid", m.is_valid() ? 1.0 : 0.0);
 }
 
+// ---- collapse: 7 times the shortest edge with both end points interior
+
+bool on_boundary(const Lcc& m, Lcc::Dart_const_handle d)
+{
+	for (auto it = m.darts_of_cell<0>(d).begin(), end = m.darts_of_cell<0>(d).end(); it != end; ++it)
+		if (m.is_free<3>(it))
+			return true;
+	return false;
+}
+
+// Collapses the interior edge of e to its midpoint mid, with the LCC's cell
+// contractions: the edge (contract_cell<1>, which merges the two vertex
+// attributes), then each triangle around it, a 2-gon now (contract_cell<2>),
+// then each tet around it, whose two remaining faces are now the same
+// triangle (contract_cell<3>). Darts of the cells contracted later are taken
+// before: around the edge, x and beta2(x) are the two faces of one tet at the
+// edge, beta3 goes to the next tet; beta1 of a dart of a face at the edge
+// survives the edge's contraction, and beta2(beta1(x)) is in a face of x's
+// tet away from the edge, which survives the 2-gons' contractions. Returns
+// the kept vertex.
+VAH collapse_edge(Lcc& m, DH e, const Point& mid)
+{
+	std::vector<DH> two_gons, tets;
+	DH x = e;
+	do
+	{
+		tets.push_back(m.beta<2>(m.beta<1>(x)));
+		const DH y = m.beta<2>(x);
+		two_gons.push_back(m.beta<1>(y));
+		x = m.beta<3>(y);
+	} while (x != e);
+	m.contract_cell<1>(e);
+	const VAH kept = m.vertex_attribute(two_gons.front());
+	for (DH f : two_gons)
+		m.contract_cell<2>(f);
+	for (DH t : tets)
+		m.contract_cell<3>(t);
+	kept->point() = mid;
+	return kept;
+}
+
+void collapse(benchmark::State& state, bool)
+{
+	std::unique_ptr<LccVolume> me;
+	std::vector<double> lengths;
+	timed(
+		state, false, [&] { me = fresh(); },
+		[&] {
+			Lcc& m = me->m;
+			lengths.clear();
+			// boundary status cached per vertex (by soup index)
+			std::vector<uint8_t> boundary(me->vertices.size());
+			for (auto& v : m.vertex_attributes())
+				boundary[v.info()] = on_boundary(m, v.dart());
+			for (uint32_t k = 0; k < volume_collapses; ++k)
+			{
+				DH best = m.null_handle;
+				ShortestEdge shortest;
+				for (auto d = m.one_dart_per_cell<1>().begin(), end = m.one_dart_per_cell<1>().end(); d != end; ++d)
+				{
+					const VAH a = m.vertex_attribute(d), b = m.vertex_attribute(m.other_extremity(d));
+					if (boundary[a->info()] || boundary[b->info()])
+						continue;
+					if (shortest.offer(std::sqrt(CGAL::squared_distance(a->point(), b->point())), a->point(), b->point()))
+						best = d;
+				}
+				lengths.push_back(shortest.length);
+				const Point mid(shortest.midpoint[0], shortest.midpoint[1], shortest.midpoint[2]);
+				const VAH kept = collapse_edge(m, best, mid);
+				boundary[kept->info()] = on_boundary(m, kept->dart());
+			}
+		});
+	Lcc& m = me->m;
+	for (uint32_t k = 0; k < lengths.size(); ++k)
+		set_check(state, "check_len" + std::to_string(k), lengths[k]);
+	set_check(state, "check_V", double(m.vertex_attributes().size()));
+	set_check(state, "check_T", double(m.one_dart_per_cell<3>().size()));
+	set_check(state, "check_valid", m.is_valid() ? 1.0 : 0.0);
+}
+
 void memory(benchmark::State& state, bool)
 {
 	Cache::clear();
@@ -334,6 +417,7 @@ const bool registered = [] {
 	register_bench("volume/barycenter/cgal_lcc", Kind::read_only, barycenter);
 	register_bench("volume/smoothing/cgal_lcc", Kind::read_only, smoothing);
 	register_bench("volume/split/cgal_lcc", Kind::topology, split);
+	register_bench("volume/collapse/cgal_lcc", Kind::topology, collapse);
 	register_bench("memory/volume/cgal_lcc", Kind::single, memory);
 	return true;
 }();

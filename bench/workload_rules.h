@@ -4,8 +4,10 @@
 // Constants and selection rules shared by every library's implementation, so
 // that all do exactly the same work (BENCHMARKS.md).
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 namespace cgogn_bench
@@ -28,6 +30,30 @@ inline bool dynamic_selected(uint32_t face_rank, uint32_t batch)
 
 /// Volume collapse: the number of shortest-interior-edge collapses.
 inline constexpr uint32_t volume_collapses = 7;
+
+/// Volume collapse: the shortest edge of a scan. Ties (a regular grid has
+/// many edges of one length) go to the smallest midpoint in lexicographic
+/// order, so that every library picks the same edge whatever its edge order.
+struct ShortestEdge
+{
+	double length = std::numeric_limits<double>::max();
+	std::array<double, 3> midpoint{};
+
+	/// Whether the edge from a to b, of length l, is shorter than the best so
+	/// far; if so it becomes the best. P: any point type with operator[].
+	template <typename P>
+	bool offer(double l, const P& a, const P& b)
+	{
+		if (l > length)
+			return false;
+		const std::array<double, 3> m{(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0, (a[2] + b[2]) / 2.0};
+		if (l == length && !(m < midpoint))
+			return false;
+		length = l;
+		midpoint = m;
+		return true;
+	}
+};
 /// Volume smoothing: the check is the coordinate sum after this many passes.
 inline constexpr uint32_t volume_smoothing_check_passes = 7;
 
