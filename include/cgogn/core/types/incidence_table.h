@@ -5,6 +5,7 @@
 #include <cgogn/core/types/orbit.h>
 
 #include <algorithm>
+#include <cassert>
 #include <memory>
 #include <vector>
 
@@ -64,6 +65,7 @@ public:
 	/// The table of relation key, nullptr when not built. O(1).
 	const IncidenceTable* find(uint32 key) const
 	{
+		assert(key < NB_INCIDENCE_KEYS);
 		return by_key_ == nullptr ? nullptr : by_key_[key];
 	}
 	/// Whether no cache is built: what a traversal tests first. O(1).
@@ -78,6 +80,7 @@ public:
 	/// Adds t, replacing the table of the same key if any.
 	void add(std::unique_ptr<IncidenceTable> t)
 	{
+		assert(t->key < NB_INCIDENCE_KEYS);
 		remove(t->key);
 		if (by_key_ == nullptr)
 			by_key_ = std::make_unique<const IncidenceTable*[]>(NB_INCIDENCE_KEYS);
