@@ -5,7 +5,6 @@
 #include <cgogn/core/functions/traversals/local_cmap3.h>
 #include <cgogn/core/functions/traversals/parallel.h>
 
-#include <algorithm>
 #include <memory>
 
 namespace cgogn

@@ -27,7 +27,10 @@ struct IncidenceTable
 	/// The orbit of the shared cell of an adjacency; NB_ORBITS for an incidence.
 	uint32 through = NB_ORBITS;
 	/// Number of rows: the FROM container's end index at build time
-	/// (offsets holds nb_rows + 1 entries).
+	/// (offsets holds nb_rows + 1 entries). Stored although offsets.size()
+	/// tells it: the traversals test it once per cell, and reading it from the
+	/// vector's bounds made the quick surface circulator 3-5% slower
+	/// (8.25 -> 8.67 ms, minima of 20 alternated runs).
 	uint32 nb_rows = 0;
 	std::vector<uint32> offsets;
 	std::vector<Dart> targets;
