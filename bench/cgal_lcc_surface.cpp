@@ -205,12 +205,6 @@ void smoothing(benchmark::State& state, bool first)
 	set_check(state, "check", position_sum(m));
 }
 
-std::unique_ptr<LccSurface> fresh()
-{
-	Cache::clear();
-	return std::make_unique<LccSurface>(surface_soup());
-}
-
 void set_counts_and_checksum(benchmark::State& state, Lcc& m)
 {
 	set_check(state, "check_V", double(m.number_of_vertex_attributes()));
@@ -261,7 +255,7 @@ void subdivision(benchmark::State& state, bool)
 {
 	std::unique_ptr<LccSurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<LccSurface>(surface_soup()); },
 		[&] {
 			Lcc& m = me->m;
 			std::vector<VAH> vertices;
@@ -305,7 +299,7 @@ void collapse(benchmark::State& state, bool)
 {
 	std::unique_ptr<LccSurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<LccSurface>(surface_soup()); },
 		[&] {
 			Lcc& m = me->m;
 			std::vector<DH> faces;
@@ -323,7 +317,7 @@ void collapse(benchmark::State& state, bool)
 
 void dynamic(benchmark::State& state, bool)
 {
-	std::unique_ptr<LccSurface> me = fresh();
+	std::unique_ptr<LccSurface> me = fresh_structure<LccSurface>(surface_soup());
 	trim_heap();
 	Lcc& m = me->m;
 	for (auto _ : state)

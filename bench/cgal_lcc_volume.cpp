@@ -205,6 +205,15 @@ void smoothing_pass(LccVolume& me)
 		v.point() = me.buffer[v.info()];
 }
 
+/// The sum of every vertex's coordinates (the checks of smoothing and split).
+double position_sum(Lcc& m)
+{
+	double s = 0;
+	for (auto& v : m.vertex_attributes())
+		s += v.point().x() + v.point().y() + v.point().z();
+	return s;
+}
+
 void smoothing(benchmark::State& state, bool first)
 {
 	LccVolume& me = mesh();
@@ -213,10 +222,7 @@ void smoothing(benchmark::State& state, bool first)
 	me.reset_positions();
 	for (uint32_t i = 0; i < volume_smoothing_check_passes; ++i)
 		smoothing_pass(me);
-	double s = 0;
-	for (auto& v : me.m.vertex_attributes())
-		s += v.point().x() + v.point().y() + v.point().z();
-	set_check(state, "check", s);
+	set_check(state, "check", position_sum(me.m));
 }
 
 // ---- split: every original tet 1-to-4 at its barycenter
@@ -279,17 +285,11 @@ void split_tet(Lcc& m, DH w, uint32_t new_info)
 			m.sew<3>(t[i], outside[i], false);
 }
 
-std::unique_ptr<LccVolume> fresh()
-{
-	Cache::clear();
-	return std::make_unique<LccVolume>(volume_soup(), false);
-}
-
 void split(benchmark::State& state, bool)
 {
 	std::unique_ptr<LccVolume> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<LccVolume>(volume_soup(), false); },
 		[&] {
 			Lcc& m = me->m;
 			std::vector<DH> tets;
@@ -302,10 +302,7 @@ void split(benchmark::State& state, bool)
 	Lcc& m = me->m;
 	set_check(state, "check_V", double(m.vertex_attributes().size()));
 	set_check(state, "check_T", double(m.one_dart_per_cell<3>().size()));
-	double sum = 0; // the new vertices at the barycenters
-	for (auto& v : m.vertex_attributes())
-		sum += v.point().x() + v.point().y() + v.point().z();
-	set_check(state, "check_position_sum", sum);
+	set_check(state, "check_position_sum", position_sum(m)); // the new vertices at the barycenters
 	set_check(state, "check_valid", m.is_valid() ? 1.0 : 0.0);
 }
 
@@ -355,7 +352,7 @@ void collapse(benchmark::State& state, bool)
 	std::unique_ptr<LccVolume> me;
 	std::vector<double> lengths;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<LccVolume>(volume_soup(), false); },
 		[&] {
 			Lcc& m = me->m;
 			lengths.clear();

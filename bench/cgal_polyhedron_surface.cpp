@@ -249,12 +249,6 @@ void smoothing(benchmark::State& state, bool first)
 	set_check(state, "check", position_sum(m));
 }
 
-std::unique_ptr<PolySurface> fresh()
-{
-	Cache::clear();
-	return std::make_unique<PolySurface>(surface_soup());
-}
-
 void set_counts_and_checksum(benchmark::State& state, Mesh& m)
 {
 	set_check(state, "check_V", double(m.size_of_vertices()));
@@ -303,7 +297,7 @@ void subdivision(benchmark::State& state, bool)
 {
 	std::unique_ptr<PolySurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<PolySurface>(surface_soup()); },
 		[&] {
 			Mesh& m = me->m;
 			std::vector<VH> vertices;
@@ -350,7 +344,7 @@ void collapse(benchmark::State& state, bool)
 {
 	std::unique_ptr<PolySurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<PolySurface>(surface_soup()); },
 		[&] {
 			Mesh& m = me->m;
 			std::vector<FH> faces;
@@ -369,7 +363,7 @@ void collapse(benchmark::State& state, bool)
 
 void dynamic(benchmark::State& state, bool)
 {
-	std::unique_ptr<PolySurface> me = fresh();
+	std::unique_ptr<PolySurface> me = fresh_structure<PolySurface>(surface_soup());
 	trim_heap();
 	Mesh& m = me->m;
 	for (auto _ : state)

@@ -188,12 +188,6 @@ void smoothing(benchmark::State& state, bool first)
 	set_check(state, "check", position_sum(m));
 }
 
-std::unique_ptr<SmSurface> fresh()
-{
-	Cache::clear();
-	return std::make_unique<SmSurface>(surface_soup());
-}
-
 void set_counts_and_checksum(benchmark::State& state, const Mesh& m)
 {
 	set_check(state, "check_V", double(m.number_of_vertices()));
@@ -242,7 +236,7 @@ void subdivision(benchmark::State& state, bool)
 {
 	std::unique_ptr<SmSurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<SmSurface>(surface_soup()); },
 		[&] {
 			Mesh& m = me->m;
 			const uint32_t nv = uint32_t(m.number_of_vertices()), ne = uint32_t(m.number_of_edges()),
@@ -288,7 +282,7 @@ void collapse(benchmark::State& state, bool)
 {
 	std::unique_ptr<SmSurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<SmSurface>(surface_soup()); },
 		[&] {
 			Mesh& m = me->m;
 			const uint32_t nv = uint32_t(m.number_of_vertices()), nf = uint32_t(m.number_of_faces());
@@ -303,7 +297,7 @@ void collapse(benchmark::State& state, bool)
 
 void dynamic(benchmark::State& state, bool)
 {
-	std::unique_ptr<SmSurface> me = fresh();
+	std::unique_ptr<SmSurface> me = fresh_structure<SmSurface>(surface_soup());
 	trim_heap();
 	Mesh& m = me->m;
 	for (auto _ : state)

@@ -278,12 +278,6 @@ void memory(benchmark::State& state, bool)
 #if CGOGN_BENCH_HAS_TOPOLOGY
 // ---- topology workloads, written against the planned operators (see cgogn_topology.h)
 
-std::unique_ptr<CgognSurface> fresh()
-{
-	Cache::clear();
-	return std::make_unique<CgognSurface>(surface_soup());
-}
-
 void set_counts_and_checksum(benchmark::State& state, const CgognSurface& me)
 {
 	set_check(state, "check_V", double(nb_cells<Vertex>(me.map)));
@@ -306,7 +300,7 @@ void subdivision(benchmark::State& state, bool)
 {
 	std::unique_ptr<CgognSurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<CgognSurface>(surface_soup()); },
 		[&] {
 			CMap2& m = me->map;
 			Attribute<Vec3>& pos = *me->position;
@@ -360,7 +354,7 @@ void collapse(benchmark::State& state, bool)
 {
 	std::unique_ptr<CgognSurface> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<CgognSurface>(surface_soup()); },
 		[&] {
 			CMap2& m = me->map;
 			Attribute<Vec3>& pos = *me->position;
@@ -387,7 +381,7 @@ void collapse(benchmark::State& state, bool)
 // (without it the freed lines are reused by the next batches)
 void dynamic(benchmark::State& state, bool, bool with_compact)
 {
-	std::unique_ptr<CgognSurface> me = fresh();
+	std::unique_ptr<CgognSurface> me = fresh_structure<CgognSurface>(surface_soup());
 	trim_heap();
 	CMap2& m = me->map;
 	for (auto _ : state)

@@ -204,6 +204,14 @@ void smoothing_pass(CgognVolume& me)
 	std::swap(me.position, me.position2);
 }
 
+/// The sum of every vertex's coordinates (the checks of smoothing and split).
+double position_sum(const CgognVolume& me)
+{
+	double s = 0;
+	foreach_cell(me.map, [&](Vertex v) { s += value<Vec3>(me.map, *me.position, v).sum(); });
+	return s;
+}
+
 void smoothing(benchmark::State& state, bool first, Mode mode)
 {
 	CgognVolume& me = mesh(mode);
@@ -212,9 +220,7 @@ void smoothing(benchmark::State& state, bool first, Mode mode)
 	me.reset_positions(volume_soup());
 	for (uint32 i = 0; i < volume_smoothing_check_passes; ++i)
 		smoothing_pass(me);
-	double s = 0;
-	foreach_cell(me.map, [&](Vertex v) { s += value<Vec3>(me.map, *me.position, v).sum(); });
-	set_check(state, "check", s);
+	set_check(state, "check", position_sum(me));
 }
 
 void memory(benchmark::State& state, bool)
@@ -240,17 +246,11 @@ void memory(benchmark::State& state, bool)
 #if CGOGN_BENCH_HAS_TOPOLOGY
 // ---- topology workloads, written against the planned operators (see cgogn_topology.h)
 
-std::unique_ptr<CgognVolume> fresh()
-{
-	Cache::clear();
-	return std::make_unique<CgognVolume>(volume_soup(), false);
-}
-
 void split(benchmark::State& state, bool)
 {
 	std::unique_ptr<CgognVolume> me;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<CgognVolume>(volume_soup(), false); },
 		[&] {
 			CMap3& m = me->map;
 			Attribute<Vec3>& pos = *me->position;
@@ -265,9 +265,7 @@ void split(benchmark::State& state, bool)
 		});
 	set_check(state, "check_V", double(nb_cells<Vertex>(me->map)));
 	set_check(state, "check_T", double(nb_cells<Volume>(me->map)));
-	double sum = 0; // the new vertices at the barycenters
-	foreach_cell(me->map, [&](Vertex v) { sum += value<Vec3>(me->map, *me->position, v).sum(); });
-	set_check(state, "check_position_sum", sum);
+	set_check(state, "check_position_sum", position_sum(*me)); // the new vertices at the barycenters
 	set_check(state, "check_valid", check_integrity(me->map).ok() ? 1.0 : 0.0);
 }
 
@@ -276,7 +274,7 @@ void collapse(benchmark::State& state, bool)
 	std::unique_ptr<CgognVolume> me;
 	std::vector<double> lengths;
 	timed(
-		state, false, [&] { me = fresh(); },
+		state, false, [&] { me = fresh_structure<CgognVolume>(volume_soup(), false); },
 		[&] {
 			CMap3& m = me->map;
 			Attribute<Vec3>& pos = *me->position;

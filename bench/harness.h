@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace cgogn_bench
 {
@@ -97,6 +98,16 @@ private:
 	static inline std::string key_;
 	static inline std::shared_ptr<void> object_;
 };
+
+/// A structure built for one repetition of a topology workload (which
+/// changes it): the cached structure is destroyed first, so that only one is
+/// alive at a time.
+template <typename T, typename... ARGS>
+std::unique_ptr<T> fresh_structure(ARGS&&... args)
+{
+	Cache::clear();
+	return std::make_unique<T>(std::forward<ARGS>(args)...);
+}
 
 /// Records batch b of the dynamic-editing workload: its time (ms), the
 /// resident memory of the process and the bytes held by the allocator (MB).
