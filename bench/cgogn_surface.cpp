@@ -136,15 +136,9 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 	timed(
 		state, first, [&] { me.reset_positions(surface_soup()); },
 		[&] {
-			// the values of the live vertices, walked in line order (Attribute's range)
-			Vec3 b = Vec3::Zero();
-			uint32 n = 0;
-			for (const Vec3& p : pos)
-			{
-				b += p;
-				++n;
-			}
-			b /= double(n);
+			// the mean in line order, in four partial sums (geometry::mean_position),
+			// then the values of the live vertices, walked by the attribute's range
+			const Vec3 b = geometry::mean_position(m, pos);
 			for (Vec3& p : pos)
 				p -= b;
 		});

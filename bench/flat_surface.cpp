@@ -127,11 +127,22 @@ void barycenter(benchmark::State& state, bool first)
 	timed(
 		state, first, [&] { reset_positions(m); },
 		[&] {
-			P3 b{0, 0, 0};
-			for (const P3& p : m.pos)
-				b[0] += p[0], b[1] += p[1], b[2] += p[2];
-			const double n = double(m.pos.size());
-			b = {b[0] / n, b[1] / n, b[2] / n};
+			// four partial sums, as geometry::mean_position: the limit of the
+			// loop, not a chain of dependent adds
+			P3 s[4] = {};
+			const std::size_t nv = m.pos.size();
+			std::size_t i = 0;
+			for (; i + 4 <= nv; i += 4)
+				for (std::size_t k = 0; k < 4; ++k)
+					for (std::size_t c = 0; c < 3; ++c)
+						s[k][c] += m.pos[i + k][c];
+			for (; i < nv; ++i)
+				for (std::size_t c = 0; c < 3; ++c)
+					s[0][c] += m.pos[i][c];
+			const double n = double(nv);
+			P3 b;
+			for (std::size_t c = 0; c < 3; ++c)
+				b[c] = ((s[0][c] + s[1][c]) + (s[2][c] + s[3][c])) / n;
 			for (P3& p : m.pos)
 				p[0] -= b[0], p[1] -= b[1], p[2] -= b[2];
 		});

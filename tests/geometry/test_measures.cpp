@@ -154,3 +154,77 @@ TEST(Measures, EmptyMesh)
 	EXPECT_EQ(surface_area(m, *pos), 0.0);
 	EXPECT_EQ(signed_volume(m, *pos), 0.0);
 }
+
+namespace
+{
+// The mean of the positions by one running sum over the vertices, the
+// reference for mean_position (which sums in four partial sums).
+template <typename MAP>
+Vec3 mean_by_traversal(const MAP& m, const Attribute<Vec3>& pos)
+{
+	Vec3 s = Vec3::Zero();
+	uint32 n = 0;
+	foreach_cell(m, [&](typename mesh_traits<MAP>::Vertex v) {
+		s += value<Vec3>(m, pos, v);
+		++n;
+	});
+	return s / double(n);
+}
+} // namespace
+
+TEST(Measures, MeanPositionOfGridsOfEveryRemainder)
+{
+	// 1 x k grids have 2(k+1) vertices: k = 1..4 gives every count modulo 4
+	// once the odd ones come from a fan (one extra centre vertex)
+	for (uint32 k = 1; k <= 4; ++k)
+	{
+		CMap2 m;
+		auto pos = build_with_positions(m, grid_soup(k, 1));
+		EXPECT_EQ(mean_position(m, *pos), Vec3(k / 2.0, 0.5, 0.0)) << k;
+		// a fan vertex in one face, at y = 1/2: the mean keeps y
+		Face f;
+		foreach_cell(m, [&](Face x) {
+			f = x;
+			return false;
+		});
+		const Vertex c = triangulate_face(m, f);
+		value<Vec3>(m, pos, c) = Vec3(0.5, 0.5, 0.0);
+		const Vec3 mean = mean_position(m, *pos);
+		EXPECT_NEAR((mean - mean_by_traversal(m, *pos)).norm(), 0.0, 1e-15) << k;
+		EXPECT_DOUBLE_EQ(mean.y(), 0.5) << k;
+	}
+}
+
+TEST(Measures, MeanPositionSkipsTheLinesOfRemovedVertices)
+{
+	CMap2 m;
+	auto pos = build_with_positions(m, grid_soup(6, 5, true));
+	// a collapse frees a vertex line: the attribute's range then skips it, as
+	// foreach_cell does
+	Edge collapsible;
+	foreach_cell(m, [&](Edge e) {
+		collapsible = e;
+		return !edge_can_collapse(m, e);
+	});
+	ASSERT_TRUE(edge_can_collapse(m, collapsible));
+	collapse_edge(m, collapsible);
+	ASSERT_EQ(nb_cells<Vertex>(m), 7u * 6u - 1u);
+	EXPECT_NEAR((mean_position(m, *pos) - mean_by_traversal(m, *pos)).norm(), 0.0, 1e-14);
+	// a value written in a freed line would show if the range read it
+	const Vec3 before = mean_position(m, *pos);
+	for (uint32 i = 0; i < pos->container()->end_index(); ++i)
+		if (pos->container()->key()[i] == INVALID_INDEX)
+			(*pos)[i] = Vec3(1e6, 1e6, 1e6);
+	EXPECT_EQ(mean_position(m, *pos), before);
+}
+
+TEST(Measures, MeanPositionOfAVolumeMeshAndOfAnEmptyMap)
+{
+	CMap3 m3;
+	auto pos = build_with_positions(m3, tet_grid_soup(3, 2, 2));
+	EXPECT_NEAR((mean_position(m3, *pos) - Vec3(1.5, 1.0, 1.0)).norm(), 0.0, 1e-15);
+	EXPECT_NEAR((mean_position(m3, *pos) - mean_by_traversal(m3, *pos)).norm(), 0.0, 1e-15);
+	CMap2 empty;
+	auto epos = add_attribute<Vec3, Vertex>(empty, "position");
+	EXPECT_EQ(mean_position(empty, *epos), Vec3::Zero());
+}
