@@ -103,6 +103,14 @@ public:
 		return values_.run_end(i);
 	}
 
+	/// Calls f(first, count) on each stretch of live lines whose values are at
+	/// consecutive addresses, in line order: `count` values from `first` (a
+	/// `const T*`). The range-for's walk, handed out as plain arrays for loops
+	/// that want them (several accumulators, SIMD); the key is read only when
+	/// the container has free lines.
+	template <typename FUNC>
+	void foreach_live_run(const FUNC& f) const;
+
 	/// The value given to lines when they are created.
 	const T& default_value() const
 	{

@@ -416,6 +416,33 @@ std::shared_ptr<AttributeBase> Attribute<T>::clone_empty(AttributeContainer& to)
 	return to.add_attribute<T>(name_, default_value_);
 }
 
+template <typename T>
+template <typename FUNC>
+void Attribute<T>::foreach_live_run(const FUNC& f) const
+{
+	const AttributeContainer* lines = container();
+	if (lines == nullptr) // a removed attribute
+		return;
+	const Attribute<uint32>& key = lines->key();
+	const bool check_live = !lines->free_lines().empty();
+	const auto live = [&](uint32 i) { return !check_live || key[i] != INVALID_INDEX; };
+	for (uint32 i = lines->first_index(), end = lines->end_index(); i < end;)
+	{
+		const uint32 stop = std::min(end, run_end(i));
+		while (i < stop)
+		{
+			while (i < stop && !live(i))
+				++i;
+			uint32 j = i;
+			while (j < stop && live(j))
+				++j;
+			if (j > i)
+				f(&(*this)[i], j - i);
+			i = j;
+		}
+	}
+}
+
 /// Iterates the values of the live lines of an attribute. It steps with a
 /// pointer through each run of lines whose values are at consecutive addresses
 /// (one run below 2 GiB of values, then one per block, see LineStorage) and

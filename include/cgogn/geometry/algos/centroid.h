@@ -4,7 +4,6 @@
 #include <cgogn/core/functions/traversals/local_cmap3.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
-#include <algorithm>
 
 namespace cgogn::geometry
 {
@@ -30,26 +29,33 @@ Vec3 centroid(const MESH& m, CELL c, const Attribute<Vec3>& pos)
 namespace detail
 {
 /// Adds the k values from p to four partial sums taken in turn (see
-/// mean_position).
-inline void add_in_four_sums(Vec3 (&s)[4], const Vec3* p, uint32 k)
+/// mean_position). The sums are copied into locals for the loop: through
+/// the reference, the compiler would store them after every add, since p
+/// might point into them.
+inline void add_in_four_sums(Vec3 (&sums)[4], const Vec3* p, uint32 k)
 {
+	Vec3 s0 = sums[0], s1 = sums[1], s2 = sums[2], s3 = sums[3];
 	for (; k >= 4; k -= 4, p += 4)
 	{
-		s[0] += p[0];
-		s[1] += p[1];
-		s[2] += p[2];
-		s[3] += p[3];
+		s0 += p[0];
+		s1 += p[1];
+		s2 += p[2];
+		s3 += p[3];
 	}
 	for (; k > 0; --k, ++p)
-		s[0] += *p;
+		s0 += *p;
+	sums[0] = s0;
+	sums[1] = s1;
+	sums[2] = s2;
+	sums[3] = s3;
 }
 } // namespace detail
 
 /// Mean of the positions of all the vertices of the mesh (its vertex
 /// centroid); zero for a mesh without vertices. O(number of vertices).
 /// Precondition: pos is a vertex attribute of m (checked in debug builds).
-/// The values of the live lines are read in line order, with a pointer over
-/// each run of consecutive values, into four partial sums taken in turn: with
+/// The values of the live lines are read as plain arrays
+/// (Attribute::foreach_live_run) into four partial sums taken in turn: with
 /// one running sum every add waits for the previous one, and that chain, not
 /// the reads, bounds the loop (bench/README.md, barycenter).
 template <GeometricMesh MESH>
@@ -57,31 +63,12 @@ Vec3 mean_position([[maybe_unused]] const MESH& m, const Attribute<Vec3>& pos)
 {
 	assert(pos.container() == &container_of<mesh_traits<MESH>::Vertex::ORBIT>(m) &&
 		   "mean_position: pos is not a vertex attribute of m");
-	const AttributeContainer* lines = pos.container();
-	if (lines == nullptr) // a removed attribute
-		return Vec3::Zero();
-	const Attribute<uint32>& key = lines->key();
-	// with no free line every line in [first, end) is live (no key to read)
-	const bool check_live = !lines->free_lines().empty();
 	Vec3 s[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 	uint32 n = 0;
-	for (uint32 i = lines->first_index(), end = lines->end_index(); i < end;)
-	{
-		const uint32 run_end = std::min(end, pos.run_end(i));
-		while (i < run_end)
-		{
-			// the next stretch of live lines of this run
-			while (check_live && i < run_end && key[i] == INVALID_INDEX)
-				++i;
-			uint32 j = i;
-			while (j < run_end && !(check_live && key[j] == INVALID_INDEX))
-				++j;
-			if (j > i)
-				detail::add_in_four_sums(s, &pos[i], j - i);
-			n += j - i;
-			i = j;
-		}
-	}
+	pos.foreach_live_run([&](const Vec3* first, uint32 count) {
+		detail::add_in_four_sums(s, first, count);
+		n += count;
+	});
 	return n > 0 ? Vec3(((s[0] + s[1]) + (s[2] + s[3])) / double(n)) : Vec3::Zero();
 }
 
