@@ -358,3 +358,60 @@ TEST(Traversals2D, UncachedTraversalsGiveLinesToAutoCallables)
 		EXPECT_EQ(r4.without_line, 0u);
 	}
 }
+
+namespace
+{
+// What foreach_cell reports for CELL on m: every dart must lie in exactly one
+// reported cell (none for the boundary darts when CELL is Face), and located cells must carry their line (or
+// INVALID_INDEX when the orbit has no index).
+template <typename CELL>
+void expect_each_cell_once(const CMap2& m)
+{
+	std::vector<uint32> covered(m.darts_->end_index(), 0);
+	uint32 cells = 0, located = 0;
+	foreach_cell(m, [&](CELL c) {
+		++cells;
+		foreach_dart_of_orbit(m, c, [&](Dart d) { ++covered[d.index]; });
+	});
+	foreach_cell(m, [&](Located<CELL> c) {
+		++located;
+		EXPECT_EQ(c.line, is_indexed<CELL>(m) ? index_of(m, CELL(c.dart)) : INVALID_INDEX);
+	});
+	EXPECT_GT(cells, 0u);
+	EXPECT_EQ(located, cells);
+	EXPECT_EQ(nb_cells<CELL>(m), cells);
+	// boundary darts lie in the vertices, edges and volumes, not in the faces
+	constexpr bool faces = std::is_same_v<CELL, Face>;
+	foreach_dart(m, [&](Dart d) { EXPECT_EQ(covered[d.index], faces && is_boundary(m, d) ? 0u : 1u) << d.index; });
+	// a stopped traversal leaves nothing behind (marks given back): the next one sees every cell
+	uint32 visited = 0;
+	foreach_cell(m, [&](CELL) { return ++visited < 2; });
+	EXPECT_EQ(visited, std::min(cells, 2u));
+	EXPECT_EQ(nb_cells<CELL>(m), cells);
+}
+} // namespace
+
+// foreach_cell finds the cells in the cell container when the orbit is
+// indexed, by a scan of the darts otherwise (a mark, a flood, or the smaller
+// dart of an edge): both ways report every cell once, boundary excluded.
+TEST(Traversals2D, EveryCellOnceIndexedOrNot)
+{
+	for (bool closed : {true, false})
+	{
+		CMap2 m;
+		build_surface(m, closed ? torus_soup(6, 5, true) : grid_soup(6, 5, true));
+		expect_each_cell_once<Vertex>(m); // indexed by the builder
+		EXPECT_FALSE(is_indexed<Edge>(m));
+		EXPECT_FALSE(is_indexed<Face>(m));
+		EXPECT_FALSE(is_indexed<Volume>(m));
+		expect_each_cell_once<Edge>(m);
+		expect_each_cell_once<Face>(m);
+		expect_each_cell_once<Volume>(m);
+		index_cells<Edge>(m);
+		index_cells<Face>(m);
+		index_cells<Volume>(m);
+		expect_each_cell_once<Edge>(m);
+		expect_each_cell_once<Face>(m);
+		expect_each_cell_once<Volume>(m);
+	}
+}

@@ -5,6 +5,8 @@
 #include <cgogn/core/functions/mesh_access.h>
 #include <cgogn/core/types/marker.h>
 
+#include <optional>
+
 namespace cgogn
 {
 
@@ -22,6 +24,58 @@ constexpr CELL reported_cell(Dart d, uint32 line = INVALID_INDEX)
 		return CELL(d);
 }
 
+/// Says which darts of a map without an index for the orbit O start a new
+/// cell: the walk of foreach_cell_of_map when the cells have no container to
+/// walk. Asked in increasing dart order, it reports each cell from its
+/// smallest non-boundary dart.
+template <Orbit O, typename MAP>
+class UnindexedCellStarts
+{
+public:
+	explicit UnindexedCellStarts(const MAP& m) : m_(m)
+	{
+		if constexpr (orbit_is_flooded(O))
+			mark_.emplace(m);
+		else if constexpr (O != Orbit::PHI2)
+			marker_.emplace(m);
+	}
+
+	/// Whether live dart d is the first dart met of its cell (the cell is then
+	/// marked as met); false for boundary darts.
+	bool starts_cell(Dart d)
+	{
+		if (is_boundary(m_, d))
+			return false;
+		if constexpr (O == Orbit::PHI2)
+		{
+			// an edge is visited from its smaller dart, or from its only non-boundary one
+			const Dart e = phi2(m_, d);
+			return d.index < e.index || is_boundary(m_, e);
+		}
+		else if constexpr (orbit_is_flooded(O))
+		{
+			// one mark for the whole traversal, also used by the floods
+			if ((**mark_).test(d.index))
+				return false;
+			flood_orbit_keep_marks<O>(m_, d, **mark_, *buffer_, [](Dart) {});
+			return true;
+		}
+		else
+		{
+			if (marker_->is_marked(d))
+				return false;
+			marker_->mark_orbit(Cell<O>(d));
+			return true;
+		}
+	}
+
+private:
+	const MAP& m_;
+	std::optional<ScopedDartMark> mark_;
+	DartBuffer buffer_;
+	std::optional<DartMarker<MAP>> marker_;
+};
+
 /// Visits every real cell of type CELL of map m (see foreach_cell).
 template <typename CELL, typename MAP, typename FUNC>
 void foreach_cell_of_map(const MAP& m, const FUNC& f)
@@ -34,56 +88,36 @@ void foreach_cell_of_map(const MAP& m, const FUNC& f)
 	}
 	else
 	{
-		if (is_indexed<CELL>(m))
+		// One loop, and f called at one place in it, whether the cells come from
+		// their container (one representative dart per live line) or from a
+		// scan of the darts: the compilers inline a callable called from one
+		// site whatever its size, while from two (one per way of finding the
+		// cells) they often keep it out of line, and each cell then pays a call
+		// and reloads everything f captured.
+		const bool indexed = is_indexed<CELL>(m);
+		const AttributeContainer& walked = indexed ? *m.cells_[orbit_index(O)] : *m.darts_;
+		std::optional<UnindexedCellStarts<O, MAP>> starts;
+		if (!indexed)
+			starts.emplace(m);
+		// the keys through a view held in a local: the compiler would otherwise
+		// reload the storage's base and bound at each line
+		const auto key = walked.key().view();
+		for (uint32 i = 0, end = walked.end_index(); i < end; ++i)
 		{
-			// walk the cell container: one representative dart per live line
-			// the keys through a view held in a local: the compiler would otherwise
-			// reload the storage's base and bound at each line (f, when it is not
-			// inlined, might change them as far as the compiler knows)
-			const auto rep = m.cells_[orbit_index(O)]->key().view();
-			for (uint32 i = 0, end = m.cells_[orbit_index(O)]->end_index(); i < end; ++i)
+			const uint32 k = key[i]; // a cell's dart, or a dart's phi1: INVALID_INDEX on free lines
+			if (k == INVALID_INDEX)
+				continue;
+			Dart d(k);
+			uint32 line = i;
+			if (!indexed)
 			{
-				const uint32 d = rep[i];
-				if (d == INVALID_INDEX)
+				d = Dart(i);
+				line = INVALID_INDEX;
+				if (!starts->starts_cell(d))
 					continue;
-				if (!call_and_continue(f, reported_cell<CELL>(Dart(d), i)))
-					return;
 			}
-		}
-		else if constexpr (O == Orbit::PHI2)
-		{
-			// an edge is visited from its smaller dart, or from its only non-boundary one
-			foreach_dart(m, [&](Dart d) {
-				if (is_boundary(m, d))
-					return true;
-				const Dart e = phi2(m, d);
-				if (d.index < e.index || is_boundary(m, e))
-					return call_and_continue(f, reported_cell<CELL>(d));
-				return true;
-			});
-		}
-		else if constexpr (orbit_is_flooded(O))
-		{
-			// one mark for the whole traversal, also used by the floods (a cell
-			// is flooded once, from its first dart met, the smallest non-boundary one)
-			ScopedDartMark mark(m);
-			DartBuffer buffer;
-			foreach_dart(m, [&](Dart d) {
-				if (is_boundary(m, d) || (*mark).test(d.index))
-					return true;
-				flood_orbit_keep_marks<O>(m, d, *mark, *buffer, [](Dart) {});
-				return call_and_continue(f, reported_cell<CELL>(d));
-			});
-		}
-		else
-		{
-			DartMarker<MAP> dm(m);
-			foreach_dart(m, [&](Dart d) {
-				if (is_boundary(m, d) || dm.is_marked(d))
-					return true;
-				dm.mark_orbit(Cell<O>(d));
-				return call_and_continue(f, reported_cell<CELL>(d));
-			});
+			if (!call_and_continue(f, reported_cell<CELL>(d, line)))
+				return;
 		}
 	}
 }
