@@ -362,8 +362,8 @@ TEST(Traversals2D, UncachedTraversalsGiveLinesToAutoCallables)
 namespace
 {
 // What foreach_cell reports for CELL on m: every dart must lie in exactly one
-// reported cell (none for the boundary darts when CELL is Face), and located cells must carry their line (or
-// INVALID_INDEX when the orbit has no index).
+// reported cell (none for the boundary darts when CELL is Face), and located
+// cells must carry their line (or INVALID_INDEX when the orbit has no index).
 template <typename CELL>
 void expect_each_cell_once(const CMap2& m)
 {
