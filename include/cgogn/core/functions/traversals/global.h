@@ -24,47 +24,50 @@ constexpr CELL reported_cell(Dart d, uint32 line = INVALID_INDEX)
 		return CELL(d);
 }
 
+/// Whether live dart d represents its edge in the traversals of a map whose
+/// edges have no index: d is not a boundary dart and is the smaller dart of
+/// the edge, or its only non-boundary one. No mark needed.
+template <typename MAP>
+bool represents_unindexed_edge(const MAP& m, Dart d)
+{
+	if (is_boundary(m, d))
+		return false;
+	const Dart e = phi2(m, d);
+	return d.index < e.index || is_boundary(m, e);
+}
+
 /// Says which darts of a map without an index for the orbit O start a new
 /// cell: the walk of foreach_cell_of_map when the cells have no container to
 /// walk. Asked in increasing dart order, it reports each cell from its
-/// smallest non-boundary dart.
+/// smallest non-boundary dart, and marks the cells it reported in one dart
+/// mark (none for edges); floods share one work list.
 template <Orbit O, typename MAP>
 class UnindexedCellStarts
 {
 public:
 	explicit UnindexedCellStarts(const MAP& m) : m_(m)
 	{
-		if constexpr (orbit_is_flooded(O))
+		if constexpr (O != Orbit::PHI2)
 			mark_.emplace(m);
-		else if constexpr (O != Orbit::PHI2)
-			marker_.emplace(m);
+		if constexpr (orbit_is_flooded(O))
+			work_.emplace();
 	}
 
 	/// Whether live dart d is the first dart met of its cell (the cell is then
 	/// marked as met); false for boundary darts.
 	bool starts_cell(Dart d)
 	{
-		if (is_boundary(m_, d))
-			return false;
 		if constexpr (O == Orbit::PHI2)
-		{
-			// an edge is visited from its smaller dart, or from its only non-boundary one
-			const Dart e = phi2(m_, d);
-			return d.index < e.index || is_boundary(m_, e);
-		}
-		else if constexpr (orbit_is_flooded(O))
-		{
-			// one mark for the whole traversal, also used by the floods
-			if ((**mark_).test(d.index))
-				return false;
-			flood_orbit_keep_marks<O>(m_, d, **mark_, *buffer_, [](Dart) {});
-			return true;
-		}
+			return represents_unindexed_edge(m_, d);
 		else
 		{
-			if (marker_->is_marked(d))
+			MarkAttribute& mark = **mark_;
+			if (is_boundary(m_, d) || mark.test(d.index))
 				return false;
-			marker_->mark_orbit(Cell<O>(d));
+			if constexpr (orbit_is_flooded(O))
+				flood_orbit_keep_marks<O>(m_, d, mark, **work_, [](Dart) {});
+			else
+				foreach_dart_of_orbit(m_, Cell<O>(d), [&](Dart x) { mark.set(x.index); });
 			return true;
 		}
 	}
@@ -72,8 +75,7 @@ public:
 private:
 	const MAP& m_;
 	std::optional<ScopedDartMark> mark_;
-	DartBuffer buffer_;
-	std::optional<DartMarker<MAP>> marker_;
+	std::optional<DartBuffer> work_;
 };
 
 /// Visits every real cell of type CELL of map m (see foreach_cell).

@@ -179,19 +179,14 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	}
 	else if constexpr (O == Orbit::PHI2)
 	{
-		// as in the sequential traversal: an edge belongs to its smaller dart,
-		// or to its only non-boundary one; no mark needed
+		// as in the sequential traversal: no mark needed
 		const uint32 end = m.darts_->end_index();
 		const Attribute<uint32>& key = m.darts_->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 			for (uint32 i = b; i < e; ++i)
 			{
-				const Dart d(i);
-				if (key[i] == INVALID_INDEX || is_boundary(m, d))
-					continue;
-				const Dart d2 = phi2(m, d);
-				if (d.index < d2.index || is_boundary(m, d2))
-					f(CELL(d));
+				if (key[i] != INVALID_INDEX && represents_unindexed_edge(m, Dart(i)))
+					f(CELL(Dart(i)));
 			}
 		}));
 	}
