@@ -424,17 +424,23 @@ void Attribute<T>::foreach_live_run(const FUNC& f) const
 	if (lines == nullptr) // a removed attribute
 		return;
 	const Attribute<uint32>& key = lines->key();
+	// with no free line every line in [first, end) is live: whole runs, no key read
 	const bool check_live = !lines->free_lines().empty();
-	const auto live = [&](uint32 i) { return !check_live || key[i] != INVALID_INDEX; };
 	for (uint32 i = lines->first_index(), end = lines->end_index(); i < end;)
 	{
 		const uint32 stop = std::min(end, run_end(i));
+		if (!check_live)
+		{
+			f(&(*this)[i], stop - i);
+			i = stop;
+			continue;
+		}
 		while (i < stop)
 		{
-			while (i < stop && !live(i))
+			while (i < stop && key[i] == INVALID_INDEX)
 				++i;
 			uint32 j = i;
-			while (j < stop && live(j))
+			while (j < stop && key[j] != INVALID_INDEX)
 				++j;
 			if (j > i)
 				f(&(*this)[i], j - i);
