@@ -4,7 +4,6 @@
 #include <cgogn/core/functions/traversals/local_cmap3.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
-
 namespace cgogn::geometry
 {
 
