@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <set>
 #include <vector>
 
@@ -414,4 +415,83 @@ TEST(Traversals2D, EveryCellOnceIndexedOrNot)
 		expect_each_cell_once<Face>(m);
 		expect_each_cell_once<Volume>(m);
 	}
+}
+
+namespace
+{
+// A callable that counts its copies (so it is not trivially copyable) and its calls.
+template <typename CELL>
+struct CopyCounting
+{
+	uint32* copies;
+	std::atomic<uint32>* calls;
+	CopyCounting(uint32* c, std::atomic<uint32>* n) : copies(c), calls(n)
+	{
+	}
+	CopyCounting(const CopyCounting& o) : copies(o.copies), calls(o.calls)
+	{
+		++*copies;
+	}
+	CopyCounting& operator=(const CopyCounting&) = delete;
+	void operator()(CELL) const
+	{
+		++*calls;
+	}
+};
+
+std::atomic<uint32> function_calls = 0;
+void count_vertex(Vertex)
+{
+	++function_calls;
+}
+
+struct LargeTrivial
+{
+	double weights[9];
+	void operator()(Vertex) const
+	{
+	}
+};
+} // namespace
+
+// The global traversals hold a small trivially copyable callable by value (its
+// captures stay in registers) and any other one by reference: a callable
+// with a user-defined copy is never copied, and each gets every cell once.
+TEST(Traversals2D, CallablesCopiedOnlyWhenSmallAndTrivial)
+{
+	uint32 n = 0;
+	auto by_reference = [&](Vertex) { ++n; };
+	static_assert(std::is_same_v<held_callable_t<decltype(by_reference)>, const decltype(by_reference)>);
+	static_assert(std::is_same_v<held_callable_t<CopyCounting<Vertex>>, const CopyCounting<Vertex>&>);
+	static_assert(std::is_same_v<held_callable_t<LargeTrivial>, const LargeTrivial&>);
+	static_assert(std::is_same_v<held_callable_t<decltype(count_vertex)>, decltype(count_vertex) const&>);
+
+	CMap2 m;
+	build_surface(m, torus_soup(6, 5, true));
+	const uint32 nv = nb_cells<Vertex>(m);
+	foreach_cell(m, by_reference); // the copy updates the caller's n through its reference
+	EXPECT_EQ(n, nv);
+
+	uint32 copies = 0;
+	std::atomic<uint32> calls = 0;
+	const CopyCounting<Vertex> count_vertices(&copies, &calls);
+	foreach_cell(m, count_vertices);
+	EXPECT_EQ(calls, nv);
+	parallel_foreach_cell(m, count_vertices);
+	EXPECT_EQ(calls, 2 * nv);
+	CellCache<CMap2> cache(m);
+	cache.build<Vertex>();
+	foreach_cell(cache, count_vertices);
+	parallel_foreach_cell(cache, count_vertices);
+	EXPECT_EQ(calls, 4 * nv);
+	calls = 0;
+	foreach_cell(m, CopyCounting<Face>(&copies, &calls)); // faces are not indexed: the dart scan
+	EXPECT_EQ(calls, nb_cells<Face>(m));
+	calls = 0;
+	foreach_dart(m, CopyCounting<Dart>(&copies, &calls));
+	EXPECT_EQ(calls, nb_darts(m));
+	EXPECT_EQ(copies, 0u);
+	foreach_cell(m, count_vertex); // a function, held by reference
+	parallel_foreach_cell(m, count_vertex);
+	EXPECT_EQ(function_calls, 2 * nv);
 }

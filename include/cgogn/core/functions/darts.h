@@ -93,8 +93,9 @@ inline bool is_dart_valid(const CMapBase& m, Dart d)
 /// Calls f(Dart) on every live dart, boundary darts included; f may return
 /// false to stop. O(number of darts).
 template <typename FUNC>
-void foreach_dart(const CMapBase& m, const FUNC& f)
+void foreach_dart(const CMapBase& m, const FUNC& func)
 {
+	held_callable_t<FUNC> f = func; // see held_callable_t
 	const AttributeContainer& c = *m.darts_;
 	const Attribute<uint32>& key = c.key();
 	for (uint32 i = 0, end = c.end_index(); i < end; ++i)

@@ -67,4 +67,24 @@ inline bool call_and_continue(F&& f, A&&... args)
 	}
 }
 
+/// How a traversal holds the callable it calls in its loop: a copy in a local
+/// when the callable is small and trivially copyable (a lambda capturing
+/// references, pointers or numbers), a reference otherwise. The compiler keeps
+/// a local copy's captures in registers for the whole loop; through a
+/// reference it reloads them at every cell, since any store or call in the
+/// loop might have changed the caller's object. Like the standard algorithms,
+/// the traversals may therefore call a copy of f: state kept in a mutable
+/// member of a function object is not seen by the caller afterwards (capture
+/// a variable by reference instead).
+template <typename F>
+constexpr bool held_by_copy()
+{
+	if constexpr (std::is_trivially_copyable_v<F>) // never a function type, whose size is not defined
+		return sizeof(F) <= 64;
+	else
+		return false;
+}
+template <typename F>
+using held_callable_t = std::conditional_t<held_by_copy<F>(), const F, const F&>;
+
 } // namespace cgogn

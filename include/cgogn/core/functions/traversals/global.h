@@ -80,8 +80,10 @@ private:
 
 /// Visits every real cell of type CELL of map m (see foreach_cell).
 template <typename CELL, typename MAP, typename FUNC>
-void foreach_cell_of_map(const MAP& m, const FUNC& f)
+void foreach_cell_of_map(const MAP& m, const FUNC& func)
 {
+	// f's captures in registers across the loop (see held_callable_t)
+	held_callable_t<FUNC> f = func;
 	constexpr Orbit O = CELL::ORBIT;
 	if constexpr (O == Orbit::DART)
 	{

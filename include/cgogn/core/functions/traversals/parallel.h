@@ -74,6 +74,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	if constexpr (orbit_is_cyclic(CELL::ORBIT))
 	{
 		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
 			{
 				if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
@@ -81,7 +82,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 				const bool owner = foreach_dart_of_orbit(
 					m, CELL(Dart(i)), [&](Dart x) { return x.index >= i || is_boundary(m, x); });
 				if (owner)
-					f(CELL(Dart(i)));
+					fc(CELL(Dart(i)));
 			}
 		}));
 		return;
@@ -111,6 +112,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 		try
 		{
 			parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+				held_callable_t<FUNC> fc = f; // see held_callable_t
 				FloodWorker& w = workers[current_thread_index()];
 				if (w.flooded == nullptr)
 					w.flooded = m.darts_->acquire_mark();
@@ -135,7 +137,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 					});
 					// a cell inside [b, e) is flooded by no other worker: no race
 					if (inside || reported.atomic_test_and_set(owner))
-						f(CELL(Dart(owner)));
+						fc(CELL(Dart(owner)));
 				}
 			}));
 		}
@@ -158,9 +160,10 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 		const uint32 end = m.darts_->end_index();
 		const Attribute<uint32>& key = m.darts_->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = b; i < e; ++i)
 				if (key[i] != INVALID_INDEX && !is_boundary(m, Dart(i)))
-					f(CELL(Dart(i)));
+					fc(CELL(Dart(i)));
 		}));
 	}
 	else if (is_indexed<CELL>(m))
@@ -169,11 +172,12 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 		const AttributeContainer& c = *m.cells_[orbit_index(O)];
 		const Attribute<uint32>& rep = c.key();
 		parallel_for_chunks(c.end_index(), PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = b; i < e; ++i)
 			{
 				const uint32 d = rep[i];
 				if (d != INVALID_INDEX)
-					f(CELL(Dart(d)));
+					fc(CELL(Dart(d)));
 			}
 		}));
 	}
@@ -183,10 +187,11 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 		const uint32 end = m.darts_->end_index();
 		const Attribute<uint32>& key = m.darts_->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = b; i < e; ++i)
 			{
 				if (key[i] != INVALID_INDEX && represents_unindexed_edge(m, Dart(i)))
-					f(CELL(Dart(i)));
+					fc(CELL(Dart(i)));
 			}
 		}));
 	}

@@ -105,9 +105,10 @@ public:
 	void foreach_cell(const FUNC& f) const
 	{
 		const auto& v = cells<CELL>();
+		held_callable_t<FUNC> fc = f; // see held_callable_t
 		// by index: f may add cells to this cache (the vector may reallocate)
 		for (std::size_t i = 0, n = v.size(); i < n; ++i)
-			if (!call_and_continue(f, CELL(v[i])))
+			if (!call_and_continue(fc, CELL(v[i])))
 				return;
 	}
 
@@ -125,8 +126,9 @@ public:
 		}
 		detail::parallel_for_chunks(uint32(v.size()), detail::PARALLEL_LINE_GRAIN,
 									detail::ChunkBody([&](uint32 b, uint32 e) {
+										held_callable_t<FUNC> fc = f; // see held_callable_t
 										for (uint32 i = b; i < e; ++i)
-											f(v[i]);
+											fc(v[i]);
 									}));
 	}
 
