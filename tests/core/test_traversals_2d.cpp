@@ -491,6 +491,7 @@ TEST(Traversals2D, CallablesCopiedOnlyWhenSmallAndTrivial)
 	foreach_dart(m, CopyCounting<Dart>(&copies, &calls));
 	EXPECT_EQ(calls, nb_darts(m));
 	EXPECT_EQ(copies, 0u);
+	function_calls = 0;
 	foreach_cell(m, count_vertex); // a function, held by reference
 	parallel_foreach_cell(m, count_vertex);
 	EXPECT_EQ(function_calls, 2 * nv);
