@@ -117,13 +117,12 @@ public:
 	template <typename CELL, typename FUNC>
 	void parallel_foreach_cell(const FUNC& f) const
 	{
-		const auto& v = cells<CELL>();
 		if (detail::run_sequentially())
 		{
-			for (const CELL& c : v)
-				f(c);
+			foreach_cell<CELL>(f); // as parallel_foreach_cell on a map: the sequential traversal
 			return;
 		}
+		const auto& v = cells<CELL>();
 		detail::parallel_for_chunks(uint32(v.size()), detail::PARALLEL_LINE_GRAIN,
 									detail::ChunkBody([&](uint32 b, uint32 e) {
 										held_callable_t<FUNC> fc = f; // see held_callable_t
