@@ -24,6 +24,10 @@
 //   paired_explicit  soa with the darts renumbered so that the two darts of
 //                an edge are 2k and 2k+1 (pairs in order of first use by the
 //                original dart order), phi2 still read from its array
+//   paired_checked  the same numbering, phi2 read but the walk goes on with
+//                d ^ 1 and only checks the value (a predicted branch instead
+//                of a data dependency): what a builder numbering edges in
+//                pairs would give without dropping the stored phi2
 //   paired       the same numbering with phi2(d) = d ^ 1 computed, not read:
 //                one dependent load per step around a vertex (phi1 of d ^ 1)
 //                instead of two (phi2, then phi1), as a half-edge structure
@@ -285,6 +289,23 @@ struct Paired : Soa
 	}
 };
 
+// l.paired's numbering with phi2 still read, but only checked: the walk goes
+// on with d ^ 1 while the load is in flight (a predicted branch, not a data
+// dependency); the asm keeps the compiler from folding the test away
+struct PairedChecked : Soa
+{
+	uint32 phi2(uint32 d) const
+	{
+		uint32 x = a.phi2[d];
+		if (x != (d ^ 1u)) [[unlikely]]
+		{
+			asm volatile("" : "+r"(x));
+			return x;
+		}
+		return d ^ 1u;
+	}
+};
+
 struct BlockTable
 {
 	Layouts& l;
@@ -429,6 +450,11 @@ void paired_explicit(benchmark::State& state)
 	Layouts& l = layouts();
 	run(state, l, [&] { l.smooth(Soa{l, l.paired}, l.paired_vertex_dart); }, l.pos);
 }
+void paired_checked(benchmark::State& state)
+{
+	Layouts& l = layouts();
+	run(state, l, [&] { l.smooth(PairedChecked{{l, l.paired}}, l.paired_vertex_dart); }, l.pos);
+}
 void paired(benchmark::State& state)
 {
 	Layouts& l = layouts();
@@ -508,6 +534,7 @@ BENCHMARK(cgogn_library)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportA
 BENCHMARK(soa_prefetch)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(aos8)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(paired_explicit)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(paired_checked)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(paired)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
 int main(int argc, char** argv)
