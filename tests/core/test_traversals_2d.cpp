@@ -460,8 +460,8 @@ struct LargeTrivial
 TEST(Traversals2D, CallablesCopiedOnlyWhenSmallAndTrivial)
 {
 	uint32 n = 0;
-	auto by_reference = [&](Vertex) { ++n; };
-	static_assert(std::is_same_v<held_callable_t<decltype(by_reference)>, const decltype(by_reference)>);
+	auto capturing_n = [&](Vertex) { ++n; }; // captures a reference: small and trivial, held by copy
+	static_assert(std::is_same_v<held_callable_t<decltype(capturing_n)>, const decltype(capturing_n)>);
 	static_assert(std::is_same_v<held_callable_t<CopyCounting<Vertex>>, const CopyCounting<Vertex>&>);
 	static_assert(std::is_same_v<held_callable_t<LargeTrivial>, const LargeTrivial&>);
 	static_assert(std::is_same_v<held_callable_t<decltype(count_vertex)>, decltype(count_vertex) const&>);
@@ -469,7 +469,7 @@ TEST(Traversals2D, CallablesCopiedOnlyWhenSmallAndTrivial)
 	CMap2 m;
 	build_surface(m, torus_soup(6, 5, true));
 	const uint32 nv = nb_cells<Vertex>(m);
-	foreach_cell(m, by_reference); // the copy updates the caller's n through its reference
+	foreach_cell(m, capturing_n); // the copy updates the caller's n through its reference
 	EXPECT_EQ(n, nv);
 
 	uint32 copies = 0;
