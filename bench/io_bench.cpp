@@ -35,7 +35,7 @@ const std::string& mesh_file(const char* ext)
 			md.positions.insert(md.positions.end(), p.begin(), p.end());
 		md.cell_sizes = s.face_sizes;
 		md.cell_vertices = s.face_vertices;
-		io::detail::write_file((d / "torus.ply").string(), io::detail::write_ply(md, true));
+		io::detail::write_file((d / "torus.ply").string(), io::detail::write_ply(md, true, (d / "torus.ply").string()));
 		io::detail::write_file((d / "torus.off").string(), io::detail::write_off(md));
 		return d.string();
 	}();

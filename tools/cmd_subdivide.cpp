@@ -4,6 +4,7 @@
 #include <cgogn/modeling/subdivision.h>
 
 #include <map>
+#include <stdexcept>
 
 #include "commands.h"
 
@@ -52,6 +53,8 @@ int run_subdivide(const SubdivideOptions &o)
 			CMap3 m;
 			io::load_volume(m, o.files.in);
 			auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+			if (!pos)
+				throw std::runtime_error("the mesh has no vertex positions");
 			for (uint32 i = 0; i < o.iterations; ++i)
 			{
 				const auto callback = progress.percent("subdividing, step " + std::to_string(i + 1));

@@ -35,16 +35,53 @@ bool usable(const Column& c)
 	return c.dim >= 1 && c.dim <= 3 && !c.name.empty() && c.name.rfind("__", 0) != 0 && c.name != "position";
 }
 
+// Everything about names that could make the build fail, checked before the
+// map is touched: the file's names must not clash with each other (the
+// readers refuse that already; this keeps build_map safe on any MeshData) nor
+// with an attribute of another type in m.
+template <typename Vertex, typename Top, typename MAP>
+void check_names(const MAP& m, const MeshData& d, const std::string& path)
+{
+	check_free_name<Vertex>(m, "position", typeid(Vec3), path);
+	check_free_name<Vertex>(m, "original_vertex", typeid(uint32), path);
+	std::vector<std::string> names;
+	for (const auto& c : d.vertex_columns)
+		if (usable(c))
+		{
+			if (std::string why = data_name_conflict(names, c.name, true); !why.empty())
+				throw Error(path, why);
+			names.push_back(c.name);
+			check_free_name<Vertex>(m, c.name, column_type(c), path);
+		}
+	names.clear();
+	for (const auto& c : d.cell_columns)
+		if (usable(c))
+		{
+			if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
+				throw Error(path, why);
+			names.push_back(c.name);
+			check_free_name<Top>(m, c.name, column_type(c), path);
+		}
+}
+
+// The attribute to load into. check_names has ruled out every case where
+// neither get_attribute nor add_attribute gives one; the throw keeps a broken
+// caller from dereferencing nullptr.
 template <typename T, typename CELL, typename MAP>
-std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name)
+std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name, const std::string& path)
 {
 	auto a = get_attribute<T, CELL>(m, name);
-	return a ? a : add_attribute<T, CELL>(m, name);
+	if (!a)
+		a = add_attribute<T, CELL>(m, name);
+	if (!a)
+		throw Error(path,
+					"cannot load the data '" + name + "': the map has an attribute of this name and another type");
+	return a;
 }
 
 // Writes column c (element i) into line `line` of attribute of CELL.
 template <typename CELL, typename MAP, typename LINES>
-void fill_column(MAP& m, const Column& c, const LINES& lines)
+void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string& path)
 {
 	auto put = [&]<typename T>(std::shared_ptr<Attribute<T>> a) {
 		lines([&](uint32 line, std::size_t i) {
@@ -58,11 +95,11 @@ void fill_column(MAP& m, const Column& c, const LINES& lines)
 		});
 	};
 	if (c.dim == 1)
-		put(get_or_add<double, CELL>(m, c.name));
+		put(get_or_add<double, CELL>(m, c.name, path));
 	else if (c.dim == 2)
-		put(get_or_add<Vec2, CELL>(m, c.name));
+		put(get_or_add<Vec2, CELL>(m, c.name, path));
 	else
-		put(get_or_add<Vec3, CELL>(m, c.name));
+		put(get_or_add<Vec3, CELL>(m, c.name, path));
 }
 
 // The dart ids add_dart will hand out next: free lines last-in first-out, then new ones.
@@ -112,14 +149,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	constexpr uint32 dim = MAP::dimension;
 
 	// 1. everything that can fail, before touching m
-	check_free_name<Vertex>(m, "position", typeid(Vec3), path);
-	check_free_name<Vertex>(m, "original_vertex", typeid(uint32), path);
-	for (const auto& c : d.vertex_columns)
-		if (usable(c))
-			check_free_name<Vertex>(m, c.name, column_type(c), path);
-	for (const auto& c : d.cell_columns)
-		if (usable(c))
-			check_free_name<Top>(m, c.name, column_type(c), path);
+	check_names<Vertex, Top>(m, d, path);
 	if (uint64(d.nb_vertices()) + container_of<Vertex::ORBIT>(m).end_index() >= INVALID_INDEX ||
 		uint64(d.cell_vertices.size()) * 6 + m.darts_->end_index() >= INVALID_INDEX)
 		throw Error(path, "the mesh is too large for 32-bit indices");
@@ -158,18 +188,18 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 		for (const auto& [line, orig] : br.split_vertices)
 			f(line, std::size_t(orig));
 	};
-	auto pos = get_or_add<Vec3, Vertex>(m, "position");
+	auto pos = get_or_add<Vec3, Vertex>(m, "position", path);
 	vertex_lines([&](uint32 line, std::size_t i) {
 		(*pos)[line] = Vec3(d.positions[3 * i], d.positions[3 * i + 1], d.positions[3 * i + 2]);
 	});
 	if (br.nb_nonmanifold_vertices > 0)
 	{
-		auto orig = get_or_add<uint32, Vertex>(m, "original_vertex");
+		auto orig = get_or_add<uint32, Vertex>(m, "original_vertex", path);
 		vertex_lines([&](uint32 line, std::size_t i) { (*orig)[line] = uint32(i); });
 	}
 	for (const auto& c : d.vertex_columns)
 		if (usable(c))
-			fill_column<Vertex>(m, c, vertex_lines);
+			fill_column<Vertex>(m, c, vertex_lines, path);
 
 	// 4. cell data: cell c's first dart is predictable from the dart container's state
 	bool any_cell_column = false;
@@ -191,18 +221,19 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 				continue;
 			// creating the attribute indexes the orbit if needed
 			if (c.dim == 1)
-				get_or_add<double, Top>(m, c.name);
+				get_or_add<double, Top>(m, c.name, path);
 			else if (c.dim == 2)
-				get_or_add<Vec2, Top>(m, c.name);
+				get_or_add<Vec2, Top>(m, c.name, path);
 			else
-				get_or_add<Vec3, Top>(m, c.name);
-			fill_column<Top>(m, c, [&](const auto& f) {
+				get_or_add<Vec3, Top>(m, c.name, path);
+			auto cell_lines = [&](const auto& f) {
 				for (const auto& [dart, cell] : firsts)
 				{
 					assert(is_dart_valid(m, dart) && !is_boundary(m, dart));
 					f(index_of(m, Top(dart)), std::size_t(cell));
 				}
-			});
+			};
+			fill_column<Top>(m, c, cell_lines, path);
 		}
 	}
 

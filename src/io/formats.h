@@ -18,7 +18,10 @@ MeshData read_ply(std::string_view data, const std::string& path);
 MeshData read_stl(std::string_view data, const std::string& path);
 std::string write_off(const MeshData& d);
 std::string write_obj(const MeshData& d);
-std::string write_ply(const MeshData& d, bool binary);
+/// Throws io::Error naming `path` when two columns would write the same
+/// property (a double attribute `nx` beside a Vec3 `normal`, `x` beside the
+/// position): the file would not read back.
+std::string write_ply(const MeshData& d, bool binary, const std::string& path);
 /// Polygons are written as triangle fans.
 std::string write_stl(const MeshData& d, bool binary);
 
@@ -38,8 +41,14 @@ std::string write_gmsh(const MeshData& d, bool binary);
 std::pair<std::string, std::string> write_tetgen(const MeshData& d);
 
 /// Throws io::Error (no position) when a cell refers to a vertex that does not
-/// exist or a column does not have one value per element: the safety net
-/// behind each reader's own checks. O(size of d).
+/// exist, a column does not have one value per element, or two columns of the
+/// same elements conflict in name (data_name_conflict): the safety net behind
+/// each reader's own checks. O(size of d + columns squared).
 void validate(const MeshData& d, const std::string& path);
+
+/// Throws io::Error naming `path` when a vertex column has a name the loader
+/// reserves (data_name_conflict): for the writers of named data (PLY, VTK,
+/// VTU), whose file would not read back. O(number of columns).
+void check_written_names(const MeshData& d, const std::string& path);
 
 } // namespace cgogn::io::detail

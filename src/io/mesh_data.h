@@ -20,6 +20,14 @@ struct Column
 	std::vector<double> values;
 };
 
+/// Why a reader must reject a data array named `name` for the vertices
+/// (`of_vertices`) or the cells, given the names of the arrays it has already
+/// read for the same elements; empty when the array is accepted. Two arrays of
+/// one name would become one attribute (of two types when their sizes differ),
+/// and `position` and `original_vertex` are the loader's own vertex attributes.
+/// Unnamed arrays never conflict. O(number of earlier names).
+std::string data_name_conflict(const std::vector<std::string>& earlier, const std::string& name, bool of_vertices);
+
 /// Polygons (surfaces) or tetrahedra/pyramids/prisms/hexahedra (volumes, in the
 /// builder's vertex order) over vertices 0..nb_vertices()-1.
 struct MeshData

@@ -88,6 +88,7 @@ struct Property
 	// where a scalar goes: -1 nowhere, -2 position, else a column
 	int column = -1;
 	uint32 component = 0;
+	uint64 header_line = 0;
 };
 
 struct Element
@@ -122,8 +123,11 @@ double read_binary(ByteReader& b, PType t)
 	return 0.0;
 }
 
-// Groups the scalar properties of an element into columns (see the file comment).
-void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex)
+// Groups the scalar properties of an element into columns (see the file
+// comment). A scalar property whose column name is taken by a group (`normal`
+// beside nx ny nz, `foo` beside foo_x foo_y) or reserved (data_name_conflict)
+// is an error at its header line: it would collide with that attribute.
+void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex, const std::string& path)
 {
 	auto find = [&](std::string_view n) -> Property* {
 		for (auto& p : e.props)
@@ -142,7 +146,10 @@ void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex)
 		}
 		for (const auto& c : cols)
 			if (c.name == col)
-				return;
+				return; // a group of this name exists: these properties stay scalars
+		if (std::string why = data_name_conflict({}, col, is_vertex); !why.empty())
+			throw Error(path, Error::Where::Line, ps[0]->header_line,
+						"property '" + ps[0]->name + "' of element '" + e.name + "': " + why);
 		cols.push_back(Column{col, uint32(ps.size()), {}});
 		for (uint32 k = 0; k < ps.size(); ++k)
 		{
@@ -175,15 +182,17 @@ void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex)
 		else
 			group(base, {base + "_x", base + "_y"});
 	}
+	std::vector<std::string> names;
+	for (const auto& c : cols)
+		names.push_back(c.name);
 	for (auto& p : e.props)
 	{
 		if (p.is_list || p.column != -1)
 			continue;
-		bool taken = false;
-		for (const auto& c : cols)
-			taken = taken || c.name == p.name;
-		if (taken || p.name == "position")
-			continue;
+		if (std::string why = data_name_conflict(names, p.name, is_vertex); !why.empty())
+			throw Error(path, Error::Where::Line, p.header_line, "property '" + p.name + "' of element '" + e.name +
+																	 "': " + why);
+		names.push_back(p.name);
 		cols.push_back(Column{p.name, 1, {}});
 		p.column = int(cols.size() - 1);
 	}
@@ -230,6 +239,9 @@ MeshData read_ply(std::string_view data, const std::string& path)
 		{
 			Element e;
 			e.name = std::string(h.token_in_line());
+			for (const auto& f : elements)
+				if (f.name == e.name && (e.name == "vertex" || e.name == "face"))
+					h.fail("element '" + TextReader::printable(e.name) + "' declared twice");
 			const int64 c = h.to_int(h.token_in_line(), "an element count");
 			if (c < 0)
 				h.fail("negative element count");
@@ -260,6 +272,11 @@ MeshData read_ply(std::string_view data, const std::string& path)
 			p.name = std::string(h.token_in_line());
 			if (p.name.empty())
 				h.fail("property without a name");
+			for (const auto& q : elements.back().props)
+				if (q.name == p.name)
+					h.fail("element '" + TextReader::printable(elements.back().name) + "' has two properties named '" +
+							   TextReader::printable(p.name) + "'");
+			p.header_line = h.line();
 			elements.back().props.push_back(std::move(p));
 		}
 		else if (k.empty())
@@ -282,7 +299,7 @@ MeshData read_ply(std::string_view data, const std::string& path)
 		{
 			have_vertex = true;
 			nv = e.count;
-			assign_columns(e, d.vertex_columns, true);
+			assign_columns(e, d.vertex_columns, true, path);
 			int found = 0;
 			for (const auto& p : e.props)
 				found += p.column == -2;
@@ -291,7 +308,7 @@ MeshData read_ply(std::string_view data, const std::string& path)
 		}
 		else if (e.name == "face")
 		{
-			assign_columns(e, d.cell_columns, false);
+			assign_columns(e, d.cell_columns, false, path);
 			bool found = false;
 			for (auto& p : e.props)
 				if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index") && !found)
@@ -428,7 +445,18 @@ struct ColumnLayout
 	bool as_byte;
 };
 
-std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& header)
+// A property name of an element and what it writes, to refuse a second use.
+struct PropertyOwner
+{
+	std::string property;
+	std::string owner;
+};
+
+// `owners` holds the element's properties written before the columns (x y z,
+// vertex_indices); a column whose property name is taken throws io::Error, as
+// the file would not read back.
+std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& header, const char* element,
+								 std::vector<PropertyOwner> owners, const std::string& path)
 {
 	std::vector<ColumnLayout> out;
 	for (const auto& c : cols)
@@ -437,7 +465,14 @@ std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& h
 			continue;
 		const bool as_byte = c.name == "color" && c.dim == 3 && byte_valued(c);
 		const char* type = as_byte ? "uchar" : "double";
-		auto prop = [&](const std::string& n) { header += std::string("property ") + type + " " + n + "\n"; };
+		auto prop = [&](const std::string& n) {
+			for (const auto& o : owners)
+				if (o.property == n)
+					throw Error(path, std::string("cannot write the ") + element + " attribute '" + c.name +
+										  "' as the PLY property '" + n + "': " + o.owner + " uses that name");
+			owners.push_back({n, "the " + std::string(element) + " attribute '" + c.name + "'"});
+			header += std::string("property ") + type + " " + n + "\n";
+		};
 		if (c.name == "normal" && c.dim == 3)
 			for (auto n : {"nx", "ny", "nz"})
 				prop(n);
@@ -480,14 +515,15 @@ void put_columns(std::string& s, const std::vector<ColumnLayout>& cols, std::siz
 
 } // namespace
 
-std::string write_ply(const MeshData& d, bool binary)
+std::string write_ply(const MeshData& d, bool binary, const std::string& path)
 {
 	std::string s = "ply\nformat ";
 	s += binary ? "binary_little_endian 1.0\n" : "ascii 1.0\n";
 	s += "comment written by cgogn\nelement vertex ";
 	append_uint(s, d.nb_vertices());
 	s += "\nproperty double x\nproperty double y\nproperty double z\n";
-	auto vcols = layout(d.vertex_columns, s);
+	auto vcols = layout(d.vertex_columns, s, "vertex",
+						{{"x", "the position"}, {"y", "the position"}, {"z", "the position"}}, path);
 	uint32 max_degree = 0;
 	for (uint32 n : d.cell_sizes)
 		max_degree = std::max(max_degree, n);
@@ -495,7 +531,7 @@ std::string write_ply(const MeshData& d, bool binary)
 	s += "element face ";
 	append_uint(s, d.nb_cells());
 	s += byte_count ? "\nproperty list uchar int vertex_indices\n" : "\nproperty list int int vertex_indices\n";
-	auto fcols = layout(d.cell_columns, s);
+	auto fcols = layout(d.cell_columns, s, "face", {{"vertex_indices", "the face's vertex list"}}, path);
 	s += "end_header\n";
 	s.reserve(s.size() + std::size_t(d.nb_vertices()) * (binary ? 24 : 40) + d.cell_vertices.size() * 8);
 	for (uint32 v = 0; v < d.nb_vertices(); ++v)

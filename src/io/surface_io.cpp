@@ -62,7 +62,8 @@ void save_surface(const CMap2& m, const std::string& path, const SaveOptions& op
 		out = detail::write_obj(d);
 		break;
 	case Format::Ply:
-		out = detail::write_ply(d, options.binary);
+		detail::check_written_names(d, path);
+		out = detail::write_ply(d, options.binary, path);
 		break;
 	default:
 		out = detail::write_stl(d, options.binary);

@@ -191,10 +191,12 @@ public:
 
 	/// Throws unless `count` items of at least `min_bytes` bytes each fit in
 	/// the rest of the file: a declared count cannot make us allocate more than
-	/// the file could describe.
+	/// the file could describe. `min_bytes` counts an item's separator, which
+	/// the last item may lack (`<DataArray ...>4</DataArray>`, a file without a
+	/// final newline): one byte less is accepted.
 	void check_count(uint64 count, uint64 min_bytes, const char* what) const
 	{
-		if (count > uint64(INVALID_INDEX) - 1 || count * min_bytes > remaining())
+		if (count > uint64(INVALID_INDEX) - 1 || count * min_bytes > remaining() + 1)
 			fail("declared " + std::to_string(count) + " " + what + " but only " + std::to_string(remaining()) +
 				 " bytes remain in the file");
 	}

@@ -6,6 +6,20 @@
 namespace cgogn::io::detail
 {
 
+std::string data_name_conflict(const std::vector<std::string>& earlier, const std::string& name, bool of_vertices)
+{
+	if (name.empty())
+		return {};
+	const char* elements = of_vertices ? "vertex" : "cell";
+	if (of_vertices && (name == "position" || name == "original_vertex"))
+		return std::string(elements) + " data '" + name + "' collides with the vertex attribute '" + name +
+			   "' that loading creates";
+	for (const auto& e : earlier)
+		if (e == name)
+			return "two " + std::string(elements) + " data arrays are named '" + name + "'";
+	return {};
+}
+
 void validate(const MeshData& d, const std::string& path)
 {
 	std::size_t total = 0;
@@ -18,12 +32,32 @@ void validate(const MeshData& d, const std::string& path)
 		if (v >= nv)
 			throw Error(path, "vertex index " + std::to_string(v) + " out of range (the file has " +
 								  std::to_string(nv) + " vertices)");
+	std::vector<std::string> names;
 	for (const auto& c : d.vertex_columns)
+	{
 		if (c.values.size() != std::size_t(nv) * c.dim)
 			throw Error(path, "vertex data '" + c.name + "' does not have one value per vertex");
+		if (std::string why = data_name_conflict(names, c.name, true); !why.empty())
+			throw Error(path, why);
+		names.push_back(c.name);
+	}
+	names.clear();
 	for (const auto& c : d.cell_columns)
+	{
 		if (c.values.size() != std::size_t(d.nb_cells()) * c.dim)
 			throw Error(path, "cell data '" + c.name + "' does not have one value per cell");
+		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
+			throw Error(path, why);
+		names.push_back(c.name);
+	}
+}
+
+void check_written_names(const MeshData& d, const std::string& path)
+{
+	for (const auto& c : d.vertex_columns)
+		if (c.dim >= 1 && c.dim <= 3 && !data_name_conflict({}, c.name, true).empty())
+			throw Error(path, "cannot write the vertex attribute '" + c.name +
+								  "': loading reserves that name (rename it, or save without attributes)");
 }
 
 } // namespace cgogn::io::detail

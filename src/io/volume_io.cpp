@@ -76,9 +76,11 @@ void save_volume(const CMap3& m, const std::string& path, const SaveOptions& opt
 		detail::write_file(path, detail::write_medit(d));
 		break;
 	case Format::VtkLegacy:
+		detail::check_written_names(d, path);
 		detail::write_file(path, detail::write_vtk(d, options.binary));
 		break;
 	case Format::Vtu:
+		detail::check_written_names(d, path);
 		detail::write_file(path, detail::write_vtu(d, options.binary));
 		break;
 	case Format::Gmsh:

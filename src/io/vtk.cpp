@@ -59,6 +59,7 @@ public:
 		std::vector<int64> offsets, connectivity, types;
 		bool have_points = false, have_cells = false, have_types = false;
 		std::vector<Column>* data_target = nullptr;
+		std::vector<std::string>* data_names = nullptr;
 		uint64 data_count = 0;
 		while (true)
 		{
@@ -126,6 +127,7 @@ public:
 			{
 				data_count = t_.read_uint("a data count");
 				data_target = k == "POINT_DATA" ? &d_.vertex_columns : &cell_data_;
+				data_names = k == "POINT_DATA" ? &point_data_names_ : &cell_data_names_;
 			}
 			else if (k == "SCALARS" || k == "VECTORS" || k == "NORMALS" || k == "COLOR_SCALARS" ||
 					 k == "TEXTURE_COORDINATES" || k == "TENSORS")
@@ -164,7 +166,7 @@ public:
 				}
 				else
 					type = t_.token();
-				add_data(*data_target, name, dim, data_count, type);
+				add_data(*data_target, *data_names, data_target == &d_.vertex_columns, name, dim, data_count, type);
 			}
 			else if (k == "FIELD")
 			{
@@ -177,7 +179,7 @@ public:
 					const std::string name(t_.token());
 					const uint32 dim = t_.read_uint("a component count");
 					const uint32 n = t_.read_uint("a tuple count");
-					add_data(*data_target, name, dim, n, t_.token());
+					add_data(*data_target, *data_names, data_target == &d_.vertex_columns, name, dim, n, t_.token());
 				}
 			}
 			else if (k == "LOOKUP_TABLE")
@@ -258,14 +260,20 @@ private:
 		}
 	}
 
-	void add_data(std::vector<Column>& target, const std::string& name, uint32 dim, uint64 count,
-				  std::string_view type)
+	// Reads an array of POINT_DATA or CELL_DATA; `names` holds the names read
+	// before in the same kind of section, of every size (conflicts are checked
+	// on all of them, though only arrays of 1 to 3 components are kept).
+	void add_data(std::vector<Column>& target, std::vector<std::string>& names, bool of_points,
+				  const std::string& name, uint32 dim, uint64 count, std::string_view type)
 	{
 		if (dim == 0)
 			t_.fail("array '" + name + "' with 0 components");
+		if (std::string why = data_name_conflict(names, name, of_points); !why.empty())
+			t_.fail(why);
+		names.push_back(name);
 		std::vector<double> v;
 		read_array(count * dim, type, v, false);
-		if (dim <= 3 && name != "position")
+		if (dim <= 3)
 			target.push_back(Column{name, dim, std::move(v)});
 	}
 
@@ -275,6 +283,7 @@ private:
 	bool binary_ = false;
 	MeshData d_;
 	std::vector<Column> cell_data_;
+	std::vector<std::string> point_data_names_, cell_data_names_;
 };
 
 } // namespace

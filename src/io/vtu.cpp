@@ -105,6 +105,7 @@ public:
 		MeshData d;
 		std::vector<int64> connectivity, offsets, types;
 		std::vector<Column> cell_data;
+		std::vector<std::string> point_data_names, cell_data_names;
 		bool have_points = false, have_piece = false;
 		for (std::size_t i = 0; i < tags.size(); ++i)
 		{
@@ -157,12 +158,20 @@ public:
 					else if (name == "types")
 						types = integers(t, content_end, nb_cells_);
 				}
-				else if ((section == "PointData" || section == "CellData") && dim >= 1 && dim <= 3 &&
-						 name != "position")
+				else if (section == "PointData" || section == "CellData")
 				{
-					const uint64 count = section == "PointData" ? nb_points_ : nb_cells_;
-					Column c{name, dim, values(t, content_end, count * dim, false)};
-					(section == "PointData" ? d.vertex_columns : cell_data).push_back(std::move(c));
+					// every named array counts for conflicts, the ones of other sizes too
+					const bool of_points = section == "PointData";
+					std::vector<std::string>& names = of_points ? point_data_names : cell_data_names;
+					if (std::string why = data_name_conflict(names, name, of_points); !why.empty())
+						fail_at(t.begin, why);
+					names.push_back(name);
+					if (dim >= 1 && dim <= 3)
+					{
+						const uint64 count = of_points ? nb_points_ : nb_cells_;
+						Column c{name, dim, values(t, content_end, count * dim, false)};
+						(of_points ? d.vertex_columns : cell_data).push_back(std::move(c));
+					}
 				}
 			}
 		}

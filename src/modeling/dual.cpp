@@ -16,6 +16,9 @@ namespace cgogn::modeling
 
 std::shared_ptr<Attribute<Vec3>> dual(const CMap2 &m, const Attribute<Vec3> &pos, CMap2 &out)
 {
+	if (container_of<CMap2::Vertex::ORBIT>(out).find("position") != nullptr &&
+		get_attribute<Vec3, CMap2::Vertex>(out, "position") == nullptr)
+		throw Error("modeling::dual: the output map has a vertex attribute 'position' that is not a Vec3");
 	if (const uint32 holes = nb_boundary_components(m); holes > 0)
 		throw TopologyError("modeling::dual: the surface has " + std::to_string(holes) +
 		                    " boundary loop(s); the dual is defined for closed surfaces (fill the holes first)");

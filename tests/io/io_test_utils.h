@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 #include <cstdlib>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -74,6 +75,37 @@ BuildReport build_with_positions(MAP& m, const SOUP& s)
 			(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	return r;
 }
+
+/// What must not change when a load fails: counts, the attributes of the
+/// vertices and of the top cells (faces of a surface, volumes of a volume
+/// mesh), and every position.
+template <typename MAP>
+struct MapSnapshot
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Top = std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face,
+								   typename mesh_traits<MAP>::Volume>;
+	uint32 darts, vertices, top_cells;
+	std::vector<std::string> vertex_attributes, top_attributes;
+	std::vector<Vec3> positions;
+	explicit MapSnapshot(const MAP& m)
+		: darts(nb_darts(m)), vertices(nb_cells<Vertex>(m)), top_cells(nb_cells<Top>(m)),
+		  vertex_attributes(names(container_of<Vertex::ORBIT>(m))), top_attributes(names(container_of<Top::ORBIT>(m)))
+	{
+		if (auto pos = get_attribute<Vec3, Vertex>(m, "position"))
+			foreach_cell(m, [&](Vertex v) { positions.push_back(value<Vec3>(m, *pos, v)); });
+	}
+	bool operator==(const MapSnapshot&) const = default;
+
+private:
+	static std::vector<std::string> names(const AttributeContainer& c)
+	{
+		std::vector<std::string> out;
+		for (const auto& a : c.attributes())
+			out.push_back(a->name() + ":" + a->type().name());
+		return out;
+	}
+};
 
 #ifdef CGOGN_TOOL_PATH
 /// What a run of the `cgogn` program produced.

@@ -84,21 +84,6 @@ bool is_volume(const std::string& file)
 		   f == io::Format::TetGen;
 }
 
-// What must not change when a load fails.
-template <typename MAP>
-struct Snapshot
-{
-	uint32 darts, vertices, faces;
-	std::size_t vertex_attributes;
-	explicit Snapshot(const MAP& m)
-		: darts(nb_darts(m)), vertices(nb_cells<typename mesh_traits<MAP>::Vertex>(m)),
-		  faces(nb_cells<typename mesh_traits<MAP>::Face>(m)),
-		  vertex_attributes(container_of<mesh_traits<MAP>::Vertex::ORBIT>(m).attributes().size())
-	{
-	}
-	bool operator==(const Snapshot&) const = default;
-};
-
 class BadFile : public testing::TestWithParam<BadCase>
 {
 };
@@ -120,7 +105,7 @@ TEST_P(BadFile, ThrowsAndLeavesTheMapUntouched)
 
 	auto check = [&](auto& m) {
 		using MAP = std::decay_t<decltype(m)>;
-		const Snapshot<MAP> before(m);
+		const MapSnapshot<MAP> before(m);
 		try
 		{
 			if constexpr (MAP::dimension == 3)
@@ -143,7 +128,7 @@ TEST_P(BadFile, ThrowsAndLeavesTheMapUntouched)
 			}
 			EXPECT_NE(msg.find(c.cause), std::string::npos) << "message: " << msg;
 		}
-		EXPECT_TRUE(Snapshot<MAP>(m) == before);
+		EXPECT_TRUE(MapSnapshot<MAP>(m) == before);
 		EXPECT_TRUE(check_integrity(m).ok());
 	};
 	// the target map already holds a mesh
@@ -194,6 +179,14 @@ INSTANTIATE_TEST_SUITE_P(
 		BadCase{"ply_no_z", "ply_no_z.ply", nullptr, Where::Line, "lacks x, y or z"},
 		BadCase{"ply_unknown_type", "ply_unknown_type.ply", nullptr, Where::Line, "unknown property type"},
 		BadCase{"ply_no_end_header", "ply_no_end_header.ply", nullptr, Where::File, "without 'end_header'"},
+		BadCase{"ply_duplicate_property", "ply_duplicate_property.ply", nullptr, Where::Line,
+				"two properties named 'q'"},
+		BadCase{"ply_property_named_like_group", "ply_property_named_like_group.ply", nullptr, Where::Line,
+				"two vertex data arrays are named 'normal'"},
+		BadCase{"ply_position_group", "ply_position_group.ply", nullptr, Where::Line,
+				"collides with the vertex attribute 'position'"},
+		BadCase{"ply_vertex_element_twice", "ply_vertex_element_twice.ply", nullptr, Where::Line,
+				"element 'vertex' declared twice"},
 		BadCase{"ply_binary_truncated", "t.ply", [] { return ply_binary_header + bytes_of({0, 0, 0, 1, 0}); },
 				Where::Byte, "declared 3 vertex elements"},
 		BadCase{"ply_binary_size_mismatch", "x.ply",
@@ -235,10 +228,22 @@ INSTANTIATE_TEST_SUITE_P(
 						   bytes_of({0, 0, 0, 1});
 				},
 				Where::Byte, "declared 12 values"},
+		BadCase{"vtk_point_data_same_name", "vtk_point_data_same_name.vtk", nullptr, Where::Line,
+				"two vertex data arrays are named 'q'"},
+		BadCase{"vtk_field_same_name", "vtk_field_same_name.vtk", nullptr, Where::Line,
+				"two cell data arrays are named 'q'"},
+		BadCase{"vtk_point_data_original_vertex", "vtk_point_data_original_vertex.vtk", nullptr, Where::Line,
+				"collides with the vertex attribute 'original_vertex'"},
 		BadCase{"vtk_garbage", "garbage.vtk", [] { return garbage(4096, 7); }, Where::Line, "not a VTK legacy file"},
 		// VTU
 		BadCase{"vtu_index_out_of_range", "vtu_index_out_of_range.vtu", nullptr, Where::Byte, "out of range"},
 		BadCase{"vtu_bad_base64", "vtu_bad_base64.vtu", nullptr, Where::Byte, "bad base64"},
+		BadCase{"vtu_point_data_same_name", "vtu_point_data_same_name.vtu", nullptr, Where::Byte,
+				"two vertex data arrays are named 'q'"},
+		BadCase{"vtu_cell_data_same_name", "vtu_cell_data_same_name.vtu", nullptr, Where::Byte,
+				"two cell data arrays are named 'q'"},
+		BadCase{"vtu_point_data_position", "vtu_point_data_position.vtu", nullptr, Where::Byte,
+				"collides with the vertex attribute 'position'"},
 		BadCase{"vtu_garbage", "garbage.vtu", [] { return garbage(4096, 8); }, Where::Byte, ""},
 		// gmsh
 		BadCase{"msh_undefined_node", "msh_undefined_node.msh", nullptr, Where::Line, "node 7, which is not defined"},

@@ -338,6 +338,27 @@ TEST(VtuVariants, InlineBase64AndCompressedBlocks)
 #endif
 }
 
+TEST(VtuVariants, AsciiArraysWithoutSeparatorsAroundTheValues)
+{
+	// `<DataArray ...>4</DataArray>`: the last value needs no separator
+	TempDir dir;
+	write_text(dir.file("i.vtu"),
+			   "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">"
+			   "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 "
+			   "1</DataArray></Points><Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 "
+			   "3</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray><DataArray "
+			   "type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray></Cells><CellData><DataArray "
+			   "type=\"Float64\" Name=\"q\" format=\"ascii\">7</DataArray></CellData></Piece></UnstructuredGrid>"
+			   "</VTKFile>");
+	CMap3 m;
+	io::load_volume(m, dir.file("i.vtu"));
+	EXPECT_EQ(nb_cells<CMap3::Volume>(m), 1u);
+	EXPECT_EQ(nb_cells<CMap3::Vertex>(m), 4u);
+	auto q = get_attribute<double, CMap3::Volume>(m, "q");
+	ASSERT_NE(q, nullptr);
+	foreach_cell(m, [&](CMap3::Volume v) { EXPECT_EQ(value<double>(m, *q, v), 7.0); });
+}
+
 TEST(GmshVariants, Version2AsciiAndBinaryWithSurfaceElements)
 {
 	TempDir dir;

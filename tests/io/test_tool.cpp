@@ -112,3 +112,23 @@ TEST(Tool, ErrorsGoToStderrWithNonZeroExit)
 	EXPECT_EQ(r.status, 0);
 	EXPECT_NE(r.out.find("convert"), std::string::npos);
 }
+
+TEST(Tool, InfoOnEveryMalformedFileExitsTwoWithAMessage)
+{
+	// the committed malformed corpus (and the fuzzers' regressions in it):
+	// status 2 and a message naming the file, never a signal (which the shell
+	// reports as 128 + its number)
+	TempDir dir;
+	uint32 files = 0;
+	for (const auto& entry : std::filesystem::directory_iterator(CGOGN_IO_BAD_DIR))
+	{
+		const std::string path = entry.path().string();
+		const ToolRun r = run_tool("info " + quoted(path), dir);
+		EXPECT_EQ(r.status, 2) << path << "\n" << r.err;
+		EXPECT_EQ(r.out, "") << path;
+		const std::string stem = entry.path().stem().string();
+		EXPECT_NE(r.err.find(stem), std::string::npos) << path << "\n" << r.err;
+		++files;
+	}
+	EXPECT_GE(files, 50u);
+}

@@ -113,3 +113,13 @@ TEST(Dual, SurfaceWithBoundaryIsRejected)
 	EXPECT_THROW(modeling::dual(m, *pos, out), TopologyError);
 	EXPECT_EQ(nb_darts(out), 0u) << "nothing appended";
 }
+
+TEST(Dual, OutputWithANonVec3PositionIsRejectedBeforeAnythingIsAppended)
+{
+	CMap2 cube;
+	auto pos = test::build_with_positions(cube, test::box_soup(2.0, 2.0, 2.0));
+	CMap2 out;
+	add_attribute<double, CMap2::Vertex>(out, "position");
+	EXPECT_THROW(modeling::dual(cube, *pos, out), Error);
+	EXPECT_EQ(nb_darts(out), 0u);
+}

@@ -19,7 +19,8 @@ namespace cgogn::modeling
 /// Throws TopologyError (nothing appended) when m has boundary (the dual of a
 /// surface with boundary is not a closed 2-map: choose to fill_holes first),
 /// or when a vertex has fewer than 3 edges or meets a face twice (its dual
-/// face would be degenerate). O(size of m).
+/// face would be degenerate), and Error (nothing appended) when out has a
+/// vertex attribute "position" of another type than Vec3. O(size of m).
 std::shared_ptr<Attribute<Vec3>> dual(const CMap2 &m, const Attribute<Vec3> &pos, CMap2 &out);
 
 } // namespace cgogn::modeling
