@@ -2,8 +2,18 @@
 // libFuzzer target for one reader (chosen by CGOGN_FUZZ_FORMAT at compile
 // time): any input must either throw io::Error or give data that builds into
 // a map passing check_integrity. Crashes, leaks and sanitizer reports are bugs.
+//
+// With CGOGN_FUZZ_APPEND the first byte of the input chooses the reader and
+// the rest is the file, loaded into a map that already holds a mesh and
+// attributes whose names the formats use, with other types: a load that
+// throws must leave that map exactly as it was, and one that succeeds must
+// give a map passing check_integrity.
+#include <cgogn/core/builder/generators.h>
 #include <cgogn/core/builder/map_builder.h>
+#include <cgogn/core/functions/attributes.h>
 #include <cgogn/core/functions/integrity.h>
+#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/error.h>
 
 #include "formats.h"
@@ -13,6 +23,7 @@
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <vector>
 
 using namespace cgogn;
 using namespace cgogn::io;
@@ -33,9 +44,9 @@ enum Kind
 	TETGEN
 };
 
-io::detail::MeshData parse(std::string_view in, const std::string& path)
+io::detail::MeshData parse(int kind, std::string_view in, const std::string& path)
 {
-	switch (CGOGN_FUZZ_FORMAT)
+	switch (kind)
 	{
 	case OFF:
 		return io::detail::read_off(in, path);
@@ -64,28 +75,116 @@ io::detail::MeshData parse(std::string_view in, const std::string& path)
 	}
 }
 
+// Attribute names the readers produce, each given a type no file gives it
+// (and `position` on faces and volumes, where loading never puts it).
+template <typename MAP>
+void add_colliding_attributes(MAP& m)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Top = std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face,
+								   typename mesh_traits<MAP>::Volume>;
+	add_attribute<double, Vertex>(m, "normal");
+	add_attribute<Vec2, Vertex>(m, "color");
+	add_attribute<Vec3, Vertex>(m, "tex_coord");
+	add_attribute<Vec3, Vertex>(m, "q");
+	add_attribute<double, Vertex>(m, "original_vertex");
+	add_attribute<uint32, Vertex>(m, "ref");
+	add_attribute<Vec2, Top>(m, "normal");
+	add_attribute<double, Top>(m, "color");
+	add_attribute<Vec3, Top>(m, "q");
+	add_attribute<uint32, Top>(m, "ref");
+	add_attribute<double, Top>(m, "position");
+}
+
+// What a failed load must not change.
+template <typename MAP>
+struct State
+{
+	uint32 darts = 0, vertices = 0;
+	std::vector<std::string> attributes;
+	std::vector<double> positions;
+	explicit State(const MAP& m)
+	{
+		using Vertex = typename mesh_traits<MAP>::Vertex;
+		darts = nb_darts(m);
+		vertices = nb_cells<Vertex>(m);
+		for (const auto& c : m.cells_)
+			if (c != nullptr)
+				for (const auto& a : c->attributes())
+					attributes.push_back(a->name() + ":" + a->type().name());
+		auto pos = get_attribute<Vec3, Vertex>(m, "position");
+		foreach_cell(m, [&](Vertex v) {
+			const Vec3& p = (*pos)[index_of(m, v)];
+			positions.insert(positions.end(), {p[0], p[1], p[2]});
+		});
+	}
+	bool operator==(const State&) const = default;
+};
+
+template <typename MAP, typename SOUP>
+void load_into_non_empty_map(const io::detail::MeshData& d, const SOUP& soup, const std::string& path)
+{
+	MAP m;
+	if constexpr (MAP::dimension == 2)
+		build_surface(m, soup);
+	else
+		build_volume(m, soup);
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	auto pos = add_attribute<Vec3, Vertex>(m, "position");
+	uint32 i = 0;
+	foreach_cell(m, [&](Vertex v) { (*pos)[index_of(m, v)] = Vec3(i, 2.0 * i, 3.0 * i), ++i; });
+	add_colliding_attributes(m);
+	const State<MAP> before(m);
+	try
+	{
+		io::detail::build_map(m, d, path);
+	}
+	catch (const io::Error&)
+	{
+		if (!(State<MAP>(m) == before))
+			std::abort(); // a failed load changed the map
+	}
+	if (!check_integrity(m).ok())
+		std::abort();
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
 	const std::string path = "fuzz-input";
-	const std::string_view in(reinterpret_cast<const char*>(data), size);
+	std::string_view in(reinterpret_cast<const char*>(data), size);
+#ifdef CGOGN_FUZZ_APPEND
+	if (in.empty())
+		return 0;
+	const int kind = int(uint8_t(in[0])) % (TETGEN + 1);
+	in.remove_prefix(1);
+#else
+	const int kind = CGOGN_FUZZ_FORMAT;
+#endif
 	io::detail::MeshData d;
 	try
 	{
-		d = parse(in, path);
+		d = parse(kind, in, path);
 		io::detail::validate(d, path);
 	}
 	catch (const io::Error&)
 	{
 		return 0;
 	}
-	const bool volume = CGOGN_FUZZ_FORMAT >= MEDIT;
+	const bool volume = kind >= MEDIT;
+	if (volume)
+		io::detail::orient_cells(d);
+#ifdef CGOGN_FUZZ_APPEND
+	if (volume)
+		load_into_non_empty_map<CMap3>(d, tet_grid_soup(1, 1, 1), path);
+	else
+		load_into_non_empty_map<CMap2>(d, grid_soup(2, 1, true), path);
+#else
 	try
 	{
 		if (volume)
 		{
-			io::detail::orient_cells(d);
 			CMap3 m;
 			io::detail::build_map(m, d, path);
 			if (!check_integrity(m).ok())
@@ -103,5 +202,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	{
 		// e.g. too large for 32-bit indices
 	}
+#endif
 	return 0;
 }

@@ -1,14 +1,26 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of the io readers with clang (ASan + UBSan) and
-# runs each for a bounded time: FUZZ_SECONDS in total (default 60), split
-# evenly. Seeds: the malformed corpus of tests/io/bad, the shipped example
-# mesh, and small valid files written by the cgogn tool. Fails on any crash,
-# leak or sanitizer report.
+# runs each for a bounded time: FUZZ_SECONDS in total (default 600), split
+# evenly over the targets (one per reader, and fuzz_append, which loads any
+# format into a map that already holds a mesh and attributes). Fails on any
+# crash, leak, timeout or sanitizer report.
+#
+# Each target starts from its corpus in fuzz/corpus/<target> (kept in the
+# repository, minimized: each run starts from the coverage reached before),
+# plus seeds made here: the malformed corpus of tests/io/bad, the shipped
+# example mesh and small valid files written by the cgogn tool. Each target
+# uses the dictionary fuzz/dict/<format>.dict (fuzz_append: all of them).
+# New inputs go to build/fuzz/corpus/<target>. With FUZZ_MERGE=1, each
+# committed corpus is then replaced by the minimized merge (libFuzzer
+# -merge=1) of itself and the new inputs, those under 4 KB.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-total=${FUZZ_SECONDS:-60}
+total=${FUZZ_SECONDS:-600}
 formats=(off obj ply stl medit vtk vtu gmsh tetgen)
-per=$(( total / ${#formats[@]} ))
+targets=()
+for f in "${formats[@]}"; do targets+=("$f"); done
+targets+=(append)
+per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
 build=build/fuzz
@@ -17,16 +29,16 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCGOGN_BUILD_FUZZERS=ON -DCGOGN_BUILD_TESTS=OFF -DCGOGN_BUILD_EXAMPLES=OFF -DCGOGN_BUILD_BENCHMARKS=OFF \
   -DCGOGN_BUILD_TOOLS=OFF -DCGOGN_WERROR=ON >/dev/null
-targets=()
-for f in "${formats[@]}"; do targets+=("fuzz_$f"); done
-cmake --build "$build" -j 2 --target "${targets[@]}"
+build_targets=()
+for t in "${targets[@]}"; do build_targets+=("fuzz_$t"); done
+cmake --build "$build" -j 2 --target "${build_targets[@]}"
 
 # seed corpora: valid files written by a release build of the tool when there
 # is one, plus every malformed file of the test corpus with a matching extension
 seeds=$build/seeds
 rm -rf "$seeds"
 tool=build/release/tools/cgogn
-for f in "${formats[@]}"; do mkdir -p "$seeds/$f"; done
+for t in "${targets[@]}"; do mkdir -p "$seeds/$t"; done
 cp examples/data/*.obj "$seeds/obj/"
 if [ -x "$tool" ]; then
   "$tool" convert examples/data/spot_control_mesh.obj "$seeds/off/spot.off"
@@ -57,20 +69,50 @@ if [ -x "$tool" ]; then
   "$tool" convert "$tets" "$build/two_tets.ele"
   { cat "$build/two_tets.node"; printf '\0'; cat "$build/two_tets.ele"; } > "$seeds/tetgen/two_tets"
 fi
+# fuzz_append: every seed and corpus file of reader k, behind the byte k
+k=0
+for f in "${formats[@]}"; do
+  for s in "$seeds/$f"/* fuzz/corpus/"$f"/*; do
+    [ -f "$s" ] || continue
+    { printf "\\x$(printf %02x "$k")"; cat "$s"; } > "$seeds/append/$f-$(basename "$s")"
+  done
+  k=$((k + 1))
+done
+cat fuzz/dict/*.dict > "$build/append.dict"
+
+dict_of() {
+  if [ "$1" = append ]; then echo "$build/append.dict"; else echo "fuzz/dict/$1.dict"; fi
+}
 
 status=0
-for f in "${formats[@]}"; do
-  echo "== fuzz_$f (${per}s)"
-  work=$build/corpus/$f
-  mkdir -p "$work"
+for t in "${targets[@]}"; do
+  echo "== fuzz_$t (${per}s)"
+  work=$build/corpus/$t
+  mkdir -p "$work" "fuzz/corpus/$t"
   if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    "$build/fuzz/fuzz_$f" "$work" "$seeds/$f" -max_total_time="$per" -max_len=65536 -timeout=10 \
-      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/crash-$f-" 2>"$build/fuzz_$f.log"; then
-    echo "fuzz_$f FAILED: see $build/fuzz_$f.log and $build/crash-$f-*" >&2
-    tail -40 "$build/fuzz_$f.log" >&2
+    "$build/fuzz/fuzz_$t" "$work" "fuzz/corpus/$t" "$seeds/$t" -dict="$(dict_of "$t")" \
+      -max_total_time="$per" -max_len=65536 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+      -artifact_prefix="$build/crash-$t-" 2>"$build/fuzz_$t.log"; then
+    echo "fuzz_$t FAILED: see $build/fuzz_$t.log and $build/crash-$t-*" >&2
+    tail -40 "$build/fuzz_$t.log" >&2
     status=1
   else
-    grep -E "stat::number_of_executed_units|cov:" "$build/fuzz_$f.log" | tail -2
+    grep -E "stat::number_of_executed_units|cov:" "$build/fuzz_$t.log" | tail -2
   fi
 done
+
+# The committed corpora keep inputs under 4 KB: the larger ones come from
+# the seeds made above, which every run has anyway.
+if [ "$status" = 0 ] && [ "${FUZZ_MERGE:-0}" = 1 ]; then
+  for t in "${targets[@]}"; do
+    candidates=$build/merge_input/$t merged=$build/merged/$t
+    rm -rf "$candidates" "$merged"
+    mkdir -p "$candidates" "$merged"
+    find "fuzz/corpus/$t" "$build/corpus/$t" -type f -size -4096c -exec cp {} "$candidates/" \;
+    "$build/fuzz/fuzz_$t" -merge=1 -max_len=65536 -timeout=10 "$merged" "$candidates" 2>"$build/merge_$t.log"
+    rm -rf "fuzz/corpus/$t"
+    mv "$merged" "fuzz/corpus/$t"
+    echo "fuzz/corpus/$t: $(ls "fuzz/corpus/$t" | wc -l) files, $(du -sh "fuzz/corpus/$t" | cut -f1)"
+  done
+fi
 exit $status
