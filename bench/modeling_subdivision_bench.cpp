@@ -20,6 +20,8 @@
 #include <filesystem>
 #include <string>
 
+#include "cgogn_test_data.h"
+
 namespace cgogn::bench
 {
 
@@ -28,7 +30,7 @@ const SubdivisionInput &subdivision_input()
 	static const SubdivisionInput input = []
 	{
 		SubdivisionInput in;
-		const std::string path = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
+		const std::string path = cgogn_test_data::path("surface/nefertiti.obj");
 		if (!std::filesystem::exists(path))
 			return in;
 		CMap2 m;

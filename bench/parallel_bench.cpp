@@ -10,12 +10,13 @@
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sys/resource.h>
 #include <utility>
 
-#include <cmath>
-#include <sys/resource.h>
+#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -40,7 +41,7 @@ struct Surface
 	{
 		// the largest surface of the data folder (CGOGN_BENCH_GENERATED=1, or no
 		// data folder: the generated 1M-triangle torus)
-		const std::string file = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
+		const std::string file = cgogn_test_data::path("surface/nefertiti.obj");
 		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
 		{
 			io::load_surface(map, file);
@@ -223,7 +224,7 @@ struct Volume3
 		const char* which = std::getenv("CGOGN_BENCH_VOLUME");
 		const std::string name = which != nullptr && std::string(which) == "elephant" ? "elephant_hex_110k.mesh"
 																					  : "armadillo_tet_461k.mesh";
-		const std::string file = std::string(CGOGN_DATA_DIR) + "/volume/" + name;
+		const std::string file = cgogn_test_data::path("volume/" + name);
 		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
 			io::load_volume(map, file);
 		else

@@ -30,10 +30,11 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <sys/resource.h>
 #include <utility>
 #include <vector>
 
-#include <sys/resource.h>
+#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -57,8 +58,9 @@ CMap3& volume_map()
 		if (which == "grid")
 			build_volume(map, tet_grid_soup(55, 55, 55));
 		else
-			io::load_volume(map, std::string(CGOGN_DATA_DIR) + "/volume/" +
-									 (which == "elephant" ? "elephant_hex_110k.mesh" : "armadillo_tet_461k.mesh"));
+			io::load_volume(
+			    map, cgogn_test_data::path(std::string("volume/") + (which == "elephant" ? "elephant_hex_110k.mesh"
+			                                                                             : "armadillo_tet_461k.mesh")));
 		// the non-indexed path for vertices: drop the index the reader made
 		Attribute<uint32>*& idx = map.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
 		map.darts_->remove_attribute(idx);

@@ -3,16 +3,16 @@
 // the generic cavity re-tetrahedralization it replaced.
 #include <cgogn/cgogn.h>
 
-#include "../../src/core/cmap3_cavity.h"
-
-#include "map_test_helpers.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
 #include <random>
+
+#include "../../src/core/cmap3_cavity.h"
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -23,7 +23,6 @@ using Volume = CMap3::Volume;
 using test::Counts;
 using test::counts;
 using test::index_everything;
-using test::data_file;
 
 namespace
 {
@@ -249,9 +248,7 @@ TEST(SplitTetra, RepeatedSplitsOfRandomTets)
 
 TEST(SplitTetra, RealMeshRandomSubsetSameAsCavity)
 {
-	const std::string path = data_file("volume/elephant_tet_8k.mesh");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no volume/elephant_tet_8k.mesh";
+	CGOGN_DATA_PATH_OR_SKIP(path, "volume/elephant_tet_8k.mesh");
 	CMap3 m, ref;
 	io::load_volume(m, path);
 	io::load_volume(ref, path);
@@ -288,9 +285,7 @@ TEST(SplitTetra, RealMeshRandomSubsetSameAsCavity)
 // Every tet of a real mesh, vertices indexed only (as in the benchmark).
 TEST(SplitTetra, RealMeshEveryTet)
 {
-	const std::string path = data_file("volume/armadillo_tet_4k.mesh");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no volume/armadillo_tet_4k.mesh";
+	CGOGN_DATA_PATH_OR_SKIP(path, "volume/armadillo_tet_4k.mesh");
 	CMap3 m;
 	io::load_volume(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
