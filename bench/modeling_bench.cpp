@@ -34,7 +34,7 @@ namespace
 constexpr uint32 TARGET_FACES = 10000;
 constexpr uint32 REMESH_ITERATIONS = 3;
 
-TriangleSoup soup_of(const CMap2& m, const Attribute<Vec3>& pos)
+TriangleSoup soup_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	TriangleSoup s;
 	std::vector<uint32> id(container_of<Orbit::PHI21>(m).end_index(), 0);
@@ -51,7 +51,7 @@ TriangleSoup soup_of(const CMap2& m, const Attribute<Vec3>& pos)
 	return s;
 }
 
-std::shared_ptr<Attribute<Vec3>> build(CMap2& m, const TriangleSoup& s)
+std::shared_ptr<AttributeArray<Vec3>> build(CMap2& m, const TriangleSoup& s)
 {
 	std::vector<uint32> sizes(s.triangles.size(), 3), vertices;
 	vertices.reserve(3 * s.triangles.size());
@@ -68,7 +68,7 @@ struct Input
 {
 	TriangleSoup soup;
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> pos;
+	std::shared_ptr<AttributeArray<Vec3>> pos;
 	std::unique_ptr<modeling::TriangleTree> tree;
 	double mean_edge_length = 0.0;
 };

@@ -64,7 +64,7 @@ using cgogn::bench::subdivision_input;
 namespace
 {
 
-std::shared_ptr<Attribute<Vec3>> build_cgogn(CMap2 &m)
+std::shared_ptr<AttributeArray<Vec3>> build_cgogn(CMap2& m)
 {
 	const auto &in = subdivision_input();
 	std::vector<uint32> sizes, vertices;

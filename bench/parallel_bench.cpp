@@ -35,8 +35,8 @@ struct alignas(64) PerThread
 struct Surface
 {
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> position, position2, normal;
-	std::shared_ptr<Attribute<double>> scalar;
+	std::shared_ptr<AttributeArray<Vec3>> position, position2, normal;
+	std::shared_ptr<AttributeArray<double>> scalar;
 	Surface()
 	{
 		// the largest surface of the data folder (CGOGN_BENCH_GENERATED=1, or no
@@ -132,7 +132,7 @@ void vertex_normals(benchmark::State& state, Mode mode)
 				const Vec3& c = value(m, s.position, Vertex(phi<1, 1>(m, f.dart)));
 				n += (b - a).cross(c - a);
 			});
-			value(m, s.normal, v) = n.normalized();
+			(*s.normal)[v] = n.normalized();
 		});
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Vertex>(m));
 }
@@ -151,7 +151,7 @@ void smoothing(benchmark::State& state, Mode mode)
 				sum += value(m, s.position, x);
 				++n;
 			});
-			value(m, s.position2, v) = sum / double(n);
+			(*s.position2)[v] = sum / double(n);
 		});
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Vertex>(m));
 }
@@ -167,7 +167,7 @@ void compute_heavy(benchmark::State& state, Mode mode)
 			double x = value(m, s.position, v)[0];
 			for (int i = 0; i < 64; ++i)
 				x = std::sin(x) * std::cos(x + 0.5) + 0.25;
-			value(m, s.scalar, v) = x;
+			(*s.scalar)[v] = x;
 		});
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Vertex>(m));
 }
@@ -309,7 +309,7 @@ struct HideVertexIndex
 
 private:
 	CMap3& m_;
-	Attribute<uint32>* idx_;
+	AttributeArray<uint32>* idx_;
 };
 
 // 3-D vertices not indexed: flooded orbits (phi21 / phi31), each vertex spread

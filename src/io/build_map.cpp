@@ -36,7 +36,7 @@ bool usable(const Column& c)
 }
 
 template <typename T, typename CELL, typename MAP>
-std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name)
+std::shared_ptr<AttributeArray<T>> get_or_add(MAP& m, const std::string& name)
 {
 	auto a = get_attribute<T, CELL>(m, name);
 	return a ? a : add_attribute<T, CELL>(m, name);
@@ -46,7 +46,8 @@ std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name)
 template <typename CELL, typename MAP, typename LINES>
 void fill_column(MAP& m, const Column& c, const LINES& lines)
 {
-	auto put = [&]<typename T>(std::shared_ptr<Attribute<T>> a) {
+	auto put = [&]<typename T>(std::shared_ptr<AttributeArray<T>> a)
+	{
 		lines([&](uint32 line, std::size_t i) {
 			const double* v = &c.values[i * c.dim];
 			if constexpr (std::is_same_v<T, double>)

@@ -14,7 +14,7 @@
 namespace cgogn::modeling
 {
 
-std::shared_ptr<Attribute<Vec3>> dual(const CMap2 &m, const Attribute<Vec3> &pos, CMap2 &out)
+std::shared_ptr<AttributeArray<Vec3>> dual(const CMap2& m, const AttributeArray<Vec3>& pos, CMap2& out)
 {
 	if (const uint32 holes = nb_boundary_components(m); holes > 0)
 		throw TopologyError("modeling::dual: the surface has " + std::to_string(holes) +

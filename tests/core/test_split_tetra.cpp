@@ -39,7 +39,7 @@ CMap3 build(const VolumeSoup& s)
 
 // the four corner positions of tet w, sorted: a tet's identity in a mesh
 using Corners = std::array<std::array<double, 3>, 4>;
-Corners corners(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
+Corners corners(const CMap3& m, const AttributeArray<Vec3>& pos, Volume w)
 {
 	Corners c;
 	uint32 k = 0;
@@ -54,7 +54,7 @@ Corners corners(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
 
 // the barycenter, summed in sorted corner order so that two maps of the same
 // mesh get bit-identical centres whatever their dart order
-Vec3 barycenter(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
+Vec3 barycenter(const CMap3& m, const AttributeArray<Vec3>& pos, Volume w)
 {
 	Vec3 b = Vec3::Zero();
 	for (const auto& p : corners(m, pos, w))
@@ -62,7 +62,7 @@ Vec3 barycenter(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
 	return b / 4.0;
 }
 
-std::vector<Corners> all_tets(const CMap3& m, const Attribute<Vec3>& pos)
+std::vector<Corners> all_tets(const CMap3& m, const AttributeArray<Vec3>& pos)
 {
 	std::vector<Corners> t;
 	foreach_cell(m, [&](Volume w) { t.push_back(corners(m, pos, w)); });
@@ -84,7 +84,7 @@ Vertex split_by_cavity(CMap3& m, Volume w)
 // Splits tet w at its barycenter and checks everything local to the split:
 // counts, integrity, the returned vertex, the lines kept by the old cells,
 // the four volumes adding up to the old one.
-Vertex split_and_check(CMap3& m, Attribute<Vec3>& pos, Volume w)
+Vertex split_and_check(CMap3& m, AttributeArray<Vec3>& pos, Volume w)
 {
 	const Counts before = counts(m);
 	const Vec3 centre = barycenter(m, pos, w);

@@ -34,7 +34,7 @@ inline bool load_data(CMap2 &m, const std::string &name)
 	return true;
 }
 
-inline std::shared_ptr<Attribute<Vec3>> positions(const CMap2 &m)
+inline std::shared_ptr<AttributeArray<Vec3>> positions(const CMap2& m)
 {
 	return get_attribute<Vec3, CMap2::Vertex>(m, "position");
 }

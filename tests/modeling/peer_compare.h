@@ -24,7 +24,7 @@ struct Soup
 };
 
 /// The vertices (densely numbered) and faces of m.
-inline Soup soup_of(const CMap2 &m, const Attribute<Vec3> &pos)
+inline Soup soup_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	Soup s;
 	std::vector<uint32> id(pos.container()->end_index(), 0);
@@ -44,7 +44,7 @@ inline Soup soup_of(const CMap2 &m, const Attribute<Vec3> &pos)
 	return s;
 }
 
-inline std::vector<Vec3> positions_of(const CMap2 &m, const Attribute<Vec3> &pos)
+inline std::vector<Vec3> positions_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	std::vector<Vec3> p;
 	foreach_cell(m, [&](CMap2::Vertex v) { p.push_back(pos[index_of(m, v)]); });

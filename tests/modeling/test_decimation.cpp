@@ -26,7 +26,7 @@ uint32 count_faces(const CMap2& m)
 }
 
 /// Largest distance of a vertex to the unit sphere.
-double max_sphere_deviation(const CMap2& m, const Attribute<Vec3>& pos)
+double max_sphere_deviation(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	double d = 0.0;
 	foreach_cell(m, [&](Vertex v) { d = std::max(d, std::abs(pos[index_of(m, v)].norm() - 1.0)); });

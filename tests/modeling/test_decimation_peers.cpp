@@ -57,7 +57,7 @@ protected:
 		});
 	}
 
-	Errors errors(const CMap2& m, const Attribute<Vec3>& pos) const
+	Errors errors(const CMap2& m, const AttributeArray<Vec3>& pos) const
 	{
 		Errors e;
 		foreach_cell(m, [&](CMap2::Face) { ++e.faces; });
@@ -100,7 +100,7 @@ protected:
 	}
 
 	CMap2 input_;
-	std::shared_ptr<Attribute<Vec3>> pos_;
+	std::shared_ptr<AttributeArray<Vec3>> pos_;
 	std::unique_ptr<modeling::TriangleTree> tree_;
 	TriangleSoup soup_;
 };

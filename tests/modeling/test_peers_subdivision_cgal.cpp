@@ -42,7 +42,7 @@ std::vector<Vec3> positions_of(const CgalMesh &sm)
 	return p;
 }
 
-void expect_same_counts_and_positions(const CMap2 &m, const Attribute<Vec3> &pos, const CgalMesh &sm)
+void expect_same_counts_and_positions(const CMap2& m, const AttributeArray<Vec3>& pos, const CgalMesh& sm)
 {
 	EXPECT_EQ(nb_cells<CMap2::Vertex>(m), sm.number_of_vertices());
 	EXPECT_EQ(nb_cells<CMap2::Edge>(m), sm.number_of_edges());

@@ -53,7 +53,7 @@ std::vector<Vec3> positions_of(const MESH &om)
 }
 
 template <typename SUBDIVIDER, typename MESH>
-void expect_same_as_openmesh(CMap2 &m, Attribute<Vec3> &pos, modeling::SurfaceScheme scheme, uint32 steps)
+void expect_same_as_openmesh(CMap2& m, AttributeArray<Vec3>& pos, modeling::SurfaceScheme scheme, uint32 steps)
 {
 	MESH om = openmesh_of<MESH>(soup_of(m, pos));
 	SUBDIVIDER sub;

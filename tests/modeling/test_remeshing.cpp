@@ -36,7 +36,7 @@ Valences valences(const CMap2& m)
 	return v;
 }
 
-double boundary_length(const CMap2& m, const Attribute<Vec3>& pos)
+double boundary_length(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	double l = 0.0;
 	foreach_dart(m, [&](Dart d) {

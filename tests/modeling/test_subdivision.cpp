@@ -49,7 +49,7 @@ SurfaceSoup tetrahedron_soup()
 
 /// Every expected point is the position of exactly one vertex (to 1e-14),
 /// and there are as many vertices as expected points.
-void expect_positions(const CMap2 &m, const Attribute<Vec3> &pos, const std::vector<Vec3> &expected)
+void expect_positions(const CMap2& m, const AttributeArray<Vec3>& pos, const std::vector<Vec3>& expected)
 {
 	EXPECT_EQ(nb_cells<Vertex>(m), expected.size());
 	for (const Vec3 &p : expected)
@@ -68,7 +68,7 @@ bool all_faces_of_degree(const CMap2 &m, uint32 k)
 }
 
 /// The positions around the boundary face of d, starting at d's origin.
-std::vector<Vec3> boundary_loop(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+std::vector<Vec3> boundary_loop(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	std::vector<Vec3> loop;
 	Dart x = d;

@@ -15,7 +15,7 @@ namespace
 {
 
 /// Every face of m is a triangle whose normal points to the same side as `up`.
-void expect_triangles_facing(const CMap2& m, const Attribute<Vec3>& pos, const Vec3& up)
+void expect_triangles_facing(const CMap2& m, const AttributeArray<Vec3>& pos, const Vec3& up)
 {
 	foreach_cell(m, [&](CMap2::Face f) {
 		EXPECT_EQ(codegree(m, f), 3u);
