@@ -22,6 +22,8 @@ inline constexpr uint32 CHUNK_SIZE = 1u << CHUNK_SHIFT;
 inline constexpr uint32 CHUNK_MASK = CHUNK_SIZE - 1u;
 
 class AttributeContainer;
+template <typename T>
+class AttributeArray;
 
 /// Type-erased part of an attribute: what a container needs to grow it, reset
 /// or copy lines, and find it by name and type.
@@ -61,6 +63,9 @@ protected:
 	friend class AttributeContainer;
 	AttributeContainer* container_;
 	std::string name_;
+	/// The container's cell index (see AttributeContainer::cell_index), kept
+	/// here so that `attr[c]` costs the loads value() costs.
+	const AttributeArray<uint32>* cell_index_ = nullptr;
 };
 
 /// A typed attribute: one value of type T per line of its container (see

@@ -33,7 +33,10 @@ public:
 	~AttributeContainer()
 	{
 		for (auto& a : attributes_)
+		{
 			a->container_ = nullptr;
+			a->cell_index_ = nullptr;
+		}
 	}
 	AttributeContainer(const AttributeContainer&) = delete;
 	AttributeContainer& operator=(const AttributeContainer&) = delete;
@@ -51,6 +54,7 @@ public:
 		    std::make_shared<A>(this, name, std::move(default_value),
 		                        std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
 		a->set_nb_chunks(nb_chunks_);
+		static_cast<AttributeBase&>(*a).cell_index_ = cell_index_;
 		attributes_.push_back(a);
 		return a;
 	}
@@ -80,6 +84,7 @@ public:
 		if (it == attributes_.end())
 			return false;
 		(*it)->container_ = nullptr;
+		(*it)->cell_index_ = nullptr;
 		attributes_.erase(it);
 		return true;
 	}
@@ -114,6 +119,8 @@ public:
 	void set_cell_index(const AttributeArray<uint32>* index)
 	{
 		cell_index_ = index;
+		for (auto& a : attributes_)
+			a->cell_index_ = index;
 	}
 	const AttributeArray<uint32>& key() const
 	{
@@ -459,8 +466,8 @@ CGOGN_INLINE uint32 AttributeArray<T>::line_of(Cell<O> c) const
 		return c.dart.index;
 	else
 	{
-		assert(container_->cell_index() != nullptr && "orbit not indexed");
-		return (*container_->cell_index())[c.dart.index];
+		assert(this->cell_index_ != nullptr && this->cell_index_ == container_->cell_index() && "orbit not indexed");
+		return (*this->cell_index_)[c.dart.index];
 	}
 }
 
