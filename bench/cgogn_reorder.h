@@ -17,8 +17,8 @@ namespace cgogn_bench
 /// Reorders m by the Morton keys of `pos`; returns the new vertex line of each
 /// soup vertex i (whose line was vertex_offset + i before).
 template <typename MAP>
-std::vector<cgogn::uint32> reorder_by_morton(MAP& m, const cgogn::Attribute<cgogn::Vec3>& pos,
-											 cgogn::uint32 vertex_offset, cgogn::uint32 nb_vertices)
+std::vector<cgogn::uint32> reorder_by_morton(MAP& m, const cgogn::AttributeArray<cgogn::Vec3>& pos,
+                                             cgogn::uint32 vertex_offset, cgogn::uint32 nb_vertices)
 {
 	using Vertex = typename MAP::Vertex;
 	auto key = cgogn::add_attribute<cgogn::uint64, Vertex>(m, "bench_morton");

@@ -39,10 +39,10 @@ using Face = CMap2::Face;
 struct CgognSurface
 {
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> position, vnormal, fnormal;
+	std::shared_ptr<AttributeArray<Vec3>> position, vnormal, fnormal;
 	// quick mode: boundary flag per vertex (the flat arrays' boundary flags),
 	// filled with the caches
-	std::shared_ptr<Attribute<uint8>> boundary;
+	std::shared_ptr<AttributeArray<uint8>> boundary;
 	uint32 vertex_offset = 0;
 	// with --reorder: the vertex line of each soup vertex (else vertex_offset + i)
 	std::vector<uint32> line_of_soup_vertex;
@@ -79,7 +79,7 @@ void build_quick_caches(CgognSurface& me)
 	IncidenceCache<CMap2, Vertex, Vertex, Edge>::build(m);
 	if (!me.boundary)
 		me.boundary = add_attribute<uint8, Vertex>(m, "boundary");
-	Attribute<uint8>& b = *me.boundary;
+	AttributeArray<uint8>& b = *me.boundary;
 	parallel_foreach_cell(m, [&](Vertex v) { value<uint8>(m, b, v) = is_incident_to_boundary(m, v); });
 }
 
@@ -132,7 +132,7 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 {
 	CgognSurface& me = mesh(mode);
 	const CMap2& m = me.map;
-	Attribute<Vec3>& pos = *me.position;
+	AttributeArray<Vec3>& pos = *me.position;
 	timed(
 		state, first, [&] { me.reset_positions(surface_soup()); },
 		[&] {
@@ -151,23 +151,22 @@ void normal(benchmark::State& state, bool first, Mode mode)
 {
 	CgognSurface& me = mesh(mode);
 	const CMap2& m = me.map;
-	const Attribute<Vec3>& pos = *me.position;
-	Attribute<Vec3>& fn = *me.fnormal;
-	Attribute<Vec3>& vn = *me.vnormal;
+	const AttributeArray<Vec3>& pos = *me.position;
+	AttributeArray<Vec3>& fn = *me.fnormal;
+	AttributeArray<Vec3>& vn = *me.vnormal;
 	timed(
 		state, first, [] {},
 		[&] {
 			foreach_cell(m, [&](Located<Face> f) {
 				const Dart d0 = f.dart, d1 = phi1(m, d0), d2 = phi1(m, d1);
 				const Vec3& p0 = value<Vec3>(m, pos, Vertex(d0));
-				value<Vec3>(m, fn, f) =
-					(value<Vec3>(m, pos, Vertex(d1)) - p0).cross(value<Vec3>(m, pos, Vertex(d2)) - p0).normalized();
+			    fn[f] = (value<Vec3>(m, pos, Vertex(d1)) - p0).cross(value<Vec3>(m, pos, Vertex(d2)) - p0).normalized();
 			});
 			foreach_cell(m, [&](Located<Vertex> v) {
 				Vec3 n = Vec3::Zero();
 				// `auto`: the face comes with its line (LocatedCell), read without index lookup
 				foreach_incident_face(m, v, [&](auto f) { n += value<Vec3>(m, fn, f); });
-				value<Vec3>(m, vn, v) = n.normalized();
+			    vn[v] = n.normalized();
 			});
 		});
 	double s = 0;
@@ -179,8 +178,8 @@ void smoothing_quick(benchmark::State& state, bool first)
 {
 	CgognSurface& me = mesh(Mode::quick);
 	const CMap2& m = me.map;
-	Attribute<Vec3>& pos = *me.position;
-	const Attribute<uint8>& boundary = *me.boundary;
+	AttributeArray<Vec3>& pos = *me.position;
+	const AttributeArray<uint8>& boundary = *me.boundary;
 	timed(
 		state, first, [&] { me.reset_positions(surface_soup()); },
 		[&] {
@@ -194,7 +193,7 @@ void smoothing_quick(benchmark::State& state, bool first)
 					s += value<Vec3>(m, pos, w);
 					++n;
 				});
-				value<Vec3>(m, pos, v) = s / double(n);
+			    pos[v] = s / double(n);
 			});
 		});
 	set_check(state, "check", position_sum(me));
@@ -226,7 +225,7 @@ void smoothing(benchmark::State& state, bool first)
 {
 	CgognSurface& me = mesh();
 	const CMap2& m = me.map;
-	Attribute<Vec3>& pos = *me.position;
+	AttributeArray<Vec3>& pos = *me.position;
 	timed(
 		state, first, [&] { me.reset_positions(surface_soup()); },
 		[&] {
@@ -242,7 +241,7 @@ void smoothing(benchmark::State& state, bool first)
 					s += value<Vec3>(m, pos, w);
 					++n;
 				});
-				value<Vec3>(m, pos, v) = s / double(n);
+			    pos[v] = s / double(n);
 			});
 		});
 	set_check(state, "check", position_sum(me));
@@ -279,7 +278,7 @@ void set_counts_and_checksum(benchmark::State& state, const CgognSurface& me)
 	set_check(state, "check", position_sum(me));
 }
 
-Vec3 centroid(const CMap2& m, const Attribute<Vec3>& pos, Face f)
+Vec3 centroid(const CMap2& m, const AttributeArray<Vec3>& pos, Face f)
 {
 	Vec3 c = Vec3::Zero();
 	uint32 n = 0;
@@ -297,9 +296,9 @@ void subdivision(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognSurface>(surface_soup()); },
 		[&] {
 			CMap2& m = me->map;
-			Attribute<Vec3>& pos = *me->position;
-			// new positions of the original vertices, kept aside (by vertex line)
-			std::vector<Vec3> moved(container_of<Vertex::ORBIT>(m).end_index());
+		    AttributeArray<Vec3>& pos = *me->position;
+		    // new positions of the original vertices, kept aside (by vertex line)
+		    std::vector<Vec3> moved(container_of<Vertex::ORBIT>(m).end_index());
 			std::vector<Vertex> old_vertices;
 			old_vertices.reserve(nb_cells<Vertex>(m));
 			foreach_cell(m, [&](Vertex v) {
@@ -336,8 +335,8 @@ void subdivision(benchmark::State& state, bool)
 				value<Vec3>(m, pos, triangulate_face(m, f)) = c;
 			}
 			for (Vertex v : old_vertices)
-				value<Vec3>(m, pos, v) = moved[index_of(m, v)];
-			for (Edge e : edges)
+			    pos[v] = moved[index_of(m, v)];
+		    for (Edge e : edges)
 				if (edge_can_flip(m, e))
 					flip_edge(m, e);
 		});
@@ -351,9 +350,9 @@ void collapse(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognSurface>(surface_soup()); },
 		[&] {
 			CMap2& m = me->map;
-			Attribute<Vec3>& pos = *me->position;
-			std::vector<Face> faces;
-			foreach_cell(m, [&](Face f) { faces.push_back(f); });
+		    AttributeArray<Vec3>& pos = *me->position;
+		    std::vector<Face> faces;
+		    foreach_cell(m, [&](Face f) { faces.push_back(f); });
 			std::vector<Vertex> added;
 			added.reserve(faces.size());
 			for (Face f : faces)

@@ -37,7 +37,7 @@ using Volume = CMap3::Volume;
 struct CgognVolume
 {
 	CMap3 map;
-	std::shared_ptr<Attribute<Vec3>> position, position2, barycenter;
+	std::shared_ptr<AttributeArray<Vec3>> position, position2, barycenter;
 	uint32 vertex_offset = 0;
 	// with --reorder: the vertex line of each soup vertex (else vertex_offset + i)
 	std::vector<uint32> line_of_soup_vertex;
@@ -166,8 +166,8 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 {
 	CgognVolume& me = mesh(mode);
 	const CMap3& m = me.map;
-	const Attribute<Vec3>& pos = *me.position;
-	Attribute<Vec3>& bary = *me.barycenter;
+	const AttributeArray<Vec3>& pos = *me.position;
+	AttributeArray<Vec3>& bary = *me.barycenter;
 	timed(
 		state, first, [] {},
 		[&] {
@@ -179,7 +179,7 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 					b += value<Vec3>(m, pos, v);
 					++n;
 				});
-				value<Vec3>(m, bary, w) = b / double(n);
+			    bary[w] = b / double(n);
 			});
 		});
 	double s = 0;
@@ -190,8 +190,8 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 void smoothing_pass(CgognVolume& me)
 {
 	const CMap3& m = me.map;
-	const Attribute<Vec3>& pos = *me.position;
-	Attribute<Vec3>& out = *me.position2;
+	const AttributeArray<Vec3>& pos = *me.position;
+	AttributeArray<Vec3>& out = *me.position2;
 	foreach_cell(m, [&](Located<Vertex> v) {
 		Vec3 s = Vec3::Zero();
 		uint32 n = 0;
@@ -199,7 +199,7 @@ void smoothing_pass(CgognVolume& me)
 			s += value<Vec3>(m, pos, w);
 			++n;
 		});
-		value<Vec3>(m, out, v) = s / double(n);
+		out[v] = s / double(n);
 	});
 	std::swap(me.position, me.position2);
 }
@@ -253,9 +253,9 @@ void split(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognVolume>(volume_soup(), false); },
 		[&] {
 			CMap3& m = me->map;
-			Attribute<Vec3>& pos = *me->position;
-			std::vector<Volume> tets;
-			foreach_cell(m, [&](Volume w) { tets.push_back(w); });
+		    AttributeArray<Vec3>& pos = *me->position;
+		    std::vector<Volume> tets;
+		    foreach_cell(m, [&](Volume w) { tets.push_back(w); });
 			for (Volume w : tets)
 			{
 				Vec3 b = Vec3::Zero();
@@ -277,9 +277,9 @@ void collapse(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognVolume>(volume_soup(), false); },
 		[&] {
 			CMap3& m = me->map;
-			Attribute<Vec3>& pos = *me->position;
-			lengths.clear();
-			// the edges indexed (timed): each scan then walks the edge container
+		    AttributeArray<Vec3>& pos = *me->position;
+		    lengths.clear();
+		    // the edges indexed (timed): each scan then walks the edge container
 			// instead of marking the darts of every edge
 			index_cells<Edge>(m);
 			// boundary status cached per vertex
@@ -300,8 +300,8 @@ void collapse(benchmark::State& state, bool)
 				});
 				lengths.push_back(shortest.length);
 				const Vertex kept = collapse_edge(m, best);
-				value<Vec3>(m, pos, kept) = Vec3(shortest.midpoint[0], shortest.midpoint[1], shortest.midpoint[2]);
-				value<uint8>(m, *boundary, kept) = is_incident_to_boundary(m, kept);
+			    pos[kept] = Vec3(shortest.midpoint[0], shortest.midpoint[1], shortest.midpoint[2]);
+			    value<uint8>(m, *boundary, kept) = is_incident_to_boundary(m, kept);
 			}
 			remove_attribute(m, boundary);
 		});

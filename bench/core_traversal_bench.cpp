@@ -20,7 +20,7 @@ namespace
 struct Mesh
 {
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> position;
+	std::shared_ptr<AttributeArray<Vec3>> position;
 	uint64 nb_incidences = 0; // vertex-face incidences = 3F
 	Mesh()
 	{
@@ -89,7 +89,7 @@ void smoothing(benchmark::State& state, bool indexed)
 {
 	Mesh& me = mesh(indexed);
 	const CMap2& m = me.map;
-	Attribute<Vec3>& pos = *me.position;
+	AttributeArray<Vec3>& pos = *me.position;
 	uint64 incidences = 0;
 	for (auto _ : state)
 	{
@@ -105,7 +105,7 @@ void smoothing(benchmark::State& state, bool indexed)
 				sum[0] += q[0], sum[1] += q[1], sum[2] += q[2];
 				++n;
 			});
-			Vec3& p = value<Vec3>(m, pos, v);
+			Vec3& p = pos[v];
 			p = {sum[0] / n, sum[1] / n, sum[2] / n};
 			incidences += n;
 		};
@@ -120,9 +120,44 @@ void smoothing(benchmark::State& state, bool indexed)
 
 } // namespace
 
+// A vertex attribute read through value(m, pos, v) and through pos[v], from
+// every dart in dart order: both read the dart's line from the map's index,
+// then the value, so the two must time alike.
+void attribute_read(benchmark::State& state, bool by_cell)
+{
+	Mesh& me = mesh(true);
+	const CMap2& m = me.map;
+	const AttributeArray<Vec3>& pos = *me.position;
+	double s = 0.0;
+	uint64 reads = 0;
+	for (auto _ : state)
+	{
+		reads = 0;
+		if (by_cell)
+			foreach_dart(m,
+			             [&](Dart d)
+			             {
+				             s += pos[Vertex(d)][0];
+				             ++reads;
+			             });
+		else
+			foreach_dart(m,
+			             [&](Dart d)
+			             {
+				             s += value<Vec3>(m, pos, Vertex(d))[0];
+				             ++reads;
+			             });
+		benchmark::DoNotOptimize(s);
+	}
+	state.counters["ns_per_read"] = benchmark::Counter(double(reads) * state.iterations(),
+	                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 BENCHMARK_CAPTURE(circulator, plain, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(circulator, indexed, true)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(smoothing, plain, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK_CAPTURE(smoothing, indexed, true)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_CAPTURE(attribute_read, value, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_CAPTURE(attribute_read, by_cell, true)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 BENCHMARK_MAIN();

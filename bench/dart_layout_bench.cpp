@@ -66,7 +66,7 @@ struct DartArrays
 struct Layouts
 {
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> position;
+	std::shared_ptr<AttributeArray<Vec3>> position;
 	uint32 nb_vertices = 0;
 	std::vector<uint32> vertex_dart; // INVALID_INDEX for free lines
 	std::vector<Vec3> initial;       // per vertex line
@@ -102,8 +102,8 @@ struct Layouts
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
 			(*position)[offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 		const uint32 nd = map.darts_->end_index();
-		const Attribute<uint32>& vidx = *map.cell_index_[orbit_index(Orbit::PHI21)];
-		const Attribute<uint32>& fidx = *map.cell_index_[orbit_index(Orbit::PHI1)];
+		const AttributeArray<uint32>& vidx = *map.cell_index_[orbit_index(Orbit::PHI21)];
+		const AttributeArray<uint32>& fidx = *map.cell_index_[orbit_index(Orbit::PHI1)];
 		auto& [phi1, phi2, vertex, boundary_bits] = plain;
 		phi1.resize(nd);
 		phi2.resize(nd);
@@ -380,8 +380,8 @@ struct RangeCheck
 struct LibAccess
 {
 	const CMap2& m;
-	Attribute<Vec3>& p;
-	const Attribute<uint32>& vidx;
+	AttributeArray<Vec3>& p;
+	const AttributeArray<uint32>& vidx;
 	bool boundary(uint32 d) const
 	{
 		return is_boundary(m, Dart(d));
@@ -503,7 +503,7 @@ void cgogn_library(benchmark::State& state)
 {
 	Layouts& l = layouts();
 	const CMap2& m = l.map;
-	Attribute<Vec3>& pos = *l.position;
+	AttributeArray<Vec3>& pos = *l.position;
 	auto pass = [&] {
 		foreach_cell(m, [&](Located<Vertex> v) {
 			Vec3 s = Vec3::Zero();
@@ -516,7 +516,7 @@ void cgogn_library(benchmark::State& state)
 				return true;
 			});
 			if (inner)
-				value<Vec3>(m, pos, v) = s / double(n);
+				pos[v] = s / double(n);
 		});
 	};
 	run(state, l, pass, pos);

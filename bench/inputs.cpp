@@ -15,6 +15,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "cgogn_test_data.h"
+
 namespace cgogn_bench
 {
 
@@ -58,7 +60,7 @@ SOUP permute_cells(const SOUP& s, const std::vector<uint32_t>& sizes, const std:
 
 std::string data_path(const char* rel)
 {
-	return std::string(CGOGN_DATA_DIR) + "/" + rel;
+	return cgogn_test_data::path(rel);
 }
 
 bool data_present()
@@ -81,7 +83,8 @@ void set_input(const std::string& k)
 	if (k != "data" && k != "data-unrefined" && k != "generated" && k != "small")
 		throw std::runtime_error("--input must be data, data-unrefined, generated or small");
 	if ((k == "data" || k == "data-unrefined") && !data_present())
-		throw std::runtime_error("--input=data: meshes not found in " + std::string(CGOGN_DATA_DIR));
+		throw std::runtime_error("--input=data: " + cgogn_test_data::missing_large("surface/nefertiti.obj") +
+		                         " (and volume/armadillo_tet_461k.mesh)");
 	input_kind = k;
 }
 

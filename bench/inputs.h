@@ -4,7 +4,7 @@
 // The inputs every library builds from: one surface soup and one tet soup,
 // the same in-memory arrays (same vertex and face order) for all libraries.
 //
-// --input=data (default when CGOGN_DATA_DIR holds the files): nefertiti.obj
+// --input=data (default when CGOGN_LARGE_DATA_DIR holds the files): nefertiti.obj
 //   refined twice by 1-to-4 midpoint subdivision (1,599,008 triangles) and
 //   armadillo_tet_461k.mesh (tets re-oriented to positive volume).
 // --input=data-unrefined: nefertiti.obj as it is (99,938 triangles) and

@@ -6,8 +6,6 @@
 // quality counters are measured the same way for every library, by cgogn's
 // vertex_distance_to_surface: `to_input_*` from the result's vertices to the
 // input surface, `from_input_*` from the input's vertices to the result.
-#include "modeling_peers.h"
-
 #include <cgogn/cgogn.h>
 
 #include <benchmark/benchmark.h>
@@ -16,6 +14,9 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+
+#include "cgogn_test_data.h"
+#include "modeling_peers.h"
 
 using namespace cgogn;
 using cgogn_bench::TriangleSoup;
@@ -33,7 +34,7 @@ namespace
 constexpr uint32 TARGET_FACES = 10000;
 constexpr uint32 REMESH_ITERATIONS = 3;
 
-TriangleSoup soup_of(const CMap2& m, const Attribute<Vec3>& pos)
+TriangleSoup soup_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	TriangleSoup s;
 	std::vector<uint32> id(container_of<Orbit::PHI21>(m).end_index(), 0);
@@ -50,7 +51,7 @@ TriangleSoup soup_of(const CMap2& m, const Attribute<Vec3>& pos)
 	return s;
 }
 
-std::shared_ptr<Attribute<Vec3>> build(CMap2& m, const TriangleSoup& s)
+std::shared_ptr<AttributeArray<Vec3>> build(CMap2& m, const TriangleSoup& s)
 {
 	std::vector<uint32> sizes(s.triangles.size(), 3), vertices;
 	vertices.reserve(3 * s.triangles.size());
@@ -67,7 +68,7 @@ struct Input
 {
 	TriangleSoup soup;
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> pos;
+	std::shared_ptr<AttributeArray<Vec3>> pos;
 	std::unique_ptr<modeling::TriangleTree> tree;
 	double mean_edge_length = 0.0;
 };
@@ -76,7 +77,7 @@ Input& input()
 {
 	static Input in = [] {
 		Input i;
-		const std::string path = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
+		const std::string path = cgogn_test_data::path("surface/nefertiti.obj");
 		io::load_surface(i.map, path);
 		i.pos = get_attribute<Vec3, CMap2::Vertex>(i.map, "position");
 		i.soup = soup_of(i.map, *i.pos);
@@ -159,9 +160,9 @@ void add(const std::string& name, int iterations, std::function<double(TriangleS
 
 int main(int argc, char** argv)
 {
-	if (!std::filesystem::exists(std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj"))
+	if (!std::filesystem::exists(cgogn_test_data::path("surface/nefertiti.obj")))
 	{
-		std::fprintf(stderr, "bench_modeling: no nefertiti.obj in %s\n", CGOGN_DATA_DIR);
+		std::fprintf(stderr, "bench_modeling: %s\n", cgogn_test_data::missing_large("surface/nefertiti.obj").c_str());
 		return 0;
 	}
 	add("decimate/cgogn", 5, [](TriangleSoup& o) { return cgogn_decimate(o, modeling::CollapsePlacement::Optimal); });

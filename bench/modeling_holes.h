@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "cgogn_test_data.h"
+
 namespace cgogn::bench_holes
 {
 
@@ -12,14 +14,14 @@ namespace cgogn::bench_holes
 struct HoleMesh
 {
 	const char *name;
-	const char *file; // under CGOGN_DATA_DIR/surface
+	const char* file; // under surface/ of the data folders
 };
 inline constexpr HoleMesh hole_meshes[] = {{"bunny", "stanford-bunny.obj"}, {"elephant", "elephant-with-holes.off"}};
 inline constexpr const char *quad_mesh = "spot_quadrangulated.obj";
 
 inline std::string data_file(const char *file)
 {
-	return std::string(CGOGN_DATA_DIR) + "/surface/" + file;
+	return cgogn_test_data::path(std::string("surface/") + file);
 }
 
 void register_cgal_benchmarks();

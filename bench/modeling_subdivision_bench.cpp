@@ -20,6 +20,8 @@
 #include <filesystem>
 #include <string>
 
+#include "cgogn_test_data.h"
+
 namespace cgogn::bench
 {
 
@@ -28,7 +30,7 @@ const SubdivisionInput &subdivision_input()
 	static const SubdivisionInput input = []
 	{
 		SubdivisionInput in;
-		const std::string path = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
+		const std::string path = cgogn_test_data::path("surface/nefertiti.obj");
 		if (!std::filesystem::exists(path))
 			return in;
 		CMap2 m;
@@ -62,7 +64,7 @@ using cgogn::bench::subdivision_input;
 namespace
 {
 
-std::shared_ptr<Attribute<Vec3>> build_cgogn(CMap2 &m)
+std::shared_ptr<AttributeArray<Vec3>> build_cgogn(CMap2& m)
 {
 	const auto &in = subdivision_input();
 	std::vector<uint32> sizes, vertices;

@@ -10,12 +10,13 @@
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sys/resource.h>
 #include <utility>
 
-#include <cmath>
-#include <sys/resource.h>
+#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -34,13 +35,13 @@ struct alignas(64) PerThread
 struct Surface
 {
 	CMap2 map;
-	std::shared_ptr<Attribute<Vec3>> position, position2, normal;
-	std::shared_ptr<Attribute<double>> scalar;
+	std::shared_ptr<AttributeArray<Vec3>> position, position2, normal;
+	std::shared_ptr<AttributeArray<double>> scalar;
 	Surface()
 	{
 		// the largest surface of the data folder (CGOGN_BENCH_GENERATED=1, or no
 		// data folder: the generated 1M-triangle torus)
-		const std::string file = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
+		const std::string file = cgogn_test_data::path("surface/nefertiti.obj");
 		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
 		{
 			io::load_surface(map, file);
@@ -131,7 +132,7 @@ void vertex_normals(benchmark::State& state, Mode mode)
 				const Vec3& c = value(m, s.position, Vertex(phi<1, 1>(m, f.dart)));
 				n += (b - a).cross(c - a);
 			});
-			value(m, s.normal, v) = n.normalized();
+			(*s.normal)[v] = n.normalized();
 		});
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Vertex>(m));
 }
@@ -150,7 +151,7 @@ void smoothing(benchmark::State& state, Mode mode)
 				sum += value(m, s.position, x);
 				++n;
 			});
-			value(m, s.position2, v) = sum / double(n);
+			(*s.position2)[v] = sum / double(n);
 		});
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Vertex>(m));
 }
@@ -166,7 +167,7 @@ void compute_heavy(benchmark::State& state, Mode mode)
 			double x = value(m, s.position, v)[0];
 			for (int i = 0; i < 64; ++i)
 				x = std::sin(x) * std::cos(x + 0.5) + 0.25;
-			value(m, s.scalar, v) = x;
+			(*s.scalar)[v] = x;
 		});
 	state.SetItemsProcessed(int64(state.iterations()) * nb_cells<Vertex>(m));
 }
@@ -223,7 +224,7 @@ struct Volume3
 		const char* which = std::getenv("CGOGN_BENCH_VOLUME");
 		const std::string name = which != nullptr && std::string(which) == "elephant" ? "elephant_hex_110k.mesh"
 																					  : "armadillo_tet_461k.mesh";
-		const std::string file = std::string(CGOGN_DATA_DIR) + "/volume/" + name;
+		const std::string file = cgogn_test_data::path("volume/" + name);
 		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
 			io::load_volume(map, file);
 		else
@@ -308,7 +309,7 @@ struct HideVertexIndex
 
 private:
 	CMap3& m_;
-	Attribute<uint32>* idx_;
+	AttributeArray<uint32>* idx_;
 };
 
 // 3-D vertices not indexed: flooded orbits (phi21 / phi31), each vertex spread

@@ -30,10 +30,11 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <sys/resource.h>
 #include <utility>
 #include <vector>
 
-#include <sys/resource.h>
+#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -57,10 +58,11 @@ CMap3& volume_map()
 		if (which == "grid")
 			build_volume(map, tet_grid_soup(55, 55, 55));
 		else
-			io::load_volume(map, std::string(CGOGN_DATA_DIR) + "/volume/" +
-									 (which == "elephant" ? "elephant_hex_110k.mesh" : "armadillo_tet_461k.mesh"));
+			io::load_volume(
+			    map, cgogn_test_data::path(std::string("volume/") + (which == "elephant" ? "elephant_hex_110k.mesh"
+			                                                                             : "armadillo_tet_461k.mesh")));
 		// the non-indexed path for vertices: drop the index the reader made
-		Attribute<uint32>*& idx = map.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
+		AttributeArray<uint32>*& idx = map.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
 		map.darts_->remove_attribute(idx);
 		idx = nullptr;
 		return map;
@@ -75,7 +77,7 @@ template <typename CELL, typename FUNC>
 void per_chunk(const CMap3& m, const FUNC& f)
 {
 	const uint32 end = m.darts_->end_index();
-	const Attribute<uint32>& key = m.darts_->key();
+	const AttributeArray<uint32>& key = m.darts_->key();
 	MarkAttribute* seen = m.darts_->acquire_mark();
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
 		const uint32 b = bb * 64, e = std::min(be * 64, end);
@@ -110,7 +112,7 @@ template <typename CELL, typename FUNC>
 void per_worker(const CMap3& m, const FUNC& f)
 {
 	const uint32 end = m.darts_->end_index();
-	const Attribute<uint32>& key = m.darts_->key();
+	const AttributeArray<uint32>& key = m.darts_->key();
 	std::vector<Worker> workers(thread_pool()->nb_workers());
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
 		Worker& w = workers[current_thread_index()];
@@ -153,7 +155,7 @@ template <typename CELL, typename FUNC>
 void claim_all(const CMap3& m, const FUNC& f)
 {
 	const uint32 end = m.darts_->end_index();
-	const Attribute<uint32>& key = m.darts_->key();
+	const AttributeArray<uint32>& key = m.darts_->key();
 	std::vector<Worker> workers(thread_pool()->nb_workers());
 	MarkAttribute* claimed = m.darts_->acquire_mark();
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
@@ -192,7 +194,7 @@ template <typename CELL, typename FUNC>
 void union_find(const CMap3& m, const FUNC& f)
 {
 	const uint32 end = m.darts_->end_index();
-	const Attribute<uint32>& key = m.darts_->key();
+	const AttributeArray<uint32>& key = m.darts_->key();
 	// a dart's rank: non-boundary darts first, then by index
 	auto rank = [&](uint32 d) { return is_boundary(m, Dart(d)) ? d + 0x80000000u : d; };
 	std::unique_ptr<std::atomic<uint32>[]> parent(new std::atomic<uint32>[end]);

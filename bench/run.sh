@@ -1,15 +1,18 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Runs the side-by-side suites (issue 7) and writes the Google Benchmark JSON
+# Runs the side-by-side suites and writes the Google Benchmark JSON
 # and the markdown tables:
 #   bench/run.sh [--input=data|generated|small] [extra Google Benchmark flags]
 # Environment: BUILD (default build/release), OUT (default bench/results),
 # CGOGN_BENCH_REPS (read-only repetitions, default 5), CGOGN_BENCH_TOPO_REPS
-# (topology repetitions, default 3).
+# (topology repetitions, default 3), CGOGN_LARGE_DATA_DIR (the large meshes).
 # The suites run in one process; each memory measurement runs in its own
 # process so that its peak RSS is that library's.
 set -eu
 cd "$(dirname "$0")/.."
+# the large meshes (nefertiti, armadillo_tet_461k, ...) are not in the repository
+CGOGN_LARGE_DATA_DIR=${CGOGN_LARGE_DATA_DIR:-$(pwd)/../shared/data}
+export CGOGN_LARGE_DATA_DIR
 BUILD=${BUILD:-build/release}
 OUT=${OUT:-bench/results}
 BIN="$BUILD/bench/bench_suite"

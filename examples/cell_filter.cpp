@@ -10,7 +10,7 @@ using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Face = CMap2::Face;
 
-uint32 print_faces(const CMap2& m, const Attribute<double>& area, double threshold)
+uint32 print_faces(const CMap2& m, const AttributeArray<double>& area, double threshold)
 {
 	CellFilter<CMap2> cfm(m);
 	cfm.set_filter<Face>([&](Face f) -> bool { return value<double>(cfm, area, f) > threshold; });

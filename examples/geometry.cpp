@@ -9,7 +9,7 @@ using namespace cgogn;
 using namespace cgogn::geometry;
 
 // Builds a soup and copies its positions into a "position" vertex attribute.
-std::shared_ptr<Attribute<Vec3>> build(CMap2& m, const SurfaceSoup& s)
+std::shared_ptr<AttributeArray<Vec3>> build(CMap2& m, const SurfaceSoup& s)
 {
 	const BuildReport r = build_surface(m, s);
 	auto pos = add_attribute<Vec3, CMap2::Vertex>(m, "position");

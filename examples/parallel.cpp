@@ -26,7 +26,7 @@ int main()
 	}
 	parallel_foreach_cell(m, [&](Vertex v) { value(m, displacement, v) = 0.1 * value(m, position, v); });
 
-	// given two Attribute<Vec3> position, displacement on VERTEX
+	// given two AttributeArray<Vec3> position, displacement on VERTEX
 	parallel_foreach_cell(m, [&](Vertex v) { value(m, position, v) += value(m, displacement, v); });
 
 	auto length = add_attribute<double, Edge>(m, "length");

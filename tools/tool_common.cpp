@@ -78,7 +78,7 @@ void add_edit_files(CLI::App& sub, EditFiles& files)
 	sub.add_flag("--binary", files.binary, "write binary where the format allows it (PLY, STL)");
 }
 
-std::shared_ptr<Attribute<Vec3>> positions(CMap2& m)
+std::shared_ptr<AttributeArray<Vec3>> positions(CMap2& m)
 {
 	auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 	if (!pos)

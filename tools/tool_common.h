@@ -86,6 +86,6 @@ struct EditFiles
 void add_edit_files(CLI::App& sub, EditFiles& files);
 
 /// The "position" attribute of a loaded surface (every reader creates it).
-std::shared_ptr<Attribute<Vec3>> positions(CMap2& m);
+std::shared_ptr<AttributeArray<Vec3>> positions(CMap2& m);
 
 } // namespace cgogn::tool

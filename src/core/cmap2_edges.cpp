@@ -59,7 +59,7 @@ bool adjacent_or_same_by_topology(const CMap2& m, CMap2::Vertex c, CMap2::Vertex
 // are wrong (changed behind the library's back) are caught in debug builds.
 bool adjacent_or_same(const CMap2& m, CMap2::Vertex c, CMap2::Vertex y)
 {
-	const Attribute<uint32>* idx = m.cell_index_[orbit_index(V)];
+	const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(V)];
 	const uint32 iy = idx ? (*idx)[y.dart.index] : INVALID_INDEX;
 	if (iy == INVALID_INDEX)
 		return adjacent_or_same_by_topology(m, c, y);

@@ -91,7 +91,7 @@ void remove_volume(CMap2& m, CMap2::Volume w)
 	foreach_dart_of_orbit(m, w, [&](Dart d) { darts.push_back(d); });
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		const Attribute<uint32>* idx = m.cell_index_[o];
+		const AttributeArray<uint32>* idx = m.cell_index_[o];
 		if (idx == nullptr)
 			continue;
 		AttributeContainer& c = *m.cells_[o];
@@ -111,7 +111,7 @@ void reverse_orientation(CMap2& m)
 	// phi1 becomes phi_1; a dart now starts where its old phi1 started
 	std::vector<uint32> prev(m.darts_->end_index(), INVALID_INDEX);
 	foreach_dart(m, [&](Dart d) { prev[phi1(m, d).index] = d.index; });
-	Attribute<uint32>* vidx = m.cell_index_[orbit_index(V)];
+	AttributeArray<uint32>* vidx = m.cell_index_[orbit_index(V)];
 	std::vector<uint32> new_vertex;
 	if (vidx)
 	{
@@ -160,13 +160,16 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 	// indexed orbits of other: one new line per line, written on the copied darts
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		const Attribute<uint32>* oidx = other.cell_index_[o];
+		const AttributeArray<uint32>* oidx = other.cell_index_[o];
 		if (oidx == nullptr)
 			continue;
 		if (m.cell_index_[o] == nullptr)
+		{
 			m.cell_index_[o] =
 				m.darts_->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX).get();
-		Attribute<uint32>& midx = *m.cell_index_[o];
+			m.cells_[o]->set_cell_index(m.cell_index_[o]);
+		}
+		AttributeArray<uint32>& midx = *m.cell_index_[o];
 		const AttributeContainer& oc = *other.cells_[o];
 		AttributeContainer& mc = *m.cells_[o];
 		std::vector<uint32> line(oc.end_index(), INVALID_INDEX);

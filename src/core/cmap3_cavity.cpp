@@ -46,7 +46,7 @@ Cavity::Cavity(CMap3& m, const std::vector<Dart>& volumes) : m_(m)
 				in.mark(d);
 				darts_.push_back(d);
 			});
-	const Attribute<uint32>* vidx = m.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
+	const AttributeArray<uint32>* vidx = m.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
 	for (Dart d : darts_)
 	{
 		if (labels_.count(d.index))
@@ -239,7 +239,7 @@ std::vector<Dart> Cavity::fill(std::vector<std::array<uint32, 4>> tets, bool set
 	// 6. indices: vertices of new darts take their label's line, then the region claims its lines
 	if (set_indices)
 	{
-		if (Attribute<uint32>* vidx = m.cell_index_[orbit_index(Orbit::PHI21_PHI31)])
+		if (AttributeArray<uint32>* vidx = m.cell_index_[orbit_index(Orbit::PHI21_PHI31)])
 			for (Dart d : created)
 				(*vidx)[d.index] = line_[find(origin[d.index])];
 		std::vector<Dart> region = created;

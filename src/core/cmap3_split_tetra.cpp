@@ -79,12 +79,12 @@ public:
 		vertices_of_volumes();
 		edges_of_volumes();
 		faces_of_volumes();
-		if (Attribute<uint32>* cc = index(Orbit::PHI1_PHI2_PHI3))
+		if (AttributeArray<uint32>* cc = index(Orbit::PHI1_PHI2_PHI3))
 			for_new_darts([&](Dart d) { (*cc)[d.index] = (*cc)[old_[0][0].index]; });
 	}
 
 private:
-	Attribute<uint32>* index(Orbit o)
+	AttributeArray<uint32>* index(Orbit o)
 	{
 		return m_.cell_index_[orbit_index(o)];
 	}
@@ -103,7 +103,7 @@ private:
 
 	void vertices(Dart centre)
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI21_PHI31);
+		AttributeArray<uint32>* idx = index(Orbit::PHI21_PHI31);
 		if (idx == nullptr)
 			return;
 		const uint32 n = new_line(Orbit::PHI21_PHI31, centre);
@@ -119,7 +119,7 @@ private:
 
 	void edges()
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI2_PHI3);
+		AttributeArray<uint32>* idx = index(Orbit::PHI2_PHI3);
 		if (idx == nullptr)
 			return;
 		for (uint32 f = 0; f < 4; ++f)
@@ -143,7 +143,7 @@ private:
 
 	void faces()
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI1_PHI3);
+		AttributeArray<uint32>* idx = index(Orbit::PHI1_PHI3);
 		if (idx == nullptr)
 			return;
 		for (uint32 f = 0; f < 4; ++f)
@@ -163,7 +163,7 @@ private:
 
 	void volumes()
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI1_PHI2);
+		AttributeArray<uint32>* idx = index(Orbit::PHI1_PHI2);
 		if (idx == nullptr)
 			return;
 		AttributeContainer& cells = *m_.cells_[orbit_index(Orbit::PHI1_PHI2)];
@@ -185,7 +185,7 @@ private:
 
 	// a cell of the old tet split in parts: the part whose darts include `own`
 	// keeps own's line when own is its representative, else gets a new one
-	uint32 keep_or_new(Orbit o, Attribute<uint32>& idx, Dart own)
+	uint32 keep_or_new(Orbit o, AttributeArray<uint32>& idx, Dart own)
 	{
 		AttributeContainer& cells = *m_.cells_[orbit_index(o)];
 		const uint32 l = idx[own.index];
@@ -196,7 +196,7 @@ private:
 
 	void vertices_of_volumes()
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI21);
+		AttributeArray<uint32>* idx = index(Orbit::PHI21);
 		if (idx == nullptr)
 			return;
 		for (uint32 f = 0; f < 4; ++f)
@@ -218,7 +218,7 @@ private:
 
 	void edges_of_volumes()
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI2);
+		AttributeArray<uint32>* idx = index(Orbit::PHI2);
 		if (idx == nullptr)
 			return;
 		for (uint32 f = 0; f < 4; ++f)
@@ -237,7 +237,7 @@ private:
 
 	void faces_of_volumes()
 	{
-		Attribute<uint32>* idx = index(Orbit::PHI1);
+		AttributeArray<uint32>* idx = index(Orbit::PHI1);
 		if (idx == nullptr)
 			return;
 		for (uint32 f = 0; f < 4; ++f)

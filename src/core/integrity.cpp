@@ -158,7 +158,7 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 template <typename MAP, Orbit O>
 void check_orbit_indexing(const MAP& m, Checker& ck)
 {
-	const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)];
+	const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)];
 	if (idx == nullptr)
 		return;
 	const AttributeContainer& cells = *m.cells_[orbit_index(O)];

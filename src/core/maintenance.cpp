@@ -14,7 +14,7 @@ namespace
 void remap_darts(CMapBase& m, const std::vector<uint32>& dart_map)
 {
 	const AttributeContainer& darts = *m.darts_;
-	for (Attribute<uint32>* r : m.relations_)
+	for (AttributeArray<uint32>* r : m.relations_)
 		for (uint32 i = 0; i < darts.end_index(); ++i)
 			if (darts.is_live(i))
 				(*r)[i] = dart_map[(*r)[i]];
@@ -27,7 +27,7 @@ void remap_darts(CMapBase& m, const std::vector<uint32>& dart_map)
 // lines of orbit o moved: dart indices follow
 void remap_cells(CMapBase& m, uint32 o, const std::vector<uint32>& line_map)
 {
-	Attribute<uint32>* idx = m.cell_index_[o];
+	AttributeArray<uint32>* idx = m.cell_index_[o];
 	if (idx == nullptr)
 		return;
 	const AttributeContainer& darts = *m.darts_;
@@ -101,7 +101,7 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 		{
 			// the first dart of each cell in the new dart order
 			std::vector<uint32> first(c.end_index(), INVALID_INDEX);
-			const Attribute<uint32>& idx = *m.cell_index_[o];
+			const AttributeArray<uint32>& idx = *m.cell_index_[o];
 			for (uint32 i = 0; i < m.darts_->end_index(); ++i)
 				if (m.darts_->is_live(i) && idx[i] != INVALID_INDEX)
 					first[idx[i]] = std::min(first[idx[i]], i);

@@ -27,7 +27,7 @@ public:
 	void record(const MAP& m, const std::vector<Dart>& darts)
 	{
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
-			if (const Attribute<uint32>* idx = m.cell_index_[o])
+			if (const AttributeArray<uint32>* idx = m.cell_index_[o])
 				for (Dart d : darts)
 					if (uint32 l = (*idx)[d.index]; l != INVALID_INDEX)
 						old_[o].push_back(l);
@@ -46,7 +46,7 @@ private:
 		constexpr Orbit O = CELL::ORBIT;
 		if constexpr (O != Orbit::DART)
 		{
-			Attribute<uint32>* idx = m.cell_index_[orbit_index(O)];
+			AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)];
 			if (idx == nullptr)
 				return;
 			AttributeContainer& cells = *m.cells_[orbit_index(O)];

@@ -21,8 +21,8 @@ struct OutgoingDarts
 	std::vector<uint32> offsets;
 	std::vector<Dart> darts;
 
-	OutgoingDarts(const std::vector<Dart>& all, const Attribute<uint32>& vidx, uint32 offset, uint32 nb_vertices)
-		: offsets(nb_vertices + 1, 0), darts(all.size())
+	OutgoingDarts(const std::vector<Dart>& all, const AttributeArray<uint32>& vidx, uint32 offset, uint32 nb_vertices)
+	    : offsets(nb_vertices + 1, 0), darts(all.size())
 	{
 		for (Dart d : all)
 			++offsets[vidx[d.index] - offset + 1];
@@ -51,7 +51,7 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 
 	if (!is_indexed<CMap2::Vertex>(m))
 		index_cells<CMap2::Vertex>(m);
-	Attribute<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21)];
+	AttributeArray<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21)];
 	AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21)];
 	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
 	report.vertex_offset = offset;

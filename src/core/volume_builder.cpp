@@ -20,7 +20,7 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 
 	if (!is_indexed<CMap3::Vertex>(m))
 		index_cells<CMap3::Vertex>(m);
-	Attribute<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
+	AttributeArray<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
 	AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21_PHI31)];
 	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
 	report.vertex_offset = offset;

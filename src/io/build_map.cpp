@@ -68,7 +68,7 @@ void check_names(const MAP& m, const MeshData& d, const std::string& path)
 // neither get_attribute nor add_attribute gives one; the throw keeps a broken
 // caller from dereferencing nullptr.
 template <typename T, typename CELL, typename MAP>
-std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name, const std::string& path)
+std::shared_ptr<AttributeArray<T>> get_or_add(MAP& m, const std::string& name, const std::string& path)
 {
 	auto a = get_attribute<T, CELL>(m, name);
 	if (!a)
@@ -83,7 +83,8 @@ std::shared_ptr<Attribute<T>> get_or_add(MAP& m, const std::string& name, const 
 template <typename CELL, typename MAP, typename LINES>
 void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string& path)
 {
-	auto put = [&]<typename T>(std::shared_ptr<Attribute<T>> a) {
+	auto put = [&]<typename T>(std::shared_ptr<AttributeArray<T>> a)
+	{
 		lines([&](uint32 line, std::size_t i) {
 			const double* v = &c.values[i * c.dim];
 			if constexpr (std::is_same_v<T, double>)

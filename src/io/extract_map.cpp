@@ -30,21 +30,21 @@ void gather_columns(const AttributeContainer& cont, const std::vector<uint32>& l
 		if (a->type() == typeid(double))
 		{
 			c.dim = 1;
-			const auto& at = static_cast<const Attribute<double>&>(*a);
+			const auto& at = static_cast<const AttributeArray<double>&>(*a);
 			for (uint32 l : lines)
 				c.values.push_back(at[l]);
 		}
 		else if (a->type() == typeid(Vec2))
 		{
 			c.dim = 2;
-			const auto& at = static_cast<const Attribute<Vec2>&>(*a);
+			const auto& at = static_cast<const AttributeArray<Vec2>&>(*a);
 			for (uint32 l : lines)
 				c.values.insert(c.values.end(), {at[l][0], at[l][1]});
 		}
 		else if (a->type() == typeid(Vec3))
 		{
 			c.dim = 3;
-			const auto& at = static_cast<const Attribute<Vec3>&>(*a);
+			const auto& at = static_cast<const AttributeArray<Vec3>&>(*a);
 			for (uint32 l : lines)
 				c.values.insert(c.values.end(), {at[l][0], at[l][1], at[l][2]});
 		}

@@ -40,8 +40,8 @@ struct Candidate
 class Decimator
 {
 public:
-	Decimator(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& o, const ProgressCallback& progress)
-		: m_(m), pos_(pos), o_(o), progress_(progress)
+	Decimator(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& o, const ProgressCallback& progress)
+	    : m_(m), pos_(pos), o_(o), progress_(progress)
 	{
 	}
 
@@ -247,7 +247,7 @@ private:
 	}
 
 	CMap2& m_;
-	Attribute<Vec3>& pos_;
+	AttributeArray<Vec3>& pos_;
 	const DecimationOptions& o_;
 	ProgressReporter progress_;
 	uint32 nb_faces_ = 0;
@@ -259,8 +259,8 @@ private:
 
 } // namespace
 
-DecimationResult decimate(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& options,
-						  const ProgressCallback& progress)
+DecimationResult decimate(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
+                          const ProgressCallback& progress)
 {
 	return Decimator(m, pos, options, progress).run();
 }

@@ -14,7 +14,7 @@
 namespace cgogn::modeling
 {
 
-std::shared_ptr<Attribute<Vec3>> dual(const CMap2 &m, const Attribute<Vec3> &pos, CMap2 &out)
+std::shared_ptr<AttributeArray<Vec3>> dual(const CMap2& m, const AttributeArray<Vec3>& pos, CMap2& out)
 {
 	if (container_of<CMap2::Vertex::ORBIT>(out).find("position") != nullptr &&
 		get_attribute<Vec3, CMap2::Vertex>(out, "position") == nullptr)

@@ -25,14 +25,14 @@ using Vertex = CMap2::Vertex;
 // it: negative weights would make the system indefinite
 constexpr double MIN_COTAN_WEIGHT = 1e-3;
 
-const Vec3 &origin(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+const Vec3& origin(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	return pos[index_of(m, Vertex(d))];
 }
 
 /// Cotangent of the angle opposite to the edge of d in d's face, 0 when that
 /// face is a boundary or not a triangle.
-double opposite_cotan(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+double opposite_cotan(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	if (is_boundary(m, d) || phi1(m, phi1(m, phi1(m, d))) != d)
 		return 0.0;
@@ -60,7 +60,7 @@ struct LocalNumbering
 
 } // namespace
 
-bool fair_vertices(const CMap2 &m, Attribute<Vec3> &pos, std::span<const CMap2::Vertex> free, FairingWeights w,
+bool fair_vertices(const CMap2& m, AttributeArray<Vec3>& pos, std::span<const CMap2::Vertex> free, FairingWeights w,
                    uint32 continuity)
 {
 	assert(continuity <= 2);

@@ -25,7 +25,7 @@ std::vector<Dart> boundary_loop(const CMap2 &m, Dart d)
 }
 
 /// Mean length of the edges at v: the target edge length of the patch there.
-double mean_incident_length(const CMap2 &m, const Attribute<Vec3> &pos, Vertex v)
+double mean_incident_length(const CMap2& m, const AttributeArray<Vec3>& pos, Vertex v)
 {
 	const Vec3 &p = pos[index_of(m, v)];
 	double sum = 0.0;
@@ -40,8 +40,8 @@ double mean_incident_length(const CMap2 &m, const Attribute<Vec3> &pos, Vertex v
 }
 
 /// Fills the hole of boundary loop `loop`, reporting progress in [from, to].
-void fill_loop(CMap2 &m, Attribute<Vec3> &pos, const std::vector<Dart> &loop, const HoleFillingOptions &options,
-               ProgressReporter &reporter, double from, double to, HoleFillingResult &result)
+void fill_loop(CMap2& m, AttributeArray<Vec3>& pos, const std::vector<Dart>& loop, const HoleFillingOptions& options,
+               ProgressReporter& reporter, double from, double to, HoleFillingResult& result)
 {
 	const uint32 n = uint32(loop.size());
 	if (n < 3 || n > options.max_hole_size)
@@ -91,8 +91,8 @@ void fill_loop(CMap2 &m, Attribute<Vec3> &pos, const std::vector<Dart> &loop, co
 
 } // namespace
 
-HoleFillingResult fill_hole(CMap2 &m, Attribute<Vec3> &pos, Dart d, const HoleFillingOptions &options,
-                            const ProgressCallback &progress)
+HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options,
+                            const ProgressCallback& progress)
 {
 	if (!is_dart_valid(m, d) || !is_boundary(m, d))
 		throw TopologyError("modeling::fill_hole: dart " + std::to_string(d.index) +
@@ -106,8 +106,8 @@ HoleFillingResult fill_hole(CMap2 &m, Attribute<Vec3> &pos, Dart d, const HoleFi
 	return result;
 }
 
-HoleFillingResult fill_holes(CMap2 &m, Attribute<Vec3> &pos, const HoleFillingOptions &options,
-                             const ProgressCallback &progress)
+HoleFillingResult fill_holes(CMap2& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options,
+                             const ProgressCallback& progress)
 {
 	// the loops first: filling one hole does not touch the darts of the others
 	std::vector<Dart> holes;

@@ -28,8 +28,8 @@ struct HoleTriangulation
 /// Liepa's dynamic programming over the loop of boundary darts `loop` (the
 /// origin of loop[i] is corner i). Returns false when the reporter cancelled
 /// (nothing was changed). O(n^3).
-bool optimal_hole_triangulation(const CMap2 &m, const Attribute<Vec3> &pos, const std::vector<Dart> &loop,
-                                ProgressReporter &reporter, double from, double to, HoleTriangulation &out);
+bool optimal_hole_triangulation(const CMap2& m, const AttributeArray<Vec3>& pos, const std::vector<Dart>& loop,
+                                ProgressReporter& reporter, double from, double to, HoleTriangulation& out);
 
 /// Cuts the polygon filling the hole of `loop` (already a real face) along the
 /// triangulation t. O(n).
@@ -63,7 +63,7 @@ struct Patch
 /// Liepa's refinement: centroid splits where the triangles are larger than the
 /// target lengths, Delaunay flips in between. Returns false when cancelled
 /// (the map is then consistent, refined partially).
-bool refine_patch(CMap2 &m, Attribute<Vec3> &pos, Patch &patch, double density, ProgressReporter &reporter, double from,
-                  double to);
+bool refine_patch(CMap2& m, AttributeArray<Vec3>& pos, Patch& patch, double density, ProgressReporter& reporter,
+                  double from, double to);
 
 } // namespace cgogn::modeling::detail

@@ -23,7 +23,7 @@ namespace
 constexpr uint32 MAX_REFINEMENT_PASSES = 64;
 constexpr uint32 MAX_RELAXATION_PASSES = 64;
 
-const Vec3 &origin(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+const Vec3& origin(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	return pos[index_of(m, CMap2::Vertex(d))];
 }
@@ -36,7 +36,7 @@ double angle_at(const Vec3 &apex, const Vec3 &a, const Vec3 &b)
 
 /// True when the edge of dart d (between two patch triangles) is not locally
 /// Delaunay: the angles opposite to it sum to more than pi.
-bool should_flip(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+bool should_flip(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	const Dart e = phi2(m, d);
 	const Vec3 &a = origin(m, pos, d), &b = origin(m, pos, e);
@@ -55,7 +55,7 @@ bool is_inner_edge(const CMap2 &m, const Patch &patch, Dart d)
 	return patch.marker.is_marked(d) && patch.marker.is_marked(phi2(m, d));
 }
 
-bool relax_edge(CMap2 &m, const Attribute<Vec3> &pos, const Patch &patch, Dart d)
+bool relax_edge(CMap2& m, const AttributeArray<Vec3>& pos, const Patch& patch, Dart d)
 {
 	if (!is_inner_edge(m, patch, d) || !should_flip(m, pos, d) || !edge_can_flip(m, CMap2::Edge(d)))
 		return false;
@@ -63,7 +63,7 @@ bool relax_edge(CMap2 &m, const Attribute<Vec3> &pos, const Patch &patch, Dart d
 	return true;
 }
 
-void relax_all(CMap2 &m, const Attribute<Vec3> &pos, const Patch &patch)
+void relax_all(CMap2& m, const AttributeArray<Vec3>& pos, const Patch& patch)
 {
 	for (uint32 pass = 0; pass < MAX_RELAXATION_PASSES; ++pass)
 	{
@@ -128,8 +128,8 @@ std::vector<CMap2::Vertex> Patch::new_vertices(const CMap2 &m) const
 	return result;
 }
 
-bool refine_patch(CMap2 &m, Attribute<Vec3> &pos, Patch &patch, double density, ProgressReporter &reporter, double from,
-                  double to)
+bool refine_patch(CMap2& m, AttributeArray<Vec3>& pos, Patch& patch, double density, ProgressReporter& reporter,
+                  double from, double to)
 {
 	for (uint32 pass = 0; pass < MAX_REFINEMENT_PASSES; ++pass)
 	{

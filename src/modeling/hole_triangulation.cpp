@@ -78,8 +78,8 @@ std::vector<char> forbidden_diagonals(const CMap2 &m, const std::vector<Dart> &l
 
 } // namespace
 
-bool optimal_hole_triangulation(const CMap2 &m, const Attribute<Vec3> &pos, const std::vector<Dart> &loop,
-                                ProgressReporter &reporter, double from, double to, HoleTriangulation &out)
+bool optimal_hole_triangulation(const CMap2& m, const AttributeArray<Vec3>& pos, const std::vector<Dart>& loop,
+                                ProgressReporter& reporter, double from, double to, HoleTriangulation& out)
 {
 	const uint32 n = uint32(loop.size());
 	// single precision, relative to the loop's centroid: the table below is

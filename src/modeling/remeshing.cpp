@@ -30,8 +30,8 @@ using Face = CMap2::Face;
 class Remesher
 {
 public:
-	Remesher(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& o, const ProgressCallback& progress)
-		: m_(m), pos_(pos), o_(o), progress_(progress)
+	Remesher(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& o, const ProgressCallback& progress)
+	    : m_(m), pos_(pos), o_(o), progress_(progress)
 	{
 	}
 
@@ -387,7 +387,7 @@ private:
 	}
 
 	CMap2& m_;
-	Attribute<Vec3>& pos_;
+	AttributeArray<Vec3>& pos_;
 	const RemeshingOptions& o_;
 	ProgressReporter progress_;
 	RemeshingResult r_;
@@ -400,8 +400,8 @@ private:
 
 } // namespace
 
-RemeshingResult isotropic_remeshing(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& options,
-									const ProgressCallback& progress)
+RemeshingResult isotropic_remeshing(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options,
+                                    const ProgressCallback& progress)
 {
 	return Remesher(m, pos, options, progress).run();
 }

@@ -13,7 +13,7 @@ namespace
 {
 
 /// Vertex centroid of the face of d.
-Vec3 face_point(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+Vec3 face_point(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	Vec3 sum = Vec3::Zero();
 	uint32 n = 0;
@@ -52,7 +52,7 @@ Vertex cut_into_quads(CMap2 &m, Dart d0, std::vector<Dart> &midpoints)
 
 } // namespace
 
-SubdivisionResult catmull_clark_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress)
+SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	StepProgress step(progress);
 	VertexPositions vertices(m);

@@ -21,7 +21,7 @@ using Edge = CMap2::Edge;
 using Face = CMap2::Face;
 
 /// The position of the origin of d.
-inline const Vec3 &position(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+inline const Vec3& position(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	return pos[index_of(m, Vertex(d))];
 }
@@ -37,7 +37,7 @@ inline bool is_boundary_edge(const CMap2 &m, Dart d)
 /// its two boundary edges); a vertex with another number of boundary edges
 /// (a pinched vertex) stays. Returns false (and leaves `out`) when v is not
 /// on the boundary.
-inline bool boundary_vertex_rule(const CMap2 &m, const Attribute<Vec3> &pos, Vertex v, Vec3 &out)
+inline bool boundary_vertex_rule(const CMap2& m, const AttributeArray<Vec3>& pos, Vertex v, Vec3& out)
 {
 	Vec3 sum = Vec3::Zero();
 	uint32 n = 0;
@@ -161,7 +161,7 @@ struct VertexPositions
 	explicit VertexPositions(const CMap2 &m) : vertices(vertex_snapshot(m)), positions(vertices.size())
 	{
 	}
-	void commit(const CMap2 &m, Attribute<Vec3> &pos) const
+	void commit(const CMap2& m, AttributeArray<Vec3>& pos) const
 	{
 		for (std::size_t i = 0; i < vertices.size(); ++i)
 			pos[index_of(m, Vertex(vertices[i]))] = positions[i];

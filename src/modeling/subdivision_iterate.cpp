@@ -5,8 +5,8 @@
 namespace cgogn::modeling
 {
 
-SubdivisionResult subdivide(CMap2 &m, Attribute<Vec3> &pos, SurfaceScheme scheme, uint32 iterations,
-                            const ProgressCallback &progress)
+SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+                            const ProgressCallback& progress)
 {
 	SubdivisionResult result;
 	for (uint32 i = 0; i < iterations; ++i)

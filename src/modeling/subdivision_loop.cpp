@@ -51,7 +51,7 @@ void cut_hexagon(CMap2 &m, Dart h0)
 
 } // namespace
 
-SubdivisionResult loop_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress)
+SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	const FaceSnapshot snapshot(m);
 	const std::vector<Dart> &faces = snapshot.darts; // darts starting at old vertices

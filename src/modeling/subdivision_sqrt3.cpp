@@ -62,7 +62,7 @@ bool shares_another_edge(const CMap2 &m, Dart d)
 
 } // namespace
 
-SubdivisionResult sqrt3_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress)
+SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	const FaceSnapshot snapshot(m);
 	const std::vector<Dart> &faces = snapshot.darts;

@@ -71,14 +71,14 @@ struct Refinement
 	}
 };
 
-const Vec3 &position(const CMap3 &m, const Attribute<Vec3> &pos, Dart d)
+const Vec3& position(const CMap3& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	return pos[index_of(m, Vertex(d))];
 }
 
 /// A vertex per old vertex, then one per edge at its midpoint, then (with
 /// `faces`) one per face at its vertex centroid.
-void number_vertices_edges_faces(const CMap3 &m, const Attribute<Vec3> &pos, Refinement &r, bool faces)
+void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos, Refinement& r, bool faces)
 {
 	r.vertex_id.assign(pos.container()->end_index(), INVALID_INDEX);
 	foreach_cell(m, [&](Vertex v) { r.vertex_id[index_of(m, v)] = r.add(position(m, pos, v.dart)); });
@@ -111,7 +111,7 @@ void number_vertices_edges_faces(const CMap3 &m, const Attribute<Vec3> &pos, Ref
 
 /// Removes every dart and cell of m, keeping its attributes (and whether each
 /// orbit is indexed), then builds the listed cells into it.
-void rebuild(CMap3 &m, Attribute<Vec3> &pos, const Refinement &r, uint32 cell_size)
+void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 cell_size)
 {
 	m.incidence_tables_.clear();
 	m.darts_->clear();
@@ -177,7 +177,7 @@ bool is_tet_mesh(const CMap3 &m)
 	return every_volume_is(m, 4, 3);
 }
 
-SubdivisionResult tet_subdivision(CMap3 &m, Attribute<Vec3> &pos, const ProgressCallback &progress)
+SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	if (!is_tet_mesh(m))
 		throw SubdivisionError("tetrahedral subdivision: every volume must be a tetrahedron");
@@ -233,7 +233,7 @@ SubdivisionResult tet_subdivision(CMap3 &m, Attribute<Vec3> &pos, const Progress
 	return {reporter.cancelled(), 1};
 }
 
-SubdivisionResult hex_subdivision(CMap3 &m, Attribute<Vec3> &pos, const ProgressCallback &progress)
+SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	if (!is_hex_mesh(m))
 		throw SubdivisionError("hexahedral subdivision: every volume must be a hexahedron");

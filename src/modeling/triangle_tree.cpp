@@ -65,7 +65,7 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
 	return a + ab * (vb / denom) + ac * (vc / denom);
 }
 
-TriangleTree::TriangleTree(const CMap2& m, const Attribute<Vec3>& pos)
+TriangleTree::TriangleTree(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	foreach_cell(m, [&](CMap2::Face f) {
 		const Dart d0 = f.dart;
@@ -171,7 +171,8 @@ TriangleTree::Hit TriangleTree::closest_point(const Vec3& p) const
 	return best;
 }
 
-SurfaceDistance vertex_distance_to_surface(const CMap2& m, const Attribute<Vec3>& pos, const TriangleTree& reference)
+SurfaceDistance vertex_distance_to_surface(const CMap2& m, const AttributeArray<Vec3>& pos,
+                                           const TriangleTree& reference)
 {
 	SurfaceDistance r;
 	uint64 n = 0;

@@ -106,7 +106,7 @@ namespace
 {
 // ear_clip_face with the caller's buffers (triangulate_faces reuses one
 // Polygon for all faces: no allocation per face)
-uint32 ear_clip(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f, Polygon& poly)
+uint32 ear_clip(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f, Polygon& poly)
 {
 	assert(!is_boundary(m, f.dart));
 	poly.darts.clear();
@@ -145,13 +145,13 @@ uint32 ear_clip(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f, Polygon& po
 }
 } // namespace
 
-uint32 ear_clip_face(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f)
+uint32 ear_clip_face(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f)
 {
 	Polygon poly;
 	return ear_clip(m, pos, f, poly);
 }
 
-uint32 triangulate_faces(CMap2& m, const Attribute<Vec3>& pos)
+uint32 triangulate_faces(CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	std::vector<CMap2::Face> polygons;
 	foreach_cell(m, [&](CMap2::Face f) {

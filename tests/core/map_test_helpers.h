@@ -37,16 +37,6 @@ CELL find(const MAP& m, P pred)
 	return r;
 }
 
-#ifdef CGOGN_DATA_DIR
-/// The path of a mesh of the data folder (e.g. "volume/armadillo_tet_4k.mesh"),
-/// empty when it is absent (the test then skips).
-inline std::string data_file(const std::string& name)
-{
-	const std::string path = std::string(CGOGN_DATA_DIR) + "/" + name;
-	return std::filesystem::exists(path) ? path : std::string();
-}
-#endif
-
 /// Indexes every orbit of m (an attribute per orbit), so that the operators'
 /// index maintenance is exercised on all of them.
 inline void index_everything(CMap2& m)

@@ -4,13 +4,14 @@
 // repeated split/collapse editing from scattering a mesh over its containers.
 #include <cgogn/cgogn.h>
 
-#include "map_test_helpers.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <random>
+
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -196,9 +197,7 @@ TEST(CollapseRestores, TheLowerEdgeOfAVanishingTriangleSurvivesWhole)
 
 TEST(CollapseRestores, TenPercentBatchesOnARealMesh)
 {
-	const std::string path = std::string(CGOGN_DATA_DIR) + "/surface/suzanne.obj";
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/suzanne.obj");
 	CMap2 m;
 	io::load_surface(m, path);
 	// suzanne has quads: triangulate them (by cut_face) so that collapses undo splits

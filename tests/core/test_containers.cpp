@@ -82,7 +82,7 @@ TEST_P(AttributeContainerLayout, RangeForVisitsLiveLinesAcrossChunksInLineOrder)
 		(*a)[c.new_line(0)] = i;
 	auto visited = [&]() {
 		std::vector<uint32> lines;
-		const Attribute<uint32>& ca = *a;
+		const AttributeArray<uint32>& ca = *a;
 		for (auto it = ca.begin(); it != ca.end(); ++it)
 		{
 			EXPECT_EQ(*it, it.index()); // the value is the line's own

@@ -28,7 +28,7 @@ Dart inner_dart(const CMap2& m)
 	});
 	return r;
 }
-Attribute<uint32>& index_attr(CMap2& m, Orbit o)
+AttributeArray<uint32>& index_attr(CMap2& m, Orbit o)
 {
 	return *m.cell_index_[orbit_index(o)];
 }
@@ -120,7 +120,7 @@ TEST(Integrity, IndexNotConstantOnAnOrbit)
 {
 	CMap2 m = indexed_grid();
 	Dart d = inner_dart(m);
-	Attribute<uint32>& f = index_attr(m, Orbit::PHI1);
+	AttributeArray<uint32>& f = index_attr(m, Orbit::PHI1);
 	f[d.index] = f[phi2(m, d).index]; // one dart of a face takes the neighbour's index
 	const IntegrityReport r = check_integrity(m);
 	EXPECT_TRUE(r.has(Kind::IndexNotConstant));

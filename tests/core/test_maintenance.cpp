@@ -12,7 +12,7 @@ namespace
 {
 // every vertex with its sorted neighbour positions: invariant under renumbering
 template <typename MAP>
-std::vector<std::vector<P>> neighbourhoods(const MAP& m, const Attribute<P>& pos)
+std::vector<std::vector<P>> neighbourhoods(const MAP& m, const AttributeArray<P>& pos)
 {
 	using Vertex = typename MAP::Vertex;
 	std::vector<std::vector<P>> all;

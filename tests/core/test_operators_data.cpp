@@ -1,18 +1,16 @@
-// Randomized operator sequences on real meshes from CGOGN_DATA_DIR (skipped
-// when the folder is absent): check_integrity after every step, Euler
+// Randomized operator sequences on real meshes of the test data: check_integrity after every step, Euler
 // characteristic unchanged, untouched vertices keep their positions.
 #include <cgogn/cgogn.h>
-
-#include "map_test_helpers.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <random>
 
-using namespace cgogn;
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
 
-using test::data_file;
+using namespace cgogn;
 
 namespace
 {
@@ -65,9 +63,7 @@ CELL random_cell(const MAP& m, std::mt19937& rng)
 
 TEST(OperatorsOnData, SurfaceWithHoles)
 {
-	const std::string path = data_file("surface/hemisphere.off");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no surface/hemisphere.off";
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/hemisphere.off");
 	CMap2 m;
 	io::load_surface(m, path);
 	add_attribute<int, CMap2::Face>(m, "f");
@@ -101,9 +97,7 @@ TEST(OperatorsOnData, SurfaceWithHoles)
 
 TEST(OperatorsOnData, TetMeshWithANonManifoldVertex)
 {
-	const std::string path = data_file("volume/armadillo_tet_4k.mesh");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no volume/armadillo_tet_4k.mesh";
+	CGOGN_DATA_PATH_OR_SKIP(path, "volume/armadillo_tet_4k.mesh");
 	CMap3 m;
 	io::load_volume(m, path);
 	add_attribute<int, CMap3::Volume>(m, "w");

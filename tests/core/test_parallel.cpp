@@ -235,7 +235,7 @@ namespace
 template <typename CELL, typename MAP>
 void drop_index(MAP& m)
 {
-	Attribute<uint32>*& idx = m.cell_index_[orbit_index(CELL::ORBIT)];
+	AttributeArray<uint32>*& idx = m.cell_index_[orbit_index(CELL::ORBIT)];
 	ASSERT_NE(idx, nullptr);
 	ASSERT_TRUE(m.darts_->remove_attribute(idx));
 	idx = nullptr;

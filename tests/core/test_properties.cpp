@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 using namespace cgogn;
 
 TEST(Properties, DegreesAndBoundaryOnAGrid)
@@ -70,4 +72,58 @@ TEST(Properties, NbCellsIsO1WhenIndexed)
 	add_attribute<int, CMap2::Face>(m, "x");
 	EXPECT_EQ(nb_cells<CMap2::Face>(m), 200u); // read from the container
 	EXPECT_EQ(container_of<Orbit::PHI1>(m).nb_lines(), 200u);
+}
+
+namespace
+{
+/// degree and codegree of every cell of type CELL, summed: generic code that
+/// must compile for every cell type of the map.
+template <typename CELL, typename MAP>
+std::pair<uint64, uint64> degree_sums(const MAP& m)
+{
+	uint64 d = 0, c = 0;
+	foreach_cell(m,
+	             [&](CELL x)
+	             {
+		             d += degree(m, x);
+		             c += codegree(m, x);
+	             });
+	return {d, c};
+}
+} // namespace
+
+TEST(Properties, DegreeAndCodegreeOfEveryCellTypeOfASurface)
+{
+	CMap2 m;
+	build_surface(m, grid_soup(3, 2)); // 12 vertices, 17 edges, 6 quads, one component
+	using P = std::pair<uint64, uint64>;
+	// vertices: sum of degrees = 2 E, codegree 0
+	EXPECT_EQ(degree_sums<CMap2::Vertex>(m), P(2 * 17, 0));
+	// edges: incident non-boundary faces
+	const auto [edge_faces, edge_vertices] = degree_sums<CMap2::Edge>(m);
+	EXPECT_EQ(edge_faces, 4u * 6u); // each quad counted by its 4 edges
+	EXPECT_EQ(edge_vertices, 2u * 17u);
+	// faces: in one volume each, 4 edges each
+	EXPECT_EQ(degree_sums<CMap2::Face>(m), P(6, 4 * 6));
+	// the volume (connected component): no higher cell, 6 faces
+	EXPECT_EQ(degree_sums<CMap2::Volume>(m), P(0, 6));
+}
+
+TEST(Properties, DegreeAndCodegreeOfEveryCellTypeOfAVolume)
+{
+	CMap3 m;
+	build_volume(m, hex_grid_soup(2, 1, 1)); // two cubes sharing a face
+	using P = std::pair<uint64, uint64>;
+	const uint64 nv = nb_cells<CMap3::Vertex>(m), ne = nb_cells<CMap3::Edge>(m), nf = nb_cells<CMap3::Face>(m);
+	EXPECT_EQ(nv, 12u);
+	EXPECT_EQ(ne, 20u);
+	EXPECT_EQ(nf, 11u);
+	EXPECT_EQ(degree_sums<CMap3::Vertex>(m), P(2 * ne, 0));
+	// each face is bounded by its edges: sum over edges of incident faces = sum over faces of codegree
+	const auto [edge_faces, edge_vertices] = degree_sums<CMap3::Edge>(m);
+	EXPECT_EQ(edge_faces, 4u * nf);
+	EXPECT_EQ(edge_vertices, 2u * ne);
+	// faces: 1 inner face in 2 volumes, 10 in one; 4 edges each
+	EXPECT_EQ(degree_sums<CMap3::Face>(m), P(12, 4 * nf));
+	EXPECT_EQ(degree_sums<CMap3::Volume>(m), P(0, 12));
 }

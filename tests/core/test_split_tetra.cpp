@@ -3,16 +3,16 @@
 // the generic cavity re-tetrahedralization it replaced.
 #include <cgogn/cgogn.h>
 
-#include "../../src/core/cmap3_cavity.h"
-
-#include "map_test_helpers.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
 #include <random>
+
+#include "../../src/core/cmap3_cavity.h"
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -23,7 +23,6 @@ using Volume = CMap3::Volume;
 using test::Counts;
 using test::counts;
 using test::index_everything;
-using test::data_file;
 
 namespace
 {
@@ -40,7 +39,7 @@ CMap3 build(const VolumeSoup& s)
 
 // the four corner positions of tet w, sorted: a tet's identity in a mesh
 using Corners = std::array<std::array<double, 3>, 4>;
-Corners corners(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
+Corners corners(const CMap3& m, const AttributeArray<Vec3>& pos, Volume w)
 {
 	Corners c;
 	uint32 k = 0;
@@ -55,7 +54,7 @@ Corners corners(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
 
 // the barycenter, summed in sorted corner order so that two maps of the same
 // mesh get bit-identical centres whatever their dart order
-Vec3 barycenter(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
+Vec3 barycenter(const CMap3& m, const AttributeArray<Vec3>& pos, Volume w)
 {
 	Vec3 b = Vec3::Zero();
 	for (const auto& p : corners(m, pos, w))
@@ -63,7 +62,7 @@ Vec3 barycenter(const CMap3& m, const Attribute<Vec3>& pos, Volume w)
 	return b / 4.0;
 }
 
-std::vector<Corners> all_tets(const CMap3& m, const Attribute<Vec3>& pos)
+std::vector<Corners> all_tets(const CMap3& m, const AttributeArray<Vec3>& pos)
 {
 	std::vector<Corners> t;
 	foreach_cell(m, [&](Volume w) { t.push_back(corners(m, pos, w)); });
@@ -85,7 +84,7 @@ Vertex split_by_cavity(CMap3& m, Volume w)
 // Splits tet w at its barycenter and checks everything local to the split:
 // counts, integrity, the returned vertex, the lines kept by the old cells,
 // the four volumes adding up to the old one.
-Vertex split_and_check(CMap3& m, Attribute<Vec3>& pos, Volume w)
+Vertex split_and_check(CMap3& m, AttributeArray<Vec3>& pos, Volume w)
 {
 	const Counts before = counts(m);
 	const Vec3 centre = barycenter(m, pos, w);
@@ -249,9 +248,7 @@ TEST(SplitTetra, RepeatedSplitsOfRandomTets)
 
 TEST(SplitTetra, RealMeshRandomSubsetSameAsCavity)
 {
-	const std::string path = data_file("volume/elephant_tet_8k.mesh");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no volume/elephant_tet_8k.mesh";
+	CGOGN_DATA_PATH_OR_SKIP(path, "volume/elephant_tet_8k.mesh");
 	CMap3 m, ref;
 	io::load_volume(m, path);
 	io::load_volume(ref, path);
@@ -288,9 +285,7 @@ TEST(SplitTetra, RealMeshRandomSubsetSameAsCavity)
 // Every tet of a real mesh, vertices indexed only (as in the benchmark).
 TEST(SplitTetra, RealMeshEveryTet)
 {
-	const std::string path = data_file("volume/armadillo_tet_4k.mesh");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no volume/armadillo_tet_4k.mesh";
+	CGOGN_DATA_PATH_OR_SKIP(path, "volume/armadillo_tet_4k.mesh");
 	CMap3 m;
 	io::load_volume(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");

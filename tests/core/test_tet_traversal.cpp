@@ -3,19 +3,18 @@
 // edited meshes, boundary volumes included.
 #include <cgogn/cgogn.h>
 
-#include "map_test_helpers.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
+
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Face = CMap3::Face;
 using Volume = CMap3::Volume;
-
-using test::data_file;
 
 namespace
 {
@@ -152,9 +151,7 @@ TEST(TetTraversal, BipyramidsAndSplitTets)
 
 TEST(TetTraversal, MixedRealMesh)
 {
-	const std::string path = data_file("volume/hex_dominant_11k.mesh");
-	if (path.empty())
-		GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no volume/hex_dominant_11k.mesh";
+	CGOGN_DATA_PATH_OR_SKIP(path, "volume/hex_dominant_11k.mesh");
 	CMap3 m;
 	io::load_volume(m, path);
 	const Compared c = compare_with_flooding(m);

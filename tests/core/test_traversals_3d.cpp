@@ -1,7 +1,5 @@
 #include <cgogn/cgogn.h>
 
-#include "map_test_helpers.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +8,9 @@
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
+
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -281,9 +282,7 @@ TEST(Traversals3D, VertexDartsOnRealMeshes)
 {
 	for (const char* name : {"volume/armadillo_tet_4k.mesh", "volume/hex_dominant_11k.mesh"})
 	{
-		const std::string path = test::data_file(name);
-		if (path.empty())
-			GTEST_SKIP() << "CGOGN_DATA_DIR (" << CGOGN_DATA_DIR << ") has no " << name;
+		const std::string path = cgogn_test_data::path(name);
 		SCOPED_TRACE(name);
 		CMap3 m;
 		io::load_volume(m, path);

@@ -16,7 +16,7 @@ namespace
 struct ViewGrid : ::testing::Test
 {
 	CMap2 m;
-	std::shared_ptr<Attribute<uint32>> face_id;
+	std::shared_ptr<AttributeArray<uint32>> face_id;
 	void SetUp() override
 	{
 		build_surface(m, grid_soup(4, 3));

@@ -11,7 +11,7 @@
 namespace cgogn::test
 {
 
-using Pos = std::shared_ptr<Attribute<Vec3>>;
+using Pos = std::shared_ptr<AttributeArray<Vec3>>;
 
 /// Builds the soup into m and gives its vertices a "position" attribute.
 template <typename SOUP>
@@ -72,7 +72,7 @@ inline double noise(uint32 i)
 
 /// The vertex of m whose position is closest to p.
 template <typename MESH>
-typename mesh_traits<MESH>::Vertex closest_vertex(const MESH& m, const Attribute<Vec3>& pos, const Vec3& p)
+typename mesh_traits<MESH>::Vertex closest_vertex(const MESH& m, const AttributeArray<Vec3>& pos, const Vec3& p)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	Vertex best;

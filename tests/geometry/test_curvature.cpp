@@ -20,7 +20,7 @@ int64 euler(const CMap2& m)
 {
 	return int64(nb_cells<Vertex>(m)) - nb_cells<Edge>(m) + nb_cells<Face>(m);
 }
-double total_defect(const CMap2& m, const Attribute<Vec3>& pos)
+double total_defect(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	double s = 0.0;
 	foreach_cell(m, [&](Vertex v) { s += angle_defect(m, v, pos); });

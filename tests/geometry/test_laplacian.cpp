@@ -20,7 +20,7 @@ void expect_symmetric_zero_rows(const SparseMatrix& L)
 		EXPECT_LT(L.coeff(i, i), 0.0);
 }
 
-Eigen::MatrixXd positions_matrix(const CMap2& m, const Attribute<Vec3>& pos, const VertexNumbering& num)
+Eigen::MatrixXd positions_matrix(const CMap2& m, const AttributeArray<Vec3>& pos, const VertexNumbering& num)
 {
 	Eigen::MatrixXd x(num.size(), 3);
 	foreach_cell(m, [&](Vertex v) { x.row(num[index_of(m, v)]) = value<Vec3>(m, pos, v).transpose(); });

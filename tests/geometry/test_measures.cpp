@@ -160,7 +160,7 @@ namespace
 // The mean of the positions by one running sum over the vertices, the
 // reference for mean_position (which sums in four partial sums).
 template <typename MAP>
-Vec3 mean_by_traversal(const MAP& m, const Attribute<Vec3>& pos)
+Vec3 mean_by_traversal(const MAP& m, const AttributeArray<Vec3>& pos)
 {
 	Vec3 s = Vec3::Zero();
 	uint32 n = 0;

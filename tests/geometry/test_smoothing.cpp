@@ -51,17 +51,17 @@ struct NoisyGrid
 	}
 };
 
-using Filter = std::function<void(CMap2&, Attribute<Vec3>&)>;
+using Filter = std::function<void(CMap2&, AttributeArray<Vec3>&)>;
 } // namespace
 
 TEST(Smoothing, EveryFilterDenoisesAndKeepsTheBoundary)
 {
 	const std::vector<std::pair<const char*, Filter>> filters = {
-		{"laplacian", [](CMap2& m, Attribute<Vec3>& p) { laplacian_smoothing(m, p, 10); }},
-		{"taubin", [](CMap2& m, Attribute<Vec3>& p) { taubin_smoothing(m, p, 10); }},
-		{"implicit cotan", [](CMap2& m, Attribute<Vec3>& p) { implicit_smoothing(m, p, 1.0); }},
-		{"implicit uniform", [](CMap2& m, Attribute<Vec3>& p) { implicit_smoothing(m, p, 5.0, 2, true); }},
-		{"bilateral", [](CMap2& m, Attribute<Vec3>& p) { bilateral_normal_filtering(m, p); }},
+	    {"laplacian", [](CMap2& m, AttributeArray<Vec3>& p) { laplacian_smoothing(m, p, 10); }},
+	    {"taubin", [](CMap2& m, AttributeArray<Vec3>& p) { taubin_smoothing(m, p, 10); }},
+	    {"implicit cotan", [](CMap2& m, AttributeArray<Vec3>& p) { implicit_smoothing(m, p, 1.0); }},
+	    {"implicit uniform", [](CMap2& m, AttributeArray<Vec3>& p) { implicit_smoothing(m, p, 5.0, 2, true); }},
+	    {"bilateral", [](CMap2& m, AttributeArray<Vec3>& p) { bilateral_normal_filtering(m, p); }},
 	};
 	for (bool triangles : {true, false})
 		for (const auto& [name, filter] : filters)

@@ -72,7 +72,7 @@ void make_mesh(CMap3& m, bool tets_only)
 }
 
 template <typename T>
-std::vector<T> values_of(const Attribute<T>& a)
+std::vector<T> values_of(const AttributeArray<T>& a)
 {
 	return std::vector<T>(a.begin(), a.end());
 }

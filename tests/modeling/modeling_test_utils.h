@@ -12,24 +12,29 @@
 #include <utility>
 #include <vector>
 
+#include "cgogn_test_data.h"
+
 namespace cgogn::modeling_test
 {
 
+/// The path of a data surface (empty for a large one that is not available).
 inline std::string data_path(const std::string &name)
 {
-	return std::string(CGOGN_DATA_DIR) + "/surface/" + name;
+	return cgogn_test_data::path("surface/" + name);
 }
 
-/// Loads a data mesh; false (the caller skips) when the data folder is absent.
+/// Loads a data surface; false (the caller skips) only when it is a large
+/// mesh that is not available. A missing small mesh throws (the test fails).
 inline bool load_data(CMap2 &m, const std::string &name)
 {
-	if (!std::filesystem::exists(data_path(name)))
+	const std::string path = data_path(name);
+	if (path.empty())
 		return false;
-	io::load_surface(m, data_path(name));
+	io::load_surface(m, path);
 	return true;
 }
 
-inline std::shared_ptr<Attribute<Vec3>> positions(const CMap2 &m)
+inline std::shared_ptr<AttributeArray<Vec3>> positions(const CMap2& m)
 {
 	return get_attribute<Vec3, CMap2::Vertex>(m, "position");
 }

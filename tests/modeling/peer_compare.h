@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "cgogn_test_data.h"
+
 namespace cgogn::peer_test
 {
 
@@ -22,7 +24,7 @@ struct Soup
 };
 
 /// The vertices (densely numbered) and faces of m.
-inline Soup soup_of(const CMap2 &m, const Attribute<Vec3> &pos)
+inline Soup soup_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	Soup s;
 	std::vector<uint32> id(pos.container()->end_index(), 0);
@@ -42,7 +44,7 @@ inline Soup soup_of(const CMap2 &m, const Attribute<Vec3> &pos)
 	return s;
 }
 
-inline std::vector<Vec3> positions_of(const CMap2 &m, const Attribute<Vec3> &pos)
+inline std::vector<Vec3> positions_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	std::vector<Vec3> p;
 	foreach_cell(m, [&](CMap2::Vertex v) { p.push_back(pos[index_of(m, v)]); });
@@ -75,13 +77,12 @@ inline double max_mismatch(std::vector<Vec3> a, std::vector<Vec3> b, double wind
 	return std::max(one_way(a, b), one_way(b, a));
 }
 
-inline const std::string data_dir = CGOGN_DATA_DIR;
-
-/// Loads a data surface with its positions; false when the file is absent.
+/// Loads a data surface with its positions; false only when it is a large
+/// mesh that is not available.
 inline bool load(CMap2 &m, const std::string &name)
 {
-	const std::string path = data_dir + "/surface/" + name;
-	if (!std::filesystem::exists(path))
+	const std::string path = cgogn_test_data::path("surface/" + name);
+	if (path.empty())
 		return false;
 	io::load_surface(m, path);
 	return true;

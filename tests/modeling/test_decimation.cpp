@@ -26,7 +26,7 @@ uint32 count_faces(const CMap2& m)
 }
 
 /// Largest distance of a vertex to the unit sphere.
-double max_sphere_deviation(const CMap2& m, const Attribute<Vec3>& pos)
+double max_sphere_deviation(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	double d = 0.0;
 	foreach_cell(m, [&](Vertex v) { d = std::max(d, std::abs(pos[index_of(m, v)].norm() - 1.0)); });
@@ -148,9 +148,7 @@ TEST(Decimation, TorusKeepsItsGenus)
 
 TEST(Decimation, NefertitiToTenPercent)
 {
-	const std::string path = data_path("nefertiti.obj");
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/nefertiti.obj");
 	CMap2 m;
 	io::load_surface(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
@@ -167,9 +165,7 @@ TEST(Decimation, NefertitiToTenPercent)
 
 TEST(Decimation, HemisphereKeepsItsBoundaryWhenAsked)
 {
-	const std::string path = data_path("hemisphere.off");
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/hemisphere.off");
 	CMap2 m;
 	io::load_surface(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
@@ -200,9 +196,7 @@ TEST(Decimation, HemisphereKeepsItsBoundaryWhenAsked)
 
 TEST(Decimation, HemisphereBoundaryMayCollapseOtherwise)
 {
-	const std::string path = data_path("hemisphere.off");
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/hemisphere.off");
 	CMap2 m;
 	io::load_surface(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
@@ -221,9 +215,7 @@ TEST(Decimation, HemisphereBoundaryMayCollapseOtherwise)
 
 TEST(Decimation, BunnyWithHolesKeepsItsFiveBoundaryLoops)
 {
-	const std::string path = data_path("stanford-bunny.obj");
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/stanford-bunny.obj");
 	CMap2 m;
 	io::load_surface(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");

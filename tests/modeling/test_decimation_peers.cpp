@@ -5,12 +5,13 @@
 // all three by vertex_distance_to_surface, is at most 1.5x the peer's.
 #include <cgogn/cgogn.h>
 
-#include "../../bench/modeling_peers.h"
-
 #include <gtest/gtest.h>
 
 #include <ctime>
 #include <filesystem>
+
+#include "../../bench/modeling_peers.h"
+#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using cgogn_bench::TriangleSoup;
@@ -39,9 +40,7 @@ class DecimationPeers : public ::testing::Test
 protected:
 	void SetUp() override
 	{
-		const std::string path = std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj";
-		if (!std::filesystem::exists(path))
-			GTEST_SKIP() << "no " << path;
+		CGOGN_DATA_PATH_OR_SKIP(path, "surface/nefertiti.obj");
 		io::load_surface(input_, path);
 		pos_ = get_attribute<Vec3, CMap2::Vertex>(input_, "position");
 		tree_ = std::make_unique<modeling::TriangleTree>(input_, *pos_);
@@ -58,7 +57,7 @@ protected:
 		});
 	}
 
-	Errors errors(const CMap2& m, const Attribute<Vec3>& pos) const
+	Errors errors(const CMap2& m, const AttributeArray<Vec3>& pos) const
 	{
 		Errors e;
 		foreach_cell(m, [&](CMap2::Face) { ++e.faces; });
@@ -85,7 +84,7 @@ protected:
 	Errors cgogn_errors(modeling::CollapsePlacement placement)
 	{
 		CMap2 m;
-		io::load_surface(m, std::string(CGOGN_DATA_DIR) + "/surface/nefertiti.obj");
+		io::load_surface(m, cgogn_test_data::path("surface/nefertiti.obj"));
 		auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 		modeling::DecimationOptions o;
 		o.target_faces = TARGET;
@@ -101,7 +100,7 @@ protected:
 	}
 
 	CMap2 input_;
-	std::shared_ptr<Attribute<Vec3>> pos_;
+	std::shared_ptr<AttributeArray<Vec3>> pos_;
 	std::unique_ptr<modeling::TriangleTree> tree_;
 	TriangleSoup soup_;
 };

@@ -55,7 +55,7 @@ TEST(Dual, TetrahedronIsSelfDual)
 {
 	CMap2 m;
 	if (!load_data(m, "tetrahedron.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/tetrahedron.off");
 	auto pos = positions(m);
 	CMap2 d;
 	auto dpos = modeling::dual(m, *pos, d);
@@ -68,7 +68,7 @@ TEST(Dual, SpotControlMeshSwapsVerticesAndFaces)
 {
 	CMap2 m;
 	if (!load_data(m, "spot_control_mesh.obj"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/spot_control_mesh.obj");
 	auto pos = positions(m);
 	CMap2 d;
 	auto dpos = modeling::dual(m, *pos, d);
@@ -89,7 +89,7 @@ TEST(Dual, ElephantKeepsEulerCharacteristicAndGenus)
 {
 	CMap2 m;
 	if (!load_data(m, "refined_elephant.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/refined_elephant.off");
 	auto pos = positions(m);
 	ASSERT_EQ(euler_characteristic(m), -4) << "genus 3";
 	CMap2 d;

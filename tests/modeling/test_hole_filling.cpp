@@ -51,7 +51,7 @@ TEST(HoleFilling, HemisphereBecomesASphere)
 	{
 		CMap2 m;
 		if (!load_data(m, "hemisphere.off"))
-			GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+			GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 		auto pos = positions(m);
 		ASSERT_EQ(boundary_loop_sizes(m), std::vector<uint32>{120u});
 		foreach_cell(m, [&](CMap2::Vertex v) { ASSERT_NEAR((*pos)[index_of(m, v)].norm(), 1.0, 1e-5); });
@@ -95,7 +95,7 @@ TEST(HoleFilling, WithoutRefinementOnlyTriangles)
 {
 	CMap2 m;
 	if (!load_data(m, "hemisphere.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 	auto pos = positions(m);
 	const uint32 nv = nb_cells<CMap2::Vertex>(m), nf = nb_cells<CMap2::Face>(m);
 	modeling::HoleFillingOptions o;
@@ -111,7 +111,7 @@ TEST(HoleFilling, ElephantAllHoles)
 {
 	CMap2 m;
 	if (!load_data(m, "elephant-with-holes.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/elephant-with-holes.off");
 	auto pos = positions(m);
 	const std::vector<uint32> sizes = boundary_loop_sizes(m);
 	ASSERT_EQ(sizes.size(), 106u);
@@ -140,7 +140,7 @@ TEST(HoleFilling, MaxSizeLeavesLargeHolesOpen)
 {
 	CMap2 m;
 	if (!load_data(m, "elephant-with-holes.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/elephant-with-holes.off");
 	auto pos = positions(m);
 	const std::vector<uint32> sizes = boundary_loop_sizes(m);
 	const uint32 nv = nb_cells<CMap2::Vertex>(m), nf = nb_cells<CMap2::Face>(m);
@@ -162,7 +162,7 @@ TEST(HoleFilling, EarClippingAboveTheOptimalSize)
 {
 	CMap2 m;
 	if (!load_data(m, "hemisphere.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 	auto pos = positions(m);
 	const uint32 nv = nb_cells<CMap2::Vertex>(m), nf = nb_cells<CMap2::Face>(m);
 	modeling::HoleFillingOptions o;
@@ -177,7 +177,7 @@ TEST(HoleFilling, StanfordBunny)
 {
 	CMap2 m;
 	if (!load_data(m, "stanford-bunny.obj"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/stanford-bunny.obj");
 	auto pos = positions(m);
 	ASSERT_EQ(boundary_loop_sizes(m).size(), 5u);
 	const uint32 nv = nb_cells<CMap2::Vertex>(m), nf = nb_cells<CMap2::Face>(m);
@@ -197,7 +197,7 @@ TEST(HoleFilling, LShapeGetsAFlatBackFace)
 	{
 		CMap2 m;
 		if (!load_data(m, "L.off"))
-			GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+			GTEST_SKIP() << cgogn_test_data::missing_large("surface/L.off");
 		auto pos = positions(m);
 		modeling::HoleFillingOptions o;
 		o.refine = refine;
@@ -232,7 +232,7 @@ TEST(HoleFilling, SingleTriangle)
 {
 	CMap2 m;
 	if (!load_data(m, "triangle.off"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/triangle.off");
 	auto pos = positions(m);
 	const auto r = modeling::fill_holes(m, *pos);
 	EXPECT_EQ(r.holes_filled, 1u);
@@ -248,7 +248,7 @@ TEST(HoleFilling, OneHoleByDart)
 {
 	CMap2 m;
 	if (!load_data(m, "stanford-bunny.obj"))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/stanford-bunny.obj");
 	auto pos = positions(m);
 	Dart boundary;
 	foreach_dart(m,
@@ -279,7 +279,7 @@ TEST(HoleFilling, CancellationLeavesAValidMap)
 	{
 		CMap2 m;
 		if (!load_data(m, "elephant-with-holes.off"))
-			GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+			GTEST_SKIP() << cgogn_test_data::missing_large("surface/elephant-with-holes.off");
 		auto pos = positions(m);
 		const uint32 nv = nb_cells<CMap2::Vertex>(m), nf = nb_cells<CMap2::Face>(m);
 		const int64_t chi = euler_characteristic(m);

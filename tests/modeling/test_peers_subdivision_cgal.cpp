@@ -42,7 +42,7 @@ std::vector<Vec3> positions_of(const CgalMesh &sm)
 	return p;
 }
 
-void expect_same_counts_and_positions(const CMap2 &m, const Attribute<Vec3> &pos, const CgalMesh &sm)
+void expect_same_counts_and_positions(const CMap2& m, const AttributeArray<Vec3>& pos, const CgalMesh& sm)
 {
 	EXPECT_EQ(nb_cells<CMap2::Vertex>(m), sm.number_of_vertices());
 	EXPECT_EQ(nb_cells<CMap2::Edge>(m), sm.number_of_edges());
@@ -59,7 +59,7 @@ TEST(CgalPeer, CatmullClarkOnClosedMeshes)
 	{
 		CMap2 m;
 		if (!load(m, name))
-			GTEST_SKIP() << "missing " << name;
+			GTEST_SKIP() << cgogn_test_data::missing_large(std::string("surface/") + name);
 		auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 		CgalMesh sm = cgal_of(soup_of(m, *pos));
 		CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, CGAL::parameters::number_of_iterations(2));
@@ -72,7 +72,7 @@ TEST(CgalPeer, CatmullClarkWithBoundaryOnFandisk)
 {
 	CMap2 m;
 	if (!load(m, "fandisk_quads.off"))
-		GTEST_SKIP() << "missing fandisk_quads.off";
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/fandisk_quads.off");
 	auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 	CgalMesh sm = cgal_of(soup_of(m, *pos));
 	CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, CGAL::parameters::number_of_iterations(1));
@@ -84,7 +84,7 @@ TEST(CgalPeer, LoopOnClosedMeshes)
 {
 	CMap2 m;
 	if (!load(m, "nefertiti.obj"))
-		GTEST_SKIP() << "missing nefertiti.obj";
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/nefertiti.obj");
 	auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 	CgalMesh sm = cgal_of(soup_of(m, *pos));
 	CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(1));

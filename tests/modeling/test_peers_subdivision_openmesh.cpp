@@ -53,7 +53,7 @@ std::vector<Vec3> positions_of(const MESH &om)
 }
 
 template <typename SUBDIVIDER, typename MESH>
-void expect_same_as_openmesh(CMap2 &m, Attribute<Vec3> &pos, modeling::SurfaceScheme scheme, uint32 steps)
+void expect_same_as_openmesh(CMap2& m, AttributeArray<Vec3>& pos, modeling::SurfaceScheme scheme, uint32 steps)
 {
 	MESH om = openmesh_of<MESH>(soup_of(m, pos));
 	SUBDIVIDER sub;
@@ -85,7 +85,7 @@ TEST(OpenMeshPeer, LoopOnTetrahedronSphereAndNefertiti)
 	{
 		CMap2 m;
 		if (!load(m, name))
-			GTEST_SKIP() << "missing " << name;
+			GTEST_SKIP() << cgogn_test_data::missing_large(std::string("surface/") + name);
 		expect_same_as_openmesh<Loop, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
 		                                       modeling::SurfaceScheme::Loop, 1);
 	}
@@ -95,7 +95,7 @@ TEST(OpenMeshPeer, LoopBoundaryRulesAgreeOnHemisphere)
 {
 	CMap2 m;
 	if (!load(m, "hemisphere.off"))
-		GTEST_SKIP() << "missing hemisphere.off";
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 	expect_same_as_openmesh<Loop, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
 	                                       modeling::SurfaceScheme::Loop, 2);
 }
@@ -109,7 +109,7 @@ TEST(OpenMeshPeer, Sqrt3OnClosedMeshes)
 	}
 	CMap2 m;
 	if (!load(m, "nefertiti.obj"))
-		GTEST_SKIP() << "missing nefertiti.obj";
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/nefertiti.obj");
 	expect_same_as_openmesh<Sqrt3, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
 	                                        modeling::SurfaceScheme::Sqrt3, 1);
 }
@@ -119,7 +119,7 @@ TEST(OpenMeshPeer, Sqrt3FirstStepWithBoundaryAgrees)
 	// OpenMesh's generation 0 keeps the boundary as cgogn's every step does
 	CMap2 m;
 	if (!load(m, "hemisphere.off"))
-		GTEST_SKIP() << "missing hemisphere.off";
+		GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 	expect_same_as_openmesh<Sqrt3, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
 	                                        modeling::SurfaceScheme::Sqrt3, 1);
 }
@@ -130,7 +130,7 @@ TEST(OpenMeshPeer, CatmullClarkOnClosedPolygonMeshes)
 	{
 		CMap2 m;
 		if (!load(m, name))
-			GTEST_SKIP() << "missing " << name;
+			GTEST_SKIP() << cgogn_test_data::missing_large(std::string("surface/") + name);
 		expect_same_as_openmesh<CatmullClark, PolyMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
 		                                                modeling::SurfaceScheme::CatmullClark, 2);
 	}

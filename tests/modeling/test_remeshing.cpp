@@ -36,7 +36,7 @@ Valences valences(const CMap2& m)
 	return v;
 }
 
-double boundary_length(const CMap2& m, const Attribute<Vec3>& pos)
+double boundary_length(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	double l = 0.0;
 	foreach_dart(m, [&](Dart d) {
@@ -82,9 +82,7 @@ TEST(Remeshing, SphereGetsTheTargetLengthAndRegularValences)
 
 TEST(Remeshing, HemisphereKeepsItsBoundaryLoop)
 {
-	const std::string path = data_path("hemisphere.off");
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/hemisphere.off");
 	CMap2 m;
 	io::load_surface(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");
@@ -192,9 +190,7 @@ TEST(TriangleTree, ClosestPointsOnAGrid)
 
 TEST(Remeshing, NefertitiAtItsMeanEdgeLength)
 {
-	const std::string path = data_path("nefertiti.obj");
-	if (!std::filesystem::exists(path))
-		GTEST_SKIP() << "no " << path;
+	CGOGN_DATA_PATH_OR_SKIP(path, "surface/nefertiti.obj");
 	CMap2 m;
 	io::load_surface(m, path);
 	auto pos = get_attribute<Vec3, Vertex>(m, "position");

@@ -22,8 +22,6 @@ namespace
 
 using Vertex = CMap2::Vertex;
 
-const std::string data_dir = CGOGN_DATA_DIR;
-
 void load(CMap2 &m, const std::string &path)
 {
 	io::load_surface(m, path);
@@ -33,11 +31,10 @@ void load(CMap3 &m, const std::string &path)
 	io::load_volume(m, path);
 }
 
-/// Loads a data file, or skips the test visibly when it is absent.
+/// Loads a data file, or skips the test, naming the file, when it is a large
+/// one that is not available.
 #define LOAD_OR_SKIP(MAP, NAME)                                                                                        \
-	const std::string path_##MAP = data_dir + "/" + NAME;                                                              \
-	if (!std::filesystem::exists(path_##MAP))                                                                          \
-		GTEST_SKIP() << "missing " << path_##MAP;                                                                      \
+	CGOGN_DATA_PATH_OR_SKIP(path_##MAP, NAME);                                                                         \
 	load(MAP, path_##MAP)
 
 std::vector<Vec3> tetrahedron_points()
@@ -52,7 +49,7 @@ SurfaceSoup tetrahedron_soup()
 
 /// Every expected point is the position of exactly one vertex (to 1e-14),
 /// and there are as many vertices as expected points.
-void expect_positions(const CMap2 &m, const Attribute<Vec3> &pos, const std::vector<Vec3> &expected)
+void expect_positions(const CMap2& m, const AttributeArray<Vec3>& pos, const std::vector<Vec3>& expected)
 {
 	EXPECT_EQ(nb_cells<Vertex>(m), expected.size());
 	for (const Vec3 &p : expected)
@@ -71,7 +68,7 @@ bool all_faces_of_degree(const CMap2 &m, uint32 k)
 }
 
 /// The positions around the boundary face of d, starting at d's origin.
-std::vector<Vec3> boundary_loop(const CMap2 &m, const Attribute<Vec3> &pos, Dart d)
+std::vector<Vec3> boundary_loop(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	std::vector<Vec3> loop;
 	Dart x = d;

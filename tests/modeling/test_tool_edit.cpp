@@ -146,8 +146,6 @@ TEST(ToolModeling, FillHolesOnAnLShape)
 
 TEST(ToolModeling, FillHolesOnTheHemisphere)
 {
-	if (!std::filesystem::exists(data_path("hemisphere.off")))
-		GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
 	TempDir dir;
 	const std::string in = quoted(data_path("hemisphere.off"));
 	ToolRun r = run_tool("fill-holes " + in + " " + quoted(dir.file("a.off")), dir);

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/cgogn.h>
 
-#include "../geometry/geometry_test_meshes.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
+
+#include "../geometry/geometry_test_meshes.h"
+#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using test::polygon_soup;
@@ -14,7 +15,7 @@ namespace
 {
 
 /// Every face of m is a triangle whose normal points to the same side as `up`.
-void expect_triangles_facing(const CMap2& m, const Attribute<Vec3>& pos, const Vec3& up)
+void expect_triangles_facing(const CMap2& m, const AttributeArray<Vec3>& pos, const Vec3& up)
 {
 	foreach_cell(m, [&](CMap2::Face f) {
 		EXPECT_EQ(codegree(m, f), 3u);
@@ -87,9 +88,7 @@ TEST(EarClipping, PolygonalDataMeshes)
 {
 	for (const char* name : {"surface/polygon_mesh.off", "surface/fandisk_quads.off", "surface/spot_quadrangulated.obj"})
 	{
-		const std::string path = std::string(CGOGN_DATA_DIR) + "/" + name;
-		if (!std::filesystem::exists(path))
-			GTEST_SKIP() << "data folder not found: " << CGOGN_DATA_DIR;
+		const std::string path = cgogn_test_data::path(name);
 		CMap2 m;
 		io::load_surface(m, path);
 		auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");

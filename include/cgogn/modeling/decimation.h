@@ -2,7 +2,7 @@
 // Decimation of triangle surfaces by edge collapses ordered by quadric error.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
 
@@ -72,7 +72,10 @@ struct DecimationResult
 /// is not a triangle. O(n log n).
 /// `progress` (optional, as for every modeling function) receives the
 /// fraction done and may return false to stop.
-DecimationResult decimate(CMap2& m, Attribute<Vec3>& pos, const DecimationOptions& options,
-						  const ProgressCallback& progress = {});
+DecimationResult decimate(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
+                          const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+DecimationResult decimate(CMap3& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
+                          const ProgressCallback& progress = {}) = delete;
 
 } // namespace cgogn::modeling

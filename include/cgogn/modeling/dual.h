@@ -2,7 +2,7 @@
 // The dual of a closed polygonal surface.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <memory>
@@ -21,6 +21,10 @@ namespace cgogn::modeling
 /// or when a vertex has fewer than 3 edges or meets a face twice (its dual
 /// face would be degenerate), and Error (nothing appended) when out has a
 /// vertex attribute "position" of another type than Vec3. O(size of m).
-std::shared_ptr<Attribute<Vec3>> dual(const CMap2 &m, const Attribute<Vec3> &pos, CMap2 &out);
+std::shared_ptr<AttributeArray<Vec3>> dual(const CMap2& m, const AttributeArray<Vec3>& pos, CMap2& out);
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+std::shared_ptr<AttributeArray<Vec3>> dual(const CMap3& m, const AttributeArray<Vec3>& pos, CMap2& out) = delete;
+std::shared_ptr<AttributeArray<Vec3>> dual(const CMap2& m, const AttributeArray<Vec3>& pos, CMap3& out) = delete;
+std::shared_ptr<AttributeArray<Vec3>> dual(const CMap3& m, const AttributeArray<Vec3>& pos, CMap3& out) = delete;
 
 } // namespace cgogn::modeling

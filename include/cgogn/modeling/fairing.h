@@ -2,7 +2,7 @@
 // Fairing: smooth positions for chosen vertices, the others fixed.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <span>
@@ -27,7 +27,10 @@ enum class FairingWeights
 /// mesh. Returns false (positions unchanged) when the system is singular,
 /// e.g. when a free component touches no fixed vertex.
 /// Preconditions: continuity <= 2; the free vertices are distinct.
-bool fair_vertices(const CMap2 &m, Attribute<Vec3> &pos, std::span<const CMap2::Vertex> free,
+bool fair_vertices(const CMap2& m, AttributeArray<Vec3>& pos, std::span<const CMap2::Vertex> free,
                    FairingWeights w = FairingWeights::Cotangent, uint32 continuity = 1);
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+bool fair_vertices(const CMap3& m, AttributeArray<Vec3>& pos, std::span<const CMap2::Vertex> free,
+                   FairingWeights w = FairingWeights::Cotangent, uint32 continuity = 1) = delete;
 
 } // namespace cgogn::modeling

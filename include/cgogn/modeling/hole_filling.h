@@ -3,7 +3,7 @@
 // refinement and fairing.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/fairing.h>
 #include <cgogn/modeling/progress.h>
@@ -69,13 +69,19 @@ struct HoleFillingResult
 /// solve on the patch. Named like core's cgogn::fill_hole(m, d) (which turns
 /// the hole into one polygon) but with positions and options: the two never
 /// clash, their parameters differ.
-HoleFillingResult fill_hole(CMap2 &m, Attribute<Vec3> &pos, Dart d, const HoleFillingOptions &options = {},
-                            const ProgressCallback &progress = {});
+HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options = {},
+                            const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+HoleFillingResult fill_hole(CMap3& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options = {},
+                            const ProgressCallback& progress = {}) = delete;
 
 /// fill_hole on every boundary loop of m (skipping those larger than
 /// options.max_hole_size). Progress counts holes; cancelling leaves the
 /// remaining holes open. O(sum of the costs of the holes).
-HoleFillingResult fill_holes(CMap2 &m, Attribute<Vec3> &pos, const HoleFillingOptions &options = {},
-                             const ProgressCallback &progress = {});
+HoleFillingResult fill_holes(CMap2& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options = {},
+                             const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+HoleFillingResult fill_holes(CMap3& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options = {},
+                             const ProgressCallback& progress = {}) = delete;
 
 } // namespace cgogn::modeling

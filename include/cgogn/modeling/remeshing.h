@@ -2,7 +2,7 @@
 // Isotropic remeshing of triangle surfaces (Botsch and Kobbelt 2004).
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
 
@@ -50,7 +50,10 @@ struct RemeshingResult
 /// after each phase and a cancel stops between phases. Throws cgogn::Error
 /// when a face is not a triangle or L is not a positive finite number.
 /// O(iterations n log n).
-RemeshingResult isotropic_remeshing(CMap2& m, Attribute<Vec3>& pos, const RemeshingOptions& options = {},
-									const ProgressCallback& progress = {});
+RemeshingResult isotropic_remeshing(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options = {},
+                                    const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+RemeshingResult isotropic_remeshing(CMap3& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options = {},
+                                    const ProgressCallback& progress = {}) = delete;
 
 } // namespace cgogn::modeling

@@ -45,6 +45,8 @@ struct SubdivisionResult
 
 /// True when every non-boundary face of m is a triangle. O(darts).
 bool is_triangle_mesh(const CMap2 &m);
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+bool is_triangle_mesh(const CMap3& m) = delete;
 
 /// One step of Loop subdivision (Loop 1987, with Loop's original weights, as
 /// OpenMesh's LoopT): each edge gets a vertex at 3/8 (a + b) + 1/8 (c + d)
@@ -56,7 +58,9 @@ bool is_triangle_mesh(const CMap2 &m);
 /// more than two boundary edges stays). Throws SubdivisionError (map
 /// untouched) when a face is not a triangle (see is_triangle_mesh).
 /// V + E vertices, 4F faces afterwards. O(n).
-SubdivisionResult loop_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress = {});
+SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+SubdivisionResult loop_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {}) = delete;
 
 /// One step of Catmull-Clark subdivision on any polygons (the rules of
 /// CGAL's CatmullClark_subdivision): a face of degree k gets its centroid f
@@ -67,7 +71,10 @@ SubdivisionResult loop_subdivision(CMap2 &m, Attribute<Vec3> &pos, const Progres
 /// boundary vertex moves to 1/8 q0 + 3/4 p + 1/8 q1 (a vertex with more than
 /// two boundary edges stays). Afterwards every face is a quad. Throws
 /// SubdivisionError (map untouched) when a face has fewer than 3 edges. O(n).
-SubdivisionResult catmull_clark_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress = {});
+SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
+                                            const ProgressCallback& progress = {}) = delete;
 
 /// One step of sqrt3 subdivision (Kobbelt 2000, as OpenMesh's Sqrt3T): each
 /// triangle gets its centroid and is split in 3, each old interior vertex of
@@ -80,7 +87,10 @@ SubdivisionResult catmull_clark_subdivision(CMap2 &m, Attribute<Vec3> &pos, cons
 /// first step (its generation 0), not its odd generations. Throws
 /// SubdivisionError (map untouched) when a face is not a triangle.
 /// V + F vertices, 3F faces afterwards. O(n).
-SubdivisionResult sqrt3_subdivision(CMap2 &m, Attribute<Vec3> &pos, const ProgressCallback &progress = {});
+SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+SubdivisionResult sqrt3_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
+                                    const ProgressCallback& progress = {}) = delete;
 
 enum class SurfaceScheme
 {
@@ -91,8 +101,11 @@ enum class SurfaceScheme
 
 /// `iterations` steps of a scheme; progress goes from 0 to 1 over all steps.
 /// Stops after the step during which the callback asked to stop.
-SubdivisionResult subdivide(CMap2 &m, Attribute<Vec3> &pos, SurfaceScheme scheme, uint32 iterations,
-                            const ProgressCallback &progress = {});
+SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+                            const ProgressCallback& progress = {});
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+SubdivisionResult subdivide(CMap3& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+                            const ProgressCallback& progress = {}) = delete;
 
 // Volume refinements. The map is rebuilt from the refined cell list with
 // build_volume (every cell of the result is a new cell): positions are
@@ -109,12 +122,12 @@ bool is_tet_mesh(const CMap3 &m);
 
 /// Cuts every hexahedron into 8 through its edge midpoints, face centroids
 /// and vertex centroid. V + E + F + W vertices, 8W volumes. O(n).
-SubdivisionResult hex_subdivision(CMap3 &m, Attribute<Vec3> &pos, const ProgressCallback &progress = {});
+SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 
 /// Cuts every tetrahedron into 8 (Bey's red refinement): 4 corner tetrahedra
 /// through the edge midpoints and the inner octahedron split into 4 around its
 /// shortest diagonal. The sum of the volumes is preserved (up to rounding).
 /// V + E vertices, 8W volumes. O(n).
-SubdivisionResult tet_subdivision(CMap3 &m, Attribute<Vec3> &pos, const ProgressCallback &progress = {});
+SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 
 } // namespace cgogn::modeling

@@ -3,7 +3,7 @@
 // surface's vertices to another surface.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <array>
@@ -23,7 +23,7 @@ public:
 
 	/// The triangles of m's faces (polygons as fans from their first corner).
 	/// O(n log n).
-	TriangleTree(const CMap2& m, const Attribute<Vec3>& pos);
+	TriangleTree(const CMap2& m, const AttributeArray<Vec3>& pos);
 	/// The given triangles. O(n log n).
 	explicit TriangleTree(std::vector<Triangle> triangles);
 
@@ -75,6 +75,10 @@ struct SurfaceDistance
 /// Distances of m's vertices to the reference triangles (one-sided: a
 /// Hausdorff-like bound from m to the reference, sampled at the vertices).
 /// O(V log n).
-SurfaceDistance vertex_distance_to_surface(const CMap2& m, const Attribute<Vec3>& pos, const TriangleTree& reference);
+SurfaceDistance vertex_distance_to_surface(const CMap2& m, const AttributeArray<Vec3>& pos,
+                                           const TriangleTree& reference);
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+SurfaceDistance vertex_distance_to_surface(const CMap3& m, const AttributeArray<Vec3>& pos,
+                                           const TriangleTree& reference) = delete;
 
 } // namespace cgogn::modeling

@@ -2,7 +2,7 @@
 // Triangulation of polygonal faces by ear clipping.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/types/maps/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 namespace cgogn::modeling
@@ -17,10 +17,14 @@ namespace cgogn::modeling
 /// left, the most convex corner is cut. Returns the number of triangles
 /// created (0 for a triangle). Precondition: f is not a boundary face.
 /// O(degree^3) worst case, O(degree^2) for convex faces.
-uint32 ear_clip_face(CMap2& m, const Attribute<Vec3>& pos, CMap2::Face f);
+uint32 ear_clip_face(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f);
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+uint32 ear_clip_face(CMap3& m, const AttributeArray<Vec3>& pos, CMap2::Face f) = delete;
 
 /// ear_clip_face on every face of degree > 3; returns the number of faces cut.
 /// The map's faces are then all triangles (boundary faces excepted).
-uint32 triangulate_faces(CMap2& m, const Attribute<Vec3>& pos);
+uint32 triangulate_faces(CMap2& m, const AttributeArray<Vec3>& pos);
+/// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
+uint32 triangulate_faces(CMap3& m, const AttributeArray<Vec3>& pos) = delete;
 
 } // namespace cgogn::modeling

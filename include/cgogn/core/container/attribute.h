@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/container/line_storage.h>
+#include <cgogn/core/types/cell.h>
 #include <cgogn/core/types/numeric.h>
 
 #include <atomic>
@@ -21,6 +22,8 @@ inline constexpr uint32 CHUNK_SIZE = 1u << CHUNK_SHIFT;
 inline constexpr uint32 CHUNK_MASK = CHUNK_SIZE - 1u;
 
 class AttributeContainer;
+template <typename T>
+class AttributeArray;
 
 /// Type-erased part of an attribute: what a container needs to grow it, reset
 /// or copy lines, and find it by name and type.
@@ -60,21 +63,27 @@ protected:
 	friend class AttributeContainer;
 	AttributeContainer* container_;
 	std::string name_;
+	/// The container's cell index (see AttributeContainer::cell_index), kept
+	/// here so that `attr[c]` costs the loads value() costs.
+	const AttributeArray<uint32>* cell_index_ = nullptr;
 };
 
 /// A typed attribute: one value of type T per line of its container (see
-/// LineStorage for where values live). `(*attr)[i]` is the value of line i; a
-/// range-for visits the values of the live lines.
+/// LineStorage for where values live). `(*attr)[i]` is the value of line i,
+/// `(*attr)[c]` the value of cell c (see below); a range-for visits the values
+/// of the live lines. This is `mesh_traits<M>::Attribute<T>` for every map;
+/// add_attribute and get_attribute return the derived CellAttribute<T, O>,
+/// which also knows its orbit at compile time.
 template <typename T>
-class Attribute : public AttributeBase
+class AttributeArray : public AttributeBase
 {
 public:
 	using value_type = T;
 
 	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
-	Attribute(AttributeContainer* container, std::string name, T default_value = T(),
-			  uint64 contiguous_lines = LineStorage<T, CHUNK_SHIFT>::default_contiguous())
-		: AttributeBase(container, std::move(name)), values_(contiguous_lines), default_value_(std::move(default_value))
+	AttributeArray(AttributeContainer* container, std::string name, T default_value = T(),
+	               uint64 contiguous_lines = LineStorage<T, CHUNK_SHIFT>::default_contiguous())
+	    : AttributeBase(container, std::move(name)), values_(contiguous_lines), default_value_(std::move(default_value))
 	{
 	}
 
@@ -87,6 +96,38 @@ public:
 	{
 		assert(i < values_.size());
 		return values_[i];
+	}
+
+	/// The value of cell c: the line its map gives c (index_of), then that
+	/// line's value; the same loads as value(m, attr, c). O(1).
+	/// Preconditions (asserted): the attribute still belongs to its map and c
+	/// is a cell of the attribute's orbit. Through a CellAttribute<T, O> (the
+	/// handles add_attribute and get_attribute return) a cell of another orbit
+	/// does not compile; through this orbit-erased type only the assertion
+	/// checks it.
+	template <Orbit O>
+	CGOGN_INLINE T& operator[](Cell<O> c)
+	{
+		return (*this)[line_of(c)];
+	}
+	template <Orbit O>
+	CGOGN_INLINE const T& operator[](Cell<O> c) const
+	{
+		return (*this)[line_of(c)];
+	}
+	/// The same for a cell reported with its line (a cached traversal, or
+	/// foreach_cell with a `Located<CELL>` parameter): no index lookup.
+	template <Orbit O>
+	CGOGN_INLINE T& operator[](LocatedCell<O> c)
+	{
+		assert(c.line == line_of(Cell<O>(c)) && "stale cell line");
+		return (*this)[c.line];
+	}
+	template <Orbit O>
+	CGOGN_INLINE const T& operator[](LocatedCell<O> c) const
+	{
+		assert(c.line == line_of(Cell<O>(c)) && "stale cell line");
+		return (*this)[c.line];
 	}
 
 	/// A read-only view of the values for a loop in which the attribute does
@@ -136,7 +177,7 @@ public:
 	void copy_line_from(uint32 dst, const AttributeBase& other, uint32 src) override
 	{
 		assert(other.type() == type());
-		(*this)[dst] = static_cast<const Attribute<T>&>(other)[src];
+		(*this)[dst] = static_cast<const AttributeArray<T>&>(other)[src];
 	}
 	void swap_lines(uint32 a, uint32 b) override
 	{
@@ -165,9 +206,61 @@ public:
 	const_iterator begin() const;
 	const_iterator end() const;
 
+protected:
+	/// The line of cell c in the attribute's container (defined with AttributeContainer).
+	template <Orbit O>
+	uint32 line_of(Cell<O> c) const;
+
 private:
 	LineStorage<T, CHUNK_SHIFT> values_;
 	T default_value_;
+};
+
+/// The attribute handle add_attribute<T, CELL> and get_attribute<T, CELL>
+/// return: an AttributeArray<T> whose orbit O (CELL::ORBIT) is part of its
+/// type, so that `(*attr)[c]` accepts the cells of that orbit only; a cell of
+/// another orbit is a compile error. `(*attr)[c]` costs what value(m, attr, c)
+/// costs. It converts to std::shared_ptr<mesh_traits<M>::Attribute<T>>.
+template <typename T, Orbit O>
+class CellAttribute : public AttributeArray<T>
+{
+public:
+	static constexpr Orbit ORBIT = O;
+
+	using AttributeArray<T>::AttributeArray;
+
+	CGOGN_INLINE T& operator[](uint32 i)
+	{
+		return AttributeArray<T>::operator[](i);
+	}
+	CGOGN_INLINE const T& operator[](uint32 i) const
+	{
+		return AttributeArray<T>::operator[](i);
+	}
+	CGOGN_INLINE T& operator[](Cell<O> c)
+	{
+		return AttributeArray<T>::operator[](c);
+	}
+	CGOGN_INLINE const T& operator[](Cell<O> c) const
+	{
+		return AttributeArray<T>::operator[](c);
+	}
+	CGOGN_INLINE T& operator[](LocatedCell<O> c)
+	{
+		return AttributeArray<T>::operator[](c);
+	}
+	CGOGN_INLINE const T& operator[](LocatedCell<O> c) const
+	{
+		return AttributeArray<T>::operator[](c);
+	}
+	/// A cell of another orbit: rejected at compile time.
+	template <Orbit P>
+	requires(P != O) void operator[](Cell<P>) const
+	{
+		static_assert(P == O, "attribute indexed by a cell of another orbit than its own");
+	}
+
+	std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const override;
 };
 
 /// A bit per line, growing by chunks of the same line count as attributes.

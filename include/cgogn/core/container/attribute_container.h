@@ -14,7 +14,7 @@ namespace cgogn
 {
 
 /// A set of attributes that all have the same lines. One attribute, the key
-/// (an Attribute<uint32>), tells which lines are live: a line is free when its
+/// (an AttributeArray<uint32>), tells which lines are live: a line is free when its
 /// key is INVALID_INDEX. For a map's dart container the key is phi1; for a cell
 /// container it is the representative dart of each cell. Free lines are kept
 /// in a list and reused first. Mark attributes (a bit per line) are reserved
@@ -33,33 +33,40 @@ public:
 	~AttributeContainer()
 	{
 		for (auto& a : attributes_)
+		{
 			a->container_ = nullptr;
+			a->cell_index_ = nullptr;
+		}
 	}
 	AttributeContainer(const AttributeContainer&) = delete;
 	AttributeContainer& operator=(const AttributeContainer&) = delete;
 
 	/// Adds an attribute; nullptr when one with this name exists already.
-	template <typename T>
-	std::shared_ptr<Attribute<T>> add_attribute(const std::string& name, T default_value = T())
+	/// Adds an attribute; nullptr when one with this name exists already. A
+	/// is the attribute's class (a CellAttribute<T, O> for add_attribute<T, CELL>).
+	template <typename T, typename A = AttributeArray<T>>
+	std::shared_ptr<A> add_attribute(const std::string& name, T default_value = T())
 	{
+		static_assert(std::is_base_of_v<AttributeArray<T>, A>);
 		if (find(name) != nullptr)
 			return nullptr;
-		auto a = std::make_shared<Attribute<T>>(
-			this, name, std::move(default_value),
-			std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
+		auto a =
+		    std::make_shared<A>(this, name, std::move(default_value),
+		                        std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
 		a->set_nb_chunks(nb_chunks_);
+		static_cast<AttributeBase&>(*a).cell_index_ = cell_index_;
 		attributes_.push_back(a);
 		return a;
 	}
 
 	/// The attribute of this name and type; nullptr when absent or of another type.
 	template <typename T>
-	std::shared_ptr<Attribute<T>> get_attribute(const std::string& name) const
+	std::shared_ptr<AttributeArray<T>> get_attribute(const std::string& name) const
 	{
 		auto a = find(name);
 		if (a == nullptr || a->type() != typeid(T))
 			return nullptr;
-		return std::static_pointer_cast<Attribute<T>>(a);
+		return std::static_pointer_cast<AttributeArray<T>>(a);
 	}
 
 	std::shared_ptr<AttributeBase> find(const std::string& name) const
@@ -77,6 +84,7 @@ public:
 		if (it == attributes_.end())
 			return false;
 		(*it)->container_ = nullptr;
+		(*it)->cell_index_ = nullptr;
 		attributes_.erase(it);
 		return true;
 	}
@@ -86,11 +94,35 @@ public:
 		return attributes_;
 	}
 
-	Attribute<uint32>& key()
+	AttributeArray<uint32>& key()
 	{
 		return *key_;
 	}
-	const Attribute<uint32>& key() const
+
+	/// The orbit whose cells own the lines of this container (DART for the
+	/// dart container); set by the map.
+	Orbit orbit() const
+	{
+		return orbit_;
+	}
+	void set_orbit(Orbit o)
+	{
+		orbit_ = o;
+	}
+	/// The dart attribute that holds each dart's line in this container
+	/// (nullptr while the orbit is not indexed); set by the map when it
+	/// indexes the orbit. `attr[cell]` reads it.
+	const AttributeArray<uint32>* cell_index() const
+	{
+		return cell_index_;
+	}
+	void set_cell_index(const AttributeArray<uint32>* index)
+	{
+		cell_index_ = index;
+		for (auto& a : attributes_)
+			a->cell_index_ = index;
+	}
+	const AttributeArray<uint32>& key() const
 	{
 		return *key_;
 	}
@@ -366,8 +398,10 @@ private:
 	}
 
 	uint64 max_contiguous_lines_;
+	Orbit orbit_ = Orbit::DART;
+	const AttributeArray<uint32>* cell_index_ = nullptr;
 	std::vector<std::shared_ptr<AttributeBase>> attributes_;
-	Attribute<uint32>* key_ = nullptr;
+	AttributeArray<uint32>* key_ = nullptr;
 	uint32 size_ = 0;
 	uint32 nb_chunks_ = 0;
 	std::vector<uint32> free_lines_;
@@ -411,19 +445,40 @@ private:
 };
 
 template <typename T>
-std::shared_ptr<AttributeBase> Attribute<T>::clone_empty(AttributeContainer& to) const
+std::shared_ptr<AttributeBase> AttributeArray<T>::clone_empty(AttributeContainer& to) const
 {
 	return to.add_attribute<T>(name_, default_value_);
 }
 
+template <typename T, Orbit O>
+std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContainer& to) const
+{
+	return to.add_attribute<T, CellAttribute<T, O>>(this->name(), this->default_value());
+}
+
+template <typename T>
+template <Orbit O>
+CGOGN_INLINE uint32 AttributeArray<T>::line_of(Cell<O> c) const
+{
+	assert(container_ != nullptr && "attribute removed from its map");
+	assert(container_->orbit() == O && "attribute indexed by a cell of another orbit");
+	if constexpr (O == Orbit::DART)
+		return c.dart.index;
+	else
+	{
+		assert(this->cell_index_ != nullptr && this->cell_index_ == container_->cell_index() && "orbit not indexed");
+		return (*this->cell_index_)[c.dart.index];
+	}
+}
+
 template <typename T>
 template <typename FUNC>
-void Attribute<T>::foreach_live_run(const FUNC& f) const
+void AttributeArray<T>::foreach_live_run(const FUNC& f) const
 {
 	const AttributeContainer* lines = container();
 	if (lines == nullptr) // a removed attribute
 		return;
-	const Attribute<uint32>& key = lines->key();
+	const AttributeArray<uint32>& key = lines->key();
 	// with no free line every line in [first, end) is live: whole runs, no key read
 	const bool check_live = !lines->free_lines().empty();
 	for (uint32 i = lines->first_index(), end = lines->end_index(); i < end;)
@@ -458,9 +513,9 @@ void Attribute<T>::foreach_live_run(const FUNC& f) const
 /// address of their value; end() is one past the last line's value.
 template <typename T>
 template <bool IS_CONST>
-class Attribute<T>::basic_iterator
+class AttributeArray<T>::basic_iterator
 {
-	using Attr = std::conditional_t<IS_CONST, const Attribute<T>, Attribute<T>>;
+	using Attr = std::conditional_t<IS_CONST, const AttributeArray<T>, AttributeArray<T>>;
 	using Value = std::conditional_t<IS_CONST, const T, T>;
 
 public:
@@ -549,7 +604,7 @@ private:
 	}
 
 	Attr* attr_ = nullptr;
-	const Attribute<uint32>* key_ = nullptr;
+	const AttributeArray<uint32>* key_ = nullptr;
 	uint32 end_ = 0;
 	bool check_live_ = false;
 	Value* value_ = nullptr;
@@ -561,22 +616,22 @@ private:
 
 // A removed attribute (no container) iterates over nothing.
 template <typename T>
-typename Attribute<T>::iterator Attribute<T>::begin()
+typename AttributeArray<T>::iterator AttributeArray<T>::begin()
 {
 	return container_ ? iterator(this, container_->first_index(), container_->end_index()) : iterator();
 }
 template <typename T>
-typename Attribute<T>::iterator Attribute<T>::end()
+typename AttributeArray<T>::iterator AttributeArray<T>::end()
 {
 	return container_ ? iterator(this, container_->end_index(), container_->end_index()) : iterator();
 }
 template <typename T>
-typename Attribute<T>::const_iterator Attribute<T>::begin() const
+typename AttributeArray<T>::const_iterator AttributeArray<T>::begin() const
 {
 	return container_ ? const_iterator(this, container_->first_index(), container_->end_index()) : const_iterator();
 }
 template <typename T>
-typename Attribute<T>::const_iterator Attribute<T>::end() const
+typename AttributeArray<T>::const_iterator AttributeArray<T>::end() const
 {
 	return container_ ? const_iterator(this, container_->end_index(), container_->end_index()) : const_iterator();
 }

@@ -97,7 +97,7 @@ void foreach_dart(const CMapBase& m, const FUNC& func)
 {
 	held_callable_t<FUNC> f = func; // see held_callable_t
 	const AttributeContainer& c = *m.darts_;
-	const Attribute<uint32>& key = c.key();
+	const AttributeArray<uint32>& key = c.key();
 	for (uint32 i = 0, end = c.end_index(); i < end; ++i)
 		if (key[i] != INVALID_INDEX)
 			if (!call_and_continue(f, Dart(i)))
@@ -112,7 +112,7 @@ inline Dart add_dart(CMapBase& m)
 	if (!m.incidence_tables_.empty())
 		m.incidence_tables_.clear(); // see drop_incidence_caches
 	uint32 i = m.darts_->new_line(0);
-	for (Attribute<uint32>* r : m.relations_)
+	for (AttributeArray<uint32>* r : m.relations_)
 		(*r)[i] = i;
 	return Dart(i);
 }

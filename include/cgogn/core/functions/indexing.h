@@ -58,7 +58,7 @@ namespace detail
 template <typename MAP, Orbit O>
 void write_index(MAP& m, Cell<O> c, uint32 i)
 {
-	Attribute<uint32>& idx = *m.cell_index_[orbit_index(O)];
+	AttributeArray<uint32>& idx = *m.cell_index_[orbit_index(O)];
 	foreach_dart_of_orbit(m, c, [&](Dart d) { idx[d.index] = i; });
 	if (i != INVALID_INDEX)
 		m.cells_[orbit_index(O)]->key()[i] = c.dart.index;
@@ -103,7 +103,7 @@ void release_index(CMapBase& m, uint32 i)
 template <Orbit O>
 void set_representative(CMapBase& m, Dart d)
 {
-	if (const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+	if (const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)])
 	{
 		uint32 i = (*idx)[d.index];
 		if (i != INVALID_INDEX)
@@ -146,11 +146,12 @@ void index_cells(MAP& m)
 		return;
 	else
 	{
-		Attribute<uint32>*& idx = m.cell_index_[orbit_index(O)];
+		AttributeArray<uint32>*& idx = m.cell_index_[orbit_index(O)];
 		if (idx == nullptr)
 			idx = m.darts_->template add_attribute<uint32>(std::string("__index_") + std::string(orbit_name(O)),
 														   INVALID_INDEX)
 					  .get();
+		container_of<O>(m).set_cell_index(idx);
 		foreach_dart(m, [&](Dart d) {
 			if ((*idx)[d.index] == INVALID_INDEX && !is_boundary_cell(m, CELL(d)))
 				detail::new_index(m, CELL(d));

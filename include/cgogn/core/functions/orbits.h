@@ -271,7 +271,7 @@ bool same_cell(const MAP& m, Cell<O> c1, Cell<O> c2)
 {
 	if constexpr (O != Orbit::DART)
 	{
-		if (const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+		if (const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)])
 		{
 			uint32 i1 = (*idx)[c1.dart.index];
 			if (i1 != INVALID_INDEX)

@@ -7,6 +7,12 @@ namespace cgogn
 {
 
 // ---- degree: number of incident cells of the next dimension (non-boundary)
+//
+// degree and codegree exist for every cell type of CMap2 (Vertex, Edge, Face,
+// Volume) and CMap3 (Vertex, Edge, Face, Volume), so that generic code can ask
+// them of any cell; the face of a 1-map has its codegree. On a 3-map the
+// cells of its volumes' 2-maps (Vertex2 = CMap2::Vertex, Edge2 = CMap2::Edge,
+// CMap2::Face) get the CMap2 answers, counted within their volume.
 
 /// Number of edges incident to v. O(degree).
 inline uint32 degree(const CMap2& m, CMap2::Vertex v)
@@ -39,6 +45,21 @@ inline uint32 degree(const CMap3& m, CMap3::Face f)
 {
 	return uint32(!is_boundary(m, f.dart)) + uint32(!is_boundary(m, phi3(m, f.dart)));
 }
+/// 1: a face of a 2-map lies in one volume (its connected component). O(1).
+inline uint32 degree(const CMap2&, CMap2::Face)
+{
+	return 1;
+}
+/// 0: no cell of a 2-map has a higher dimension than its volumes. O(1).
+inline uint32 degree(const CMap2&, CMap2::Volume)
+{
+	return 0;
+}
+/// 0: no cell of a 3-map has a higher dimension than its volumes. O(1).
+inline uint32 degree(const CMap3&, CMap3::Volume)
+{
+	return 0;
+}
 
 // ---- codegree: number of incident cells of the previous dimension
 
@@ -65,6 +86,29 @@ inline uint32 codegree(const CMap3& m, CMap3::Volume w)
 	uint32 n = 0;
 	foreach_incident_face(m, w, [&](CMap3::Face) { ++n; });
 	return n;
+}
+/// Number of faces of volume w (a connected component of the 2-map).
+/// O(number of darts of w).
+inline uint32 codegree(const CMap2& m, CMap2::Volume w)
+{
+	uint32 n = 0;
+	foreach_incident_face(m, w, [&](CMap2::Face) { ++n; });
+	return n;
+}
+/// 2: the vertices of an edge.
+inline uint32 codegree(const CMap3&, CMap3::Edge)
+{
+	return 2;
+}
+/// 0: a vertex has no incident cell of a lower dimension. O(1).
+inline uint32 codegree(const CMap2&, CMap2::Vertex)
+{
+	return 0;
+}
+/// 0: a vertex has no incident cell of a lower dimension. O(1).
+inline uint32 codegree(const CMap3&, CMap3::Vertex)
+{
+	return 0;
 }
 
 // ---- boundary

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/operators/creation.h>
+#include <cgogn/core/operators/dimension_guards.h>
 
 namespace cgogn
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/operators/dimension_guards.h>
 #include <cgogn/core/types/maps/cmap3.h>
 
 namespace cgogn

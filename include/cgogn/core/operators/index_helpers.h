@@ -18,7 +18,7 @@ void index_new_darts(MAP& m, const std::vector<Dart>& darts)
 	auto index_orbit = [&]<typename CELL>(CELL*) {
 		if constexpr (CELL::ORBIT != Orbit::DART)
 		{
-			const Attribute<uint32>* idx = m.cell_index_[orbit_index(CELL::ORBIT)];
+			const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(CELL::ORBIT)];
 			if (idx == nullptr)
 				return;
 			for (Dart d : darts)
@@ -39,7 +39,7 @@ namespace cgogn::detail
 template <Orbit O>
 uint32 index_or_invalid(const CMapBase& m, Dart d)
 {
-	const Attribute<uint32>* idx = m.cell_index_[orbit_index(O)];
+	const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)];
 	return idx ? (*idx)[d.index] : INVALID_INDEX;
 }
 
@@ -47,7 +47,7 @@ uint32 index_or_invalid(const CMapBase& m, Dart d)
 template <Orbit O>
 void copy_dart_index(CMapBase& m, Dart dst, Dart src)
 {
-	if (Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+	if (AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)])
 		(*idx)[dst.index] = (*idx)[src.index];
 }
 
@@ -55,7 +55,7 @@ void copy_dart_index(CMapBase& m, Dart dst, Dart src)
 template <Orbit O>
 void set_dart_index(CMapBase& m, Dart d, uint32 i)
 {
-	if (Attribute<uint32>* idx = m.cell_index_[orbit_index(O)])
+	if (AttributeArray<uint32>* idx = m.cell_index_[orbit_index(O)])
 		(*idx)[d.index] = i;
 }
 

@@ -15,7 +15,7 @@ namespace cgogn::geometry
 /// polygon it is 2 pi minus the interior angle. O(face degree) (phi_1 is not
 /// stored).
 template <GeometricMesh MESH>
-double corner_angle(const MESH& m, Dart d, const Attribute<Vec3>& pos)
+double corner_angle(const MESH& m, Dart d, const AttributeArray<Vec3>& pos)
 {
 	const Vec3& p = origin_position(m, pos, d);
 	return angle_between(origin_position(m, pos, phi1(m, d)) - p, origin_position(m, pos, phi_1(m, d)) - p);
@@ -27,7 +27,7 @@ double corner_angle(const MESH& m, Dart d, const Attribute<Vec3>& pos)
 /// interior angle between the faces is pi minus this. O(degrees of the two
 /// faces).
 template <SurfaceMesh MESH>
-double dihedral_angle(const MESH& m, typename mesh_traits<MESH>::Edge e, const Attribute<Vec3>& pos)
+double dihedral_angle(const MESH& m, typename mesh_traits<MESH>::Edge e, const AttributeArray<Vec3>& pos)
 {
 	const Dart d = e.dart;
 	const Dart d2 = phi2(m, d);
@@ -43,16 +43,16 @@ double dihedral_angle(const MESH& m, typename mesh_traits<MESH>::Edge e, const A
 /// Writes the signed dihedral angle of every edge into the edge attribute
 /// `angle`. O(number of darts times the face degree).
 template <SurfaceMesh MESH>
-void compute_dihedral_angles(const MESH& m, const Attribute<Vec3>& pos, Attribute<double>& angle)
+void compute_dihedral_angles(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& angle)
 {
 	using Edge = typename mesh_traits<MESH>::Edge;
-	foreach_cell(m, [&](Edge e) { value<double>(m, angle, e) = dihedral_angle(m, e, pos); });
+	foreach_cell(m, [&](Edge e) { angle[e] = dihedral_angle(m, e, pos); });
 }
 
 /// Sum of the corner angles of the faces incident to vertex v of a surface
 /// (boundary faces excluded). 2 pi at a flat interior vertex. O(degree).
 template <SurfaceMesh MESH>
-double vertex_angle_sum(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos)
+double vertex_angle_sum(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	const Vec3& p = origin_position(m, pos, v.dart);
 	double s = 0.0;

@@ -11,7 +11,7 @@ namespace cgogn::geometry
 /// polygon, convex or not; for a non-planar one, the area of its projection
 /// on the best-fitting plane. O(face degree).
 template <GeometricMesh MESH>
-double face_area(const MESH& m, typename mesh_traits<MESH>::Face f, const Attribute<Vec3>& pos)
+double face_area(const MESH& m, typename mesh_traits<MESH>::Face f, const AttributeArray<Vec3>& pos)
 {
 	return 0.5 * newell_vector(m, pos, f.dart).norm();
 }
@@ -19,16 +19,16 @@ double face_area(const MESH& m, typename mesh_traits<MESH>::Face f, const Attrib
 /// Writes the area of every face into the face attribute `area`.
 /// O(number of darts).
 template <GeometricMesh MESH>
-void compute_face_areas(const MESH& m, const Attribute<Vec3>& pos, Attribute<double>& area)
+void compute_face_areas(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& area)
 {
 	using Face = typename mesh_traits<MESH>::Face;
-	foreach_cell(m, [&](Face f) { value<double>(m, area, f) = face_area(m, f, pos); });
+	foreach_cell(m, [&](Face f) { area[f] = face_area(m, f, pos); });
 }
 
 /// Sum of the areas of the faces of the mesh (boundary faces excluded; in a
 /// 3-map, every face once, inner faces included). O(number of darts).
 template <GeometricMesh MESH>
-double surface_area(const MESH& m, const Attribute<Vec3>& pos)
+double surface_area(const MESH& m, const AttributeArray<Vec3>& pos)
 {
 	using Face = typename mesh_traits<MESH>::Face;
 	double a = 0.0;
@@ -38,7 +38,7 @@ double surface_area(const MESH& m, const Attribute<Vec3>& pos)
 
 /// Area of the boundary surface of a 3-map: the faces between a volume and
 /// the outside. O(number of darts).
-inline double boundary_area(const CMap3& m, const Attribute<Vec3>& pos)
+inline double boundary_area(const CMap3& m, const AttributeArray<Vec3>& pos)
 {
 	double a = 0.0;
 	foreach_cell(m, [&](CMap3::Face f) {

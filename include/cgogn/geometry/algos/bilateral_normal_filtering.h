@@ -40,7 +40,7 @@ struct BilateralNormalFilteringParams
 /// arrays of one entry per dart and per face, allocated once. Preconditions:
 /// sigma_r > 0, sigma_s >= 0.
 template <SurfaceMesh MESH>
-void bilateral_normal_filtering(const MESH& m, Attribute<Vec3>& pos, const BilateralNormalFilteringParams& p = {})
+void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const BilateralNormalFilteringParams& p = {})
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	using Face = typename mesh_traits<MESH>::Face;

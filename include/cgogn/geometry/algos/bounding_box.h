@@ -16,7 +16,7 @@ using BoundingBox = Eigen::AlignedBox3d;
 /// Smallest axis-aligned box containing every vertex of the mesh; an empty
 /// box (isEmpty()) for a mesh without vertices. O(number of vertices).
 template <GeometricMesh MESH>
-BoundingBox bounding_box(const MESH& m, const Attribute<Vec3>& pos)
+BoundingBox bounding_box(const MESH& m, const AttributeArray<Vec3>& pos)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	BoundingBox bb;

@@ -13,7 +13,7 @@ namespace cgogn::geometry
 /// triangles and parallelograms). O(number of darts of c); for 3-map volumes
 /// the traversal floods with pooled marks (no allocation once warm).
 template <GeometricMesh MESH, typename CELL>
-Vec3 centroid(const MESH& m, CELL c, const Attribute<Vec3>& pos)
+Vec3 centroid(const MESH& m, CELL c, const AttributeArray<Vec3>& pos)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	Vec3 s = Vec3::Zero();
@@ -58,7 +58,7 @@ inline void add_in_four_sums(Vec3 (&sums)[4], const Vec3* p, uint32 k)
 /// one running sum every add waits for the previous one, and that chain, not
 /// the reads, bounds the loop (bench/README.md, barycenter).
 template <GeometricMesh MESH>
-Vec3 mean_position([[maybe_unused]] const MESH& m, const Attribute<Vec3>& pos)
+Vec3 mean_position([[maybe_unused]] const MESH& m, const AttributeArray<Vec3>& pos)
 {
 	assert(pos.container() == &container_of<mesh_traits<MESH>::Vertex::ORBIT>(m) &&
 		   "mean_position: pos is not a vertex attribute of m");
@@ -74,9 +74,9 @@ Vec3 mean_position([[maybe_unused]] const MESH& m, const Attribute<Vec3>& pos)
 /// Writes the vertex centroid of every cell of the attribute's cell type
 /// CELL into `out`. O(number of darts).
 template <typename CELL, GeometricMesh MESH>
-void compute_centroids(const MESH& m, const Attribute<Vec3>& pos, Attribute<Vec3>& out)
+void compute_centroids(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& out)
 {
-	foreach_cell(m, [&](CELL c) { value<Vec3>(m, out, c) = centroid(m, c, pos); });
+	foreach_cell(m, [&](CELL c) { out[c] = centroid(m, c, pos); });
 }
 
 } // namespace cgogn::geometry

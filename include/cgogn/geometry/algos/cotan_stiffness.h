@@ -25,7 +25,7 @@ public:
 	/// Fills the matrix for the face cycle of dart f. Returns its degree n;
 	/// dart(i) is the dart of the i-th vertex, K(i, j) the matrix.
 	template <GeometricMesh MESH>
-	uint32 compute(const MESH& m, const Attribute<Vec3>& pos, Dart f)
+	uint32 compute(const MESH& m, const AttributeArray<Vec3>& pos, Dart f)
 	{
 		darts_.clear();
 		p_.clear();

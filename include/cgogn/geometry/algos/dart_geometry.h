@@ -19,14 +19,14 @@ concept GeometricMesh = MapType<MESH> && (mesh_traits<MESH>::dimension == 2 || m
 /// Position of the origin of dart d (its vertex). O(1). Precondition: pos is a
 /// vertex attribute of m.
 template <GeometricMesh MESH>
-const Vec3& origin_position(const MESH& m, const Attribute<Vec3>& pos, Dart d)
+const Vec3& origin_position(const MESH& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	return value<Vec3>(m, pos, typename mesh_traits<MESH>::Vertex(d));
 }
 
 /// The vector of dart d: from its origin to the origin of phi1(d). O(1).
 template <GeometricMesh MESH>
-Vec3 dart_vector(const MESH& m, const Attribute<Vec3>& pos, Dart d)
+Vec3 dart_vector(const MESH& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	return origin_position(m, pos, phi1(m, d)) - origin_position(m, pos, d);
 }

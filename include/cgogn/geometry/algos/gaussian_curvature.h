@@ -16,7 +16,7 @@ namespace cgogn::geometry
 /// all vertices add up to 2 pi chi (discrete Gauss-Bonnet) on any mesh with
 /// planar faces, closed or not. O(sum of the degrees of the incident faces).
 template <SurfaceMesh MESH>
-double angle_defect(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos)
+double angle_defect(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	const double full = is_incident_to_boundary(m, v) ? std::numbers::pi : 2.0 * std::numbers::pi;
 	return full - vertex_angle_sum(m, v, pos);
@@ -26,7 +26,7 @@ double angle_defect(const MESH& m, typename mesh_traits<MESH>::Vertex v, const A
 /// (Meyer et al. 2003). 0 for a vertex of zero area. O(sum of the degrees of
 /// the incident faces).
 template <SurfaceMesh MESH>
-double gaussian_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos)
+double gaussian_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	const double a = voronoi_area(m, v, pos);
 	return a > 0.0 ? angle_defect(m, v, pos) / a : 0.0;
@@ -35,13 +35,11 @@ double gaussian_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, c
 /// Writes gaussian_curvature (pointwise; angle_defect when `integrated`) of
 /// every vertex into the vertex attribute `k`. O(number of darts).
 template <SurfaceMesh MESH>
-void compute_gaussian_curvatures(const MESH& m, const Attribute<Vec3>& pos, Attribute<double>& k,
-								 bool integrated = false)
+void compute_gaussian_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& k,
+                                 bool integrated = false)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
-	foreach_cell(m, [&](Vertex v) {
-		value<double>(m, k, v) = integrated ? angle_defect(m, v, pos) : gaussian_curvature(m, v, pos);
-	});
+	foreach_cell(m, [&](Vertex v) { k[v] = integrated ? angle_defect(m, v, pos) : gaussian_curvature(m, v, pos); });
 }
 
 } // namespace cgogn::geometry

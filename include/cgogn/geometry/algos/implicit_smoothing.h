@@ -26,8 +26,8 @@ namespace cgogn::geometry
 /// cgogn::Error when the system cannot be factorized (e.g. a singular system
 /// from a mesh collapsed to a point).
 template <SurfaceMesh MESH>
-void implicit_smoothing(const MESH& m, Attribute<Vec3>& pos, double t, uint32 iterations = 1,
-						bool use_uniform_laplacian = false, bool fix_boundary = true)
+void implicit_smoothing(const MESH& m, AttributeArray<Vec3>& pos, double t, uint32 iterations = 1,
+                        bool use_uniform_laplacian = false, bool fix_boundary = true)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	assert(t > 0.0 && "implicit_smoothing: the time step must be positive");

@@ -27,7 +27,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 /// polygon that share no edge get weights too). Boundary edges have a
 /// single cotangent (natural Neumann condition). O(sum of squared face degrees).
 template <SurfaceMesh MESH>
-SparseMatrix cotan_laplacian(const MESH& m, const Attribute<Vec3>& pos, const VertexNumbering& num)
+SparseMatrix cotan_laplacian(const MESH& m, const AttributeArray<Vec3>& pos, const VertexNumbering& num)
 {
 	using Face = typename mesh_traits<MESH>::Face;
 	using Vertex = typename mesh_traits<MESH>::Vertex;
@@ -76,7 +76,7 @@ SparseMatrix uniform_laplacian(const MESH& m, const VertexNumbering& num)
 /// each vertex (mixed Voronoi on triangles). Its trace is the surface area.
 /// O(number of darts).
 template <SurfaceMesh MESH>
-SparseMatrix mass_matrix(const MESH& m, const Attribute<Vec3>& pos, const VertexNumbering& num)
+SparseMatrix mass_matrix(const MESH& m, const AttributeArray<Vec3>& pos, const VertexNumbering& num)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	std::vector<Eigen::Triplet<double>> triplets;

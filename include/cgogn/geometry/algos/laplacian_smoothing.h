@@ -28,7 +28,7 @@ struct UniformSmoother
 	}
 
 	/// One Jacobi step x += factor (mean of the neighbours - x).
-	void step(Attribute<Vec3>& pos, double factor)
+	void step(AttributeArray<Vec3>& pos, double factor)
 	{
 		foreach_cell(m_, [&](Vertex v) {
 			const uint32 i = index_of(m_, v);
@@ -69,8 +69,8 @@ private:
 /// O(iterations x number of darts); one scratch array per vertex line.
 /// Precondition: 0 < lambda <= 1.
 template <GeometricMesh MESH>
-void laplacian_smoothing(const MESH& m, Attribute<Vec3>& pos, uint32 iterations, double lambda = 0.5,
-						 bool fix_boundary = true)
+void laplacian_smoothing(const MESH& m, AttributeArray<Vec3>& pos, uint32 iterations, double lambda = 0.5,
+                         bool fix_boundary = true)
 {
 	assert(lambda > 0.0 && lambda <= 1.0);
 	detail::UniformSmoother<MESH> s(m, fix_boundary);
@@ -85,8 +85,8 @@ void laplacian_smoothing(const MESH& m, Attribute<Vec3>& pos, uint32 iterations,
 /// laplacian_smoothing. O(iterations x number of darts). Preconditions:
 /// lambda > 0, mu < -lambda.
 template <GeometricMesh MESH>
-void taubin_smoothing(const MESH& m, Attribute<Vec3>& pos, uint32 iterations, double lambda = 0.5,
-					  double mu = -0.53, bool fix_boundary = true)
+void taubin_smoothing(const MESH& m, AttributeArray<Vec3>& pos, uint32 iterations, double lambda = 0.5,
+                      double mu = -0.53, bool fix_boundary = true)
 {
 	assert(lambda > 0.0 && mu < -lambda);
 	detail::UniformSmoother<MESH> s(m, fix_boundary);

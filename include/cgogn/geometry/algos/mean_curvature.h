@@ -15,7 +15,7 @@ namespace cgogn::geometry
 /// -2 H n A on a smooth surface (H the mean curvature, n the normal, A the
 /// vertex area). O(sum of the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
-Vec3 cotan_laplacian_of_position(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos)
+Vec3 cotan_laplacian_of_position(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	detail::FaceStiffness& k = detail::face_stiffness_scratch();
 	Vec3 l = Vec3::Zero();
@@ -36,7 +36,7 @@ Vec3 cotan_laplacian_of_position(const MESH& m, typename mesh_traits<MESH>::Vert
 /// measures the boundary curve, not the surface). O(sum of the squared
 /// degrees of the incident faces).
 template <SurfaceMesh MESH>
-double mean_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos)
+double mean_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	if (is_incident_to_boundary(m, v))
 		return 0.0;
@@ -53,10 +53,10 @@ double mean_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const
 /// Writes mean_curvature of every vertex into the vertex attribute `h`.
 /// O(number of darts times the face degree).
 template <SurfaceMesh MESH>
-void compute_mean_curvatures(const MESH& m, const Attribute<Vec3>& pos, Attribute<double>& h)
+void compute_mean_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& h)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
-	foreach_cell(m, [&](Vertex v) { value<double>(m, h, v) = mean_curvature(m, v, pos); });
+	foreach_cell(m, [&](Vertex v) { h[v] = mean_curvature(m, v, pos); });
 }
 
 } // namespace cgogn::geometry

@@ -37,7 +37,7 @@ inline uint64 morton_key(const Vec3& p, const BoundingBox& bb)
 /// Morton key of cell c (a vertex: its position; any other cell: its vertex
 /// centroid) in box bb, usually bounding_box(m, pos). O(number of darts of c).
 template <GeometricMesh MESH, typename CELL>
-uint64 morton_key(const MESH& m, CELL c, const Attribute<Vec3>& pos, const BoundingBox& bb)
+uint64 morton_key(const MESH& m, CELL c, const AttributeArray<Vec3>& pos, const BoundingBox& bb)
 {
 	if constexpr (std::is_same_v<CELL, typename mesh_traits<MESH>::Vertex>)
 		return morton_key(value<Vec3>(m, pos, c), bb);
@@ -48,10 +48,10 @@ uint64 morton_key(const MESH& m, CELL c, const Attribute<Vec3>& pos, const Bound
 /// Writes the Morton key of every cell of type CELL (in the mesh's bounding
 /// box) into the CELL attribute `key`. O(number of darts).
 template <typename CELL, GeometricMesh MESH>
-void compute_morton_keys(const MESH& m, const Attribute<Vec3>& pos, Attribute<uint64>& key)
+void compute_morton_keys(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<uint64>& key)
 {
 	const BoundingBox bb = bounding_box(m, pos);
-	foreach_cell(m, [&](CELL c) { value<uint64>(m, key, c) = morton_key(m, c, pos, bb); });
+	foreach_cell(m, [&](CELL c) { key[c] = morton_key(m, c, pos, bb); });
 }
 
 } // namespace cgogn::geometry

@@ -24,7 +24,7 @@ enum class NormalWeighting
 /// the projection on it). Exact for any simple polygon, convex or not.
 /// O(face degree). Works on the faces of 2-maps and 3-maps.
 template <GeometricMesh MESH>
-Vec3 newell_vector(const MESH& m, const Attribute<Vec3>& pos, Dart d)
+Vec3 newell_vector(const MESH& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	// relative to the first vertex: same value, better rounding far from the origin
 	const Vec3& p0 = origin_position(m, pos, d);
@@ -44,7 +44,7 @@ Vec3 newell_vector(const MESH& m, const Attribute<Vec3>& pos, Dart d)
 /// vertices give the normal pointing at the viewer). The zero vector for a
 /// degenerate face (zero area). O(face degree).
 template <GeometricMesh MESH>
-Vec3 face_normal(const MESH& m, typename mesh_traits<MESH>::Face f, const Attribute<Vec3>& pos)
+Vec3 face_normal(const MESH& m, typename mesh_traits<MESH>::Face f, const AttributeArray<Vec3>& pos)
 {
 	const Vec3 n = newell_vector(m, pos, f.dart);
 	const double l = n.norm();
@@ -55,8 +55,8 @@ Vec3 face_normal(const MESH& m, typename mesh_traits<MESH>::Face f, const Attrib
 /// its incident faces (boundary faces excluded), normalized. Zero when every
 /// incident face is degenerate. O(sum of the degrees of the incident faces).
 template <SurfaceMesh MESH>
-Vec3 vertex_normal(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos,
-				   NormalWeighting w = NormalWeighting::Angle)
+Vec3 vertex_normal(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos,
+                   NormalWeighting w = NormalWeighting::Angle)
 {
 	const Vec3& p = origin_position(m, pos, v.dart);
 	Vec3 n = Vec3::Zero();
@@ -97,10 +97,10 @@ Vec3 vertex_normal(const MESH& m, typename mesh_traits<MESH>::Vertex v, const At
 /// Writes the unit Newell normal of every face into the face attribute
 /// `normal`. O(number of darts).
 template <GeometricMesh MESH>
-void compute_face_normals(const MESH& m, const Attribute<Vec3>& pos, Attribute<Vec3>& normal)
+void compute_face_normals(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& normal)
 {
 	using Face = typename mesh_traits<MESH>::Face;
-	foreach_cell(m, [&](Face f) { value<Vec3>(m, normal, f) = face_normal(m, f, pos); });
+	foreach_cell(m, [&](Face f) { normal[f] = face_normal(m, f, pos); });
 }
 
 /// Writes the normal of every vertex of a surface into the vertex attribute
@@ -108,12 +108,12 @@ void compute_face_normals(const MESH& m, const Attribute<Vec3>& pos, Attribute<V
 /// Isolated or fully degenerate vertices get zero. O(number of darts); one
 /// temporary array of the vertex container's size.
 template <SurfaceMesh MESH>
-void compute_vertex_normals(const MESH& m, const Attribute<Vec3>& pos, Attribute<Vec3>& normal,
-							NormalWeighting w = NormalWeighting::Angle)
+void compute_vertex_normals(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& normal,
+                            NormalWeighting w = NormalWeighting::Angle)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	using Face = typename mesh_traits<MESH>::Face;
-	foreach_cell(m, [&](Vertex v) { value<Vec3>(m, normal, v) = Vec3::Zero(); });
+	foreach_cell(m, [&](Vertex v) { normal[v] = Vec3::Zero(); });
 	foreach_cell(m, [&](Face f) {
 		const Vec3 nf = newell_vector(m, pos, f.dart);
 		const double l = nf.norm();
@@ -121,13 +121,13 @@ void compute_vertex_normals(const MESH& m, const Attribute<Vec3>& pos, Attribute
 			return;
 		if (w == NormalWeighting::Area)
 		{
-			foreach_dart_of_orbit(m, f, [&](Dart d) { value<Vec3>(m, normal, Vertex(d)) += nf; });
+			foreach_dart_of_orbit(m, f, [&](Dart d) { normal[Vertex(d)] += nf; });
 			return;
 		}
 		const Vec3 u = nf / l;
 		if (w == NormalWeighting::Uniform)
 		{
-			foreach_dart_of_orbit(m, f, [&](Dart d) { value<Vec3>(m, normal, Vertex(d)) += u; });
+			foreach_dart_of_orbit(m, f, [&](Dart d) { normal[Vertex(d)] += u; });
 			return;
 		}
 		// corner angles: previous, current and next vertex along the face
@@ -141,16 +141,18 @@ void compute_vertex_normals(const MESH& m, const Attribute<Vec3>& pos, Attribute
 			const Vec3& p = origin_position(m, pos, cur);
 			const double a =
 				angle_between(origin_position(m, pos, next) - p, origin_position(m, pos, prev) - p);
-			value<Vec3>(m, normal, Vertex(cur)) += a * u;
+			normal[Vertex(cur)] += a * u;
 			prev = cur;
 			cur = next;
 		} while (cur != f.dart);
 	});
-	foreach_cell(m, [&](Vertex v) {
-		Vec3& n = value<Vec3>(m, normal, v);
-		const double l = n.norm();
-		n = l > 0.0 ? Vec3(n / l) : Vec3::Zero();
-	});
+	foreach_cell(m,
+	             [&](Vertex v)
+	             {
+		             Vec3& n = normal[v];
+		             const double l = n.norm();
+		             n = l > 0.0 ? Vec3(n / l) : Vec3::Zero();
+	             });
 }
 
 } // namespace cgogn::geometry

@@ -34,7 +34,7 @@ struct PrincipalCurvatures
 /// O(sum of the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
 PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MESH>::Vertex v,
-										 const Attribute<Vec3>& pos)
+                                         const AttributeArray<Vec3>& pos)
 {
 	using Edge = typename mesh_traits<MESH>::Edge;
 	Mat3 t = Mat3::Zero();
@@ -82,16 +82,16 @@ PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MES
 /// Writes principal_curvatures of every vertex into the vertex attributes
 /// kmin, kmax, dmin, dmax. O(number of darts times the face degree).
 template <SurfaceMesh MESH>
-void compute_principal_curvatures(const MESH& m, const Attribute<Vec3>& pos, Attribute<double>& kmin,
-								  Attribute<double>& kmax, Attribute<Vec3>& dmin, Attribute<Vec3>& dmax)
+void compute_principal_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& kmin,
+                                  AttributeArray<double>& kmax, AttributeArray<Vec3>& dmin, AttributeArray<Vec3>& dmax)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	foreach_cell(m, [&](Vertex v) {
 		const PrincipalCurvatures c = principal_curvatures(m, v, pos);
-		value<double>(m, kmin, v) = c.kmin;
-		value<double>(m, kmax, v) = c.kmax;
-		value<Vec3>(m, dmin, v) = c.dmin;
-		value<Vec3>(m, dmax, v) = c.dmax;
+		kmin[v] = c.kmin;
+		kmax[v] = c.kmax;
+		dmin[v] = c.dmin;
+		dmax[v] = c.dmax;
 	});
 }
 

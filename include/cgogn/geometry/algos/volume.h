@@ -19,7 +19,7 @@ namespace detail
 {
 /// Signed volume of the cone from o over the face cycle of dart d. O(face degree).
 template <GeometricMesh MESH>
-double face_cone_volume(const MESH& m, const Attribute<Vec3>& pos, Dart d, const Vec3& o)
+double face_cone_volume(const MESH& m, const AttributeArray<Vec3>& pos, Dart d, const Vec3& o)
 {
 	Vec3 c = Vec3::Zero();
 	uint32 n = 0;
@@ -40,7 +40,7 @@ double face_cone_volume(const MESH& m, const Attribute<Vec3>& pos, Dart d, const
 /// Precondition: no boundary (otherwise the value depends on the position of
 /// the mesh). O(number of darts).
 template <SurfaceMesh MESH>
-double signed_volume(const MESH& m, const Attribute<Vec3>& pos)
+double signed_volume(const MESH& m, const AttributeArray<Vec3>& pos)
 {
 	using Face = typename mesh_traits<MESH>::Face;
 	bool first = true;
@@ -58,7 +58,7 @@ double signed_volume(const MESH& m, const Attribute<Vec3>& pos)
 /// Signed volume enclosed by one connected component w of a closed surface.
 /// O(number of darts of w).
 template <SurfaceMesh MESH>
-double volume(const MESH& m, typename mesh_traits<MESH>::Volume w, const Attribute<Vec3>& pos)
+double volume(const MESH& m, typename mesh_traits<MESH>::Volume w, const AttributeArray<Vec3>& pos)
 {
 	using Face = typename mesh_traits<MESH>::Face;
 	const Vec3 o = origin_position(m, pos, w.dart);
@@ -70,7 +70,7 @@ double volume(const MESH& m, typename mesh_traits<MESH>::Volume w, const Attribu
 /// Volume of volume w of a 3-map (any polyhedron: its faces are fanned around
 /// their vertex centroids). Positive for the cells built by build_volume
 /// (faces oriented outwards). O(number of darts of w).
-inline double volume(const CMap3& m, CMap3::Volume w, const Attribute<Vec3>& pos)
+inline double volume(const CMap3& m, CMap3::Volume w, const AttributeArray<Vec3>& pos)
 {
 	const Vec3 o = origin_position(m, pos, w.dart);
 	double v = 0.0;
@@ -81,15 +81,15 @@ inline double volume(const CMap3& m, CMap3::Volume w, const Attribute<Vec3>& pos
 
 /// Writes the volume of every volume of a 3-map into the volume attribute
 /// `out`. O(number of darts).
-inline void compute_volumes(const CMap3& m, const Attribute<Vec3>& pos, Attribute<double>& out)
+inline void compute_volumes(const CMap3& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& out)
 {
-	foreach_cell(m, [&](CMap3::Volume w) { value<double>(m, out, w) = volume(m, w, pos); });
+	foreach_cell(m, [&](CMap3::Volume w) { out[w] = volume(m, w, pos); });
 }
 
 /// Volume of the solid made by a 3-map, from its boundary surface alone (the
 /// faces between a volume and the outside). Equal to the sum of the volumes of
 /// its cells up to rounding. O(number of darts).
-inline double solid_volume(const CMap3& m, const Attribute<Vec3>& pos)
+inline double solid_volume(const CMap3& m, const AttributeArray<Vec3>& pos)
 {
 	bool first = true;
 	Vec3 o = Vec3::Zero();
@@ -111,7 +111,7 @@ inline double solid_volume(const CMap3& m, const Attribute<Vec3>& pos)
 /// Centre of mass of volume w of a 3-map (uniform density), from the same
 /// decomposition into tetrahedra as volume(). The vertex centroid when the
 /// volume is zero. O(number of darts of w).
-inline Vec3 mass_center(const CMap3& m, CMap3::Volume w, const Attribute<Vec3>& pos)
+inline Vec3 mass_center(const CMap3& m, CMap3::Volume w, const AttributeArray<Vec3>& pos)
 {
 	const Vec3 o = origin_position(m, pos, w.dart);
 	double vol = 0.0;

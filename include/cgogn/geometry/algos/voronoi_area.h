@@ -29,7 +29,7 @@ inline double mixed_voronoi_share(const Vec3& p, const Vec3& q, const Vec3& r)
 /// Share of the face of dart d given to the origin of d: the mixed Voronoi
 /// share on a triangle, area / degree on other polygons. O(face degree).
 template <SurfaceMesh MESH>
-double corner_area(const MESH& m, Dart d, const Attribute<Vec3>& pos)
+double corner_area(const MESH& m, Dart d, const AttributeArray<Vec3>& pos)
 {
 	const Dart d1 = phi1(m, d);
 	const Dart d2 = phi1(m, d1);
@@ -52,7 +52,7 @@ double corner_area(const MESH& m, Dart d, const Attribute<Vec3>& pos)
 /// the area on other incident polygons. The areas of all vertices add up to the
 /// area of the surface. O(sum of the degrees of the incident faces).
 template <SurfaceMesh MESH>
-double voronoi_area(const MESH& m, typename mesh_traits<MESH>::Vertex v, const Attribute<Vec3>& pos)
+double voronoi_area(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	double a = 0.0;
 	foreach_dart_of_orbit(m, v, [&](Dart d) {
@@ -65,10 +65,10 @@ double voronoi_area(const MESH& m, typename mesh_traits<MESH>::Vertex v, const A
 /// Writes voronoi_area of every vertex into the vertex attribute `area`.
 /// O(number of darts).
 template <SurfaceMesh MESH>
-void compute_voronoi_areas(const MESH& m, const Attribute<Vec3>& pos, Attribute<double>& area)
+void compute_voronoi_areas(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& area)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
-	foreach_cell(m, [&](Vertex v) { value<double>(m, area, v) = voronoi_area(m, v, pos); });
+	foreach_cell(m, [&](Vertex v) { area[v] = voronoi_area(m, v, pos); });
 }
 
 } // namespace cgogn::geometry

@@ -13,4 +13,14 @@ using Vec3 = Eigen::Vector3d;
 using Vec4 = Eigen::Vector4d;
 using Mat3 = Eigen::Matrix3d;
 
+/// The same types under cgogn::geometry, where code ported from CGoGN_3
+/// looks for them (geometry::Vec3).
+namespace geometry
+{
+using cgogn::Mat3;
+using cgogn::Vec2;
+using cgogn::Vec3;
+using cgogn::Vec4;
+} // namespace geometry
+
 } // namespace cgogn

@@ -129,7 +129,7 @@ struct LineReport
 template <typename TO, typename WALK, typename FUNC>
 CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const FUNC& f)
 {
-	const Attribute<uint32>* index = m.cell_index_[orbit_index(TO::ORBIT)];
+	const AttributeArray<uint32>* index = m.cell_index_[orbit_index(TO::ORBIT)];
 	if (takes_plain_cell<FUNC, TO>() || index == nullptr)
 	{
 		walk([&](Dart e) { return call_and_continue(f, TO(e)); });

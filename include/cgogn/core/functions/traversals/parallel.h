@@ -70,7 +70,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {
 	const uint32 end = m.darts_->end_index();
 	const uint32 nb_blocks = (end + 63) / 64;
-	const Attribute<uint32>& key = m.darts_->key();
+	const AttributeArray<uint32>& key = m.darts_->key();
 	if constexpr (orbit_is_cyclic(CELL::ORBIT))
 	{
 		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
@@ -158,7 +158,7 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	if constexpr (O == Orbit::DART)
 	{
 		const uint32 end = m.darts_->end_index();
-		const Attribute<uint32>& key = m.darts_->key();
+		const AttributeArray<uint32>& key = m.darts_->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = b; i < e; ++i)
@@ -170,7 +170,7 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	{
 		// split the cell container's line range: one representative dart per live line
 		const AttributeContainer& c = *m.cells_[orbit_index(O)];
-		const Attribute<uint32>& rep = c.key();
+		const AttributeArray<uint32>& rep = c.key();
 		parallel_for_chunks(c.end_index(), PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = b; i < e; ++i)
@@ -185,7 +185,7 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	{
 		// as in the sequential traversal: no mark needed
 		const uint32 end = m.darts_->end_index();
-		const Attribute<uint32>& key = m.darts_->key();
+		const AttributeArray<uint32>& key = m.darts_->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 			held_callable_t<FUNC> fc = f; // see held_callable_t
 			for (uint32 i = b; i < e; ++i)

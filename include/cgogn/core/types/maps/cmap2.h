@@ -26,7 +26,7 @@ public:
 		phi2_ = add_relation("__phi2");
 	}
 
-	Attribute<uint32>* phi2_ = nullptr;
+	AttributeArray<uint32>* phi2_ = nullptr;
 };
 
 } // namespace cgogn

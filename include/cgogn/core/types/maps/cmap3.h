@@ -30,7 +30,7 @@ public:
 		phi3_ = add_relation("__phi3");
 	}
 
-	Attribute<uint32>* phi3_ = nullptr;
+	AttributeArray<uint32>* phi3_ = nullptr;
 };
 
 } // namespace cgogn

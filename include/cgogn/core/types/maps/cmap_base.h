@@ -29,8 +29,11 @@ public:
 		phi1_ = &darts_->key();
 		relations_.push_back(phi1_);
 		boundary_ = darts_->add_persistent_mark();
-		for (auto& c : cells_)
-			c = std::make_unique<AttributeContainer>("__dart");
+		for (uint32 o = 0; o < NB_ORBITS; ++o)
+		{
+			cells_[o] = std::make_unique<AttributeContainer>("__dart");
+			cells_[o]->set_orbit(Orbit(o));
+		}
 		cell_index_.fill(nullptr);
 	}
 	CMapBase(CMapBase&&) = default;
@@ -42,11 +45,11 @@ public:
 	std::array<std::unique_ptr<AttributeContainer>, NB_ORBITS> cells_;
 	/// Per-orbit dart attribute holding each dart's cell index (nullptr while
 	/// the orbit is not indexed).
-	std::array<Attribute<uint32>*, NB_ORBITS> cell_index_;
+	std::array<AttributeArray<uint32>*, NB_ORBITS> cell_index_;
 	/// phi1 is the key of the dart container: a dart is live when its phi1 is valid.
-	Attribute<uint32>* phi1_ = nullptr;
+	AttributeArray<uint32>* phi1_ = nullptr;
 	/// phi1, phi2, ... phin in this order.
-	std::vector<Attribute<uint32>*> relations_;
+	std::vector<AttributeArray<uint32>*> relations_;
 	MarkAttribute* boundary_ = nullptr;
 	/// Number of live darts carrying the boundary mark (kept by
 	/// detail::set_boundary and remove_dart): a map without boundary answers
@@ -56,7 +59,7 @@ public:
 	IncidenceTables incidence_tables_;
 
 protected:
-	Attribute<uint32>* add_relation(const std::string& name)
+	AttributeArray<uint32>* add_relation(const std::string& name)
 	{
 		auto a = darts_->add_attribute<uint32>(name, INVALID_INDEX);
 		relations_.push_back(a.get());

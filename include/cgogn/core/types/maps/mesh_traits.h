@@ -24,7 +24,7 @@ struct mesh_traits<CMap1>
 	using Face = CMap1::Face;
 	using Cells = std::tuple<Vertex, Face>;
 	template <typename T>
-	using Attribute = cgogn::Attribute<T>;
+	using Attribute = cgogn::AttributeArray<T>;
 	using AttributeGen = AttributeBase;
 };
 
@@ -40,7 +40,7 @@ struct mesh_traits<CMap2>
 	using Volume = CMap2::Volume;
 	using Cells = std::tuple<HalfEdge, Vertex, Edge, Face, Volume>;
 	template <typename T>
-	using Attribute = cgogn::Attribute<T>;
+	using Attribute = cgogn::AttributeArray<T>;
 	using AttributeGen = AttributeBase;
 };
 
@@ -60,13 +60,14 @@ struct mesh_traits<CMap3>
 	using CC = CMap3::CC;
 	using Cells = std::tuple<HalfEdge, Vertex, Vertex2, Edge, Edge2, Face, Face2, Volume, CC>;
 	template <typename T>
-	using Attribute = cgogn::Attribute<T>;
+	using Attribute = cgogn::AttributeArray<T>;
 	using AttributeGen = AttributeBase;
 };
 
 /// A type usable as a mesh by generic algorithms: a map or a view on one.
 template <typename M>
-concept Mesh = requires {
+concept MeshType = requires
+{
 	{ mesh_traits<M>::dimension } -> std::convertible_to<uint32>;
 	typename mesh_traits<M>::Vertex;
 	typename mesh_traits<M>::MapType;
@@ -74,12 +75,12 @@ concept Mesh = requires {
 
 /// One of the combinatorial map types (not a view).
 template <typename M>
-concept MapType = std::derived_from<M, CMapBase> && Mesh<M>;
+concept MapType = std::derived_from<M, CMapBase> && MeshType<M>;
 
 template <typename M>
-concept SurfaceMesh = Mesh<M> && mesh_traits<M>::dimension == 2;
+concept SurfaceMesh = MeshType<M> && mesh_traits<M>::dimension == 2;
 template <typename M>
-concept VolumeMesh = Mesh<M> && mesh_traits<M>::dimension == 3;
+concept VolumeMesh = MeshType<M> && mesh_traits<M>::dimension == 3;
 
 /// True when CELL is one of the cell types of MESH.
 template <typename MESH, typename CELL>

@@ -21,7 +21,7 @@ namespace cgogn
 template <typename MESH>
 class CellCache
 {
-	static_assert(Mesh<MESH>, "CellCache<MESH>: MESH must be a map or a view");
+	static_assert(MeshType<MESH>, "CellCache<MESH>: MESH must be a map or a view");
 
 public:
 	using MeshViewTag = void;

@@ -19,7 +19,7 @@ namespace cgogn
 template <typename MESH>
 class CellFilter
 {
-	static_assert(Mesh<MESH>, "CellFilter<MESH>: MESH must be a map or a view");
+	static_assert(MeshType<MESH>, "CellFilter<MESH>: MESH must be a map or a view");
 
 public:
 	using MeshViewTag = void;
