@@ -109,6 +109,8 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
 	const Dart d2 = phi2(m, d);
 	if (same_orbit(m, CMap2::Face(d), CMap2::Face(d2)))
 		return false;
+	if (same_orbit(m, CMap2::Vertex(d), CMap2::Vertex(d2)))
+		return false; // a loop: nothing to contract
 	const uint32 deg1 = face_degree(m, d), deg2 = face_degree(m, d2);
 	if (deg1 < 3 || deg2 < 3)
 		return false;

@@ -216,6 +216,9 @@ TEST(OperatorContracts, BoundaryFaceOfOneEdge)
 		});
 		ASSERT_TRUE(b.is_valid());
 		ASSERT_EQ(phi1(m, b), b);
+		// its edge is a loop: it cannot be contracted
+		EXPECT_FALSE(edge_can_collapse(m, Edge(b)));
+		EXPECT_FALSE(edge_can_collapse(m, Edge(phi2(m, b))));
 		remove_face(m, Face(phi2(m, b)));
 		EXPECT_INTEGRITY(m);
 		expect_consistent_containers(m);

@@ -421,7 +421,18 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 		const W3 w = pick<W3>(m, rng);
 		if (!may_grow || !is_tetrahedron(m, w))
 			return nullptr;
-		split_tetra(m, w);
+		// four triangles that are not glued as a tetrahedron's are refused
+		// with an error, the map unchanged
+		const uint32 darts = nb_darts(m);
+		try
+		{
+			split_tetra(m, w);
+		}
+		catch (const TopologyError&)
+		{
+			EXPECT_EQ(nb_darts(m), darts);
+			return nullptr;
+		}
 		return "split_tetra";
 	}
 	case 6:

@@ -25,7 +25,8 @@ namespace cgogn
 /// whose dart goes from it to the end of e.dart. O(1).
 CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
-/// True when edge e can be contracted without breaking the manifold: the link
+/// True when edge e can be contracted without breaking the manifold: e is not
+/// a loop (its ends are distinct vertices), the link
 /// condition (the vertices adjacent to both ends are exactly the opposite
 /// vertices of the triangles incident to e, counting the outside of a
 /// boundary as a vertex), its edge part for the outside (no vertex is joined
