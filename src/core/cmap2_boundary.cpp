@@ -5,6 +5,7 @@
 #include <cgogn/core/operators/index_helpers.h>
 
 #include "cmap2_close.h"
+#include "cmap2_unlink.h"
 
 #include <algorithm>
 
@@ -17,28 +18,83 @@ constexpr Orbit V = Orbit::PHI21;
 constexpr Orbit E = Orbit::PHI2;
 constexpr Orbit W = Orbit::PHI1_PHI2;
 
-// After a sew, the vertices of d1 and d2 (one or two orbits) get lines from
-// `olds` (the lines of the vertices that came together, in preference
-// order); the lines left over are released.
-void reassign_vertex_lines(CMap2& m, Dart d1, Dart d2, std::initializer_list<uint32> olds)
+// After a sew, gives lines to the vertices of `darts` (the darts of the
+// vertices that came together, or were cut apart at a pinched vertex): the
+// vertex of d1 takes the first live line of `lines_d1`, that of d2 the first
+// of `lines_d2`, any other vertex the first unclaimed line its darts carry,
+// and vertices left without one get a new line. Lines no vertex claims are
+// released. O(number of darts).
+void reassign_vertex_lines(CMap2& m, const std::vector<Dart>& darts, Dart d1, std::initializer_list<uint32> lines_d1,
+						   Dart d2, std::initializer_list<uint32> lines_d2)
 {
-	std::vector<uint32> lines;
-	for (uint32 l : olds)
-		if (l != INVALID_INDEX && std::find(lines.begin(), lines.end(), l) == lines.end())
-			lines.push_back(l);
+	const AttributeArray<uint32>& idx = *m.cell_index_[orbit_index(V)];
 	AttributeContainer& vc = *m.cells_[orbit_index(V)];
-	const bool one = same_orbit(m, CMap2::Vertex(d1), CMap2::Vertex(d2));
-	const uint32 l1 = lines.empty() ? vc.new_line(d1.index) : lines[0];
-	detail::write_index(m, CMap2::Vertex(d1), l1);
-	uint32 l2 = l1;
-	if (!one)
-	{
-		l2 = lines.size() > 1 ? lines[1] : vc.new_line(d2.index);
-		detail::write_index(m, CMap2::Vertex(d2), l2);
-	}
-	for (uint32 l : lines)
-		if (l != l1 && l != l2)
+	std::vector<uint32> olds;
+	for (Dart x : darts)
+		if (idx[x.index] != INVALID_INDEX)
+			olds.push_back(idx[x.index]);
+	std::vector<uint32> claimed;
+	const auto is_claimed = [&](uint32 l) { return std::find(claimed.begin(), claimed.end(), l) != claimed.end(); };
+	DartMarkerStore<CMap2> done(m);
+	const auto assign = [&](Dart d, std::initializer_list<uint32> preferred) {
+		if (done.is_marked(d))
+			return;
+		done.mark_orbit(CMap2::Vertex(d));
+		uint32 line = INVALID_INDEX;
+		for (uint32 l : preferred)
+			if (line == INVALID_INDEX && l != INVALID_INDEX && !is_claimed(l))
+				line = l;
+		if (line == INVALID_INDEX)
+			foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
+				const uint32 l = idx[x.index];
+				if (l != INVALID_INDEX && !is_claimed(l))
+					line = l;
+				return line == INVALID_INDEX;
+			});
+		if (line == INVALID_INDEX)
+			line = vc.new_line(d.index);
+		claimed.push_back(line);
+		detail::write_index(m, CMap2::Vertex(d), line);
+	};
+	assign(d1, lines_d1);
+	assign(d2, lines_d2);
+	for (Dart x : darts)
+		assign(x, {});
+	std::sort(olds.begin(), olds.end());
+	olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
+	for (uint32 l : olds)
+		if (!is_claimed(l))
 			vc.release_line(l);
+}
+// After a sew, gives lines to the components of `seeds` (the first is the
+// sewn one): the first takes the first line of `olds`, the others an
+// unclaimed line of `olds` or a new one; lines left over are released.
+// O(size of the components).
+void reassign_component_lines(CMap2& m, std::initializer_list<Dart> seeds, std::initializer_list<uint32> olds)
+{
+	AttributeContainer& wc = *m.cells_[orbit_index(W)];
+	std::vector<uint32> free_olds;
+	for (uint32 l : olds)
+		if (l != INVALID_INDEX && std::find(free_olds.begin(), free_olds.end(), l) == free_olds.end())
+			free_olds.push_back(l);
+	DartMarkerStore<CMap2> done(m);
+	for (Dart s : seeds)
+	{
+		if (done.is_marked(s))
+			continue;
+		done.mark_orbit(CMap2::Volume(s));
+		uint32 line;
+		if (free_olds.empty())
+			line = wc.new_line(s.index);
+		else
+		{
+			line = free_olds.front();
+			free_olds.erase(free_olds.begin());
+		}
+		detail::write_index(m, CMap2::Volume(s), line);
+	}
+	for (uint32 l : free_olds)
+		wc.release_line(l);
 }
 } // namespace
 
@@ -104,9 +160,14 @@ uint32 close(CMap2& m, bool set_indices)
 	return n;
 }
 
+bool can_fill_hole(const CMap2& m, Dart d)
+{
+	return is_boundary(m, d) && phi<1, 1>(m, d) != d && phi1(m, d) != d;
+}
+
 CMap2::Face fill_hole(CMap2& m, Dart d, bool set_indices)
 {
-	assert(is_boundary(m, d));
+	assert(can_fill_hole(m, d));
 	foreach_dart_of_orbit(m, CMap2::Face(d), [&](Dart x) { detail::set_boundary(m, x, false); });
 	if (set_indices)
 		detail::index_new_cell(m, CMap2::Face(d));
@@ -129,19 +190,22 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 	const uint32 a1 = detail::index_or_invalid<V>(m, d1), a2 = detail::index_or_invalid<V>(m, b2);
 	const uint32 c1 = detail::index_or_invalid<V>(m, b1), c2 = detail::index_or_invalid<V>(m, d2);
 	const uint32 w1 = detail::index_or_invalid<W>(m, d1), w2 = detail::index_or_invalid<W>(m, d2);
-	// take b1 and b2 out of their boundary cycles
-	const Dart p1 = phi_1(m, b1), n1 = phi1(m, b1), p2 = phi_1(m, b2), n2 = phi1(m, b2);
-	if (n1 == b2 && n2 == b1)
-		; // the two darts were the whole boundary face
-	else if (n1 == b2)
-		detail::set_phi1(m, p1, n2);
-	else if (n2 == b1)
-		detail::set_phi1(m, p2, n1);
-	else
-	{
-		detail::set_phi1(m, p1, n2);
-		detail::set_phi1(m, p2, n1);
-	}
+	// the darts of the four end vertices: at a pinched vertex, the sew can
+	// split a vertex as well as merge two
+	const bool vertices_indexed = set_indices && m.cell_index_[orbit_index(V)] != nullptr;
+	std::vector<Dart> around;
+	if (vertices_indexed)
+		for (Dart d : {d1, d2, b1, b2})
+			foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
+				if (x != b1 && x != b2)
+					around.push_back(x);
+			});
+	// the boundary darts that followed b1 and b2: a component held together
+	// only by the boundary face through a pinched vertex falls apart when the
+	// sew takes b1 or b2 out of it, and these darts are in the parts
+	const Dart next1 = phi1(m, b1) == b1 || phi1(m, b1) == b2 ? d1 : phi1(m, b1);
+	const Dart next2 = phi1(m, b2) == b2 || phi1(m, b2) == b1 ? d1 : phi1(m, b2);
+	detail::unlink_from_faces(m, b1, b2);
 	if (set_indices)
 		detail::release_index<E>(m, detail::index_or_invalid<E>(m, d2));
 	detail::remove_dart(m, b1);
@@ -152,16 +216,24 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 	{
 		detail::copy_dart_index<E>(m, d2, d1);
 		detail::set_representative<E>(m, d1);
-		if (m.cell_index_[orbit_index(V)] != nullptr)
-			reassign_vertex_lines(m, d1, d2, {a1, a2, c1, c2});
-		if (w1 != w2 && m.cell_index_[orbit_index(W)] != nullptr)
-			detail::merge_cell_indices(m, CMap2::Volume(d1), w1, w2);
+		if (vertices_indexed)
+			reassign_vertex_lines(m, around, d1, {a1, a2}, d2, {c1, c2});
+		if (m.cell_index_[orbit_index(W)] != nullptr)
+			reassign_component_lines(m, {d1, next1, next2}, {w1, w2});
 	}
+}
+
+bool can_unsew_faces(const CMap2& m, CMap2::Edge e)
+{
+	if (is_incident_to_boundary(m, e))
+		return false;
+	const CMap2::Vertex a(e.dart), b(phi2(m, e.dart));
+	return !(is_incident_to_boundary(m, a) && same_orbit(m, a, b));
 }
 
 void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices)
 {
-	assert(!is_incident_to_boundary(m, e));
+	assert(can_unsew_faces(m, e));
 	const Dart d = e.dart;    // a -> b
 	const Dart d2 = phi2(m, d); // b -> a
 	// the boundary darts leaving a and b, if those vertices are on the boundary

@@ -109,6 +109,8 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
 	const Dart d2 = phi2(m, d);
 	if (same_orbit(m, CMap2::Face(d), CMap2::Face(d2)))
 		return false;
+	if (same_orbit(m, CMap2::Vertex(d), CMap2::Vertex(d2)))
+		return false; // a loop: nothing to contract
 	const uint32 deg1 = face_degree(m, d), deg2 = face_degree(m, d2);
 	if (deg1 < 3 || deg2 < 3)
 		return false;
@@ -121,6 +123,27 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
 	const bool b_boundary = is_incident_to_boundary(m, CMap2::Vertex(d2));
 	if (a_boundary && b_boundary && !is_boundary(m, d) && !is_boundary(m, d2))
 		return false; // would pinch two boundary parts together
+	if (a_boundary && b_boundary)
+	{
+		// the edge part of the link condition, with the outside as a vertex: a
+		// vertex c joined to a and to b by boundary edges puts the edge
+		// (c, outside) in the links of both ends, never in the link of e (a
+		// set of vertices): the collapse would glue two boundary edges into an
+		// edge with the boundary on both sides
+		const auto on_boundary = [&](Dart x) { return is_boundary(m, x) || is_boundary(m, phi2(m, x)); };
+		DartMarkerStore<CMap2> ends_from_a(m);
+		foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
+			if (x != d && on_boundary(x))
+				ends_from_a.mark_orbit(CMap2::Vertex(phi2(m, x)));
+		});
+		bool shared = false;
+		foreach_dart_of_orbit(m, CMap2::Vertex(d2), [&](Dart y) {
+			shared = y != d2 && on_boundary(y) && ends_from_a.is_marked(phi2(m, y));
+			return !shared;
+		});
+		if (shared)
+			return false;
+	}
 	// neighbours of a, marked; every neighbour of b among them must be opposite
 	DartMarkerStore<CMap2> around_a(m);
 	foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
@@ -279,10 +302,12 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 	return CMap2::Vertex(keep);
 }
 
-bool edge_can_flip(const CMap2& m, CMap2::Edge e)
+namespace
 {
-	const Dart d = e.dart;
-	const Dart d2 = phi2(m, d);
+// The conditions shared by both directions of a flip: both sides are distinct
+// non-boundary faces of at least 3 edges and both end vertices have degree >= 3.
+bool flip_sides_allowed(const CMap2& m, Dart d, Dart d2)
+{
 	if (is_boundary(m, d) || is_boundary(m, d2))
 		return false;
 	// faces of at least 3 edges (phi1(phi1(x)) == x for 1 or 2 edges), distinct
@@ -290,12 +315,31 @@ bool edge_can_flip(const CMap2& m, CMap2::Edge e)
 	if (phi1(m, d1) == d || phi1(m, e1) == d2 || same_orbit(m, CMap2::Face(d), CMap2::Face(d2)))
 		return false;
 	// end vertices of degree >= 3: the vertex of d is (d, e1, phi<2, 1>(e1), ...)
-	if (e1 == d || phi<2, 1>(m, e1) == d || d1 == d2 || phi<2, 1>(m, d1) == d2)
+	return !(e1 == d || phi<2, 1>(m, e1) == d || d1 == d2 || phi<2, 1>(m, d1) == d2);
+}
+} // namespace
+
+bool edge_can_flip(const CMap2& m, CMap2::Edge e)
+{
+	const Dart d = e.dart;
+	const Dart d2 = phi2(m, d);
+	if (!flip_sides_allowed(m, d, d2))
 		return false;
 	// the new edge joins the end of phi1(d2) and the end of phi1(d): they must
 	// be distinct and not adjacent already (the one walk around a vertex that
 	// Surface_mesh's is_flip_topologically_allowed also makes)
-	return !adjacent_or_same(m, CMap2::Vertex(phi1(m, d1)), CMap2::Vertex(phi1(m, e1)));
+	return !adjacent_or_same(m, CMap2::Vertex(phi<1, 1>(m, d)), CMap2::Vertex(phi<1, 1>(m, d2)));
+}
+
+bool edge_can_flip_back(const CMap2& m, CMap2::Edge e)
+{
+	const Dart d = e.dart;
+	const Dart d2 = phi2(m, d);
+	if (!flip_sides_allowed(m, d, d2))
+		return false;
+	// the new edge joins the origins of phi_1(d) and phi_1(d2), which differ
+	// from the forward flip's ends unless both faces are triangles
+	return !adjacent_or_same(m, CMap2::Vertex(phi_1(m, d)), CMap2::Vertex(phi_1(m, d2)));
 }
 
 namespace
@@ -337,7 +381,7 @@ void flip_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 
 void flip_back_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 {
-	assert(edge_can_flip(m, e));
+	assert(edge_can_flip_back(m, e));
 	const Dart d = e.dart, d2 = phi2(m, d);
 	const Dart d1 = phi1(m, d), dp = phi_1(m, d), dpp = phi_1(m, dp);
 	const Dart e1 = phi1(m, d2), ep = phi_1(m, d2), epp = phi_1(m, ep);

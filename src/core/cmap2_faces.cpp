@@ -6,6 +6,8 @@
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/index_helpers.h>
 
+#include "cmap2_unlink.h"
+
 #include <algorithm>
 
 namespace cgogn
@@ -33,6 +35,10 @@ std::pair<Dart, Dart> insert_edge_before(CMap2& m, Dart dx, Dart dy)
 	detail::set_boundary(m, x, is_boundary(m, dx));
 	detail::set_boundary(m, y, is_boundary(m, dy));
 	return {x, y};
+}
+uint32 face_degree(const CMap2& m, Dart d)
+{
+	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d));
 }
 } // namespace
 
@@ -112,14 +118,18 @@ bool can_merge_incident_faces(const CMap2& m, CMap2::Vertex v)
 		return false;
 	DartMarkerStore<CMap2> faces(m);
 	bool ok = true;
+	// the merged face keeps the edges of the faces that are not v's: each face
+	// gives its degree minus the two edges at v
+	uint32 merged_degree = 0;
 	foreach_dart_of_orbit(m, v, [&](Dart d) {
 		// distinct faces, none reduced to 2 edges
 		if (faces.is_marked(d) || phi1(m, phi1(m, d)) == d)
 			return ok = false;
 		faces.mark_orbit(CMap2::Face(d));
+		merged_degree += face_degree(m, d) - 2;
 		return true;
 	});
-	return ok;
+	return ok && merged_degree >= 3;
 }
 
 CMap2::Face merge_incident_faces(CMap2& m, CMap2::Vertex v, bool set_indices)
@@ -167,9 +177,14 @@ bool can_merge_incident_edges(const CMap2& m, CMap2::Vertex v)
 	const Dart y = phi1(m, phi2(m, x));
 	if (phi1(m, phi2(m, y)) != x || x == y)
 		return false; // degree != 2
-	// the two edges must be distinct and both faces keep at least 3 edges
-	auto at_least_4 = [&](Dart d) { return phi<1, 1, 1>(m, d) != d && phi<1, 1>(m, d) != d && phi1(m, d) != d; };
-	return !same_orbit(m, CMap2::Edge(x), CMap2::Edge(y)) && at_least_4(x) && at_least_4(y);
+	// the two edges must be distinct and both faces keep at least 3 edges: x
+	// and y leave their faces, both the same one when v is on a path that
+	// dangles inside a face (which then loses 2 edges)
+	if (same_orbit(m, CMap2::Edge(x), CMap2::Edge(y)))
+		return false;
+	if (same_orbit(m, CMap2::Face(x), CMap2::Face(y)))
+		return face_degree(m, x) >= 5;
+	return face_degree(m, x) >= 4 && face_degree(m, y) >= 4;
 }
 
 CMap2::Edge merge_incident_edges(CMap2& m, CMap2::Vertex v, bool set_indices)
@@ -199,9 +214,15 @@ CMap2::Edge merge_incident_edges(CMap2& m, CMap2::Vertex v, bool set_indices)
 	return CMap2::Edge(d);
 }
 
+bool can_split_vertex(const CMap2& m, Dart d1, Dart d2)
+{
+	return d1 != d2 && !(is_boundary(m, d1) && is_boundary(m, d2)) &&
+		   same_orbit(m, CMap2::Vertex(d1), CMap2::Vertex(d2));
+}
+
 CMap2::Edge split_vertex(CMap2& m, Dart d1, Dart d2, bool set_indices)
 {
-	assert(d1 != d2 && same_orbit(m, CMap2::Vertex(d1), CMap2::Vertex(d2)));
+	assert(can_split_vertex(m, d1, d2));
 	// x: old vertex -> new vertex, before d1; y: new -> old, before d2
 	auto [x, y] = insert_edge_before(m, d1, d2);
 	if (set_indices)
@@ -286,69 +307,111 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 		detail::set_boundary(m, d, true);
 		detail::set_dart_index<F>(m, d, INVALID_INDEX);
 	}
-	// edges between two boundary darts disappear: their boundary faces merge
+	// edges between two boundary darts disappear: their boundary faces merge.
+	// Both darts of an edge can be darts of f (a dangling edge inside it): the
+	// edge is removed once.
+	DartMarkerStore<CMap2> removed_mark(m);
 	std::vector<Dart> removed;
 	for (Dart d : darts)
 	{
 		const Dart d2 = phi2(m, d);
-		if (!is_boundary(m, d2))
+		if (removed_mark.is_marked(d) || !is_boundary(m, d2))
 			continue;
 		if (set_indices)
 			detail::release_index<E>(m, detail::index_or_invalid<E>(m, d));
-		const Dart pd = phi_1(m, d), pd2 = phi_1(m, d2);
-		const Dart nd = phi1(m, d), nd2 = phi1(m, d2);
-		if (nd == d2) // d then d2: a dangling edge end
-			detail::set_phi1(m, pd, nd2);
-		else if (nd2 == d)
-			detail::set_phi1(m, pd2, nd);
-		else
-		{
-			detail::set_phi1(m, pd, nd2);
-			detail::set_phi1(m, pd2, nd);
-		}
-		detail::set_phi1(m, d, d);
-		detail::set_phi1(m, d2, d2);
+		detail::unlink_from_faces(m, d, d2);
+		removed_mark.mark(d);
+		removed_mark.mark(d2);
 		removed.push_back(d);
 		removed.push_back(d2);
 	}
-	auto is_removed = [&](Dart x) { return std::find(removed.begin(), removed.end(), x) != removed.end(); };
-	Dart survivor;
-	for (std::size_t i = 0; i < darts.size(); ++i)
-	{
-		auto it = std::find_if(vertex_darts[i].begin(), vertex_darts[i].end(), [&](Dart x) { return !is_removed(x); });
-		if (it == vertex_darts[i].end())
-		{
-			if (set_indices)
-				detail::release_index<V>(m, detail::index_or_invalid<V>(m, darts[i]));
-		}
-		else
-		{
-			if (set_indices)
-				detail::set_representative<V>(m, *it);
-			survivor = *it;
-		}
-	}
+	auto is_removed = [&](Dart x) { return removed_mark.is_marked(x); };
 	if (set_indices)
 		for (Dart d : darts)
 			if (!is_removed(d))
 				detail::set_representative<E>(m, d);
 	const uint32 w = detail::index_or_invalid<W>(m, f.dart);
+	// the vertex lines of f, and the surviving darts around its vertices
+	std::vector<uint32> vertex_lines;
+	std::vector<Dart> survivors;
+	for (std::size_t i = 0; i < darts.size(); ++i)
+	{
+		vertex_lines.push_back(detail::index_or_invalid<V>(m, darts[i]));
+		for (Dart x : vertex_darts[i])
+			if (!is_removed(x))
+				survivors.push_back(x);
+	}
 	for (Dart d : removed)
 		detail::remove_dart(m, d);
-	if (!survivor.is_valid())
-	{
-		// nothing left of the component but boundary: remove it
-		if (set_indices)
-			detail::release_index<W>(m, w);
-		return;
-	}
 	if (set_indices)
-		detail::set_representative<W>(m, survivor);
-	// a component left with boundary darts only is removed entirely
-	bool real = false;
-	foreach_dart_of_orbit(m, CMap2::Volume(survivor), [&](Dart x) { return !(real = !is_boundary(m, x)); });
-	if (!real)
-		remove_volume(m, CMap2::Volume(survivor));
+	{
+		// a vertex met twice along f (a pinched vertex, the end of a dangling
+		// edge) can come apart: each part claims the line its darts carry, a
+		// second part of the same line gets a new one; lines of vertices left
+		// without darts are released once
+		std::vector<uint32> claimed;
+		const auto is_claimed = [&](uint32 l) { return std::find(claimed.begin(), claimed.end(), l) != claimed.end(); };
+		if (m.cell_index_[orbit_index(V)] != nullptr)
+		{
+			DartMarkerStore<CMap2> done(m);
+			for (Dart x : survivors)
+			{
+				if (done.is_marked(x))
+					continue;
+				done.mark_orbit(CMap2::Vertex(x));
+				const uint32 l = detail::index_or_invalid<V>(m, x);
+				if (l != INVALID_INDEX && !is_claimed(l))
+				{
+					claimed.push_back(l);
+					detail::set_representative<V>(m, x);
+				}
+				else
+					detail::new_index(m, CMap2::Vertex(x));
+			}
+			std::sort(vertex_lines.begin(), vertex_lines.end());
+			vertex_lines.erase(std::unique(vertex_lines.begin(), vertex_lines.end()), vertex_lines.end());
+			for (uint32 l : vertex_lines)
+				if (l != INVALID_INDEX && !is_claimed(l))
+					detail::release_index<V>(m, l);
+		}
+	}
+	// the component can come apart the same way: the first part keeps its
+	// line, the others get new ones; a part left with boundary darts only is
+	// removed
+	bool w_claimed = false;
+	DartMarkerStore<CMap2> done(m);
+	std::vector<Dart> boundary_only;
+	for (Dart x : survivors)
+	{
+		if (done.is_marked(x))
+			continue;
+		done.mark_orbit(CMap2::Volume(x));
+		bool real = false;
+		foreach_dart_of_orbit(m, CMap2::Volume(x), [&](Dart y) { return !(real = !is_boundary(m, y)); });
+		if (!real)
+		{
+			boundary_only.push_back(x);
+			continue;
+		}
+		if (!set_indices || m.cell_index_[orbit_index(W)] == nullptr)
+			continue;
+		if (!w_claimed && w != INVALID_INDEX)
+		{
+			w_claimed = true; // its darts carry w already
+			detail::set_representative<W>(m, x);
+		}
+		else
+			detail::new_index(m, CMap2::Volume(x));
+	}
+	if (set_indices && !w_claimed)
+		detail::release_index<W>(m, w);
+	for (Dart x : boundary_only)
+	{
+		// its component line is released above (or belongs to another part)
+		if (set_indices)
+			foreach_dart_of_orbit(m, CMap2::Volume(x), [&](Dart y) { detail::set_dart_index<W>(m, y, INVALID_INDEX); });
+		remove_volume(m, CMap2::Volume(x));
+	}
 }
 
 } // namespace cgogn

@@ -132,6 +132,18 @@ void reverse_orientation(CMap2& m)
 
 std::vector<Dart> merge(CMap2& m, const CMap2& other)
 {
+	// an orbit indexed in other but not in m: m's cells get lines first, so
+	// that once the orbit is indexed every cell of m has one
+	[&]<typename... C>(std::tuple<C...>*) {
+		(
+			[&] {
+				if constexpr (C::ORBIT != Orbit::DART)
+					if (other.cell_index_[orbit_index(C::ORBIT)] != nullptr &&
+						m.cell_index_[orbit_index(C::ORBIT)] == nullptr)
+						index_cells<C>(m);
+			}(),
+			...);
+	}(static_cast<mesh_traits<CMap2>::Cells*>(nullptr));
 	std::vector<Dart> copy(other.darts_->end_index());
 	foreach_dart(other, [&](Dart d) { copy[d.index] = detail::add_dart(m); });
 	foreach_dart(other, [&](Dart d) {

@@ -239,11 +239,26 @@ std::vector<Dart> Cavity::fill(std::vector<std::array<uint32, 4>> tets, bool set
 	// 6. indices: vertices of new darts take their label's line, then the region claims its lines
 	if (set_indices)
 	{
-		if (AttributeArray<uint32>* vidx = m.cell_index_[orbit_index(Orbit::PHI21_PHI31)])
-			for (Dart d : created)
-				(*vidx)[d.index] = line_[find(origin[d.index])];
 		std::vector<Dart> region = created;
 		region.insert(region.end(), outer_darts.begin(), outer_darts.end());
+		if (AttributeArray<uint32>* vidx = m.cell_index_[orbit_index(Orbit::PHI21_PHI31)])
+		{
+			for (Dart d : created)
+				(*vidx)[d.index] = line_[find(origin[d.index])];
+			// a vertex whose labels merged keeps the line of the label kept: the
+			// reindexer would take whichever line it met first, the removed
+			// vertex's when no new dart reaches the survivor (all the removed
+			// end's tets surrounded the collapsed edge)
+			for (Dart d : outer_darts)
+			{
+				const auto it = labels_.find(d.index);
+				if (it == labels_.end())
+					continue;
+				const uint32 l = line_[find(it->second)];
+				if (l != INVALID_INDEX && (*vidx)[d.index] != l)
+					write_index(m, CMap3::Vertex(d), l);
+			}
+		}
 		reindexer.apply(m, region);
 	}
 	return firsts;

@@ -210,10 +210,24 @@ void remove_volume(CMap3& m, CMap3::Volume w, bool set_indices)
 		std::vector<Dart> xs = face_darts(m, d), ys;
 		for (Dart x : xs)
 			ys.push_back(phi3(m, x));
+		// the dart met across the vanishing face from z: the face can be glued
+		// to itself along an edge (folded), the walk then goes on through it
+		const auto across = [&](Dart z) {
+			for (std::size_t k = 0; k <= 2 * xs.size(); ++k)
+			{
+				if (const auto ix = std::find(xs.begin(), xs.end(), z); ix != xs.end())
+					z = phi2(m, ys[std::size_t(ix - xs.begin())]);
+				else if (const auto iy = std::find(ys.begin(), ys.end(), z); iy != ys.end())
+					z = phi2(m, xs[std::size_t(iy - ys.begin())]);
+				else
+					return z;
+			}
+			return Dart(); // the face and its folds are the whole surface there
+		};
 		for (std::size_t i = 0; i < xs.size(); ++i)
 		{
-			const Dart nx = phi2(m, xs[i]), ny = phi2(m, ys[i]);
-			if (contains(xs, nx) || contains(ys, nx))
+			const Dart nx = across(phi2(m, xs[i])), ny = across(phi2(m, ys[i]));
+			if (!nx.is_valid() || !ny.is_valid())
 				continue;
 			detail::set_phi2(m, nx, ny);
 			detail::set_phi2(m, ny, nx);
@@ -349,7 +363,18 @@ CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices
 bool can_merge_incident_volumes(const CMap3& m, CMap3::Face f)
 {
 	const Dart d = f.dart, d3 = phi3(m, d);
-	return !is_boundary(m, d) && !is_boundary(m, d3) && !same_orbit(m, CMap3::Volume(d), CMap3::Volume(d3));
+	if (is_boundary(m, d) || is_boundary(m, d3) || same_orbit(m, CMap3::Volume(d), CMap3::Volume(d3)))
+		return false;
+	// a face glued to itself along an edge (phi2 inside the face) would leave
+	// that edge without faces: its darts vanish with the face
+	const auto folded = [&](Dart x) {
+		bool fold = false;
+		foreach_dart_of_orbit(m, CMap3::Face2(x), [&](Dart y) {
+			return !(fold = same_orbit(m, CMap3::Face2(phi2(m, y)), CMap3::Face2(x)));
+		});
+		return fold;
+	};
+	return !folded(d) && !folded(d3);
 }
 
 CMap3::Volume merge_incident_volumes(CMap3& m, CMap3::Face f, bool set_indices)

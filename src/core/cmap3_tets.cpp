@@ -7,6 +7,7 @@
 #include "cmap3_cavity.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -67,6 +68,52 @@ Tet corners(const CMap3& m, Dart w, VertexLabels& label)
 {
 	return {label(w), label(phi1(m, w)), label(phi_1(m, w)), label(phi_1(m, phi2(m, w)))};
 }
+
+// True when the link of a vertex (one triangle per incident tet, given by the
+// labels of its three other corners) is a sphere (an interior vertex) or a
+// disk (a boundary vertex): its star is a ball or a half-ball. A pinched
+// vertex (left by unsew_volumes or remove_volume) has a link of several
+// pieces, or a disk pinched at a vertex; a collapse there cannot rebuild the
+// faces around it (phi3 would keep fixed points).
+bool link_is_sphere_or_disk(const std::vector<std::array<uint32, 3>>& triangles)
+{
+	std::map<std::pair<uint32, uint32>, uint32> edge_count;
+	std::map<uint32, uint32> parent; // union-find over the link's vertices
+	const auto root = [&](uint32 x) {
+		while (parent[x] != x)
+			x = parent[x] = parent[parent[x]];
+		return x;
+	};
+	for (const auto& t : triangles)
+		for (uint32 x : t)
+			parent.emplace(x, x);
+	for (const auto& t : triangles)
+		for (int k = 0; k < 3; ++k)
+		{
+			const uint32 x = t[k], y = t[(k + 1) % 3];
+			++edge_count[{std::min(x, y), std::max(x, y)}];
+			parent[root(x)] = root(y);
+		}
+	std::map<uint32, uint32> boundary_degree;
+	for (const auto& [edge, count] : edge_count)
+	{
+		if (count > 2)
+			return false;
+		if (count == 1)
+		{
+			++boundary_degree[edge.first];
+			++boundary_degree[edge.second];
+		}
+	}
+	for (const auto& [x, deg] : boundary_degree)
+		if (deg != 2)
+			return false; // the link's boundary is pinched at x
+	uint32 components = 0;
+	for (const auto& [x, p] : parent)
+		components += root(x) == x;
+	const int64 chi = int64(parent.size()) - int64(edge_count.size()) + int64(triangles.size());
+	return components == 1 && chi == (boundary_degree.empty() ? 2 : 1);
+}
 } // namespace
 
 bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
@@ -82,8 +129,10 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 	std::set<std::array<uint32, 3>> ta, tb;
 	auto pair_of = [](uint32 x, uint32 y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
 	bool tets_only = true;
+	std::vector<std::array<uint32, 3>> link_triangles; // of the last vertex given to link()
 	auto link = [&](Vertex v, uint32 lv, std::set<uint32>& vs, std::set<std::pair<uint32, uint32>>& es,
 					std::set<std::array<uint32, 3>>& ts) {
+		link_triangles.clear();
 		for (Dart w : volumes_around(m, v))
 		{
 			if (!is_tetra(m, w))
@@ -102,6 +151,7 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 			es.insert({others[1], others[2]});
 			es.insert({others[0], others[2]});
 			ts.insert({others[0], others[1], others[2]});
+			link_triangles.push_back({others[0], others[1], others[2]});
 			if (lv == la && std::find(t.begin(), t.end(), lb) != t.end())
 			{
 				std::vector<uint32> cd;
@@ -114,8 +164,10 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 		}
 	};
 	link(a, la, va, ea, ta);
+	if (!tets_only || !link_is_sphere_or_disk(link_triangles))
+		return false;
 	link(b, lb, vb, eb, tb);
-	if (!tets_only)
+	if (!tets_only || !link_is_sphere_or_disk(link_triangles))
 		return false;
 	for (uint32 c : va)
 		if (c != lb && vb.count(c) && !vab.count(c))

@@ -38,9 +38,32 @@ using Kind = IntegrityError::Kind;
 
 void check_container_free_list(const AttributeContainer& c, Orbit o, Checker& ck)
 {
+	std::vector<uint8> listed(c.end_index(), 0);
 	for (uint32 i : c.free_lines())
+	{
 		if (c.key()[i] != INVALID_INDEX)
 			ck.add(Kind::FreeLineLive, o, INVALID_INDEX, i, "a line of the free list is live");
+		if (i < listed.size() && listed[i]++ == 1)
+			ck.add(Kind::FreeLineDuplicate, o, INVALID_INDEX, i,
+				   "a line is twice in the free list: it would be handed out twice");
+	}
+}
+
+// Lines allocated past end_index() are handed out by new_line as they are:
+// they must hold the default values (no key, no relation, no index), or new
+// cells and darts would start with a deleted one's.
+void check_unused_lines(const AttributeContainer& c, Orbit o, const std::vector<const AttributeArray<uint32>*>& attributes,
+						Checker& ck)
+{
+	for (uint32 i = c.end_index(); i < c.capacity(); ++i)
+		for (const AttributeArray<uint32>* a : attributes)
+			if ((*a)[i] != INVALID_INDEX)
+			{
+				ck.add(Kind::StaleUnusedLine, o, INVALID_INDEX, i,
+					   "an unused line past the end holds the value of attribute " + a->name() +
+						   " of a deleted element");
+				break;
+			}
 }
 
 template <typename MAP>
@@ -48,6 +71,15 @@ void check_relations(const MAP& m, Checker& ck)
 {
 	const AttributeContainer& darts = *m.darts_;
 	check_container_free_list(darts, Orbit::DART, ck);
+	{
+		std::vector<const AttributeArray<uint32>*> per_dart(m.relations_.begin(), m.relations_.end());
+		for (const AttributeArray<uint32>* idx : m.cell_index_)
+			if (idx != nullptr)
+				per_dart.push_back(idx);
+		check_unused_lines(darts, Orbit::DART, per_dart, ck);
+		for (uint32 o = 0; o < NB_ORBITS; ++o)
+			check_unused_lines(*m.cells_[o], Orbit(o), {&m.cells_[o]->key()}, ck);
+	}
 	std::vector<uint8> phi1_preimages(darts.end_index(), 0);
 	bool relations_ok = true;
 	foreach_dart(m, [&](Dart d) {
@@ -109,6 +141,12 @@ void check_relations(const MAP& m, Checker& ck)
 			if (!constant)
 				ck.add(Kind::BoundaryMarkNotConstant, Orbit::DART, d.index, INVALID_INDEX,
 					   "the boundary mark is not constant on a boundary cell");
+		});
+		// faces of 1 or 2 edges: no operator makes them (boundary faces may
+		// have them: a hole of 1 or 2 edges)
+		foreach_dart(m, [&](Dart d) {
+			if (!is_boundary(m, d) && phi1(m, phi1(m, d)) == d)
+				ck.add(Kind::ShortFace, Orbit::PHI1, d.index, INVALID_INDEX, "a face has fewer than 3 edges");
 		});
 		if (marked != m.nb_boundary_darts_)
 			ck.add(Kind::BoundaryCountWrong, Orbit::DART, INVALID_INDEX, INVALID_INDEX,

@@ -95,3 +95,11 @@ Counts counts(const MAP& m)
 		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                              \
 		EXPECT_TRUE(r_.ok()) << r_.to_string();                                                                        \
 	} while (0)
+
+/// check_integrity(m) is clean, or the test stops with the report.
+#define ASSERT_INTEGRITY(m)                                                                                          \
+	do                                                                                                                 \
+	{                                                                                                                  \
+		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                              \
+		ASSERT_TRUE(r_.ok()) << r_.to_string();                                                                        \
+	} while (0)

@@ -224,3 +224,75 @@ TEST(Integrity, ReportCountsBeyondTheDescribedOnes)
 	EXPECT_EQ(r.errors.size(), 1000u);
 	EXPECT_NE(r.to_string().find("more"), std::string::npos);
 }
+
+TEST(Integrity, FreeListDuplicate)
+{
+	CMap2 m = indexed_grid();
+	AttributeContainer& faces = *m.cells_[orbit_index(Orbit::PHI1)];
+	const Dart d = inner_dart(m);
+	// a face released twice: its line is twice in the free list
+	const uint32 line = index_attr(m, Orbit::PHI1)[d.index];
+	faces.release_line(line);
+	faces.release_unkeyed_line(line);
+	const IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.has(Kind::FreeLineDuplicate)) << r.to_string();
+}
+
+TEST(Integrity, LiveLineOnTheFreeList)
+{
+	CMap2 m = indexed_grid();
+	AttributeContainer& faces = *m.cells_[orbit_index(Orbit::PHI1)];
+	const Dart d = inner_dart(m);
+	const uint32 line = index_attr(m, Orbit::PHI1)[d.index];
+	faces.release_line(line);
+	faces.key()[line] = d.index; // live again, still listed as free
+	EXPECT_TRUE(check_integrity(m).has(Kind::FreeLineLive));
+}
+
+TEST(Integrity, StaleValuesPastTheEnd)
+{
+	{
+		// a dart line never handed out that holds an index
+		CMap2 m = indexed_grid();
+		ASSERT_LT(m.darts_->end_index(), m.darts_->capacity());
+		index_attr(m, Orbit::PHI2)[m.darts_->end_index()] = 0;
+		const IntegrityReport r = check_integrity(m);
+		EXPECT_TRUE(r.has(Kind::StaleUnusedLine)) << r.to_string();
+	}
+	{
+		// a cell line never handed out that holds a representative
+		CMap2 m = indexed_grid();
+		AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21)];
+		ASSERT_LT(vertices.end_index(), vertices.capacity());
+		vertices.key()[vertices.end_index()] = 0;
+		EXPECT_TRUE(check_integrity(m).has(Kind::StaleUnusedLine));
+	}
+	{
+		// compaction leaves none
+		CMap2 m = indexed_grid();
+		remove_face(m, CMap2::Face(inner_dart(m)));
+		compact(m);
+		const IntegrityReport r = check_integrity(m);
+		EXPECT_TRUE(r.ok()) << r.to_string();
+	}
+}
+
+TEST(Integrity, FacesOfOneOrTwoEdges)
+{
+	{
+		CMap2 m;
+		add_face(m, 2);
+		EXPECT_TRUE(check_integrity(m).has(Kind::ShortFace));
+	}
+	{
+		CMap2 m;
+		add_face(m, 1);
+		EXPECT_TRUE(check_integrity(m).has(Kind::ShortFace));
+	}
+	{
+		// a triangle and its boundary face are fine
+		CMap2 m;
+		add_face(m, 3);
+		EXPECT_TRUE(check_integrity(m).ok());
+	}
+}

@@ -277,10 +277,24 @@ TEST(Operators2, CloseAndFillHoles)
 			b = d;
 	});
 	const Counts before = counts(m);
-	Face f = fill_hole(m, b);
-	EXPECT_EQ(codegree(m, f), 2u);
-	EXPECT_EQ(counts(m), (Counts{before.v, before.e, before.f + 1, 1}));
+	// a hole of 2 edges would become a face of 2 edges: sewing closes it
+	EXPECT_FALSE(can_fill_hole(m, b));
+	ASSERT_TRUE(can_sew_faces(m, Edge(phi2(m, b)), Edge(phi2(m, phi1(m, b)))));
+	sew_faces(m, Edge(phi2(m, b)), Edge(phi2(m, phi1(m, b))));
+	EXPECT_EQ(counts(m), (Counts{before.v, before.e - 1, before.f, 1}));
 	EXPECT_EQ(nb_boundary_components(m), 0u);
+	EXPECT_INTEGRITY(m);
+	// a hole of 3 edges is filled
+	remove_face(m, all<Face>(m)[0]);
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			b = d;
+	});
+	ASSERT_TRUE(can_fill_hole(m, b));
+	const Counts open = counts(m);
+	const Face f = fill_hole(m, b);
+	EXPECT_EQ(codegree(m, f), 4u);
+	EXPECT_EQ(counts(m), (Counts{open.v, open.e, open.f + 1, 1}));
 	EXPECT_INTEGRITY(m);
 }
 
@@ -459,7 +473,7 @@ void random_editing(CMap2& m, uint32 steps, uint32 seed)
 		}
 		case 8: {
 			Edge e = pick(edges);
-			if ((done = edge_can_flip(m, e)))
+			if ((done = edge_can_flip_back(m, e)))
 				flip_back_edge(m, e);
 			break;
 		}

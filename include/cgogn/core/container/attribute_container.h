@@ -185,6 +185,12 @@ public:
 	{
 		return size_ - uint32(free_lines_.size());
 	}
+	/// Number of lines allocated (whole chunks): lines in [end_index(),
+	/// capacity()) hold their attributes' default values.
+	uint32 capacity() const
+	{
+		return nb_chunks_ * CHUNK_SIZE;
+	}
 	/// One past the highest line ever used: iterate [0, end_index()) and skip
 	/// the lines that are not live.
 	uint32 end_index() const
@@ -323,8 +329,18 @@ public:
 			m->swap_lines(a, b);
 	}
 	/// After lines were moved so that the live ones are [0, n): forget the rest.
+	/// The lines past n that stay allocated (in the last chunk) get their
+	/// default values back, as new_line hands lines at the end out as they are.
 	void truncate(uint32 n)
 	{
+		const uint32 allocated_end = std::min(size_, nb_chunks_ * CHUNK_SIZE);
+		for (uint32 i = n; i < allocated_end; ++i)
+		{
+			for (auto& a : attributes_)
+				a->reset_line(i);
+			for (auto& m : persistent_marks_)
+				m->reset(i);
+		}
 		size_ = n;
 		free_lines_.clear();
 		set_nb_chunks((n + CHUNK_SIZE - 1) / CHUNK_SIZE);

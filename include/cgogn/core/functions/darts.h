@@ -117,10 +117,14 @@ inline Dart add_dart(CMapBase& m)
 	return Dart(i);
 }
 
+/// Boundary marks, like relations and the set of darts, define the cells the
+/// quick incidence caches hold: every change drops them.
 inline void set_boundary(CMapBase& m, Dart d, bool b)
 {
 	if (m.boundary_->test(d.index) == b)
 		return;
+	if (!m.incidence_tables_.empty())
+		m.incidence_tables_.clear(); // see drop_incidence_caches
 	m.boundary_->set_value(d.index, b);
 	if (b)
 		++m.nb_boundary_darts_;
@@ -130,6 +134,8 @@ inline void set_boundary(CMapBase& m, Dart d, bool b)
 
 inline void remove_dart(CMapBase& m, Dart d)
 {
+	if (!m.incidence_tables_.empty())
+		m.incidence_tables_.clear(); // see drop_incidence_caches
 	set_boundary(m, d, false);
 	m.darts_->release_line(d.index);
 }

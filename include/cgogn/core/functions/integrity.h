@@ -29,6 +29,9 @@ struct IntegrityError
 		BadRepresentative,     // a line's representative dart is not a dart of its cell
 		IndexShared,           // two cells use the same line
 		FreeLineLive,          // the free list holds a live line
+		FreeLineDuplicate,     // the free list holds a line twice (it would be handed out twice)
+		StaleUnusedLine,       // a line never handed out since the last compaction holds an old index
+		ShortFace,             // a non-boundary face of a 2- or 3-map has 1 or 2 edges
 		IncidenceCacheStale,   // a quick incidence cache disagrees with the map (see IncidenceCache)
 	};
 	Kind kind;
@@ -66,9 +69,12 @@ struct IntegrityReport
 /// on each boundary cell, and for every indexed orbit: all darts of a cell
 /// share one live index, boundary cells have none, no line is shared by two
 /// cells, every live line's representative dart belongs to its cell, the free
-/// lists hold only free lines; every quick incidence cache present
-/// (IncidenceCache) matches the relation recomputed from the darts. O(number
-/// of darts x number of indexed orbits + size of the cached relations).
+/// lists hold only free lines, each once; the lines allocated past the last
+/// one in use hold no relation, key or index (what new_line hands out is
+/// clean); in 2- and 3-maps no non-boundary face has fewer than 3 edges;
+/// every quick incidence cache present (IncidenceCache) matches the relation
+/// recomputed from the darts. O(number of darts x number of indexed orbits +
+/// size of the cached relations + number of lines).
 IntegrityReport check_integrity(const CMap1& m);
 IntegrityReport check_integrity(const CMap2& m);
 IntegrityReport check_integrity(const CMap3& m);

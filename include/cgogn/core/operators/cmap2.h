@@ -26,11 +26,14 @@ namespace cgogn
 /// whose dart goes from it to the end of e.dart. O(1).
 CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
-/// True when edge e can be contracted without breaking the manifold: the link
+/// True when edge e can be contracted without breaking the manifold: e is not
+/// a loop (its ends are distinct vertices), the link
 /// condition (the vertices adjacent to both ends are exactly the opposite
 /// vertices of the triangles incident to e, counting the outside of a
-/// boundary as a vertex), the two incident faces are distinct with at least 3
-/// edges, and two incident triangles do not have the same opposite vertex.
+/// boundary as a vertex), its edge part for the outside (no vertex is joined
+/// to both ends by boundary edges), the two incident faces are distinct with
+/// at least 3 edges, and two incident triangles do not have the same opposite
+/// vertex.
 /// Pure topology. O(degree of the two vertices).
 bool edge_can_collapse(const CMap2& m, CMap2::Edge e);
 
@@ -64,8 +67,16 @@ bool edge_can_flip(const CMap2& m, CMap2::Edge e);
 /// their lines. Precondition: edge_can_flip(m, e). O(degree of the faces).
 void flip_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
+/// True when edge e can be flipped back: the conditions of edge_can_flip on
+/// the faces and end vertices, and the new edge's ends (the origins of
+/// phi_1(e.dart) and phi_1(phi2(e.dart)), not the forward flip's unless both
+/// faces are triangles) distinct and not already adjacent. Same cost as
+/// edge_can_flip.
+bool edge_can_flip_back(const CMap2& m, CMap2::Edge e);
+
 /// The inverse of flip_edge: each end moves to the previous vertex of its
-/// face. Same preconditions. O(degree of the faces).
+/// face. Faces keep their lines. Precondition: edge_can_flip_back(m, e).
+/// O(degree of the faces).
 void flip_back_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
 // ---- faces
@@ -90,7 +101,9 @@ bool can_merge_incident_faces(const CMap2& m, CMap2::Edge e);
 CMap2::Face merge_incident_faces(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
 /// True when v is an interior vertex of degree >= 2 whose incident faces are
-/// pairwise distinct and have at least 3 edges. O(degree).
+/// pairwise distinct and have at least 3 edges, and the merged face would have
+/// at least 3 edges (two triangles around a vertex of degree 2 would make a
+/// face of 2). O(sum of the degrees of the faces).
 bool can_merge_incident_faces(const CMap2& m, CMap2::Vertex v);
 
 /// Removes vertex v and its edges, merging its incident faces into one (the
@@ -99,20 +112,31 @@ bool can_merge_incident_faces(const CMap2& m, CMap2::Vertex v);
 /// O(sum of the degrees of the faces).
 CMap2::Face merge_incident_faces(CMap2& m, CMap2::Vertex v, bool set_indices = true);
 
-/// True when v has degree 2, its two edges are distinct and its two faces have
-/// at least 4 edges (so that no face is left with fewer than 3). O(1).
+/// True when v has degree 2, its two edges are distinct and no face is left
+/// with fewer than 3 edges: its two faces have at least 4 edges, or 5 when
+/// they are one face (v on a path dangling inside it, which loses 2 edges).
+/// O(degree of the faces).
 bool can_merge_incident_edges(const CMap2& m, CMap2::Vertex v);
 
 /// Removes vertex v of degree 2, merging its two edges into one (the inverse
-/// of cut_edge); the merged edge keeps the line of the edge of
-/// phi2(v.dart)... i.e. of the edge that does not contain v.dart. Returns it.
-/// Precondition: can_merge_incident_edges(m, v). O(degree of the faces).
+/// of cut_edge). Lines: the merged edge keeps the line of the edge that does
+/// not contain v.dart, the other edge's line and v's are released; faces and
+/// the component keep theirs. Incidence caches are dropped. Returns the merged
+/// edge. Precondition: can_merge_incident_edges(m, v). O(degree of the faces).
 CMap2::Edge merge_incident_edges(CMap2& m, CMap2::Vertex v, bool set_indices = true);
 
-/// Splits the vertex of d1 and d2 (two distinct darts of one vertex) by a new
-/// edge: the darts from d1 up to (not including) d2 in the vertex's cyclic
-/// order go to a new vertex. The new edge lies in the faces of d1 and d2.
-/// Returns it, its dart going from the old vertex to the new one. O(degree).
+/// True when d1 and d2 are distinct darts of one vertex, not both boundary
+/// darts (the new edge of split_vertex lies in their faces: two boundary
+/// faces would put the boundary on both its sides). O(degree).
+bool can_split_vertex(const CMap2& m, Dart d1, Dart d2);
+
+/// Splits the vertex of d1 and d2 by a new edge: the darts from d1 up to (not
+/// including) d2 in the vertex's cyclic order go to a new vertex, which gets
+/// a new line; the old vertex keeps its line on the part holding d2. The new
+/// edge lies in the faces of d1 and d2 and gets a new line; faces and the
+/// component keep theirs. Incidence caches are dropped. Returns the new edge,
+/// its dart going from the old vertex to the new one.
+/// Precondition: can_split_vertex(m, d1, d2). O(degree).
 CMap2::Edge split_vertex(CMap2& m, Dart d1, Dart d2, bool set_indices = true);
 
 /// Splits face f into a fan of triangles around a new vertex (one triangle per
@@ -122,7 +146,12 @@ CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices = true)
 
 /// Removes face f, which becomes part of the boundary: edges whose other side
 /// is already boundary disappear, as do vertices left without edges and the
-/// connected component if nothing remains of it. O(degree of f x degree).
+/// connected component if nothing remains of it. Lines: f's line is released,
+/// as are the lines of the edges and vertices that disappear; a vertex or a
+/// component that comes apart (at a pinched vertex) keeps its line on one
+/// part, the other parts get new lines. Incidence caches are dropped.
+/// Precondition: f is not a boundary face. O(degree of f x degree + size of
+/// the component).
 void remove_face(CMap2& m, CMap2::Face f, bool set_indices = true);
 
 // ---- holes and boundary
@@ -135,8 +164,15 @@ CMap2::Face close_hole(CMap2& m, Dart d, bool mark_boundary = true, bool set_ind
 /// boundary faces; returns how many. O(number of darts).
 uint32 close(CMap2& m, bool set_indices = true);
 
+/// True when d is a boundary dart of a hole of at least 3 edges (a hole of 1
+/// or 2 edges would become a face of 1 or 2 edges; sew its edges instead).
+/// O(1).
+bool can_fill_hole(const CMap2& m, Dart d);
+
 /// Turns the boundary face of dart d into a real face (fills the hole with one
-/// polygon) and returns it. Precondition: is_boundary(m, d). O(size of the hole).
+/// polygon) and returns it. The face gets a new line; no other line changes.
+/// Incidence caches are dropped. Precondition: can_fill_hole(m, d).
+/// O(size of the hole).
 CMap2::Face fill_hole(CMap2& m, Dart d, bool set_indices = true);
 
 /// True when e1.dart and e2.dart are non-boundary darts whose phi2 are
@@ -144,14 +180,32 @@ CMap2::Face fill_hole(CMap2& m, Dart d, bool set_indices = true);
 bool can_sew_faces(const CMap2& m, CMap2::Edge e1, CMap2::Edge e2);
 
 /// Glues two boundary edges: e1.dart and e2.dart become phi2 of each other
-/// (their boundary darts are removed). Vertices brought together merge,
-/// keeping the lines of e1's end vertices; e1's edge line is kept. O(degree).
+/// (their boundary darts are removed, the boundary faces they were in merge or
+/// split). Lines: e1's edge line is kept, e2's released. Vertices brought
+/// together merge: the vertex of e1.dart keeps the line of the origin of
+/// e1.dart, the vertex of e2.dart the line of the end of e1.dart (the other
+/// end's line is released). At a pinched vertex the sew can instead cut a
+/// vertex in two: the part without those darts keeps another line of the
+/// vertex or gets a new one. Sewing two components keeps e1's component line
+/// and releases e2's; a component held together only through a pinched
+/// vertex can fall apart, the part without e1 keeping e2's line or getting a
+/// new one. Incidence caches are dropped. O(degree of the end vertices and
+/// of the boundary faces), plus the size of the components when components
+/// are indexed.
 /// Precondition: can_sew_faces(m, e1, e2).
 void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices = true);
 
+/// True when e is an interior edge (no boundary on either side) that is not a
+/// loop at a boundary vertex: there, both new boundary edges would enter the
+/// same boundary corner. O(degree of its ends).
+bool can_unsew_faces(const CMap2& m, CMap2::Edge e);
+
 /// Cuts an interior edge into two boundary edges (the inverse of sew_faces):
-/// end vertices already on the boundary split in two. e.dart keeps the edge's
-/// line. Precondition: !is_incident_to_boundary(m, e). O(degree).
+/// end vertices already on the boundary split in two, the part without
+/// e.dart (resp. its phi2) getting a new line. e.dart keeps the edge's line,
+/// the other side gets a new one; a component cut in two keeps its line on
+/// the part of e.dart, the other part gets a new one. Incidence caches are
+/// dropped. Precondition: can_unsew_faces(m, e). O(degree).
 void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
 // ---- volumes (closed surfaces)
@@ -175,7 +229,8 @@ void reverse_orientation(CMap2& m);
 
 /// Copies every cell of `other` into m (appending, other is unchanged), with
 /// the values of every attribute of other: attributes of the same name and
-/// type in m receive them, missing ones are created. Returns, for each dart
+/// type in m receive them, missing ones are created; an orbit indexed in other
+/// and not in m becomes indexed in m (its cells get lines). Returns, for each dart
 /// of other, its copy in m (indexed by dart index; invalid for free lines).
 /// O(size of other).
 std::vector<Dart> merge(CMap2& m, const CMap2& other);

@@ -74,7 +74,8 @@ CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices = true);
 /// Returns the new face (its dart is phi2 of path[0]). O(size of the path).
 CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices = true);
 
-/// True when the face separates two distinct non-boundary volumes. O(1).
+/// True when the face separates two distinct non-boundary volumes and is not
+/// glued to itself along one of its edges. O(degree of f squared).
 bool can_merge_incident_volumes(const CMap3& m, CMap3::Face f);
 /// Removes face f, merging its two volumes into one (which keeps the line of
 /// the volume of f.dart). Returns it. O(degree of f).

