@@ -44,24 +44,19 @@ void check_names(const MAP& m, const MeshData& d, const std::string& path)
 {
 	check_free_name<Vertex>(m, "position", typeid(Vec3), path);
 	check_free_name<Vertex>(m, "original_vertex", typeid(uint32), path);
-	std::vector<std::string> names;
-	for (const auto& c : d.vertex_columns)
-		if (usable(c))
-		{
-			if (std::string why = data_name_conflict(names, c.name, true); !why.empty())
-				throw Error(path, why);
-			names.push_back(c.name);
-			check_free_name<Vertex>(m, c.name, column_type(c), path);
-		}
-	names.clear();
-	for (const auto& c : d.cell_columns)
-		if (usable(c))
-		{
-			if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
-				throw Error(path, why);
-			names.push_back(c.name);
-			check_free_name<Top>(m, c.name, column_type(c), path);
-		}
+	auto check = [&]<typename CELL>(const std::vector<Column>& columns, CELL*) {
+		std::vector<std::string> names;
+		for (const auto& c : columns)
+			if (usable(c))
+			{
+				if (std::string why = data_name_conflict(names, c.name, std::is_same_v<CELL, Vertex>); !why.empty())
+					throw Error(path, why);
+				names.push_back(c.name);
+				check_free_name<CELL>(m, c.name, column_type(c), path);
+			}
+	};
+	check(d.vertex_columns, static_cast<Vertex*>(nullptr));
+	check(d.cell_columns, static_cast<Top*>(nullptr));
 }
 
 // The attribute to load into. check_names has ruled out every case where

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 using namespace cgogn;
@@ -299,48 +300,6 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 	}
 }
 
-void random_surface_editing(CMap2& m, uint32 steps, uint32 seed)
-{
-	test::index_everything(m);
-	TagWatch<V2, CMap2> vt(m, "vtag");
-	TagWatch<E2, CMap2> et(m, "etag");
-	TagWatch<F2, CMap2> ft(m, "ftag");
-	TagWatch<W2, CMap2> wt(m, "wtag");
-	const uint32 initial = nb_darts(m);
-	std::mt19937 rng(seed);
-	uint32 applied = 0;
-	for (uint32 step = 0; step < steps; ++step)
-	{
-		vt.snapshot();
-		et.snapshot();
-		ft.snapshot();
-		wt.snapshot();
-		if (step % 4 == 0)
-			IncidenceCache<CMap2, V2, F2>::build(m);
-		CompactMaps compacted;
-		const char* op = edit_surface(m, rng, initial, compacted);
-		if (op == nullptr)
-			continue;
-		if (!compacted.darts.empty())
-		{
-			vt.remap(compacted);
-			et.remap(compacted);
-			ft.remap(compacted);
-			wt.remap(compacted);
-		}
-		++applied;
-		const IntegrityReport r = check_integrity(m);
-		ASSERT_TRUE(r.ok()) << "step " << step << " (" << op << ")\n" << r.to_string();
-		ASSERT_EQ(vt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") vertex line";
-		ASSERT_EQ(et.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") edge line";
-		ASSERT_EQ(ft.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") face line";
-		ASSERT_EQ(wt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") component line";
-		ASSERT_GT(nb_darts(m), 0u) << "step " << step;
-	}
-	EXPECT_GT(applied, steps / 4);
-	::testing::Test::RecordProperty("applied", int(applied));
-}
-
 // ---- 3-maps
 
 using V3 = CMap3::Vertex;
@@ -498,13 +457,26 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 	}
 }
 
-void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
+// Applies `steps` random edits (`edit` returns the operator's name, or nullptr
+// when it made none) with every orbit indexed and an incidence cache rebuilt
+// every 4 steps; after each edit the map passes check_integrity and no
+// surviving line of a watched cell changed its value. At least 1/`min_share`
+// of the steps must edit. `after` runs after each edit (keeps the map
+// non-empty).
+template <typename MAP, typename EDIT, typename AFTER>
+void random_editing(MAP& m, uint32 steps, uint32 seed, uint32 min_share, const EDIT& edit, const AFTER& after)
 {
+	using V = typename mesh_traits<MAP>::Vertex;
+	using E = typename mesh_traits<MAP>::Edge;
+	using F = typename mesh_traits<MAP>::Face;
+	using W = typename mesh_traits<MAP>::Volume;
+	using Top = std::conditional_t<MAP::dimension == 2, F, W>;
+	const char* volume_name = MAP::dimension == 2 ? "component" : "volume";
 	test::index_everything(m);
-	TagWatch<V3, CMap3> vt(m, "vtag");
-	TagWatch<E3, CMap3> et(m, "etag");
-	TagWatch<F3, CMap3> ft(m, "ftag");
-	TagWatch<W3, CMap3> wt(m, "wtag");
+	TagWatch<V, MAP> vt(m, "vtag");
+	TagWatch<E, MAP> et(m, "etag");
+	TagWatch<F, MAP> ft(m, "ftag");
+	TagWatch<W, MAP> wt(m, "wtag");
 	const uint32 initial = nb_darts(m);
 	std::mt19937 rng(seed);
 	uint32 applied = 0;
@@ -515,9 +487,9 @@ void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
 		ft.snapshot();
 		wt.snapshot();
 		if (step % 4 == 0)
-			IncidenceCache<CMap3, V3, W3>::build(m);
+			IncidenceCache<MAP, V, Top>::build(m);
 		CompactMaps compacted;
-		const char* op = edit_volume(m, rng, initial, compacted);
+		const char* op = edit(m, rng, initial, compacted);
 		if (op == nullptr)
 			continue;
 		if (!compacted.darts.empty())
@@ -533,12 +505,26 @@ void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
 		ASSERT_EQ(vt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") vertex line";
 		ASSERT_EQ(et.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") edge line";
 		ASSERT_EQ(ft.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") face line";
-		ASSERT_EQ(wt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") volume line";
-		if (nb_cells<W3>(m) == 0)
-			add_tetra(m);
+		ASSERT_EQ(wt.changed_line(), INVALID_INDEX) << "step " << step << " (" << op << ") " << volume_name << " line";
+		after(m, step);
 	}
-	EXPECT_GT(applied, steps / 16);
+	EXPECT_GT(applied, steps / min_share);
 	::testing::Test::RecordProperty("applied", int(applied));
+}
+
+void random_surface_editing(CMap2& m, uint32 steps, uint32 seed)
+{
+	random_editing(m, steps, seed, 4, edit_surface, [](CMap2& map, uint32 step) {
+		ASSERT_GT(nb_darts(map), 0u) << "step " << step;
+	});
+}
+
+void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
+{
+	random_editing(m, steps, seed, 16, edit_volume, [](CMap3& map, uint32) {
+		if (nb_cells<W3>(map) == 0)
+			add_tetra(map);
+	});
 }
 } // namespace
 
