@@ -377,7 +377,10 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 	}
 	// the component can come apart the same way: the first part keeps its
 	// line, the others get new ones; a part left with boundary darts only is
-	// removed
+	// removed. Only indexed components need each part walked whole (to tell
+	// the parts apart); otherwise a part's walk stops at its first real dart,
+	// and only boundary-only parts (removed anyway) are walked whole.
+	const bool components_indexed = set_indices && m.cell_index_[orbit_index(W)] != nullptr;
 	bool w_claimed = false;
 	DartMarkerStore<CMap2> done(m);
 	std::vector<Dart> boundary_only;
@@ -385,15 +388,16 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 	{
 		if (done.is_marked(x))
 			continue;
-		done.mark_orbit(CMap2::Volume(x));
 		bool real = false;
 		foreach_dart_of_orbit(m, CMap2::Volume(x), [&](Dart y) { return !(real = !is_boundary(m, y)); });
+		if (components_indexed || !real)
+			done.mark_orbit(CMap2::Volume(x));
 		if (!real)
 		{
 			boundary_only.push_back(x);
 			continue;
 		}
-		if (!set_indices || m.cell_index_[orbit_index(W)] == nullptr)
+		if (!components_indexed)
 			continue;
 		if (!w_claimed && w != INVALID_INDEX)
 		{

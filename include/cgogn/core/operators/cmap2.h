@@ -150,8 +150,8 @@ CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices = true)
 /// as are the lines of the edges and vertices that disappear; a vertex or a
 /// component that comes apart (at a pinched vertex) keeps its line on one
 /// part, the other parts get new lines. Incidence caches are dropped.
-/// Precondition: f is not a boundary face. O(degree of f x degree + size of
-/// the component).
+/// Precondition: f is not a boundary face. O(degree of f x degree) (plus the
+/// size of the component when components are indexed).
 void remove_face(CMap2& m, CMap2::Face f, bool set_indices = true);
 
 // ---- holes and boundary
