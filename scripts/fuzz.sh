@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of the io readers with clang (ASan + UBSan) and
-# runs each for a bounded time: FUZZ_SECONDS in total (default 600), split
+# runs each for a bounded time: FUZZ_SECONDS in total (default 300), split
 # evenly over the targets (one per reader, and fuzz_append, which loads any
 # format into a map that already holds a mesh and attributes). Fails on any
 # crash, leak, timeout or sanitizer report.
@@ -15,7 +15,7 @@
 # -merge=1) of itself and the new inputs, those under 4 KB.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-total=${FUZZ_SECONDS:-600}
+total=${FUZZ_SECONDS:-300}
 formats=(off obj ply stl medit vtk vtu gmsh tetgen)
 targets=()
 for f in "${formats[@]}"; do targets+=("$f"); done
