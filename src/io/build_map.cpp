@@ -30,9 +30,12 @@ std::type_index column_type(const Column& c)
 	return c.dim == 1 ? std::type_index(typeid(double)) : c.dim == 2 ? typeid(Vec2) : typeid(Vec3);
 }
 
+// Columns that become attributes. Vertex data named `position` is not
+// skipped here but refused by check_names (data_name_conflict), like any
+// other collision; a face or volume column of that name is ordinary data.
 bool usable(const Column& c)
 {
-	return c.dim >= 1 && c.dim <= 3 && !c.name.empty() && c.name.rfind("__", 0) != 0 && c.name != "position";
+	return c.dim >= 1 && c.dim <= 3 && !c.name.empty() && c.name.rfind("__", 0) != 0;
 }
 
 // Everything about names that could make the build fail, checked before the

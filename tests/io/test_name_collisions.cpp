@@ -200,3 +200,17 @@ TEST(NameCollision, WritersOfNamedDataRefuseTheLoadersNames)
 	EXPECT_THROW(io::save_volume(v, dir.file("v.vtu")), io::Error);
 	io::save_volume(v, dir.file("v.mesh"));
 }
+
+TEST(NameCollision, CellDataNamedPositionIsOrdinaryData)
+{
+	// only the vertices' `position` is the loader's; a volume's is kept
+	TempDir dir;
+	std::string text = tet_vtu;
+	text.replace(text.find("Name=\"q\""), 8, "Name=\"position\"");
+	write_text(dir.file("p.vtu"), text);
+	CMap3 m;
+	io::load_volume(m, dir.file("p.vtu"));
+	auto p = get_attribute<Vec2, CMap3::Volume>(m, "position");
+	ASSERT_NE(p, nullptr);
+	foreach_cell(m, [&](CMap3::Volume w) { EXPECT_EQ((*p)[w], Vec2(7, 8)); });
+}
