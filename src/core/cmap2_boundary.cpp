@@ -5,6 +5,7 @@
 #include <cgogn/core/operators/index_helpers.h>
 
 #include "cmap2_close.h"
+#include "component_split.h"
 #include "cmap2_unlink.h"
 
 #include <algorithm>
@@ -65,36 +66,6 @@ void reassign_vertex_lines(CMap2& m, const std::vector<Dart>& darts, Dart d1, st
 	for (uint32 l : olds)
 		if (!is_claimed(l))
 			vc.release_line(l);
-}
-// After a sew, gives lines to the components of `seeds` (the first is the
-// sewn one): the first takes the first line of `olds`, the others an
-// unclaimed line of `olds` or a new one; lines left over are released.
-// O(size of the components).
-void reassign_component_lines(CMap2& m, std::initializer_list<Dart> seeds, std::initializer_list<uint32> olds)
-{
-	AttributeContainer& wc = *m.cells_[orbit_index(W)];
-	std::vector<uint32> free_olds;
-	for (uint32 l : olds)
-		if (l != INVALID_INDEX && std::find(free_olds.begin(), free_olds.end(), l) == free_olds.end())
-			free_olds.push_back(l);
-	DartMarkerStore<CMap2> done(m);
-	for (Dart s : seeds)
-	{
-		if (done.is_marked(s))
-			continue;
-		done.mark_orbit(CMap2::Volume(s));
-		uint32 line;
-		if (free_olds.empty())
-			line = wc.new_line(s.index);
-		else
-		{
-			line = free_olds.front();
-			free_olds.erase(free_olds.begin());
-		}
-		detail::write_index(m, CMap2::Volume(s), line);
-	}
-	for (uint32 l : free_olds)
-		wc.release_line(l);
 }
 } // namespace
 
@@ -219,7 +190,18 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 		if (vertices_indexed)
 			reassign_vertex_lines(m, around, d1, {a1, a2}, d2, {c1, c2});
 		if (m.cell_index_[orbit_index(W)] != nullptr)
-			reassign_component_lines(m, {d1, next1, next2}, {w1, w2});
+		{
+			if (w2 != w1)
+			{
+				// e2's component takes e1's line, including a part of it
+				// that the sew cut off (split below)
+				for (Dart s : {d2, next1, next2})
+					if (detail::index_or_invalid<W>(m, s) == w2)
+						detail::relabel_part<CMap2::Volume>(m, s, w2, w1);
+				m.cells_[orbit_index(W)]->release_line(w2);
+			}
+			detail::split_component_lines<CMap2::Volume>(m, w1, {d1, next1, next2});
+		}
 	}
 }
 
@@ -299,11 +281,8 @@ void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices)
 			detail::new_index(m, CMap2::Vertex(b1));
 		}
 	}
-	if (m.cell_index_[orbit_index(W)] != nullptr && !same_orbit(m, CMap2::Volume(d), CMap2::Volume(d2)))
-	{
-		detail::set_representative<W>(m, d);
-		detail::new_index(m, CMap2::Volume(d2));
-	}
+	if (m.cell_index_[orbit_index(W)] != nullptr)
+		detail::split_component_lines<CMap2::Volume>(m, detail::index_or_invalid<W>(m, d), {d, d2});
 }
 
 } // namespace cgogn

@@ -7,6 +7,7 @@
 #include <cgogn/core/operators/index_helpers.h>
 
 #include "cmap2_unlink.h"
+#include "component_split.h"
 
 #include <algorithm>
 
@@ -375,40 +376,36 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 					detail::release_index<V>(m, l);
 		}
 	}
-	// the component can come apart the same way: the first part keeps its
-	// line, the others get new ones; a part left with boundary darts only is
-	// removed. Only indexed components need each part walked whole (to tell
-	// the parts apart); otherwise a part's walk stops at its first real dart,
-	// and only boundary-only parts (removed anyway) are walked whole.
+	// the component can come apart the same way: one part keeps its line, the
+	// others get new ones (split_component_lines); a part left with boundary
+	// darts only is removed. A part's walk stops at its first real dart, so
+	// only boundary-only parts (removed anyway) are walked whole. The parts
+	// are told apart from one dart per vertex around f.
 	const bool components_indexed = set_indices && m.cell_index_[orbit_index(W)] != nullptr;
-	bool w_claimed = false;
 	DartMarkerStore<CMap2> done(m);
-	std::vector<Dart> boundary_only;
+	std::vector<Dart> boundary_only, seeds;
 	for (Dart x : survivors)
 	{
 		if (done.is_marked(x))
 			continue;
 		bool real = false;
 		foreach_dart_of_orbit(m, CMap2::Volume(x), [&](Dart y) { return !(real = !is_boundary(m, y)); });
-		if (components_indexed || !real)
-			done.mark_orbit(CMap2::Volume(x));
 		if (!real)
 		{
+			done.mark_orbit(CMap2::Volume(x));
 			boundary_only.push_back(x);
 			continue;
 		}
-		if (!components_indexed)
-			continue;
-		if (!w_claimed && w != INVALID_INDEX)
-		{
-			w_claimed = true; // its darts carry w already
-			detail::set_representative<W>(m, x);
-		}
-		else
-			detail::new_index(m, CMap2::Volume(x));
+		done.mark_orbit(CMap2::Vertex(x));
+		seeds.push_back(x);
 	}
-	if (set_indices && !w_claimed)
-		detail::release_index<W>(m, w);
+	if (components_indexed && w != INVALID_INDEX)
+	{
+		if (seeds.empty())
+			detail::release_index<W>(m, w);
+		else
+			detail::split_component_lines<CMap2::Volume>(m, w, seeds);
+	}
 	for (Dart x : boundary_only)
 	{
 		// its component line is released above (or belongs to another part)

@@ -105,10 +105,13 @@ CMap3::Volume close_hole(CMap3& m, Dart d, bool set_indices)
 				pending.push_back(it);
 		}
 	}
+	detail::RegionReindexer<CMap3> reindexer;
+	if (set_indices)
+		reindexer.record(m, hole); // the hole's component: the new boundary joins it
 	std::vector<Dart> created;
 	detail::close_phi3_holes(m, hole, created);
 	if (set_indices)
-		detail::RegionReindexer<CMap3>().apply(m, created);
+		reindexer.apply(m, created);
 	return CMap3::Volume(created.front());
 }
 
@@ -119,6 +122,7 @@ void unsew_volumes(CMap3& m, CMap3::Face f, bool set_indices)
 	for (Dart x : face_darts(m, phi3(m, f.dart)))
 		side.push_back(x);
 	detail::RegionReindexer<CMap3> reindexer;
+	reindexer.components_may_split();
 	if (set_indices)
 		reindexer.record(m, side);
 	for (std::size_t i = 0; i < side.size() / 2; ++i)
@@ -192,6 +196,7 @@ void remove_volume(CMap3& m, CMap3::Volume w, bool set_indices)
 	std::vector<Dart> darts;
 	foreach_dart_of_orbit(m, w, [&](Dart d) { darts.push_back(d); });
 	detail::RegionReindexer<CMap3> reindexer;
+	reindexer.components_may_split();
 	if (set_indices)
 	{
 		std::vector<Dart> touched = darts;

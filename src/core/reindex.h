@@ -4,8 +4,11 @@
 #include <cgogn/core/functions/indexing.h>
 #include <cgogn/core/types/marker.h>
 
+#include "component_split.h"
+
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <unordered_set>
 #include <vector>
 
@@ -15,11 +18,23 @@ namespace cgogn::detail
 /// Indexing of a region changed by an operator, for every indexed orbit at
 /// once: record() the darts of the region before the change (their lines),
 /// apply() the darts of the region after it (surviving and new darts, at least
-/// one dart of every surviving cell). Each cell of the region then claims the
-/// first unclaimed recorded line found on its darts (so a split cell keeps its
-/// line on the part visited first, merged cells keep one line), cells without
-/// one get a new line, boundary cells get none, and recorded lines left
-/// unclaimed are released. O(size of the cells of the region).
+/// one dart of every surviving cell, and every dart that became a boundary
+/// dart). Each cell of the region then claims the first unclaimed recorded line
+/// found on its darts (so a split cell keeps its line on the part visited first,
+/// merged cells keep one line), cells without one get a new line, and recorded
+/// lines left unclaimed are released.
+///
+/// Two kinds of cells are never walked, since they can be as large as the mesh:
+/// - boundary cells (the boundary "volume" of a 3-map is the whole boundary
+///   surface): the region's darts in them get no index, which is all a dart
+///   entering the boundary needs;
+/// - connected components, when the region lies in one recorded component:
+///   the component keeps its line, written on the region's darts. When the
+///   operator may cut it (components_may_split()), the region's darts are
+///   searched for parts that no longer meet (split_component_lines): a part
+///   cut off is walked whole and gets a new line.
+/// Cost: O(size of the region's cells), plus the size of the smaller parts of
+/// a component that comes apart, or of components that merge (walked whole).
 template <typename MAP>
 class RegionReindexer
 {
@@ -31,6 +46,12 @@ public:
 				for (Dart d : darts)
 					if (uint32 l = (*idx)[d.index]; l != INVALID_INDEX)
 						old_[o].push_back(l);
+	}
+
+	/// For operators that can disconnect a component (unsew, remove a volume).
+	void components_may_split()
+	{
+		components_may_split_ = true;
 	}
 
 	void apply(MAP& m, const std::vector<Dart>& region)
@@ -50,40 +71,60 @@ private:
 			if (idx == nullptr)
 				return;
 			AttributeContainer& cells = *m.cells_[orbit_index(O)];
+			auto& olds = old_[orbit_index(O)];
+			std::sort(olds.begin(), olds.end());
+			olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
+			std::erase_if(olds, [&](uint32 l) { return !cells.is_live(l); });
+			if (is_component_orbit(O) && olds.size() == 1 && !region.empty())
+			{
+				for (Dart d : region)
+					(*idx)[d.index] = olds.front();
+				cells.key()[olds.front()] = region.front().index;
+				count_reindexed_darts(region.size());
+				if (components_may_split_)
+					split_component_lines<CELL>(m, olds.front(), region);
+				return;
+			}
 			std::unordered_set<uint32> claimed;
 			DartMarkerStore<MAP> visited(m);
+			std::uint64_t walked = 0;
 			for (Dart d : region)
 			{
-				if (visited.is_marked(d))
-					continue;
-				visited.mark_orbit(CELL(d));
+				++walked;
 				if (is_boundary_cell(m, CELL(d)))
 				{
-					foreach_dart_of_orbit(m, CELL(d), [&](Dart x) { (*idx)[x.index] = INVALID_INDEX; });
+					(*idx)[d.index] = INVALID_INDEX;
 					continue;
 				}
+				if (visited.is_marked(d))
+					continue;
 				uint32 line = INVALID_INDEX;
 				foreach_dart_of_orbit(m, CELL(d), [&](Dart x) {
+					walked += 2; // write_index walks the cell again
+					visited.mark(x);
 					const uint32 l = (*idx)[x.index];
-					if (l != INVALID_INDEX && cells.is_live(l) && !claimed.count(l))
+					if (line == INVALID_INDEX && l != INVALID_INDEX && cells.is_live(l) && !claimed.count(l))
 						line = l;
-					return line == INVALID_INDEX;
 				});
 				if (line == INVALID_INDEX)
 					line = cells.new_line(d.index);
 				claimed.insert(line);
 				write_index(m, CELL(d), line);
 			}
-			auto& olds = old_[orbit_index(O)];
-			std::sort(olds.begin(), olds.end());
-			olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
+			count_reindexed_darts(walked);
 			for (uint32 l : olds)
-				if (!claimed.count(l) && cells.is_live(l))
+				if (!claimed.count(l))
 					cells.release_line(l);
 		}
 	}
 
+	static constexpr bool is_component_orbit(Orbit o)
+	{
+		return o == Orbit::PHI1_PHI2_PHI3 || (MAP::dimension == 2 && o == Orbit::PHI1_PHI2);
+	}
+
 	std::array<std::vector<uint32>, NB_ORBITS> old_;
+	bool components_may_split_ = false;
 };
 
 } // namespace cgogn::detail

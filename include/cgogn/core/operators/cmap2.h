@@ -149,9 +149,12 @@ CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices = true)
 /// connected component if nothing remains of it. Lines: f's line is released,
 /// as are the lines of the edges and vertices that disappear; a vertex or a
 /// component that comes apart (at a pinched vertex) keeps its line on one
-/// part, the other parts get new lines. Incidence caches are dropped.
-/// Precondition: f is not a boundary face. O(degree of f x degree) (plus the
-/// size of the component when components are indexed).
+/// part, the other parts get new lines (when components are indexed, the
+/// part kept is the one not walked whole: see below). Incidence caches are
+/// dropped. Precondition: f is not a boundary face. O(degree of f x degree);
+/// with components indexed, plus the darts met while telling the parts apart
+/// (a few around f when they are still connected there, else the smaller
+/// parts, walked whole).
 void remove_face(CMap2& m, CMap2::Face f, bool set_indices = true);
 
 // ---- holes and boundary
@@ -187,11 +190,12 @@ bool can_sew_faces(const CMap2& m, CMap2::Edge e1, CMap2::Edge e2);
 /// end's line is released). At a pinched vertex the sew can instead cut a
 /// vertex in two: the part without those darts keeps another line of the
 /// vertex or gets a new one. Sewing two components keeps e1's component line
-/// and releases e2's; a component held together only through a pinched
-/// vertex can fall apart, the part without e1 keeping e2's line or getting a
-/// new one. Incidence caches are dropped. O(degree of the end vertices and
-/// of the boundary faces), plus the size of the components when components
-/// are indexed.
+/// and releases e2's (e2's component is walked to take e1's line); a
+/// component held together only through a pinched vertex can fall apart: one
+/// part keeps the line, the others, walked whole, get new ones. Incidence
+/// caches are dropped. O(degree of the end vertices and of the boundary
+/// faces); with components indexed, plus the size of e2's component when two
+/// components merge, and the darts met while telling parts apart.
 /// Precondition: can_sew_faces(m, e1, e2).
 void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices = true);
 
@@ -203,9 +207,11 @@ bool can_unsew_faces(const CMap2& m, CMap2::Edge e);
 /// Cuts an interior edge into two boundary edges (the inverse of sew_faces):
 /// end vertices already on the boundary split in two, the part without
 /// e.dart (resp. its phi2) getting a new line. e.dart keeps the edge's line,
-/// the other side gets a new one; a component cut in two keeps its line on
-/// the part of e.dart, the other part gets a new one. Incidence caches are
-/// dropped. Precondition: can_unsew_faces(m, e). O(degree).
+/// the other side gets a new one. A component cut in two keeps its line on
+/// the larger part; the smaller one gets a new line. Incidence caches are
+/// dropped. Precondition: can_unsew_faces(m, e). O(degree); with components
+/// indexed, plus the darts met by walking both sides at once until they
+/// meet (a few, around e's ends) or until the smaller part ends.
 void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
 // ---- volumes (closed surfaces)

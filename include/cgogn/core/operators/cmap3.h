@@ -11,9 +11,12 @@ namespace cgogn
 // Operators of 3-maps. Each keeps the map closed (the outside is made of
 // boundary volumes) and, with set_indices (the default), every indexed orbit
 // correctly indexed: cells of the changed region claim back their lines (a
-// split cell keeps its line on the part containing the given dart), new cells
-// get new lines, lines of vanished cells are released. Attribute values are
-// never touched. With set_indices = false only the topology changes.
+// split cell keeps its line on the part containing the given dart; a split
+// connected component, on its larger part), new cells get new lines, lines of
+// vanished cells are released. Attribute values are never touched. With
+// set_indices = false only the topology changes. The reindexing walks the
+// cells the operator touched, never the boundary volume beside them, nor the
+// connected component unless it comes apart or two of them merge.
 
 // ---- creation
 
@@ -41,17 +44,26 @@ bool can_sew_volumes(const CMap3& m, CMap3::Face f1, CMap3::Face f2);
 /// Glues two volumes along boundary faces: phi3(f1.dart) becomes f2.dart (f2
 /// is walked in the opposite direction). The boundary faces in between
 /// disappear; the cells brought together merge. Precondition:
-/// can_sew_volumes(m, f1, f2). O(degree x sizes of the merged cells).
+/// can_sew_volumes(m, f1, f2). O(degree x sizes of the merged cells); with
+/// connected components indexed and two components joined, plus the size of
+/// the merged component (walked to give it one line).
 void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices = true);
 
 /// Separates the two volumes of face f: each side gets a boundary face; edges
 /// and vertices that no longer connect the two sides split in two (new lines
-/// for the parts without f.dart). Precondition: f is an inner face (both sides
-/// non-boundary). O(degree of f x size of the cells around it).
+/// for the parts without f.dart). A connected component cut in two keeps its
+/// line on the larger part, the smaller gets a new one. Precondition: f is an
+/// inner face (both sides non-boundary). O(degree of f x size of the cells
+/// around it); with components indexed, plus the darts met while telling the
+/// sides apart (a few when they still meet around f, else the smaller part).
 void unsew_volumes(CMap3& m, CMap3::Face f, bool set_indices = true);
 
 /// Removes volume w: its faces shared with other volumes become boundary,
-/// the rest disappears with the cells left without darts. O(size of w).
+/// the rest disappears with the cells left without darts. A connected
+/// component that comes apart keeps its line on one part (the larger when
+/// two are compared), the others get new lines. O(size of w); with components
+/// indexed, plus the darts met while telling the parts apart (a few when they
+/// still meet around w, else the smaller parts, walked whole).
 void remove_volume(CMap3& m, CMap3::Volume w, bool set_indices = true);
 
 // ---- cuts and merges
