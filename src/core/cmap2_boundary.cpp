@@ -176,7 +176,9 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 	// sew takes b1 or b2 out of it, and these darts are in the parts
 	const Dart next1 = phi1(m, b1) == b1 || phi1(m, b1) == b2 ? d1 : phi1(m, b1);
 	const Dart next2 = phi1(m, b2) == b2 || phi1(m, b2) == b1 ? d1 : phi1(m, b2);
-	detail::unlink_from_faces(m, b1, b2);
+	// the map is still consistent: phi_1 of the boundary darts b1, b2 is found
+	// around their vertices, not along the hole
+	detail::unlink_from_faces(m, b1, b2, phi_1(m, b1), phi_1(m, b2));
 	if (set_indices)
 		detail::release_index<E>(m, detail::index_or_invalid<E>(m, d2));
 	detail::remove_dart(m, b1);

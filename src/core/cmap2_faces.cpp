@@ -41,6 +41,28 @@ uint32 face_degree(const CMap2& m, Dart d)
 {
 	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d));
 }
+// True when the face of d has at least k edges. O(k), whatever the degree of
+// the face (a boundary face, a hole, can be as long as the mesh's border).
+bool face_has_at_least(const CMap2& m, Dart d, uint32 k)
+{
+	Dart it = d;
+	for (uint32 i = 1; i < k; ++i)
+		if ((it = phi1(m, it)) == d)
+			return false;
+	return true;
+}
+// True when x and y are darts of one face, walking both faces at once: O(the
+// smaller degree), a hole on one side is not walked whole.
+bool same_face(const CMap2& m, Dart x, Dart y)
+{
+	for (Dart a = phi1(m, x), b = phi1(m, y);; a = phi1(m, a), b = phi1(m, b))
+	{
+		if (a == y || b == x)
+			return true;
+		if (a == x || b == y)
+			return false;
+	}
+}
 } // namespace
 
 bool can_cut_face(const CMap2& m, CMap2::Vertex v1, CMap2::Vertex v2)
@@ -183,9 +205,9 @@ bool can_merge_incident_edges(const CMap2& m, CMap2::Vertex v)
 	// dangles inside a face (which then loses 2 edges)
 	if (same_orbit(m, CMap2::Edge(x), CMap2::Edge(y)))
 		return false;
-	if (same_orbit(m, CMap2::Face(x), CMap2::Face(y)))
-		return face_degree(m, x) >= 5;
-	return face_degree(m, x) >= 4 && face_degree(m, y) >= 4;
+	if (same_face(m, x, y))
+		return face_has_at_least(m, x, 5);
+	return face_has_at_least(m, x, 4) && face_has_at_least(m, y, 4);
 }
 
 CMap2::Edge merge_incident_edges(CMap2& m, CMap2::Vertex v, bool set_indices)

@@ -13,8 +13,9 @@ namespace cgogn::detail
 /// two boundary darts x and y merge when their edges are sewn. It holds in
 /// every case, a dart alone in its cycle (a face of one edge) and x, y
 /// following each other included. x and y are left as fixed points; callers
-/// remove them. O(degree of their faces).
-inline void unlink_from_faces(CMap1& m, Dart x, Dart y)
+/// remove them. px and py are the darts before x and y in their cycles.
+/// O(1) beyond those.
+inline void unlink_from_faces(CMap1& m, Dart x, Dart y, Dart px, Dart py)
 {
 	const auto other = [&](Dart d) { return d == x ? y : x; };
 	const auto next_outside = [&](Dart from) {
@@ -25,7 +26,6 @@ inline void unlink_from_faces(CMap1& m, Dart x, Dart y)
 			n = phi1(m, other(n));
 		return n;
 	};
-	const Dart px = phi_1(m, x), py = phi_1(m, y);
 	const bool relink_px = px != x && px != y;
 	const bool relink_py = py != x && py != y;
 	const Dart nx = relink_px ? next_outside(px) : Dart();
@@ -36,6 +36,14 @@ inline void unlink_from_faces(CMap1& m, Dart x, Dart y)
 		set_phi1(m, py, ny);
 	set_phi1(m, x, x);
 	set_phi1(m, y, y);
+}
+
+/// The same, finding the darts before x and y by walking their faces. O(degree
+/// of their faces); callers whose map is consistent can pass phi_1 of a 2-map
+/// instead, which does not walk a boundary face.
+inline void unlink_from_faces(CMap1& m, Dart x, Dart y)
+{
+	unlink_from_faces(m, x, y, phi_1(m, x), phi_1(m, y));
 }
 
 } // namespace cgogn::detail

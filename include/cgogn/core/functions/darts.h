@@ -31,6 +31,29 @@ CGOGN_INLINE Dart phi2(const CMap2& m, Dart d)
 	return Dart((*m.phi2_)[d.index]);
 }
 
+/// Previous dart in the face cycle, in a 2-map. A boundary face of a surface
+/// is a hole, which can be as long as the whole border of the mesh: for a
+/// boundary dart, the previous dart is found around the origin of d instead
+/// (it is phi2 of the dart z before d there, phi1(phi2(z)) == d). O(degree of
+/// the face) for a dart of a real face, O(degree of its origin) for a
+/// boundary dart.
+inline Dart phi_1(const CMap2& m, Dart d)
+{
+	if (!m.boundary_->test(d.index))
+		return phi_1(static_cast<const CMap1&>(m), d);
+	Dart z = d;
+	for (Dart n = phi1(m, phi2(m, z)); n != d; n = phi1(m, phi2(m, z)))
+		z = n;
+	return phi2(m, z);
+}
+
+/// Previous dart in the face cycle, in a 3-map: the faces of a 3-map, boundary
+/// ones included, are faces of volumes. O(degree of the face).
+inline Dart phi_1(const CMap3& m, Dart d)
+{
+	return phi_1(static_cast<const CMap1&>(m), d);
+}
+
 /// The dart of the adjacent volume along the same face, opposite direction. O(1).
 CGOGN_INLINE Dart phi3(const CMap3& m, Dart d)
 {

@@ -115,7 +115,7 @@ CMap2::Face merge_incident_faces(CMap2& m, CMap2::Vertex v, bool set_indices = t
 /// True when v has degree 2, its two edges are distinct and no face is left
 /// with fewer than 3 edges: its two faces have at least 4 edges, or 5 when
 /// they are one face (v on a path dangling inside it, which loses 2 edges).
-/// O(degree of the faces).
+/// O(degree of the smaller face).
 bool can_merge_incident_edges(const CMap2& m, CMap2::Vertex v);
 
 /// Removes vertex v of degree 2, merging its two edges into one (the inverse
@@ -193,8 +193,8 @@ bool can_sew_faces(const CMap2& m, CMap2::Edge e1, CMap2::Edge e2);
 /// and releases e2's (e2's component is walked to take e1's line); a
 /// component held together only through a pinched vertex can fall apart: one
 /// part keeps the line, the others, walked whole, get new ones. Incidence
-/// caches are dropped. O(degree of the end vertices and of the boundary
-/// faces); with components indexed, plus the size of e2's component when two
+/// caches are dropped. O(degree of the end vertices) (the boundary faces,
+/// holes as long as a border, are not walked); with components indexed, plus the size of e2's component when two
 /// components merge, and the darts met while telling parts apart.
 /// Precondition: can_sew_faces(m, e1, e2).
 void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices = true);
