@@ -71,9 +71,14 @@ constexpr uint32 WINDOW = 20'000;
 template <typename MAP>
 Dart random_dart(const MAP& m, std::mt19937& rng)
 {
-	const uint32 window = std::min(WINDOW, m.darts_->end_index());
-	for (;;)
+	uint32 window = std::min(WINDOW, m.darts_->end_index());
+	for (uint32 misses = 0;; ++misses)
 	{
+		if (misses == 1000) // removals emptied the window: widen it
+		{
+			window = std::min(2 * window, m.darts_->end_index());
+			misses = 0;
+		}
 		const uint32 i = uint32(rng() % window);
 		if (m.darts_->is_live(i))
 			return Dart(i);
