@@ -33,11 +33,6 @@ Dart insert_after(CMap2& m, Dart d, bool set_indices)
 	return nd;
 }
 
-uint32 face_degree(const CMap2& m, Dart d)
-{
-	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d));
-}
-
 // True when vertices c and y are the same vertex or joined by an edge, from
 // the topology alone: O(degree of c + degree of y) with a dart mark.
 bool adjacent_or_same_by_topology(const CMap2& m, CMap2::Vertex c, CMap2::Vertex y)
@@ -111,7 +106,7 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
 		return false;
 	if (same_orbit(m, CMap2::Vertex(d), CMap2::Vertex(d2)))
 		return false; // a loop: nothing to contract
-	const uint32 deg1 = face_degree(m, d), deg2 = face_degree(m, d2);
+	const uint32 deg1 = codegree(m, CMap2::Face(d)), deg2 = codegree(m, CMap2::Face(d2));
 	if (deg1 < 3 || deg2 < 3)
 		return false;
 	// vertices opposite to e in its triangles (the outside counts as a vertex)

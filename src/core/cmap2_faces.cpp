@@ -37,10 +37,6 @@ std::pair<Dart, Dart> insert_edge_before(CMap2& m, Dart dx, Dart dy)
 	detail::set_boundary(m, y, is_boundary(m, dy));
 	return {x, y};
 }
-uint32 face_degree(const CMap2& m, Dart d)
-{
-	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d));
-}
 // True when the face of d has at least k edges. O(k), whatever the degree of
 // the face (a boundary face, a hole, can be as long as the mesh's border).
 bool face_has_at_least(const CMap2& m, Dart d, uint32 k)
@@ -149,7 +145,7 @@ bool can_merge_incident_faces(const CMap2& m, CMap2::Vertex v)
 		if (faces.is_marked(d) || phi1(m, phi1(m, d)) == d)
 			return ok = false;
 		faces.mark_orbit(CMap2::Face(d));
-		merged_degree += face_degree(m, d) - 2;
+		merged_degree += codegree(m, CMap2::Face(d)) - 2;
 		return true;
 	});
 	return ok && merged_degree >= 3;
@@ -366,62 +362,64 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 	}
 	for (Dart d : removed)
 		detail::remove_dart(m, d);
-	if (set_indices)
+	// one dart per vertex left around f (a vertex met twice along f, at a
+	// pinch or the end of a dangling edge, can have come apart into several)
+	std::vector<Dart> vertices;
 	{
-		// a vertex met twice along f (a pinched vertex, the end of a dangling
-		// edge) can come apart: each part claims the line its darts carry, a
-		// second part of the same line gets a new one; lines of vertices left
-		// without darts are released once
+		DartMarkerStore<CMap2> done(m);
+		for (Dart x : survivors)
+			if (!done.is_marked(x))
+			{
+				done.mark_orbit(CMap2::Vertex(x));
+				vertices.push_back(x);
+			}
+	}
+	if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
+	{
+		// each vertex claims the line its darts carry, a second part of the
+		// same line gets a new one; lines of vertices left without darts are
+		// released once
 		std::vector<uint32> claimed;
 		const auto is_claimed = [&](uint32 l) { return std::find(claimed.begin(), claimed.end(), l) != claimed.end(); };
-		if (m.cell_index_[orbit_index(V)] != nullptr)
+		for (Dart x : vertices)
 		{
-			DartMarkerStore<CMap2> done(m);
-			for (Dart x : survivors)
+			const uint32 l = detail::index_or_invalid<V>(m, x);
+			if (l != INVALID_INDEX && !is_claimed(l))
 			{
-				if (done.is_marked(x))
-					continue;
-				done.mark_orbit(CMap2::Vertex(x));
-				const uint32 l = detail::index_or_invalid<V>(m, x);
-				if (l != INVALID_INDEX && !is_claimed(l))
-				{
-					claimed.push_back(l);
-					detail::set_representative<V>(m, x);
-				}
-				else
-					detail::new_index(m, CMap2::Vertex(x));
+				claimed.push_back(l);
+				detail::set_representative<V>(m, x);
 			}
-			std::sort(vertex_lines.begin(), vertex_lines.end());
-			vertex_lines.erase(std::unique(vertex_lines.begin(), vertex_lines.end()), vertex_lines.end());
-			for (uint32 l : vertex_lines)
-				if (l != INVALID_INDEX && !is_claimed(l))
-					detail::release_index<V>(m, l);
+			else
+				detail::new_index(m, CMap2::Vertex(x));
 		}
+		std::sort(vertex_lines.begin(), vertex_lines.end());
+		vertex_lines.erase(std::unique(vertex_lines.begin(), vertex_lines.end()), vertex_lines.end());
+		for (uint32 l : vertex_lines)
+			if (l != INVALID_INDEX && !is_claimed(l))
+				detail::release_index<V>(m, l);
 	}
 	// the component can come apart the same way: one part keeps its line, the
-	// others get new ones (split_component_lines); a part left with boundary
-	// darts only is removed. A part's walk stops at its first real dart, so
-	// only boundary-only parts (removed anyway) are walked whole. The parts
-	// are told apart from one dart per vertex around f.
-	const bool components_indexed = set_indices && m.cell_index_[orbit_index(W)] != nullptr;
-	DartMarkerStore<CMap2> done(m);
+	// others get new ones (split_component_lines, from one dart per vertex); a
+	// part left with boundary darts only is removed. A part's walk stops at
+	// its first real dart, so only boundary-only parts (removed anyway) are
+	// walked whole.
+	DartMarkerStore<CMap2> boundary_part(m);
 	std::vector<Dart> boundary_only, seeds;
-	for (Dart x : survivors)
+	for (Dart x : vertices)
 	{
-		if (done.is_marked(x))
+		if (boundary_part.is_marked(x))
 			continue;
 		bool real = false;
 		foreach_dart_of_orbit(m, CMap2::Volume(x), [&](Dart y) { return !(real = !is_boundary(m, y)); });
-		if (!real)
+		if (real)
+			seeds.push_back(x);
+		else
 		{
-			done.mark_orbit(CMap2::Volume(x));
+			boundary_part.mark_orbit(CMap2::Volume(x));
 			boundary_only.push_back(x);
-			continue;
 		}
-		done.mark_orbit(CMap2::Vertex(x));
-		seeds.push_back(x);
 	}
-	if (components_indexed && w != INVALID_INDEX)
+	if (set_indices && m.cell_index_[orbit_index(W)] != nullptr && w != INVALID_INDEX)
 	{
 		if (seeds.empty())
 			detail::release_index<W>(m, w);

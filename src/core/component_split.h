@@ -6,7 +6,7 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
+#include <unordered_set>
 #include <vector>
 
 namespace cgogn::detail
@@ -30,18 +30,26 @@ std::array<Dart, MAP::dimension> linked_darts(const MAP& m, Dart d)
 		return {phi1(m, d), phi2(m, d)};
 }
 
-/// The darts of the connected component of a or of b when an edit has cut
-/// them apart, found by walking both components at once, one dart each in
-/// turn: the walk that ends first has met its whole component, which it
-/// returns with its side (0 for a, 1 for b). nullopt when the two walks meet:
-/// a and b are still connected. O(darts met before the walks meet or the
-/// smaller component ends), never the whole mesh unless the parts are joined
-/// only far away.
+/// What walking from a and b at once found (detached_part).
+struct PartSearch
+{
+	bool apart = false; // the walks did not meet: a and b are no longer connected
+	int ended = 0;      // when apart, the side whose walk ended: 0 for a, 1 for b
+	/// When apart, the whole component of the side that ended; otherwise the
+	/// darts walked from a, all in b's component.
+	std::vector<Dart> darts;
+};
+
+/// Whether an edit has cut a and b apart, found by walking both components at
+/// once, one dart each in turn, until the walks meet or one of them ends (it
+/// has then met its whole component). O(darts met before the walks meet or
+/// the smaller component ends), never the whole mesh unless the parts are
+/// joined only far away.
 template <typename MAP>
-std::optional<std::pair<int, std::vector<Dart>>> detached_part(const MAP& m, Dart a, Dart b)
+PartSearch detached_part(const MAP& m, Dart a, Dart b)
 {
 	if (a == b)
-		return std::nullopt;
+		return {false, 0, {a}};
 	DartMarkerStore<MAP> seen_a(m), seen_b(m);
 	std::vector<Dart> walk_a{a}, walk_b{b};
 	std::size_t next_a = 0, next_b = 0;
@@ -62,24 +70,26 @@ std::optional<std::pair<int, std::vector<Dart>>> detached_part(const MAP& m, Dar
 		}
 		return true;
 	};
-	std::optional<std::pair<int, std::vector<Dart>>> result;
+	PartSearch result;
 	for (;;)
 	{
 		if (next_a == walk_a.size())
 		{
-			result.emplace(0, std::move(walk_a));
+			result = {true, 0, std::move(walk_a)};
 			break;
 		}
 		if (!step(walk_a, next_a, seen_a, seen_b))
 			break;
 		if (next_b == walk_b.size())
 		{
-			result.emplace(1, std::move(walk_b));
+			result = {true, 1, std::move(walk_b)};
 			break;
 		}
 		if (!step(walk_b, next_b, seen_b, seen_a))
 			break;
 	}
+	if (!result.apart)
+		result.darts = std::move(walk_a);
 	count_reindexed_darts(seen_a.marked_darts().size() + seen_b.marked_darts().size());
 	return result;
 }
@@ -88,8 +98,9 @@ std::optional<std::pair<int, std::vector<Dart>>> detached_part(const MAP& m, Dar
 /// `line` into parts, each holding at least one dart of `seeds` (live darts).
 /// Precondition: every dart of those parts carries `line`. The part that no
 /// walk ended in (the larger one, when two parts are compared) keeps `line`;
-/// every other part, walked whole by detached_part, gets a new line. O(seeds^2
-/// x the cost of detached_part).
+/// every other part, walked whole by detached_part, gets a new line. A seed
+/// met by an earlier walk is not searched again. O(seeds x parts x the cost
+/// of detached_part).
 template <typename CELL, typename MAP>
 void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 {
@@ -101,27 +112,39 @@ void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 		bool walked = false;
 	};
 	std::vector<Part> parts;
+	std::unordered_set<uint32> placed; // darts known to lie in one of the parts
+	const auto place = [&](const std::vector<Dart>& darts) {
+		for (Dart d : darts)
+			placed.insert(d.index);
+	};
 	for (Dart s : seeds)
 	{
+		if (placed.count(s.index))
+			continue;
 		Part candidate{s, {}, false};
 		bool known = false;
 		for (Part& p : parts)
 		{
-			auto apart = detached_part(m, s, p.seed);
-			if (!apart)
+			PartSearch found = detached_part(m, s, p.seed);
+			if (!found.apart)
 			{
+				place(found.darts);
 				known = true;
 				break;
 			}
-			Part& ended = apart->first == 0 ? candidate : p;
+			Part& ended = found.ended == 0 ? candidate : p;
 			if (!ended.walked)
 			{
-				ended.darts = std::move(apart->second);
+				place(found.darts);
+				ended.darts = std::move(found.darts);
 				ended.walked = true;
 			}
 		}
 		if (!known)
+		{
+			placed.insert(s.index);
 			parts.push_back(std::move(candidate));
+		}
 	}
 	if (parts.empty())
 		return;

@@ -75,7 +75,7 @@ private:
 			std::sort(olds.begin(), olds.end());
 			olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
 			std::erase_if(olds, [&](uint32 l) { return !cells.is_live(l); });
-			if (is_component_orbit(O) && olds.size() == 1 && !region.empty())
+			if (O == Orbit::PHI1_PHI2_PHI3 && olds.size() == 1 && !region.empty())
 			{
 				for (Dart d : region)
 					(*idx)[d.index] = olds.front();
@@ -118,10 +118,6 @@ private:
 		}
 	}
 
-	static constexpr bool is_component_orbit(Orbit o)
-	{
-		return o == Orbit::PHI1_PHI2_PHI3 || (MAP::dimension == 2 && o == Orbit::PHI1_PHI2);
-	}
 
 	std::array<std::vector<uint32>, NB_ORBITS> old_;
 	bool components_may_split_ = false;

@@ -197,6 +197,14 @@ TEST(OperatorContracts, NewLinesAfterCompactionHoldDefaults)
 TEST(OperatorContracts, BoundaryFaceOfOneEdge)
 {
 	// a tetrahedron without its face (1, 2, 3): the hole is 1 -> 3 -> 2
+	const auto last_boundary_dart = [](const CMap2& m) {
+		Dart b;
+		foreach_dart(m, [&](Dart d) {
+			if (is_boundary(m, d))
+				b = d;
+		});
+		return b;
+	};
 	auto zipped = [] {
 		CMap2 m = surface(4, {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}});
 		// zip at 2: 1 -> 2 against 2 -> 3... real darts 2 -> 1 and 3 -> 2
@@ -209,11 +217,7 @@ TEST(OperatorContracts, BoundaryFaceOfOneEdge)
 	{
 		CMap2 m = zipped();
 		// one boundary face left, of one dart
-		Dart b;
-		foreach_dart(m, [&](Dart d) {
-			if (is_boundary(m, d))
-				b = d;
-		});
+		const Dart b = last_boundary_dart(m);
 		ASSERT_TRUE(b.is_valid());
 		ASSERT_EQ(phi1(m, b), b);
 		// its edge is a loop: it cannot be contracted
@@ -225,11 +229,7 @@ TEST(OperatorContracts, BoundaryFaceOfOneEdge)
 	}
 	{
 		CMap2 m = zipped();
-		Dart b;
-		foreach_dart(m, [&](Dart d) {
-			if (is_boundary(m, d))
-				b = d;
-		});
+		const Dart b = last_boundary_dart(m);
 		ASSERT_TRUE(b.is_valid());
 		const Face other = add_face(m, 3);
 		ASSERT_TRUE(can_sew_faces(m, Edge(phi2(m, b)), Edge(other.dart)));

@@ -9,6 +9,7 @@
 #include <cgogn/core.h>
 
 #include "component_split.h"
+#include "map_test_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -17,28 +18,16 @@
 #include <vector>
 
 using namespace cgogn;
+using test::index_everything;
 
 namespace
 {
-
-template <typename MAP>
-void index_every_orbit(MAP& m)
-{
-	[&]<typename... C>(std::tuple<C...>*) {
-		(
-			[&] {
-				if constexpr (C::ORBIT != Orbit::DART)
-					add_attribute<uint32, C>(m, "index_holder");
-			}(),
-			...);
-	}(static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
-}
 
 CMap2 grid(uint32 n)
 {
 	CMap2 m;
 	build_surface(m, grid_soup(n, n, true));
-	index_every_orbit(m);
+	index_everything(m);
 	return m;
 }
 
@@ -46,7 +35,7 @@ CMap3 tet_grid(uint32 n)
 {
 	CMap3 m;
 	build_volume(m, tet_grid_soup(n, n, n));
-	index_every_orbit(m);
+	index_everything(m);
 	return m;
 }
 
@@ -168,6 +157,21 @@ const std::vector<Edit<CMap2>>& surface_edits()
 	return edits;
 }
 
+// Each edit on a map made by make(small) and one made by make(large): the
+// reindexing visits as many darts on both, and at most `bound`.
+template <typename MAP>
+void expect_local(const std::vector<Edit<MAP>>& edits, MAP (*make)(uint32), uint32 small, uint32 large,
+				  std::uint64_t bound)
+{
+	for (const auto& [name, edit] : edits)
+	{
+		MAP on_small = make(small), on_large = make(large);
+		const std::uint64_t n_small = visited(on_small, edit), n_large = visited(on_large, edit);
+		EXPECT_EQ(n_small, n_large) << name;
+		EXPECT_LE(n_large, bound) << name;
+	}
+}
+
 } // namespace
 
 // The boundary of the large grid has 6 x 2 x 24^2 triangles (20,736 darts),
@@ -177,24 +181,14 @@ const std::vector<Edit<CMap2>>& surface_edits()
 // split_tetra indexes its new cells directly (it visits no dart).
 TEST(OperatorLocality, VolumeEditsVisitTheSameDartsOnSmallAndLargeMeshes)
 {
-	for (const auto& [name, edit] : volume_edits())
-	{
-		CMap3 small = tet_grid(4), large = tet_grid(24);
-		const std::uint64_t on_small = visited(small, edit), on_large = visited(large, edit);
-		EXPECT_EQ(on_small, on_large) << name;
-		EXPECT_LE(on_large, 4000u) << name;
-	}
+	expect_local(volume_edits(), tet_grid, 4, 24, 4000);
 }
 
+// 2-maps index the cells of an edit directly; the count covers the walks of
+// components (remove_face, fill_hole, sew and unsew).
 TEST(OperatorLocality, SurfaceEditsVisitTheSameDartsOnSmallAndLargeMeshes)
 {
-	for (const auto& [name, edit] : surface_edits())
-	{
-		CMap2 small = grid(8), large = grid(300);
-		const std::uint64_t on_small = visited(small, edit), on_large = visited(large, edit);
-		EXPECT_EQ(on_small, on_large) << name;
-		EXPECT_LE(on_large, 500u) << name;
-	}
+	expect_local(surface_edits(), grid, 8, 300, 500);
 }
 
 // A component that an edit really cuts in two is walked, but only its smaller
@@ -208,7 +202,7 @@ TEST(OperatorLocality, ASplitComponentWalksOnlyItsSmallerPart)
 	s.face_vertices.insert(s.face_vertices.end(), {1, 0, apex}); // across the border edge 0 -> 1
 	CMap2 m;
 	build_surface(m, s);
-	index_every_orbit(m);
+	index_everything(m);
 	ASSERT_EQ(nb_cells<CMap2::Volume>(m), 1u);
 	const Dart d = Dart(0), t = phi2(m, d); // 0 -> 1 in the grid, 1 -> 0 in the triangle
 	ASSERT_FALSE(is_boundary(m, t));
