@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include "cmap3_build.h"
+
 #include <cgogn/core/functions/darts.h>
 #include <cgogn/core/operators/index_helpers.h>
 
-#include "cmap3_build.h"
-
+#include <algorithm>
 #include <map>
 #include <unordered_map>
 
@@ -61,7 +62,7 @@ FaceList prism_faces(uint32 n)
 }
 
 std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span<const uint32> labels,
-									  std::vector<uint32>& dart_labels)
+                                      std::vector<uint32>& dart_labels)
 {
 	std::vector<Dart> darts;
 	const std::size_t first_label = dart_labels.size();
@@ -96,7 +97,22 @@ std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span
 	return darts;
 }
 
-void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created)
+namespace
+{
+// From boundary dart b, the boundary dart met by turning around its edge
+// through the volumes (phi3 into the volume, then phi2 and phi3 until a
+// boundary volume). The walk back from the result gives b.
+Dart turn_to_boundary(const CMap3& m, Dart b)
+{
+	Dart it = phi2(m, phi3(m, b));
+	while (!is_boundary(m, phi3(m, it)))
+		it = phi2(m, phi3(m, it));
+	return phi3(m, it);
+}
+} // namespace
+
+void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created,
+                      std::span<const std::pair<Dart, Dart>> cut, std::vector<Dart>* repaired)
 {
 	const std::size_t first = created.size();
 	std::vector<Dart> face;
@@ -124,21 +140,68 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 		for (std::size_t i = 0; i < k; ++i)
 			set_phi1(m, created[b0 + i], created[b0 + (i + k - 1) % k]);
 	}
-	for (std::size_t i = first; i < created.size(); ++i)
+	const std::span<const Dart> fresh(created.begin() + std::ptrdiff_t(first), created.end());
+	auto is_fresh = [&](Dart b) { return std::find(fresh.begin(), fresh.end(), b) != fresh.end(); };
+	// Each new boundary dart b takes the boundary dart z met by turning around
+	// its edge: the fan of volumes between them becomes an edge of its own,
+	// closed by the boundary. When z was paired with an older boundary dart p
+	// (the edge had a boundary already), p is left free.
+	std::vector<std::pair<Dart, Dart>> taken; // (z, its former partner p)
+	for (Dart b : fresh)
 	{
-		const Dart b = created[i];
 		if (phi2(m, b) != b)
 			continue;
-		// turn around the edge inside the volumes until the next boundary face;
-		// if that face was already there (the hole reaches the old boundary), its
-		// old phi2 partner will be found from the other side of the hole
-		Dart it = phi2(m, phi3(m, b));
-		while (!is_boundary(m, phi3(m, it)))
-			it = phi2(m, phi3(m, it));
-		const Dart z = phi3(m, it);
+		const Dart z = turn_to_boundary(m, b);
 		if (phi2(m, z) != z)
+		{
+			taken.emplace_back(z, phi2(m, z));
 			phi2_unsew(m, z);
+		}
 		phi2_sew(m, b, z);
+	}
+	// A freed p is paired with the dart the edge led to before the change,
+	// through the fan that left: from p's former partner, turn through the
+	// volumes, across each cut face to the other side (`cut`), until an old
+	// boundary dart z', whose former partner closes the gap. The rest of a
+	// pinched edge (fans joined by boundary faces) thus stays one edge. Where
+	// the walk meets a new face with no other side (closing low-level sewing),
+	// p turns around its own edge like a new dart.
+	auto former_partner = [&](Dart z)
+	{
+		for (const auto& [zz, p] : taken)
+			if (zz == z)
+				return p;
+		return Dart();
+	};
+	auto other_side = [&](Dart b)
+	{
+		const Dart x = phi3(m, b);
+		for (const auto& [c1, c2] : cut)
+			if (c1 == x || c2 == x)
+				return phi3(m, c1 == x ? c2 : c1);
+		return Dart();
+	};
+	for (std::size_t i = 0; i < taken.size(); ++i)
+	{
+		const auto [z, p] = taken[i];
+		if (repaired != nullptr) // both ends of both: the vertices may come apart too
+			repaired->insert(repaired->end(), {z, phi1(m, z), p, phi1(m, p)});
+		if (phi2(m, p) != p)
+			continue;
+		Dart c = z, mate;
+		for (std::size_t guard = 0; guard <= fresh.size() && !mate.is_valid(); ++guard)
+		{
+			const Dart end = turn_to_boundary(m, c);
+			if (!is_fresh(end))
+				mate = phi2(m, end) == end ? end : former_partner(end);
+			else if (!(c = other_side(end)).is_valid())
+				break;
+		}
+		if (!mate.is_valid() || phi2(m, mate) != mate)
+			mate = turn_to_boundary(m, p);
+		if (phi2(m, mate) != mate)
+			continue; // paired meanwhile: p's own walk meets a dart already taken
+		phi2_sew(m, p, mate);
 	}
 }
 

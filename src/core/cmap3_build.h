@@ -4,6 +4,7 @@
 #include <cgogn/core/types/maps/cmap3.h>
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace cgogn::detail
@@ -24,11 +25,17 @@ FaceList prism_faces(uint32 n);
 /// local vertex f[i]; the label of each new dart's origin is appended to
 /// `dart_labels`. Returns the darts, face after face. O(size^2 / faces).
 std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span<const uint32> labels,
-									  std::vector<uint32>& dart_labels);
+                                      std::vector<uint32>& dart_labels);
 
 /// Closes the phi3 fixed points among `darts` with boundary faces, sewn into
 /// boundary volumes; appends the new darts to `created`. New darts get the
-/// vertex index of their origin when vertices are indexed.
-void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created);
+/// vertex index of their origin when vertices are indexed. Around each edge,
+/// a new boundary face is sewn to the boundary face met by turning through
+/// the volumes. After an unsew, `cut` holds the pairs of darts that were
+/// phi3-sewn: an older boundary dart whose partner a new face took is then
+/// paired with the dart its edge led to through the cut fan, so that the rest
+/// of a pinched edge stays one edge; such darts are appended to `repaired`.
+void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created,
+                      std::span<const std::pair<Dart, Dart>> cut = {}, std::vector<Dart>* repaired = nullptr);
 
 } // namespace cgogn::detail

@@ -3,11 +3,11 @@
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
-#include "cmap3_build.h"
-#include "reindex.h"
-
 #include <algorithm>
 #include <numeric>
+
+#include "cmap3_build.h"
+#include "reindex.h"
 
 namespace cgogn
 {
@@ -125,13 +125,18 @@ void unsew_volumes(CMap3& m, CMap3::Face f, bool set_indices)
 	reindexer.components_may_split();
 	if (set_indices)
 		reindexer.record(m, side);
+	std::vector<std::pair<Dart, Dart>> cut;
 	for (std::size_t i = 0; i < side.size() / 2; ++i)
+	{
+		cut.emplace_back(side[i], phi3(m, side[i]));
 		phi3_unsew(m, side[i]);
-	std::vector<Dart> created;
-	detail::close_phi3_holes(m, side, created);
+	}
+	std::vector<Dart> created, repaired;
+	detail::close_phi3_holes(m, side, created, cut, &repaired);
 	if (set_indices)
 	{
 		side.insert(side.end(), created.begin(), created.end());
+		side.insert(side.end(), repaired.begin(), repaired.end());
 		reindexer.apply(m, side);
 	}
 }
@@ -144,7 +149,7 @@ bool can_sew_volumes(const CMap3& m, CMap3::Face f1, CMap3::Face f2)
 	if (same_orbit(m, CMap3::Face2(d1), CMap3::Face2(d2)))
 		return false;
 	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d1)) ==
-		   codegree(static_cast<const CMap1&>(m), CMap1::Face(d2));
+	       codegree(static_cast<const CMap1&>(m), CMap1::Face(d2));
 }
 
 void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices)
@@ -160,24 +165,46 @@ void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices)
 		b2.push_back(phi3(m, y[i]));
 	}
 	detail::RegionReindexer<CMap3> reindexer;
+	// the boundary faces that vanish may have been the only link between two
+	// parts (fans of a pinched edge joined through the boundary)
+	reindexer.components_may_split();
 	std::vector<Dart> touched = x;
 	touched.insert(touched.end(), y.begin(), y.end());
 	touched.insert(touched.end(), b1.begin(), b1.end());
 	touched.insert(touched.end(), b2.begin(), b2.end());
 	if (set_indices)
 		reindexer.record(m, touched);
-	// the boundary faces in between vanish: their phi2 neighbours meet
+	// The boundary faces in between vanish. A boundary dart n beside them
+	// meets the dart its edge leads to across them: from phi2(n), go to the
+	// matching dart of the other face (b1[i] <-> b2[i]) and take its phi2,
+	// again while that is one of the vanishing darts (a boundary face folded
+	// onto itself or onto the other one along an edge).
 	std::vector<Dart> region = x;
 	region.insert(region.end(), y.begin(), y.end());
-	for (std::size_t i = 0; i < x.size(); ++i)
+	const auto vanishing = [&](Dart d) { return contains(b1, d) || contains(b2, d); };
+	const auto matching = [&](Dart b)
 	{
-		const Dart n1 = phi2(m, b1[i]), n2 = phi2(m, b2[i]);
-		if (contains(b1, n1) || contains(b2, n1))
-			continue; // the two boundary faces were adjacent along this edge
-		detail::set_phi2(m, n1, n2);
-		detail::set_phi2(m, n2, n1);
-		region.push_back(n1);
-		region.push_back(n2);
+		const auto i1 = std::find(b1.begin(), b1.end(), b);
+		return i1 != b1.end() ? b2[std::size_t(i1 - b1.begin())]
+		                      : b1[std::size_t(std::find(b2.begin(), b2.end(), b) - b2.begin())];
+	};
+	std::vector<std::pair<Dart, Dart>> meet;
+	for (const std::vector<Dart>* face : {&b1, &b2})
+		for (Dart b : *face)
+		{
+			const Dart n = phi2(m, b);
+			if (vanishing(n))
+				continue;
+			Dart t = b;
+			do
+				t = phi2(m, matching(t));
+			while (vanishing(t));
+			meet.emplace_back(n, t);
+		}
+	for (const auto& [n, t] : meet)
+	{
+		detail::set_phi2(m, n, t);
+		region.push_back(n);
 	}
 	for (std::size_t i = 0; i < x.size(); ++i)
 	{
@@ -217,7 +244,8 @@ void remove_volume(CMap3& m, CMap3::Volume w, bool set_indices)
 			ys.push_back(phi3(m, x));
 		// the dart met across the vanishing face from z: the face can be glued
 		// to itself along an edge (folded), the walk then goes on through it
-		const auto across = [&](Dart z) {
+		const auto across = [&](Dart z)
+		{
 			for (std::size_t k = 0; k <= 2 * xs.size(); ++k)
 			{
 				if (const auto ix = std::find(xs.begin(), xs.end(), z); ix != xs.end())
@@ -303,7 +331,8 @@ CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices)
 		region.push_back(x);
 	if (set_indices)
 		reindexer.record(m, region);
-	auto cut = [&](Dart a, Dart b) {
+	auto cut = [&](Dart a, Dart b)
+	{
 		// x: origin(b) -> origin(a) before a, y: origin(a) -> origin(b) before b
 		const Dart pa = phi_1(m, a), pb = phi_1(m, b);
 		const Dart x = detail::add_dart(m), y = detail::add_dart(m);
@@ -328,10 +357,32 @@ CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices)
 	return CMap3::Edge(y);
 }
 
+bool can_cut_volume(const CMap3& m, const std::vector<Dart>& path)
+{
+	const std::size_t k = path.size();
+	if (k < 3 || is_boundary(m, path[0]))
+		return false;
+	// each dart leaves a vertex of the volume not met before, from where the
+	// previous one arrived; so every dart is in the volume of path[0]
+	DartMarkerStore<CMap3> met(m);
+	for (std::size_t i = 0; i < k; ++i)
+	{
+		if (met.is_marked(path[i]))
+			return false;
+		met.mark_orbit(CMap3::Vertex2(path[i]));
+		const Dart next = path[(i + 1) % k];
+		bool follows = false;
+		foreach_dart_of_orbit(m, CMap3::Vertex2(phi1(m, path[i])), [&](Dart x) { return !(follows = x == next); });
+		if (!follows)
+			return false;
+	}
+	return true;
+}
+
 CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices)
 {
 	const std::size_t k = path.size();
-	assert(k >= 3 && !is_boundary(m, path[0]));
+	assert(can_cut_volume(m, path));
 	std::vector<Dart> q(k), f(k), g(k);
 	for (std::size_t i = 0; i < k; ++i)
 		q[i] = phi2(m, path[i]);
@@ -372,11 +423,12 @@ bool can_merge_incident_volumes(const CMap3& m, CMap3::Face f)
 		return false;
 	// a face glued to itself along an edge (phi2 inside the face) would leave
 	// that edge without faces: its darts vanish with the face
-	const auto folded = [&](Dart x) {
+	const auto folded = [&](Dart x)
+	{
 		bool fold = false;
-		foreach_dart_of_orbit(m, CMap3::Face2(x), [&](Dart y) {
-			return !(fold = same_orbit(m, CMap3::Face2(phi2(m, y)), CMap3::Face2(x)));
-		});
+		foreach_dart_of_orbit(m, CMap3::Face2(x),
+		                      [&](Dart y)
+		                      { return !(fold = same_orbit(m, CMap3::Face2(phi2(m, y)), CMap3::Face2(x))); });
 		return fold;
 	};
 	return !folded(d) && !folded(d3);
@@ -421,8 +473,8 @@ bool can_merge_incident_faces(const CMap3& m, CMap3::Edge e)
 		return false;
 	const Dart d = e.dart, d2 = phi2(m, d);
 	return !same_orbit(m, CMap3::Face2(d), CMap3::Face2(d2)) &&
-		   codegree(static_cast<const CMap1&>(m), CMap1::Face(d)) >= 3 &&
-		   codegree(static_cast<const CMap1&>(m), CMap1::Face(d2)) >= 3;
+	       codegree(static_cast<const CMap1&>(m), CMap1::Face(d)) >= 3 &&
+	       codegree(static_cast<const CMap1&>(m), CMap1::Face(d2)) >= 3;
 }
 
 CMap3::Face merge_incident_faces(CMap3& m, CMap3::Edge e, bool set_indices)

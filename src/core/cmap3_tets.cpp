@@ -4,12 +4,12 @@
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
-#include "cmap3_cavity.h"
-
 #include <algorithm>
 #include <map>
 #include <set>
 #include <unordered_map>
+
+#include "cmap3_cavity.h"
 
 namespace cgogn
 {
@@ -46,11 +46,13 @@ bool is_tetra(const CMap3& m, Dart w)
 {
 	uint32 darts = 0;
 	bool triangles = true;
-	foreach_dart_of_orbit(m, Volume(w), [&](Dart d) {
-		++darts;
-		triangles = triangles && phi<1, 1, 1>(m, d) == d;
-		return triangles && darts <= 12;
-	});
+	foreach_dart_of_orbit(m, Volume(w),
+	                      [&](Dart d)
+	                      {
+		                      ++darts;
+		                      triangles = triangles && phi<1, 1, 1>(m, d) == d;
+		                      return triangles && darts <= 12;
+	                      });
 	return triangles && darts == 12;
 }
 
@@ -79,7 +81,8 @@ bool link_is_sphere_or_disk(const std::vector<std::array<uint32, 3>>& triangles)
 {
 	std::map<std::pair<uint32, uint32>, uint32> edge_count;
 	std::map<uint32, uint32> parent; // union-find over the link's vertices
-	const auto root = [&](uint32 x) {
+	const auto root = [&](uint32 x)
+	{
 		while (parent[x] != x)
 			x = parent[x] = parent[parent[x]];
 		return x;
@@ -128,19 +131,48 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 	std::set<std::pair<uint32, uint32>> ea, eb, eab, ba, bb;
 	std::set<std::array<uint32, 3>> ta, tb;
 	auto pair_of = [](uint32 x, uint32 y) { return std::make_pair(std::min(x, y), std::max(x, y)); };
-	bool tets_only = true;
+	bool star_ok = true;
 	std::vector<std::array<uint32, 3>> link_triangles; // of the last vertex given to link()
 	auto link = [&](Vertex v, uint32 lv, std::set<uint32>& vs, std::set<std::pair<uint32, uint32>>& es,
-					std::set<std::array<uint32, 3>>& ts) {
+	                std::set<std::array<uint32, 3>>& ts)
+	{
 		link_triangles.clear();
+		// The collapse rebuilds the star by vertex labels: two faces at v with the
+		// same corners (the two sides of an unsewn face) or two tets with the same
+		// corners cannot be told apart, so they are refused.
+		DartMarkerStore<CMap3> face_seen(m);
+		std::set<std::pair<uint32, uint32>> faces_at;
 		for (Dart w : volumes_around(m, v))
 		{
+			bool repeated = false;
+			foreach_dart_of_orbit(m, Volume(w),
+			                      [&](Dart x)
+			                      {
+				                      if (label(x) != lv || face_seen.is_marked(x))
+					                      return true;
+				                      face_seen.mark_orbit(CMap3::Face(x));
+				                      repeated =
+				                          !faces_at.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x)))).second;
+				                      return !repeated;
+			                      });
+			if (repeated)
+			{
+				star_ok = false;
+				return;
+			}
 			if (!is_tetra(m, w))
 			{
-				tets_only = false;
+				star_ok = false;
 				return;
 			}
 			Tet t = corners(m, w, label);
+			Tet sorted = t;
+			std::sort(sorted.begin(), sorted.end());
+			if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+			{
+				star_ok = false; // two corners are one vertex (volumes sewn onto themselves)
+				return;
+			}
 			std::vector<uint32> others;
 			for (uint32 x : t)
 				if (x != lv)
@@ -150,7 +182,11 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 			es.insert({others[0], others[1]});
 			es.insert({others[1], others[2]});
 			es.insert({others[0], others[2]});
-			ts.insert({others[0], others[1], others[2]});
+			if (!ts.insert({others[0], others[1], others[2]}).second)
+			{
+				star_ok = false; // two tets with the same corners
+				return;
+			}
 			link_triangles.push_back({others[0], others[1], others[2]});
 			if (lv == la && std::find(t.begin(), t.end(), lb) != t.end())
 			{
@@ -164,10 +200,10 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 		}
 	};
 	link(a, la, va, ea, ta);
-	if (!tets_only || !link_is_sphere_or_disk(link_triangles))
+	if (!star_ok || !link_is_sphere_or_disk(link_triangles))
 		return false;
 	link(b, lb, vb, eb, tb);
-	if (!tets_only || !link_is_sphere_or_disk(link_triangles))
+	if (!star_ok || !link_is_sphere_or_disk(link_triangles))
 		return false;
 	for (uint32 c : va)
 		if (c != lb && vb.count(c) && !vab.count(c))
@@ -179,11 +215,14 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 		if (tb.count(x))
 			return false;
 	// the outside as a vertex: boundary faces around a and b
-	auto boundary_faces = [&](Vertex v, std::set<std::pair<uint32, uint32>>& bs) {
-		foreach_dart_of_orbit(m, v, [&](Dart x) {
-			if (is_boundary(m, x))
-				bs.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x))));
-		});
+	auto boundary_faces = [&](Vertex v, std::set<std::pair<uint32, uint32>>& bs)
+	{
+		foreach_dart_of_orbit(m, v,
+		                      [&](Dart x)
+		                      {
+			                      if (is_boundary(m, x))
+				                      bs.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x))));
+		                      });
 	};
 	boundary_faces(a, ba);
 	boundary_faces(b, bb);
@@ -235,7 +274,10 @@ bool face_can_flip(const CMap3& m, CMap3::Face f)
 	if (is_boundary(m, d) || is_boundary(m, d3) || !is_tetra(m, d) || !is_tetra(m, d3))
 		return false;
 	const Vertex apex_a(phi_1(m, phi2(m, d))), apex_b(phi_1(m, phi2(m, d3)));
-	if (same_orbit(m, apex_a, apex_b))
+	// five distinct vertices (volumes sewn onto themselves can repeat one)
+	VertexLabels label(m);
+	std::set<uint32> corners{label(d), label(phi1(m, d)), label(phi_1(m, d)), label(apex_a.dart), label(apex_b.dart)};
+	if (corners.size() != 5)
 		return false;
 	bool joined = false;
 	foreach_adjacent_vertex_through_edge(m, apex_a, [&](Vertex v) { return !(joined = same_orbit(m, v, apex_b)); });
@@ -280,17 +322,24 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 	std::vector<uint32> ring;
 	for (Dart x : faces)
 		ring.push_back(label(phi_1(m, x)));
+	// the ends and the ring: distinct vertices (volumes sewn onto themselves can repeat one)
+	std::set<uint32> all(ring.begin(), ring.end());
+	all.insert({label(e.dart), label(phi1(m, e.dart))});
+	if (all.size() != ring.size() + 2)
+		return false;
 	if (faces.size() == 3)
 	{
 		// no face (c1, c2, c3) already: look at the faces around the edge c1 c2
 		bool exists = false;
 		Dart c1c2;
-		foreach_incident_edge(m, Vertex(phi_1(m, faces[0])), [&](CMap3::Edge x) {
-			if (label(phi1(m, x.dart)) != ring[1])
-				return true;
-			c1c2 = x.dart;
-			return false;
-		});
+		foreach_incident_edge(m, Vertex(phi_1(m, faces[0])),
+		                      [&](CMap3::Edge x)
+		                      {
+			                      if (label(phi1(m, x.dart)) != ring[1])
+				                      return true;
+			                      c1c2 = x.dart;
+			                      return false;
+		                      });
 		if (!c1c2.is_valid())
 			return false;
 		// a face around the edge c1 c2 whose third vertex is c3
@@ -300,9 +349,8 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 	}
 	// 4-4: the diagonal c1 c3 must not be an edge already
 	bool joined = false;
-	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])), [&](Vertex v) {
-		return !(joined = label(v.dart) == ring[2]);
-	});
+	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])),
+	                                     [&](Vertex v) { return !(joined = label(v.dart) == ring[2]); });
 	std::set<uint32> distinct(ring.begin(), ring.end());
 	return distinct.size() == 4 && !joined;
 }
@@ -324,7 +372,7 @@ Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 		return cavity.dart_between(c[0], c[1]);
 	}
 	cavity.fill({{a, c[0], c[1], c[2]}, {a, c[0], c[2], c[3]}, {b, c[0], c[1], c[2]}, {b, c[0], c[2], c[3]}},
-				set_indices);
+	            set_indices);
 	return cavity.dart_between(c[0], c[2]);
 }
 

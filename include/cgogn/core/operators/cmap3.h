@@ -80,10 +80,19 @@ bool can_cut_face(const CMap3& m, Dart d, Dart e);
 /// the new edge (its dart goes from the origin of d to the origin of e).
 CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices = true);
 
-/// Cuts the volume of the darts of `path` by a new face: `path` is a closed
-/// chain of darts of one volume (each starts where the previous one ends), not
-/// crossing itself. The part on the phi2 side of the path gets a new line.
-/// Returns the new face (its dart is phi2 of path[0]). O(size of the path).
+/// True when `path` is a closed chain of at least 3 darts of one non-boundary
+/// volume (each dart starts, in that volume, at the vertex where the previous
+/// one ends) through distinct vertices of the volume. O(sum of the degrees of
+/// those vertices in the volume).
+bool can_cut_volume(const CMap3& m, const std::vector<Dart>& path);
+/// Cuts the volume of the darts of `path` by a new face of path.size() edges,
+/// inserted along the path. The part on the path side keeps the volume's line,
+/// the part on the phi2 side gets a new one; a path around one face makes a
+/// volume of two faces. When the path does not separate the volume (around a
+/// handle), the volume stays one, glued to itself along the new face, and keeps
+/// its line. Vertices and edges keep their lines; the new face gets a new one.
+/// Returns the new face (its dart is phi2 of path[0]). Precondition:
+/// can_cut_volume(m, path). O(size of the path).
 CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices = true);
 
 /// True when the face separates two distinct non-boundary volumes and is not
@@ -110,7 +119,8 @@ CMap3::Face merge_incident_faces(CMap3& m, CMap3::Edge e, bool set_indices = tru
 CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices = true);
 
 /// True when edge e of a tetrahedral region can be contracted: every volume
-/// around its ends is a tetrahedron, and the link condition holds (the common
+/// around its ends is a tetrahedron with four distinct corner vertices, the
+/// link of each end is a sphere or a disk (no pinched vertex), and the link condition holds (the common
 /// vertices, edges and triangles of the links of its two ends are exactly
 /// those of the link of e, the outside counting as a vertex). Pure topology.
 /// O(size of the stars of the two ends).
