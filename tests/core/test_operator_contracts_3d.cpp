@@ -26,13 +26,7 @@ using test::index_everything;
 
 namespace
 {
-CMap3 indexed(const VolumeSoup& s)
-{
-	CMap3 m;
-	build_volume(m, s);
-	index_everything(m);
-	return m;
-}
+using test::indexed;
 
 CMap3 tets(uint32 nb_vertices, const std::vector<std::array<uint32, 4>>& cells)
 {

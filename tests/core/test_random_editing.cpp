@@ -615,7 +615,7 @@ void random_surface_editing(CMap2& m, uint32 steps, uint32 seed)
 
 void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
 {
-	random_editing(m, steps, seed, 16, edit_volume,
+	random_editing(m, steps, seed, 8, edit_volume,
 	               [](CMap3& map, uint32)
 	               {
 		               if (nb_cells<W3>(map) == 0)
