@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include "cmap3_build.h"
-
 #include <cgogn/core/functions/darts.h>
 #include <cgogn/core/operators/index_helpers.h>
+
+#include "cmap3_build.h"
 
 #include <algorithm>
 #include <map>
@@ -62,7 +62,7 @@ FaceList prism_faces(uint32 n)
 }
 
 std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span<const uint32> labels,
-                                      std::vector<uint32>& dart_labels)
+									  std::vector<uint32>& dart_labels)
 {
 	std::vector<Dart> darts;
 	const std::size_t first_label = dart_labels.size();
@@ -112,7 +112,7 @@ Dart turn_to_boundary(const CMap3& m, Dart b)
 } // namespace
 
 void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created,
-                      std::span<const std::pair<Dart, Dart>> cut, std::vector<Dart>* repaired)
+					  std::span<const std::pair<Dart, Dart>> cut, std::vector<Dart>* repaired)
 {
 	const std::size_t first = created.size();
 	std::vector<Dart> face;
@@ -166,15 +166,13 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 	// pinched edge (fans joined by boundary faces) thus stays one edge. Where
 	// the walk meets a new face with no other side (closing low-level sewing),
 	// p turns around its own edge like a new dart.
-	auto former_partner = [&](Dart z)
-	{
+	auto former_partner = [&](Dart z) {
 		for (const auto& [zz, p] : taken)
 			if (zz == z)
 				return p;
 		return Dart();
 	};
-	auto other_side = [&](Dart b)
-	{
+	auto other_side = [&](Dart b) {
 		const Dart x = phi3(m, b);
 		for (const auto& [c1, c2] : cut)
 			if (c1 == x || c2 == x)

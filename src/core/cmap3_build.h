@@ -25,7 +25,7 @@ FaceList prism_faces(uint32 n);
 /// local vertex f[i]; the label of each new dart's origin is appended to
 /// `dart_labels`. Returns the darts, face after face. O(size^2 / faces).
 std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span<const uint32> labels,
-                                      std::vector<uint32>& dart_labels);
+									  std::vector<uint32>& dart_labels);
 
 /// Closes the phi3 fixed points among `darts` with boundary faces, sewn into
 /// boundary volumes; appends the new darts to `created`. New darts get the
@@ -36,6 +36,6 @@ std::vector<Dart> add_volume_topology(CMap3& m, const FaceList& faces, std::span
 /// paired with the dart its edge led to through the cut fan, so that the rest
 /// of a pinched edge stays one edge; such darts are appended to `repaired`.
 void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created,
-                      std::span<const std::pair<Dart, Dart>> cut = {}, std::vector<Dart>* repaired = nullptr);
+					  std::span<const std::pair<Dart, Dart>> cut = {}, std::vector<Dart>* repaired = nullptr);
 
 } // namespace cgogn::detail

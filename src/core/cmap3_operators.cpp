@@ -3,11 +3,11 @@
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
-#include <algorithm>
-#include <numeric>
-
 #include "cmap3_build.h"
 #include "reindex.h"
+
+#include <algorithm>
+#include <numeric>
 
 namespace cgogn
 {
@@ -149,7 +149,7 @@ bool can_sew_volumes(const CMap3& m, CMap3::Face f1, CMap3::Face f2)
 	if (same_orbit(m, CMap3::Face2(d1), CMap3::Face2(d2)))
 		return false;
 	return codegree(static_cast<const CMap1&>(m), CMap1::Face(d1)) ==
-	       codegree(static_cast<const CMap1&>(m), CMap1::Face(d2));
+		   codegree(static_cast<const CMap1&>(m), CMap1::Face(d2));
 }
 
 void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices)
@@ -182,11 +182,10 @@ void sew_volumes(CMap3& m, CMap3::Face f1, CMap3::Face f2, bool set_indices)
 	std::vector<Dart> region = x;
 	region.insert(region.end(), y.begin(), y.end());
 	const auto vanishing = [&](Dart d) { return contains(b1, d) || contains(b2, d); };
-	const auto matching = [&](Dart b)
-	{
+	const auto matching = [&](Dart b) {
 		const auto i1 = std::find(b1.begin(), b1.end(), b);
 		return i1 != b1.end() ? b2[std::size_t(i1 - b1.begin())]
-		                      : b1[std::size_t(std::find(b2.begin(), b2.end(), b) - b2.begin())];
+							  : b1[std::size_t(std::find(b2.begin(), b2.end(), b) - b2.begin())];
 	};
 	std::vector<std::pair<Dart, Dart>> meet;
 	for (const std::vector<Dart>* face : {&b1, &b2})
@@ -244,8 +243,7 @@ void remove_volume(CMap3& m, CMap3::Volume w, bool set_indices)
 			ys.push_back(phi3(m, x));
 		// the dart met across the vanishing face from z: the face can be glued
 		// to itself along an edge (folded), the walk then goes on through it
-		const auto across = [&](Dart z)
-		{
+		const auto across = [&](Dart z) {
 			for (std::size_t k = 0; k <= 2 * xs.size(); ++k)
 			{
 				if (const auto ix = std::find(xs.begin(), xs.end(), z); ix != xs.end())
@@ -331,8 +329,7 @@ CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices)
 		region.push_back(x);
 	if (set_indices)
 		reindexer.record(m, region);
-	auto cut = [&](Dart a, Dart b)
-	{
+	auto cut = [&](Dart a, Dart b) {
 		// x: origin(b) -> origin(a) before a, y: origin(a) -> origin(b) before b
 		const Dart pa = phi_1(m, a), pb = phi_1(m, b);
 		const Dart x = detail::add_dart(m), y = detail::add_dart(m);
@@ -423,12 +420,11 @@ bool can_merge_incident_volumes(const CMap3& m, CMap3::Face f)
 		return false;
 	// a face glued to itself along an edge (phi2 inside the face) would leave
 	// that edge without faces: its darts vanish with the face
-	const auto folded = [&](Dart x)
-	{
+	const auto folded = [&](Dart x) {
 		bool fold = false;
-		foreach_dart_of_orbit(m, CMap3::Face2(x),
-		                      [&](Dart y)
-		                      { return !(fold = same_orbit(m, CMap3::Face2(phi2(m, y)), CMap3::Face2(x))); });
+		foreach_dart_of_orbit(m, CMap3::Face2(x), [&](Dart y) {
+			return !(fold = same_orbit(m, CMap3::Face2(phi2(m, y)), CMap3::Face2(x)));
+		});
 		return fold;
 	};
 	return !folded(d) && !folded(d3);
@@ -473,8 +469,8 @@ bool can_merge_incident_faces(const CMap3& m, CMap3::Edge e)
 		return false;
 	const Dart d = e.dart, d2 = phi2(m, d);
 	return !same_orbit(m, CMap3::Face2(d), CMap3::Face2(d2)) &&
-	       codegree(static_cast<const CMap1&>(m), CMap1::Face(d)) >= 3 &&
-	       codegree(static_cast<const CMap1&>(m), CMap1::Face(d2)) >= 3;
+		   codegree(static_cast<const CMap1&>(m), CMap1::Face(d)) >= 3 &&
+		   codegree(static_cast<const CMap1&>(m), CMap1::Face(d2)) >= 3;
 }
 
 CMap3::Face merge_incident_faces(CMap3& m, CMap3::Edge e, bool set_indices)

@@ -4,12 +4,12 @@
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
+#include "cmap3_cavity.h"
+
 #include <algorithm>
 #include <map>
 #include <set>
 #include <unordered_map>
-
-#include "cmap3_cavity.h"
 
 namespace cgogn
 {
@@ -46,13 +46,11 @@ bool is_tetra(const CMap3& m, Dart w)
 {
 	uint32 darts = 0;
 	bool triangles = true;
-	foreach_dart_of_orbit(m, Volume(w),
-	                      [&](Dart d)
-	                      {
-		                      ++darts;
-		                      triangles = triangles && phi<1, 1, 1>(m, d) == d;
-		                      return triangles && darts <= 12;
-	                      });
+	foreach_dart_of_orbit(m, Volume(w), [&](Dart d) {
+		++darts;
+		triangles = triangles && phi<1, 1, 1>(m, d) == d;
+		return triangles && darts <= 12;
+	});
 	return triangles && darts == 12;
 }
 
@@ -81,8 +79,7 @@ bool link_is_sphere_or_disk(const std::vector<std::array<uint32, 3>>& triangles)
 {
 	std::map<std::pair<uint32, uint32>, uint32> edge_count;
 	std::map<uint32, uint32> parent; // union-find over the link's vertices
-	const auto root = [&](uint32 x)
-	{
+	const auto root = [&](uint32 x) {
 		while (parent[x] != x)
 			x = parent[x] = parent[parent[x]];
 		return x;
@@ -134,8 +131,7 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 	bool star_ok = true;
 	std::vector<std::array<uint32, 3>> link_triangles; // of the last vertex given to link()
 	auto link = [&](Vertex v, uint32 lv, std::set<uint32>& vs, std::set<std::pair<uint32, uint32>>& es,
-	                std::set<std::array<uint32, 3>>& ts)
-	{
+					std::set<std::array<uint32, 3>>& ts) {
 		link_triangles.clear();
 		// The collapse rebuilds the star by vertex labels: two faces at v with the
 		// same corners (the two sides of an unsewn face) or two tets with the same
@@ -145,16 +141,13 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 		for (Dart w : volumes_around(m, v))
 		{
 			bool repeated = false;
-			foreach_dart_of_orbit(m, Volume(w),
-			                      [&](Dart x)
-			                      {
-				                      if (label(x) != lv || face_seen.is_marked(x))
-					                      return true;
-				                      face_seen.mark_orbit(CMap3::Face(x));
-				                      repeated =
-				                          !faces_at.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x)))).second;
-				                      return !repeated;
-			                      });
+			foreach_dart_of_orbit(m, Volume(w), [&](Dart x) {
+				if (label(x) != lv || face_seen.is_marked(x))
+					return true;
+				face_seen.mark_orbit(CMap3::Face(x));
+				repeated = !faces_at.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x)))).second;
+				return !repeated;
+			});
 			if (repeated)
 			{
 				star_ok = false;
@@ -215,14 +208,11 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 		if (tb.count(x))
 			return false;
 	// the outside as a vertex: boundary faces around a and b
-	auto boundary_faces = [&](Vertex v, std::set<std::pair<uint32, uint32>>& bs)
-	{
-		foreach_dart_of_orbit(m, v,
-		                      [&](Dart x)
-		                      {
-			                      if (is_boundary(m, x))
-				                      bs.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x))));
-		                      });
+	auto boundary_faces = [&](Vertex v, std::set<std::pair<uint32, uint32>>& bs) {
+		foreach_dart_of_orbit(m, v, [&](Dart x) {
+			if (is_boundary(m, x))
+				bs.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x))));
+		});
 	};
 	boundary_faces(a, ba);
 	boundary_faces(b, bb);
@@ -276,7 +266,8 @@ bool face_can_flip(const CMap3& m, CMap3::Face f)
 	const Vertex apex_a(phi_1(m, phi2(m, d))), apex_b(phi_1(m, phi2(m, d3)));
 	// five distinct vertices (volumes sewn onto themselves can repeat one)
 	VertexLabels label(m);
-	std::set<uint32> corners{label(d), label(phi1(m, d)), label(phi_1(m, d)), label(apex_a.dart), label(apex_b.dart)};
+	std::set<uint32> corners{label(d), label(phi1(m, d)), label(phi_1(m, d)), label(apex_a.dart),
+							 label(apex_b.dart)};
 	if (corners.size() != 5)
 		return false;
 	bool joined = false;
@@ -332,14 +323,12 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 		// no face (c1, c2, c3) already: look at the faces around the edge c1 c2
 		bool exists = false;
 		Dart c1c2;
-		foreach_incident_edge(m, Vertex(phi_1(m, faces[0])),
-		                      [&](CMap3::Edge x)
-		                      {
-			                      if (label(phi1(m, x.dart)) != ring[1])
-				                      return true;
-			                      c1c2 = x.dart;
-			                      return false;
-		                      });
+		foreach_incident_edge(m, Vertex(phi_1(m, faces[0])), [&](CMap3::Edge x) {
+			if (label(phi1(m, x.dart)) != ring[1])
+				return true;
+			c1c2 = x.dart;
+			return false;
+		});
 		if (!c1c2.is_valid())
 			return false;
 		// a face around the edge c1 c2 whose third vertex is c3
@@ -349,8 +338,9 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 	}
 	// 4-4: the diagonal c1 c3 must not be an edge already
 	bool joined = false;
-	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])),
-	                                     [&](Vertex v) { return !(joined = label(v.dart) == ring[2]); });
+	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])), [&](Vertex v) {
+		return !(joined = label(v.dart) == ring[2]);
+	});
 	std::set<uint32> distinct(ring.begin(), ring.end());
 	return distinct.size() == 4 && !joined;
 }
@@ -372,7 +362,7 @@ Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 		return cavity.dart_between(c[0], c[1]);
 	}
 	cavity.fill({{a, c[0], c[1], c[2]}, {a, c[0], c[2], c[3]}, {b, c[0], c[1], c[2]}, {b, c[0], c[2], c[3]}},
-	            set_indices);
+				set_indices);
 	return cavity.dart_between(c[0], c[2]);
 }
 

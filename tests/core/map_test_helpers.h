@@ -28,14 +28,12 @@ template <typename CELL, typename MAP, typename P>
 CELL find(const MAP& m, P pred)
 {
 	CELL r;
-	foreach_cell(m,
-	             [&](CELL c)
-	             {
-		             if (!pred(c))
-			             return true;
-		             r = c;
-		             return false;
-	             });
+	foreach_cell(m, [&](CELL c) {
+		if (!pred(c))
+			return true;
+		r = c;
+		return false;
+	});
 	return r;
 }
 
@@ -101,23 +99,23 @@ template <typename MAP>
 Counts counts(const MAP& m)
 {
 	return {nb_cells<typename MAP::Vertex>(m), nb_cells<typename MAP::Edge>(m), nb_cells<typename MAP::Face>(m),
-	        nb_cells<typename MAP::Volume>(m), MAP::dimension};
+			nb_cells<typename MAP::Volume>(m), MAP::dimension};
 }
 
 } // namespace cgogn::test
 
 /// check_integrity(m) is clean, or the test fails with the report.
-#define EXPECT_INTEGRITY(m)                                                                                            \
+#define EXPECT_INTEGRITY(m)                                                                                          \
 	do                                                                                                                 \
 	{                                                                                                                  \
-		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                               \
+		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                              \
 		EXPECT_TRUE(r_.ok()) << r_.to_string();                                                                        \
 	} while (0)
 
 /// check_integrity(m) is clean, or the test stops with the report.
-#define ASSERT_INTEGRITY(m)                                                                                            \
+#define ASSERT_INTEGRITY(m)                                                                                          \
 	do                                                                                                                 \
 	{                                                                                                                  \
-		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                               \
+		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                              \
 		ASSERT_TRUE(r_.ok()) << r_.to_string();                                                                        \
 	} while (0)

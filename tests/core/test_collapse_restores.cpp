@@ -42,12 +42,10 @@ struct DartState
 std::vector<DartState> snapshot(const CMap2& m)
 {
 	std::vector<DartState> s;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             s.push_back({d.index, phi1(m, d).index, phi2(m, d).index, index_of(m, Vertex(d)),
-		                          index_of(m, Edge(d)), index_of(m, Face(d)), is_boundary(m, d)});
-	             });
+	foreach_dart(m, [&](Dart d) {
+		s.push_back({d.index, phi1(m, d).index, phi2(m, d).index, index_of(m, Vertex(d)), index_of(m, Edge(d)),
+					 index_of(m, Face(d)), is_boundary(m, d)});
+	});
 	return s;
 }
 
@@ -113,12 +111,10 @@ TEST(CollapseRestores, FacesOnTheBoundary)
 	CMap2 m = indexed(grid_soup(5, 4, true));
 	const std::vector<DartState> before = snapshot(m);
 	std::vector<Face> border;
-	foreach_cell(m,
-	             [&](Face f)
-	             {
-		             if (is_incident_to_boundary(m, f))
-			             border.push_back(f);
-	             });
+	foreach_cell(m, [&](Face f) {
+		if (is_incident_to_boundary(m, f))
+			border.push_back(f);
+	});
 	ASSERT_GT(border.size(), 10u);
 	split_then_collapse(m, border, identity(border.size()));
 	EXPECT_EQ(snapshot(m), before);
@@ -185,8 +181,7 @@ TEST(CollapseRestores, TheLowerEdgeOfAVanishingTriangleSurvivesWhole)
 	collapse_edge(m, e);
 	EXPECT_INTEGRITY(m);
 	std::vector<uint32> expected = live_before, live_after;
-	std::erase_if(expected, [&](uint32 d)
-	              { return std::find(expected_gone.begin(), expected_gone.end(), d) != expected_gone.end(); });
+	std::erase_if(expected, [&](uint32 d) { return std::find(expected_gone.begin(), expected_gone.end(), d) != expected_gone.end(); });
 	foreach_dart(m, [&](Dart d) { live_after.push_back(d.index); });
 	EXPECT_EQ(live_after, expected);
 }
@@ -208,12 +203,10 @@ TEST(CollapseRestores, TenPercentBatchesOnARealMesh)
 	{
 		std::vector<Face> faces;
 		uint32 rank = 0;
-		foreach_cell(m,
-		             [&](Face f)
-		             {
-			             if (rank++ % 10 == batch)
-				             faces.push_back(f);
-		             });
+		foreach_cell(m, [&](Face f) {
+			if (rank++ % 10 == batch)
+				faces.push_back(f);
+		});
 		std::vector<Vertex> centres;
 		for (Face f : faces)
 			centres.push_back(triangulate_face(m, f));
@@ -245,12 +238,10 @@ TEST(CollapseRestores, ATriangleSharingTwoEdgesWithTheOtherFace)
 		ASSERT_EQ(faces_of_degree(m, 7), 1u);
 		const Counts before = counts(m);
 		std::vector<Dart> around_b;
-		foreach_dart_of_orbit(m, b,
-		                      [&](Dart d)
-		                      {
-			                      around_b.push_back(d);
-			                      around_b.push_back(phi2(m, d));
-		                      });
+		foreach_dart_of_orbit(m, b, [&](Dart d) {
+			around_b.push_back(d);
+			around_b.push_back(phi2(m, d));
+		});
 		const Edge e(around_b[which]); // b -> x or x -> b
 		ASSERT_TRUE(edge_can_collapse(m, e)) << which;
 		const uint32 survivor = index_of(m, Vertex(phi2(m, e.dart)));

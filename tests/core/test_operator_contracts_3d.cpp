@@ -61,14 +61,12 @@ Dart dart_of_vertex(const CMap3& m, uint32 line)
 Edge collapsible_from(const CMap3& m, uint32 a)
 {
 	Edge r;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             if (is_boundary(m, d) || index_of(m, Vertex(d)) != a || !edge_can_collapse(m, Edge(d)))
-			             return true;
-		             r = Edge(d);
-		             return false;
-	             });
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d) || index_of(m, Vertex(d)) != a || !edge_can_collapse(m, Edge(d)))
+			return true;
+		r = Edge(d);
+		return false;
+	});
 	return r;
 }
 } // namespace
@@ -79,63 +77,56 @@ TEST(OperatorContracts3, EveryOperatorDropsIncidenceCaches)
 {
 	using VW = IncidenceCache<CMap3, Vertex, Volume>;
 	const std::vector<std::pair<std::string, std::function<void(CMap3&)>>> edits = {
-	    {"add_tetra", [](CMap3& m) { add_tetra(m); }},
-	    {"sew_volumes",
-	     [](CMap3& m)
-	     {
-		     const Volume w = add_tetra(m);
-		     const Face f = find<Face>(m,
-		                               [&](Face x) {
-			                               return !is_boundary(m, x.dart) && is_boundary(m, phi3(m, x.dart)) &&
-			                                      !same_orbit(m, Volume(x.dart), w);
-		                               });
-		     sew_volumes(m, f, Face(w.dart));
-	     }},
-	    {"unsew_volumes", [](CMap3& m) { unsew_volumes(m, find<Face>(m, [&](Face f) { return inner(m, f); })); }},
-	    {"remove_volume", [](CMap3& m) { remove_volume(m, all<Volume>(m)[0]); }},
-	    {"cut_edge", [](CMap3& m) { cut_edge(m, all<Edge>(m)[0]); }},
-	    {"cut_face",
-	     [](CMap3& m)
-	     {
-		     const Dart d = all<Face>(m)[0].dart;
-		     cut_edge(m, Edge(d));
-		     VW::build(m);
-		     cut_face(m, d, phi<1, 1>(m, d));
-	     }},
-	    {"cut_volume",
-	     [](CMap3& m)
-	     {
-		     const Dart d = all<Volume>(m)[0].dart;
-		     cut_volume(m, {d, phi1(m, d), phi_1(m, d)});
-	     }},
-	    {"merge_incident_volumes",
-	     [](CMap3& m) { merge_incident_volumes(m, find<Face>(m, [&](Face f) { return inner(m, f); })); }},
-	    {"merge_incident_faces",
-	     [](CMap3& m)
-	     {
-		     const Dart d = all<Face>(m)[0].dart;
-		     const Edge e = cut_face(m, d, phi<1, 1>(m, d));
-		     VW::build(m);
-		     merge_incident_faces(m, e);
-	     }},
-	    {"split_tetra", [](CMap3& m) { split_tetra(m, all<Volume>(m)[0]); }},
-	    {"collapse_edge",
-	     [](CMap3& m)
-	     {
-		     split_tetra(m, all<Volume>(m)[0]);
-		     const Edge e = find<Edge>(m, [&](Edge x) { return edge_can_collapse(m, x); });
-		     VW::build(m);
-		     collapse_edge(m, e);
-	     }},
-	    {"flip_face", [](CMap3& m) { flip_face(m, find<Face>(m, [&](Face f) { return face_can_flip(m, f); })); }},
-	    {"flip_edge",
-	     [](CMap3& m)
-	     {
-		     const Edge e = flip_face(m, find<Face>(m, [&](Face f) { return face_can_flip(m, f); }));
-		     VW::build(m);
-		     ASSERT_TRUE(edge_can_flip(m, e));
-		     flip_edge(m, e);
-	     }},
+		{"add_tetra", [](CMap3& m) { add_tetra(m); }},
+		{"sew_volumes",
+		 [](CMap3& m) {
+			 const Volume w = add_tetra(m);
+			 const Face f = find<Face>(m, [&](Face x) {
+				 return !is_boundary(m, x.dart) && is_boundary(m, phi3(m, x.dart)) &&
+						!same_orbit(m, Volume(x.dart), w);
+			 });
+			 sew_volumes(m, f, Face(w.dart));
+		 }},
+		{"unsew_volumes", [](CMap3& m) { unsew_volumes(m, find<Face>(m, [&](Face f) { return inner(m, f); })); }},
+		{"remove_volume", [](CMap3& m) { remove_volume(m, all<Volume>(m)[0]); }},
+		{"cut_edge", [](CMap3& m) { cut_edge(m, all<Edge>(m)[0]); }},
+		{"cut_face",
+		 [](CMap3& m) {
+			 const Dart d = all<Face>(m)[0].dart;
+			 cut_edge(m, Edge(d));
+			 VW::build(m);
+			 cut_face(m, d, phi<1, 1>(m, d));
+		 }},
+		{"cut_volume",
+		 [](CMap3& m) {
+			 const Dart d = all<Volume>(m)[0].dart;
+			 cut_volume(m, {d, phi1(m, d), phi_1(m, d)});
+		 }},
+		{"merge_incident_volumes",
+		 [](CMap3& m) { merge_incident_volumes(m, find<Face>(m, [&](Face f) { return inner(m, f); })); }},
+		{"merge_incident_faces",
+		 [](CMap3& m) {
+			 const Dart d = all<Face>(m)[0].dart;
+			 const Edge e = cut_face(m, d, phi<1, 1>(m, d));
+			 VW::build(m);
+			 merge_incident_faces(m, e);
+		 }},
+		{"split_tetra", [](CMap3& m) { split_tetra(m, all<Volume>(m)[0]); }},
+		{"collapse_edge",
+		 [](CMap3& m) {
+			 split_tetra(m, all<Volume>(m)[0]);
+			 const Edge e = find<Edge>(m, [&](Edge x) { return edge_can_collapse(m, x); });
+			 VW::build(m);
+			 collapse_edge(m, e);
+		 }},
+		{"flip_face", [](CMap3& m) { flip_face(m, find<Face>(m, [&](Face f) { return face_can_flip(m, f); })); }},
+		{"flip_edge",
+		 [](CMap3& m) {
+			 const Edge e = flip_face(m, find<Face>(m, [&](Face f) { return face_can_flip(m, f); }));
+			 VW::build(m);
+			 ASSERT_TRUE(edge_can_flip(m, e));
+			 flip_edge(m, e);
+		 }},
 	};
 	for (const auto& [name, edit] : edits)
 	{
@@ -236,25 +227,21 @@ TEST(OperatorContracts3, SewKeepsTheLinesOfF1)
 	const Volume a = add_tetra(m), b = add_tetra(m);
 	const Face f1(a.dart), f2(b.dart);
 	std::vector<uint32> vertices, edges;
-	foreach_dart_of_orbit(m, CMap3::Face2(f1.dart),
-	                      [&](Dart x)
-	                      {
-		                      vertices.push_back(index_of(m, Vertex(x)));
-		                      edges.push_back(index_of(m, Edge(x)));
-	                      });
+	foreach_dart_of_orbit(m, CMap3::Face2(f1.dart), [&](Dart x) {
+		vertices.push_back(index_of(m, Vertex(x)));
+		edges.push_back(index_of(m, Edge(x)));
+	});
 	const uint32 face = index_of(m, f1), other = index_of(m, f2);
 	const uint32 component = index_of(m, CMap3::CC(a.dart)), gone = index_of(m, CMap3::CC(b.dart));
 	sew_volumes(m, f1, f2);
 	EXPECT_EQ(index_of(m, CMap3::CC(b.dart)), component);
 	EXPECT_FALSE(live<CMap3::CC>(m, gone));
 	std::size_t i = 0;
-	foreach_dart_of_orbit(m, CMap3::Face2(f1.dart),
-	                      [&](Dart x)
-	                      {
-		                      EXPECT_EQ(index_of(m, Vertex(x)), vertices[i]);
-		                      EXPECT_EQ(index_of(m, Edge(x)), edges[i]);
-		                      ++i;
-	                      });
+	foreach_dart_of_orbit(m, CMap3::Face2(f1.dart), [&](Dart x) {
+		EXPECT_EQ(index_of(m, Vertex(x)), vertices[i]);
+		EXPECT_EQ(index_of(m, Edge(x)), edges[i]);
+		++i;
+	});
 	EXPECT_EQ(index_of(m, f1), face);
 	EXPECT_FALSE(live<Face>(m, other));
 	EXPECT_EQ(counts(m), (Counts{5, 9, 7, 2}));
@@ -309,24 +296,23 @@ TEST(OperatorContracts3, FlipsKeepTheSurroundingLines)
 	const Edge e = flip_face(m, f);
 	EXPECT_EQ(index_of(m, Face(outside)), face);
 	EXPECT_TRUE(dart_of_vertex(m, vertex).is_valid()); // the vertex survives with its line
-	EXPECT_FALSE(live<Volume>(m, tet));                // the replaced tets release their lines
+	EXPECT_FALSE(live<Volume>(m, tet));					// the replaced tets release their lines
 	foreach_incident_volume(m, e, [&](Volume w) { EXPECT_NE(index_of(m, w), INVALID_INDEX); });
 	EXPECT_EQ(counts(m), (Counts{before.v, before.e + 1, before.f + 2, before.w + 1}));
 	EXPECT_INTEGRITY(m);
 }
 
-// Two tets sharing only an edge (a fan of four around it, the second
-// removed): the vertices of the edge are pinched, and no edge at them may be
-// contracted.
+// A fan of four tets around an edge, the second removed: the first and the
+// last two meet only along that edge, whose vertices are pinched, and no edge
+// at them may be contracted.
 TEST(OperatorContracts3, CollapseRefusedAtAPinchedVertex)
 {
 	CMap3 m = tets(7, {{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}, {0, 1, 5, 6}});
 	remove_volume(m, find<Volume>(m, [&](Volume w) { // the tet (0, 1, 3, 4)
-		              uint32 found = 0;
-		              foreach_incident_vertex(m, w,
-		                                      [&](Vertex v) { found += index_of(m, v) == 3 || index_of(m, v) == 4; });
-		              return found == 2;
-	              }));
+		uint32 found = 0;
+		foreach_incident_vertex(m, w, [&](Vertex v) { found += index_of(m, v) == 3 || index_of(m, v) == 4; });
+		return found == 2;
+	}));
 	ASSERT_INTEGRITY(m);
 	ASSERT_EQ(nb_cells<Volume>(m), 3u);
 	EXPECT_FALSE(collapsible_from(m, 0).dart.is_valid());

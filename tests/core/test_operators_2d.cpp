@@ -1,10 +1,10 @@
 #include <cgogn/core.h>
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
-
-#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -75,19 +75,17 @@ TEST(Operators2, LinkConditionRefusals)
 		CMap2 m = indexed(grid_soup(2, 2, true));
 		// an interior edge between two boundary vertices would pinch the disk
 		uint32 refused = 0, allowed = 0;
-		foreach_cell(m,
-		             [&](Edge e)
-		             {
-			             const bool both_on_boundary = is_incident_to_boundary(m, Vertex(e.dart)) &&
-			                                           is_incident_to_boundary(m, Vertex(phi2(m, e.dart)));
-			             if (both_on_boundary && !is_incident_to_boundary(m, e))
-			             {
-				             EXPECT_FALSE(edge_can_collapse(m, e));
-				             ++refused;
-			             }
-			             else if (edge_can_collapse(m, e))
-				             ++allowed;
-		             });
+		foreach_cell(m, [&](Edge e) {
+			const bool both_on_boundary = is_incident_to_boundary(m, Vertex(e.dart)) &&
+										  is_incident_to_boundary(m, Vertex(phi2(m, e.dart)));
+			if (both_on_boundary && !is_incident_to_boundary(m, e))
+			{
+				EXPECT_FALSE(edge_can_collapse(m, e));
+				++refused;
+			}
+			else if (edge_can_collapse(m, e))
+				++allowed;
+		});
 		EXPECT_GT(refused, 0u);
 		EXPECT_GT(allowed, 0u);
 	}
@@ -144,14 +142,12 @@ TEST(Operators2, FlipAndFlipBack)
 	EXPECT_EQ(index_of(m, Vertex(phi2(m, e.dart))), index_of(m, b));
 	// boundary edges cannot flip
 	CMap2 g = indexed(grid_soup(2, 2, true));
-	foreach_cell(g,
-	             [&](Edge x)
-	             {
-		             if (is_incident_to_boundary(g, x))
-		             {
-			             EXPECT_FALSE(edge_can_flip(g, x));
-		             }
-	             });
+	foreach_cell(g, [&](Edge x) {
+		if (is_incident_to_boundary(g, x))
+		{
+			EXPECT_FALSE(edge_can_flip(g, x));
+		}
+	});
 }
 
 TEST(Operators2, FlipOnQuads)
@@ -233,13 +229,11 @@ TEST(Operators2, RemoveFace)
 	{
 		CMap2 m = indexed(grid_soup(3, 3));
 		// a corner quad: its two boundary edges and its corner vertex go
-		Face corner = find<Face>(m,
-		                         [&](Face f)
-		                         {
-			                         uint32 b = 0;
-			                         foreach_dart_of_orbit(m, f, [&](Dart d) { b += is_boundary(m, phi2(m, d)); });
-			                         return b == 2;
-		                         });
+		Face corner = find<Face>(m, [&](Face f) {
+			uint32 b = 0;
+			foreach_dart_of_orbit(m, f, [&](Dart d) { b += is_boundary(m, phi2(m, d)); });
+			return b == 2;
+		});
 		const Counts before = counts(m);
 		remove_face(m, corner);
 		EXPECT_EQ(counts(m), (Counts{before.v - 1, before.e - 2, before.f - 1, 1}));
@@ -272,12 +266,10 @@ TEST(Operators2, CloseAndFillHoles)
 	detail::write_index(m, Edge(d2), container_of<Orbit::PHI2>(m).new_line(d2.index));
 	EXPECT_INTEGRITY(m);
 	Dart b = find<CMap2::HalfEdge>(m, [](CMap2::HalfEdge) { return true; }).dart;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             if (is_boundary(m, d))
-			             b = d;
-	             });
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			b = d;
+	});
 	const Counts before = counts(m);
 	// a hole of 2 edges would become a face of 2 edges: sewing closes it
 	EXPECT_FALSE(can_fill_hole(m, b));
@@ -288,12 +280,10 @@ TEST(Operators2, CloseAndFillHoles)
 	EXPECT_INTEGRITY(m);
 	// a hole of 3 edges is filled
 	remove_face(m, all<Face>(m)[0]);
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             if (is_boundary(m, d))
-			             b = d;
-	             });
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			b = d;
+	});
 	ASSERT_TRUE(can_fill_hole(m, b));
 	const Counts open = counts(m);
 	const Face f = fill_hole(m, b);
@@ -353,26 +343,22 @@ TEST(Operators2, ReverseOrientation)
 {
 	CMap2 m = indexed(grid_soup(3, 2));
 	std::vector<std::vector<uint32>> before;
-	foreach_cell(m,
-	             [&](Face f)
-	             {
-		             std::vector<uint32> ids;
-		             foreach_incident_vertex(m, f, [&](Vertex v) { ids.push_back(index_of(m, v)); });
-		             before.push_back(ids);
-	             });
+	foreach_cell(m, [&](Face f) {
+		std::vector<uint32> ids;
+		foreach_incident_vertex(m, f, [&](Vertex v) { ids.push_back(index_of(m, v)); });
+		before.push_back(ids);
+	});
 	reverse_orientation(m);
 	EXPECT_INTEGRITY(m);
 	uint32 k = 0;
-	foreach_cell(m,
-	             [&](Face f)
-	             {
-		             std::vector<uint32> ids;
-		             foreach_incident_vertex(m, f, [&](Vertex v) { ids.push_back(index_of(m, v)); });
-		             std::vector<uint32> reversed(before[k].rbegin(), before[k].rend());
-		             std::rotate(reversed.begin(), std::find(reversed.begin(), reversed.end(), ids[0]), reversed.end());
-		             EXPECT_EQ(ids, reversed);
-		             ++k;
-	             });
+	foreach_cell(m, [&](Face f) {
+		std::vector<uint32> ids;
+		foreach_incident_vertex(m, f, [&](Vertex v) { ids.push_back(index_of(m, v)); });
+		std::vector<uint32> reversed(before[k].rbegin(), before[k].rend());
+		std::rotate(reversed.begin(), std::find(reversed.begin(), reversed.end(), ids[0]), reversed.end());
+		EXPECT_EQ(ids, reversed);
+		++k;
+	});
 }
 
 TEST(Operators2, MergeCopiesCellsAndAttributes)
@@ -436,59 +422,50 @@ void random_editing(CMap2& m, uint32 steps, uint32 seed)
 			cut_edge(m, pick(edges));
 			done = true;
 			break;
-		case 1:
-		{
+		case 1: {
 			Edge e = pick(edges);
 			if ((done = edge_can_collapse(m, e)))
 				collapse_edge(m, e);
 			break;
 		}
-		case 2:
-		{
+		case 2: {
 			Edge e = pick(edges);
 			if ((done = edge_can_flip(m, e)))
 				flip_edge(m, e);
 			break;
 		}
-		case 3:
-		{
+		case 3: {
 			Face f = pick(faces);
 			const Vertex v1(f.dart), v2(phi<1, 1>(m, f.dart));
 			if ((done = can_cut_face(m, v1, v2)))
 				cut_face(m, v1, v2);
 			break;
 		}
-		case 4:
-		{
+		case 4: {
 			Edge e = pick(edges);
-			if ((done = can_merge_incident_faces(m, e)) &&
-			    codegree(m, Face(e.dart)) + codegree(m, Face(phi2(m, e.dart))) < 12)
+			if ((done = can_merge_incident_faces(m, e)) && codegree(m, Face(e.dart)) + codegree(m, Face(phi2(m, e.dart))) < 12)
 				merge_incident_faces(m, e);
 			break;
 		}
-		case 5:
-		{
+		case 5: {
 			Face f = pick(faces);
 			if ((done = codegree(m, f) < 8))
 				triangulate_face(m, f);
 			break;
 		}
-		case 6:
-		{
+		case 6: {
 			Vertex v = pick(vertices);
 			if ((done = can_merge_incident_faces(m, v) && degree(m, v) < 6))
 				merge_incident_faces(m, v);
 			break;
 		}
-		case 7:
-		{
+		case 7: {
 			Vertex v = pick(vertices);
 			if ((done = can_merge_incident_edges(m, v)))
 				merge_incident_edges(m, v);
 			break;
 		}
-		case 8:
-		{
+		case 8: {
 			Edge e = pick(edges);
 			if ((done = edge_can_flip_back(m, e)))
 				flip_back_edge(m, e);
@@ -508,13 +485,11 @@ void random_editing(CMap2& m, uint32 steps, uint32 seed)
 				ASSERT_TRUE((*tag)[line] == val || (*tag)[line] == 0) << "step " << step;
 			}
 		}
-		foreach_cell(m,
-		             [&](Vertex v)
-		             {
-			             uint32& t = value<uint32>(m, tag, v);
-			             if (t == 0)
-				             t = next_tag++;
-		             });
+		foreach_cell(m, [&](Vertex v) {
+			uint32& t = value<uint32>(m, tag, v);
+			if (t == 0)
+				t = next_tag++;
+		});
 	}
 	EXPECT_GT(applied, steps / 3);
 }

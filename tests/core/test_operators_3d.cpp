@@ -1,10 +1,10 @@
 #include <cgogn/core.h>
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
-
-#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -55,12 +55,10 @@ TEST(Operators3, SewVolumes)
 	EXPECT_INTEGRITY(m);
 	// a third tet on a face sharing an edge with the first glue: the boundary folds
 	Volume c = add_tetra(m);
-	Face f = find<Face>(m,
-	                    [&](Face x)
-	                    {
-		                    const Dart inside = is_boundary(m, x.dart) ? phi3(m, x.dart) : x.dart;
-		                    return is_incident_to_boundary(m, x) && !same_orbit(m, Volume(inside), c);
-	                    });
+	Face f = find<Face>(m, [&](Face x) {
+		const Dart inside = is_boundary(m, x.dart) ? phi3(m, x.dart) : x.dart;
+		return is_incident_to_boundary(m, x) && !same_orbit(m, Volume(inside), c);
+	});
 	ASSERT_TRUE(f.is_valid());
 	if (is_boundary(m, f.dart))
 		f = Face(phi3(m, f.dart)); // the dart on the volume's side
@@ -75,14 +73,11 @@ TEST(Operators3, CloseAfterLowLevelUnsew)
 	CMap3 m;
 	build_volume(m, hex_grid_soup(3, 3, 3));
 	// a face of the centre hex: all its edges are interior, so the slit is a closed pocket
-	Face inner = find<Face>(m,
-	                        [&](Face f)
-	                        {
-		                        bool interior = degree(m, f) == 2;
-		                        foreach_incident_edge(
-		                            m, f, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
-		                        return interior;
-	                        });
+	Face inner = find<Face>(m, [&](Face f) {
+		bool interior = degree(m, f) == 2;
+		foreach_incident_edge(m, f, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
+		return interior;
+	});
 	ASSERT_TRUE(inner.is_valid());
 	std::vector<Dart> face;
 	foreach_dart_of_orbit(m, CMap3::Face2(inner.dart), [&](Dart d) { face.push_back(d); });
@@ -99,14 +94,11 @@ TEST(Operators3, UnsewAndSewVolumesBack)
 	CMap3 m = indexed(hex_grid_soup(3, 3, 3));
 	const Counts before = counts(m);
 	// an inner face with interior edges: the slit is a closed pocket
-	Face f = find<Face>(m,
-	                    [&](Face x)
-	                    {
-		                    bool interior = degree(m, x) == 2;
-		                    foreach_incident_edge(
-		                        m, x, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
-		                    return interior;
-	                    });
+	Face f = find<Face>(m, [&](Face x) {
+		bool interior = degree(m, x) == 2;
+		foreach_incident_edge(m, x, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
+		return interior;
+	});
 	ASSERT_TRUE(f.is_valid());
 	const Dart a = f.dart, b = phi3(m, f.dart);
 	unsew_volumes(m, f);
@@ -130,14 +122,11 @@ TEST(Operators3, CloseOneHole)
 {
 	CMap3 m;
 	build_volume(m, hex_grid_soup(3, 3, 3));
-	Face inner = find<Face>(m,
-	                        [&](Face f)
-	                        {
-		                        bool interior = degree(m, f) == 2;
-		                        foreach_incident_edge(
-		                            m, f, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
-		                        return interior;
-	                        });
+	Face inner = find<Face>(m, [&](Face f) {
+		bool interior = degree(m, f) == 2;
+		foreach_incident_edge(m, f, [&](Edge e) { interior = interior && !is_incident_to_boundary(m, e); });
+		return interior;
+	});
 	std::vector<Dart> face;
 	foreach_dart_of_orbit(m, CMap3::Face2(inner.dart), [&](Dart d) { face.push_back(d); });
 	for (Dart d : face)
@@ -256,11 +245,9 @@ TEST(Operators3, CollapseInteriorEdgeAndLinkCondition)
 	CMap3 m = indexed(tet_grid_soup(3, 3, 3));
 	const Counts before = counts(m);
 	// an edge between two interior vertices
-	Edge e = find<Edge>(m,
-	                    [&](Edge x) {
-		                    return !is_incident_to_boundary(m, Vertex(x.dart)) &&
-		                           !is_incident_to_boundary(m, Vertex(phi1(m, x.dart)));
-	                    });
+	Edge e = find<Edge>(m, [&](Edge x) {
+		return !is_incident_to_boundary(m, Vertex(x.dart)) && !is_incident_to_boundary(m, Vertex(phi1(m, x.dart)));
+	});
 	ASSERT_TRUE(e.is_valid());
 	ASSERT_TRUE(edge_can_collapse(m, e));
 	const uint32 k = degree(m, e); // tets around the edge
@@ -271,16 +258,14 @@ TEST(Operators3, CollapseInteriorEdgeAndLinkCondition)
 	EXPECT_INTEGRITY(m);
 	// an interior edge joining two boundary vertices would pinch the boundary
 	uint32 refused = 0;
-	foreach_cell(m,
-	             [&](Edge x)
-	             {
-		             if (!is_incident_to_boundary(m, x) && is_incident_to_boundary(m, Vertex(x.dart)) &&
-		                 is_incident_to_boundary(m, Vertex(phi1(m, x.dart))))
-		             {
-			             EXPECT_FALSE(edge_can_collapse(m, x));
-			             ++refused;
-		             }
-	             });
+	foreach_cell(m, [&](Edge x) {
+		if (!is_incident_to_boundary(m, x) && is_incident_to_boundary(m, Vertex(x.dart)) &&
+			is_incident_to_boundary(m, Vertex(phi1(m, x.dart))))
+		{
+			EXPECT_FALSE(edge_can_collapse(m, x));
+			++refused;
+		}
+	});
 	EXPECT_GT(refused, 0u);
 }
 
@@ -370,13 +355,11 @@ TEST(Operators3Random, TetrahedralEditing)
 				ASSERT_TRUE((*tag)[line] == val || (*tag)[line] == 0) << "step " << step;
 			}
 		}
-		foreach_cell(m,
-		             [&](Vertex v)
-		             {
-			             uint32& t = value<uint32>(m, tag, v);
-			             if (t == 0)
-				             t = next_tag++;
-		             });
+		foreach_cell(m, [&](Vertex v) {
+			uint32& t = value<uint32>(m, tag, v);
+			if (t == 0)
+				t = next_tag++;
+		});
 	}
 	EXPECT_GT(applied, 100u);
 }

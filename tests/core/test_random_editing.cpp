@@ -10,6 +10,9 @@
 // The meshes are the repository's test data (CGOGN_DATA_DIR): a missing one fails.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -20,10 +23,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "cgogn_test_data.h"
-#include "map_test_helpers.h"
-
 using namespace cgogn;
+
 
 namespace
 {
@@ -98,12 +99,10 @@ template <typename MAP, typename PRED>
 Dart pick_dart(const MAP& m, std::mt19937& rng, PRED pred)
 {
 	std::vector<Dart> darts;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             if (pred(d))
-			             darts.push_back(d);
-	             });
+	foreach_dart(m, [&](Dart d) {
+		if (pred(d))
+			darts.push_back(d);
+	});
 	if (darts.empty())
 		return Dart();
 	return darts[std::uniform_int_distribution<std::size_t>(0, darts.size() - 1)(rng)];
@@ -137,8 +136,8 @@ bool load_surfaces(CMap2& m)
 {
 	bool any = false;
 	for (const char* name : {"surface/L.off", "surface/edge_onering.off", "surface/vertex_onering.off",
-	                         "surface/cube_quad.off", "surface/torus_quad.off", "surface/geomview_cam.off",
-	                         "surface/geomview_hypercube_2skeleton.off", "surface/tetrahedron.off"})
+							 "surface/cube_quad.off", "surface/torus_quad.off", "surface/geomview_cam.off",
+							 "surface/geomview_hypercube_2skeleton.off", "surface/tetrahedron.off"})
 	{
 		const std::string path = data_file(name);
 		if (path.empty())
@@ -163,32 +162,28 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 			return nullptr;
 		cut_edge(m, pick<E2>(m, rng));
 		return "cut_edge";
-	case 1:
-	{
+	case 1: {
 		const E2 e(pick_dart(m, rng, [](Dart) { return true; }));
 		if (!may_shrink || !edge_can_collapse(m, e))
 			return nullptr;
 		collapse_edge(m, e);
 		return "collapse_edge";
 	}
-	case 2:
-	{
+	case 2: {
 		const E2 e = pick<E2>(m, rng);
 		if (!edge_can_flip(m, e))
 			return nullptr;
 		flip_edge(m, e);
 		return "flip_edge";
 	}
-	case 3:
-	{
+	case 3: {
 		const E2 e(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d); }));
 		if (!edge_can_flip_back(m, e))
 			return nullptr;
 		flip_back_edge(m, e);
 		return "flip_back_edge";
 	}
-	case 4:
-	{
+	case 4: {
 		const F2 f = pick<F2>(m, rng);
 		const Dart d = dart_of(m, f, rng), e = dart_of(m, f, rng);
 		if (!may_grow || !can_cut_face(m, V2(d), V2(e)))
@@ -196,32 +191,28 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 		cut_face(m, V2(d), V2(e));
 		return "cut_face";
 	}
-	case 5:
-	{
+	case 5: {
 		const E2 e = pick<E2>(m, rng);
 		if (!can_merge_incident_faces(m, e))
 			return nullptr;
 		merge_incident_faces(m, e);
 		return "merge_incident_faces(edge)";
 	}
-	case 6:
-	{
+	case 6: {
 		const V2 v(pick_dart(m, rng, [](Dart) { return true; }));
 		if (!can_merge_incident_faces(m, v))
 			return nullptr;
 		merge_incident_faces(m, v);
 		return "merge_incident_faces(vertex)";
 	}
-	case 7:
-	{
+	case 7: {
 		const V2 v(pick_dart(m, rng, [](Dart) { return true; }));
 		if (!can_merge_incident_edges(m, v))
 			return nullptr;
 		merge_incident_edges(m, v);
 		return "merge_incident_edges";
 	}
-	case 8:
-	{
+	case 8: {
 		const V2 v = pick<V2>(m, rng);
 		const Dart d1 = dart_of(m, v, rng), d2 = dart_of(m, v, rng);
 		if (!may_grow || !can_split_vertex(m, d1, d2))
@@ -229,24 +220,21 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 		split_vertex(m, d1, d2);
 		return "split_vertex";
 	}
-	case 9:
-	{
+	case 9: {
 		const F2 f = pick<F2>(m, rng);
 		if (!may_grow || is_boundary(m, f.dart) || codegree(m, f) > 8)
 			return nullptr;
 		triangulate_face(m, f);
 		return "triangulate_face";
 	}
-	case 10:
-	{
+	case 10: {
 		const F2 f = pick<F2>(m, rng);
 		if (!may_shrink || is_boundary(m, f.dart))
 			return nullptr;
 		remove_face(m, f);
 		return "remove_face";
 	}
-	case 11:
-	{
+	case 11: {
 		const Dart b = pick_dart(m, rng, [&](Dart d) { return is_boundary(m, d); });
 		if (!b.is_valid() || !can_fill_hole(m, b))
 			return nullptr;
@@ -254,8 +242,7 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 		return "fill_hole";
 	}
 	case 12:
-	case 13:
-	{
+	case 13: {
 		auto on_boundary = [&](Dart d) { return !is_boundary(m, d) && is_boundary(m, phi2(m, d)); };
 		const Dart d1 = pick_dart(m, rng, on_boundary), d2 = pick_dart(m, rng, on_boundary);
 		if (!d1.is_valid() || !can_sew_faces(m, E2(d1), E2(d2)))
@@ -263,16 +250,14 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 		sew_faces(m, E2(d1), E2(d2));
 		return "sew_faces";
 	}
-	case 14:
-	{
+	case 14: {
 		const E2 e = pick<E2>(m, rng);
 		if (!can_unsew_faces(m, e))
 			return nullptr;
 		unsew_faces(m, e);
 		return "unsew_faces";
 	}
-	case 15:
-	{
+	case 15: {
 		if (!may_grow)
 			return nullptr;
 		switch (rng() % 3)
@@ -288,8 +273,7 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 		}
 		return "add_polyhedron";
 	}
-	case 16:
-	{
+	case 16: {
 		const W2 w = pick<W2>(m, rng);
 		if (!may_shrink || nb_connected_components(m) < 3)
 			return nullptr;
@@ -306,8 +290,7 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 			return nullptr;
 		reverse_orientation(m);
 		return "reverse_orientation";
-	default:
-	{
+	default: {
 		if (!may_grow || rng() % 16 != 0)
 			return nullptr;
 		CMap2 other;
@@ -337,22 +320,18 @@ bool load_region(CMap3& m, const char* name, uint32 size)
 	std::vector<W3> queue{test::all<W3>(m)[0]};
 	kept.mark(queue[0]);
 	for (std::size_t i = 0; i < queue.size() && queue.size() < size; ++i)
-		foreach_adjacent_volume_through_face(m, queue[i],
-		                                     [&](W3 w)
-		                                     {
-			                                     if (!kept.is_marked(w) && queue.size() < size)
-			                                     {
-				                                     kept.mark(w);
-				                                     queue.push_back(w);
-			                                     }
-		                                     });
+		foreach_adjacent_volume_through_face(m, queue[i], [&](W3 w) {
+			if (!kept.is_marked(w) && queue.size() < size)
+			{
+				kept.mark(w);
+				queue.push_back(w);
+			}
+		});
 	std::vector<W3> others;
-	foreach_cell(m,
-	             [&](W3 w)
-	             {
-		             if (!kept.is_marked(w))
-			             others.push_back(w);
-	             });
+	foreach_cell(m, [&](W3 w) {
+		if (!kept.is_marked(w))
+			others.push_back(w);
+	});
 	for (W3 w : others)
 		remove_volume(m, w);
 	return true;
@@ -362,13 +341,11 @@ bool is_tetrahedron(const CMap3& m, W3 w)
 {
 	uint32 darts = 0;
 	bool triangles = true;
-	foreach_dart_of_orbit(m, w,
-	                      [&](Dart d)
-	                      {
-		                      ++darts;
-		                      triangles = triangles && phi<1, 1, 1>(m, d) == d;
-		                      return triangles && darts <= 12;
-	                      });
+	foreach_dart_of_orbit(m, w, [&](Dart d) {
+		++darts;
+		triangles = triangles && phi<1, 1, 1>(m, d) == d;
+		return triangles && darts <= 12;
+	});
 	return triangles && darts == 12;
 }
 
@@ -408,8 +385,7 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 			return nullptr;
 		cut_edge(m, pick<E3>(m, rng));
 		return "cut_edge";
-	case 1:
-	{
+	case 1: {
 		const W3 w = pick<W3>(m, rng);
 		const Dart d = dart_of(m, w, rng);
 		const Dart e = dart_of(m, F3(d), rng);
@@ -418,16 +394,14 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 		cut_face(m, d, e);
 		return "cut_face";
 	}
-	case 2:
-	{
+	case 2: {
 		const E3 e = pick<E3>(m, rng);
 		if (!can_merge_incident_faces(m, e))
 			return nullptr;
 		merge_incident_faces(m, e);
 		return "merge_incident_faces";
 	}
-	case 3:
-	{
+	case 3: {
 		const F3 f = pick<F3>(m, rng);
 		if (!may_shrink || !can_merge_incident_volumes(m, f))
 			return nullptr;
@@ -435,8 +409,7 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 		return "merge_incident_volumes";
 	}
 	case 4:
-	case 5:
-	{
+	case 5: {
 		const W3 w = pick<W3>(m, rng);
 		if (!may_grow || !is_tetrahedron(m, w))
 			return nullptr;
@@ -455,48 +428,42 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 		return "split_tetra";
 	}
 	case 6:
-	case 7:
-	{
+	case 7: {
 		const E3 e(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d); }));
 		if (!may_shrink || !e.dart.is_valid() || !edge_can_collapse(m, e))
 			return nullptr;
 		collapse_edge(m, e);
 		return "collapse_edge";
 	}
-	case 8:
-	{
+	case 8: {
 		const F3 f = pick<F3>(m, rng);
 		if (!face_can_flip(m, f))
 			return nullptr;
 		flip_face(m, f);
 		return "flip_face";
 	}
-	case 9:
-	{
+	case 9: {
 		const E3 e = pick<E3>(m, rng);
 		if (!edge_can_flip(m, e))
 			return nullptr;
 		flip_edge(m, e);
 		return "flip_edge";
 	}
-	case 10:
-	{
+	case 10: {
 		const F3 f(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d) && !is_boundary(m, phi3(m, d)); }));
 		if (!f.dart.is_valid())
 			return nullptr;
 		unsew_volumes(m, f);
 		return "unsew_volumes";
 	}
-	case 11:
-	{
+	case 11: {
 		// mostly a face with the same corners (sewing back what was unsewn),
 		// else any face of the mesh's boundary
 		const auto on_boundary = [&](Dart d) { return !is_boundary(m, d) && is_boundary(m, phi3(m, d)); };
 		const F3 f1(pick_dart(m, rng, on_boundary));
 		if (!f1.dart.is_valid())
 			return nullptr;
-		const auto matches = [&](Dart c)
-		{
+		const auto matches = [&](Dart c) {
 			Dart x = f1.dart, y = c;
 			do
 			{
@@ -514,16 +481,14 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 		sew_volumes(m, f1, f2);
 		return "sew_volumes";
 	}
-	case 12:
-	{
+	case 12: {
 		const W3 w = pick<W3>(m, rng);
 		if (!may_shrink)
 			return nullptr;
 		remove_volume(m, w);
 		return "remove_volume";
 	}
-	case 14:
-	{
+	case 14: {
 		if (!may_grow || rng() % 4 != 0)
 			return nullptr;
 		if (rng() % 2 == 0)
@@ -532,8 +497,7 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 			add_hexa(m);
 		return "add_volume";
 	}
-	case 15:
-	{
+	case 15: {
 		const std::vector<Dart> path = random_closed_path(m, rng);
 		if (!may_grow || !can_cut_volume(m, path))
 			return nullptr;
@@ -609,18 +573,17 @@ void random_editing(MAP& m, uint32 steps, uint32 seed, uint32 min_share, const E
 
 void random_surface_editing(CMap2& m, uint32 steps, uint32 seed)
 {
-	random_editing(m, steps, seed, 4, edit_surface,
-	               [](CMap2& map, uint32 step) { ASSERT_GT(nb_darts(map), 0u) << "step " << step; });
+	random_editing(m, steps, seed, 4, edit_surface, [](CMap2& map, uint32 step) {
+		ASSERT_GT(nb_darts(map), 0u) << "step " << step;
+	});
 }
 
 void random_volume_editing(CMap3& m, uint32 steps, uint32 seed)
 {
-	random_editing(m, steps, seed, 8, edit_volume,
-	               [](CMap3& map, uint32)
-	               {
-		               if (nb_cells<W3>(map) == 0)
-			               add_tetra(map);
-	               });
+	random_editing(m, steps, seed, 8, edit_volume, [](CMap3& map, uint32) {
+		if (nb_cells<W3>(map) == 0)
+			add_tetra(map);
+	});
 }
 } // namespace
 
@@ -661,8 +624,7 @@ TEST(RandomEditing, TetCollapseKeepsTheSurvivorsLine)
 	uint32 collapsed = 0;
 	for (uint32 round = 0; round < 400 && collapsed < 60; ++round)
 	{
-		const E3 e = test::find<E3>(m, [&](E3 x)
-		                            { return (x.dart.index * 7919u + round) % 13u == 0u && edge_can_collapse(m, x); });
+		const E3 e = test::find<E3>(m, [&](E3 x) { return (x.dart.index * 7919u + round) % 13u == 0u && edge_can_collapse(m, x); });
 		if (!e.dart.is_valid())
 			continue;
 		const uint32 survivor = index_of(m, V3(phi1(m, e.dart)));
