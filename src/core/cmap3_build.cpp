@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/functions/darts.h>
 #include <cgogn/core/operators/index_helpers.h>
+#include <cgogn/core/types/dart_marker.h>
 
 #include "cmap3_build.h"
 
-#include <algorithm>
 #include <map>
 #include <unordered_map>
 
@@ -141,7 +141,6 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 			set_phi1(m, created[b0 + i], created[b0 + (i + k - 1) % k]);
 	}
 	const std::span<const Dart> fresh(created.begin() + std::ptrdiff_t(first), created.end());
-	auto is_fresh = [&](Dart b) { return std::find(fresh.begin(), fresh.end(), b) != fresh.end(); };
 	// Each new boundary dart b takes the boundary dart z met by turning around
 	// its edge: the fan of volumes between them becomes an edge of its own,
 	// closed by the boundary. When z was paired with an older boundary dart p
@@ -179,6 +178,11 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 				return phi3(m, c1 == x ? c2 : c1);
 		return Dart();
 	};
+	if (taken.empty())
+		return;
+	DartMarkerStore<CMap3> fresh_mark(m);
+	for (Dart b : fresh)
+		fresh_mark.mark(b);
 	for (std::size_t i = 0; i < taken.size(); ++i)
 	{
 		const auto [z, p] = taken[i];
@@ -190,7 +194,7 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 		for (std::size_t guard = 0; guard <= fresh.size() && !mate.is_valid(); ++guard)
 		{
 			const Dart end = turn_to_boundary(m, c);
-			if (!is_fresh(end))
+			if (!fresh_mark.is_marked(end))
 				mate = phi2(m, end) == end ? end : former_partner(end);
 			else if (!(c = other_side(end)).is_valid())
 				break;
