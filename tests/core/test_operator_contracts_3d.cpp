@@ -4,13 +4,13 @@
 // predicates refuse the pinched configurations the operators cannot handle.
 #include <cgogn/core.h>
 
+#include "map_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <string>
 #include <vector>
-
-#include "map_test_helpers.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -82,8 +82,7 @@ TEST(OperatorContracts3, EveryOperatorDropsIncidenceCaches)
 		 [](CMap3& m) {
 			 const Volume w = add_tetra(m);
 			 const Face f = find<Face>(m, [&](Face x) {
-				 return !is_boundary(m, x.dart) && is_boundary(m, phi3(m, x.dart)) &&
-						!same_orbit(m, Volume(x.dart), w);
+				 return !is_boundary(m, x.dart) && is_boundary(m, phi3(m, x.dart)) && !same_orbit(m, Volume(x.dart), w);
 			 });
 			 sew_volumes(m, f, Face(w.dart));
 		 }},
@@ -296,7 +295,7 @@ TEST(OperatorContracts3, FlipsKeepTheSurroundingLines)
 	const Edge e = flip_face(m, f);
 	EXPECT_EQ(index_of(m, Face(outside)), face);
 	EXPECT_TRUE(dart_of_vertex(m, vertex).is_valid()); // the vertex survives with its line
-	EXPECT_FALSE(live<Volume>(m, tet));					// the replaced tets release their lines
+	EXPECT_FALSE(live<Volume>(m, tet));                // the replaced tets release their lines
 	foreach_incident_volume(m, e, [&](Volume w) { EXPECT_NE(index_of(m, w), INVALID_INDEX); });
 	EXPECT_EQ(counts(m), (Counts{before.v, before.e + 1, before.f + 2, before.w + 1}));
 	EXPECT_INTEGRITY(m);
@@ -309,10 +308,11 @@ TEST(OperatorContracts3, CollapseRefusedAtAPinchedVertex)
 {
 	CMap3 m = tets(7, {{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}, {0, 1, 5, 6}});
 	remove_volume(m, find<Volume>(m, [&](Volume w) { // the tet (0, 1, 3, 4)
-		uint32 found = 0;
-		foreach_incident_vertex(m, w, [&](Vertex v) { found += index_of(m, v) == 3 || index_of(m, v) == 4; });
-		return found == 2;
-	}));
+					  uint32 found = 0;
+					  foreach_incident_vertex(m, w,
+											  [&](Vertex v) { found += index_of(m, v) == 3 || index_of(m, v) == 4; });
+					  return found == 2;
+				  }));
 	ASSERT_INTEGRITY(m);
 	ASSERT_EQ(nb_cells<Volume>(m), 3u);
 	EXPECT_FALSE(collapsible_from(m, 0).dart.is_valid());
