@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/functions/orbits.h>
 #include <cgogn/core/operators/cmap1.h>
-#include <cgogn/core/operators/index_helpers.h>
+
+#include "index_helpers.h"
 
 namespace cgogn
 {

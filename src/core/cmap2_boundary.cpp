@@ -2,11 +2,11 @@
 // Holes and boundary of 2-maps: close, fill, sew and unsew faces.
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/operators/index_helpers.h>
 
 #include "cmap2_close.h"
-#include "component_split.h"
 #include "cmap2_unlink.h"
+#include "component_split.h"
+#include "index_helpers.h"
 
 #include <algorithm>
 

@@ -2,7 +2,8 @@
 // Edge operators of 2-maps: cut, collapse, flip.
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/operators/index_helpers.h>
+
+#include "index_helpers.h"
 
 #include <algorithm>
 #include <array>

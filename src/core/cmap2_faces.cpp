@@ -4,10 +4,10 @@
 #include <cgogn/core/functions/dart_buffer.h>
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/operators/index_helpers.h>
 
 #include "cmap2_unlink.h"
 #include "component_split.h"
+#include "index_helpers.h"
 
 #include <algorithm>
 

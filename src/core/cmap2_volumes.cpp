@@ -3,7 +3,8 @@
 // component, orientation, merge of maps.
 #include <cgogn/core/functions/properties.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/operators/index_helpers.h>
+
+#include "index_helpers.h"
 
 namespace cgogn
 {

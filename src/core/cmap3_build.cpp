@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/functions/darts.h>
-#include <cgogn/core/operators/index_helpers.h>
 #include <cgogn/core/types/dart_marker.h>
 
 #include "cmap3_build.h"
+#include "index_helpers.h"
 
 #include <map>
 #include <unordered_map>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/functions/darts.h>
 #include <cgogn/core/operators/creation.h>
-#include <cgogn/core/operators/index_helpers.h>
+
+#include "index_helpers.h"
 
 namespace cgogn
 {

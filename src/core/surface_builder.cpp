@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/builder/map_builder.h>
 #include <cgogn/core/functions/indexing.h>
-#include <cgogn/core/operators/index_helpers.h>
 #include <cgogn/core/types/marker.h>
 
 #include "builder_common.h"
 #include "cmap2_close.h"
+#include "index_helpers.h"
 
 #include <algorithm>
 

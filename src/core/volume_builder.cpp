@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/builder/map_builder.h>
 #include <cgogn/core/functions/indexing.h>
-#include <cgogn/core/operators/index_helpers.h>
 
 #include "builder_common.h"
 #include "cmap3_build.h"
+#include "index_helpers.h"
 
 #include <algorithm>
 #include <array>
