@@ -104,14 +104,12 @@ Dart random_inner_dart(const MAP& m, std::mt19937& rng)
 template <typename CAN, typename APPLY>
 bool guarded(Timer& t, const CAN& can, const APPLY& apply)
 {
-	return t.time(
-	    [&]
-	    {
-		    if (!can())
-			    return false;
-		    apply();
-		    return true;
-	    });
+	return t.time([&] {
+		if (!can())
+			return false;
+		apply();
+		return true;
+	});
 }
 
 // ---- meshes
@@ -119,15 +117,13 @@ bool guarded(Timer& t, const CAN& can, const APPLY& apply)
 template <typename MAP>
 void index_every_orbit(MAP& m)
 {
-	[&]<typename... C>(std::tuple<C...>*)
-	{
+	[&]<typename... C>(std::tuple<C...>*) {
 		(
-		    [&]
-		    {
-			    if constexpr (C::ORBIT != Orbit::DART)
-				    add_attribute<uint32, C>(m, "index_holder");
-		    }(),
-		    ...);
+			[&] {
+				if constexpr (C::ORBIT != Orbit::DART)
+					add_attribute<uint32, C>(m, "index_holder");
+			}(),
+			...);
 	}(static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
 }
 
@@ -169,109 +165,96 @@ Dart next_around(const CMap2& m, Dart d)
 const std::vector<std::pair<std::string, Call<M2>>>& surface_operators()
 {
 	static const std::vector<std::pair<std::string, Call<M2>>> ops = {
-	    {"cut_edge",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_dart(m, r);
-		     t.time([&] { cut_edge(m, M2::Edge(d)); });
-		     return true;
-	     }},
-	    {"flip_edge",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return edge_can_flip(m, e); }, [&] { flip_edge(m, e); });
-	     }},
-	    {"flip_back_edge",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return edge_can_flip_back(m, e); }, [&] { flip_back_edge(m, e); });
-	     }},
-	    {"collapse_edge",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return edge_can_collapse(m, e); }, [&] { collapse_edge(m, e); });
-	     }},
-	    {"cut_face",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     const Dart v = cut_edge(m, M2::Edge(d)).dart; // the face of d becomes a quad
-		     const Dart w = phi1(m, phi1(m, v));
-		     return guarded(
-		         t, [&] { return can_cut_face(m, M2::Vertex(v), M2::Vertex(w)); },
-		         [&] { cut_face(m, M2::Vertex(v), M2::Vertex(w)); });
-	     }},
-	    {"merge_incident_faces(edge)",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return can_merge_incident_faces(m, e); }, [&] { merge_incident_faces(m, e); });
-	     }},
-	    {"merge_incident_faces(vertex)",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Vertex v(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return can_merge_incident_faces(m, v); }, [&] { merge_incident_faces(m, v); });
-	     }},
-	    {"merge_incident_edges",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Vertex v = cut_edge(m, M2::Edge(random_inner_dart(m, r))); // a vertex of degree 2
-		     return guarded(
-		         t, [&] { return can_merge_incident_edges(m, v); }, [&] { merge_incident_edges(m, v); });
-	     }},
-	    {"split_vertex",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d1 = random_dart(m, r);
-		     const Dart d2 = next_around(m, next_around(m, d1));
-		     return guarded(
-		         t, [&] { return can_split_vertex(m, d1, d2); }, [&] { split_vertex(m, d1, d2); });
-	     }},
-	    {"remove_face",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Face f(random_inner_dart(m, r));
-		     t.time([&] { remove_face(m, f); });
-		     return true;
-	     }},
-	    {"fill_hole",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     if (is_incident_to_boundary(m, M2::Face(d)))
-			     return false; // keep to holes of one face
-		     remove_face(m, M2::Face(d));
-		     return guarded(
-		         t, [&] { return can_fill_hole(m, d); }, [&] { fill_hole(m, d); });
-	     }},
-	    {"unsew_faces",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return can_unsew_faces(m, e); }, [&] { unsew_faces(m, e); });
-	     }},
-	    {"sew_faces",
-	     [](M2& m, std::mt19937& r, Timer& t)
-	     {
-		     const M2::Edge e(random_dart(m, r));
-		     if (!can_unsew_faces(m, e))
-			     return false;
-		     const Dart d = e.dart, d2 = phi2(m, d);
-		     unsew_faces(m, e); // sew it back
-		     return guarded(
-		         t, [&] { return can_sew_faces(m, M2::Edge(d), M2::Edge(d2)); },
-		         [&] { sew_faces(m, M2::Edge(d), M2::Edge(d2)); });
-	     }},
+		{"cut_edge",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_dart(m, r);
+			 t.time([&] { cut_edge(m, M2::Edge(d)); });
+			 return true;
+		 }},
+		{"flip_edge",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return edge_can_flip(m, e); }, [&] { flip_edge(m, e); });
+		 }},
+		{"flip_back_edge",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return edge_can_flip_back(m, e); }, [&] { flip_back_edge(m, e); });
+		 }},
+		{"collapse_edge",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return edge_can_collapse(m, e); }, [&] { collapse_edge(m, e); });
+		 }},
+		{"cut_face",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 const Dart v = cut_edge(m, M2::Edge(d)).dart; // the face of d becomes a quad
+			 const Dart w = phi1(m, phi1(m, v));
+			 return guarded(
+				 t, [&] { return can_cut_face(m, M2::Vertex(v), M2::Vertex(w)); },
+				 [&] { cut_face(m, M2::Vertex(v), M2::Vertex(w)); });
+		 }},
+		{"merge_incident_faces(edge)",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return can_merge_incident_faces(m, e); }, [&] { merge_incident_faces(m, e); });
+		 }},
+		{"merge_incident_faces(vertex)",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Vertex v(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return can_merge_incident_faces(m, v); }, [&] { merge_incident_faces(m, v); });
+		 }},
+		{"merge_incident_edges",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Vertex v = cut_edge(m, M2::Edge(random_inner_dart(m, r))); // a vertex of degree 2
+			 return guarded(
+				 t, [&] { return can_merge_incident_edges(m, v); }, [&] { merge_incident_edges(m, v); });
+		 }},
+		{"split_vertex",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const Dart d1 = random_dart(m, r);
+			 const Dart d2 = next_around(m, next_around(m, d1));
+			 return guarded(
+				 t, [&] { return can_split_vertex(m, d1, d2); }, [&] { split_vertex(m, d1, d2); });
+		 }},
+		{"remove_face",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Face f(random_inner_dart(m, r));
+			 t.time([&] { remove_face(m, f); });
+			 return true;
+		 }},
+		{"fill_hole",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 if (is_incident_to_boundary(m, M2::Face(d)))
+				 return false; // keep to holes of one face
+			 remove_face(m, M2::Face(d));
+			 return guarded(
+				 t, [&] { return can_fill_hole(m, d); }, [&] { fill_hole(m, d); });
+		 }},
+		{"unsew_faces",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return can_unsew_faces(m, e); }, [&] { unsew_faces(m, e); });
+		 }},
+		{"sew_faces",
+		 [](M2& m, std::mt19937& r, Timer& t) {
+			 const M2::Edge e(random_dart(m, r));
+			 if (!can_unsew_faces(m, e))
+				 return false;
+			 const Dart d = e.dart, d2 = phi2(m, d);
+			 unsew_faces(m, e); // sew it back
+			 return guarded(
+				 t, [&] { return can_sew_faces(m, M2::Edge(d), M2::Edge(d2)); },
+				 [&] { sew_faces(m, M2::Edge(d), M2::Edge(d2)); });
+		 }},
 	};
 	return ops;
 }
@@ -279,104 +262,92 @@ const std::vector<std::pair<std::string, Call<M2>>>& surface_operators()
 const std::vector<std::pair<std::string, Call<M3>>>& volume_operators()
 {
 	static const std::vector<std::pair<std::string, Call<M3>>> ops = {
-	    {"cut_edge",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_dart(m, r);
-		     t.time([&] { cut_edge(m, M3::Edge(d)); });
-		     return true;
-	     }},
-	    {"cut_face",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     const Dart v = phi1(m, d);
-		     cut_edge(m, M3::Edge(d)); // the faces around the edge become quads
-		     const Dart w = phi1(m, phi1(m, v));
-		     return guarded(
-		         t, [&] { return can_cut_face(m, v, w); }, [&] { cut_face(m, v, w); });
-	     }},
-	    {"merge_incident_faces",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     const Dart v = phi1(m, d);
-		     cut_edge(m, M3::Edge(d));
-		     const M3::Edge e = cut_face(m, v, phi1(m, phi1(m, v)));
-		     return guarded(
-		         t, [&] { return can_merge_incident_faces(m, e); }, [&] { merge_incident_faces(m, e); });
-	     }},
-	    {"cut_volume",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     const std::vector<Dart> path = {d, phi1(m, d), phi_1(m, d)}; // around one face
-		     t.time([&] { cut_volume(m, path); });
-		     return true;
-	     }},
-	    {"merge_incident_volumes",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     const M3::Face f = cut_volume(m, {d, phi1(m, d), phi_1(m, d)});
-		     return guarded(
-		         t, [&] { return can_merge_incident_volumes(m, f); }, [&] { merge_incident_volumes(m, f); });
-	     }},
-	    {"collapse_edge",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const M3::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return edge_can_collapse(m, e); }, [&] { collapse_edge(m, e); });
-	     }},
-	    {"flip_face",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const M3::Face f(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return face_can_flip(m, f); }, [&] { flip_face(m, f); });
-	     }},
-	    {"flip_edge",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const M3::Edge e(random_dart(m, r));
-		     return guarded(
-		         t, [&] { return edge_can_flip(m, e); }, [&] { flip_edge(m, e); });
-	     }},
-	    {"split_tetra",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const M3::Volume w(random_inner_dart(m, r));
-		     t.time([&] { split_tetra(m, w); });
-		     return true;
-	     }},
-	    {"unsew_volumes",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r);
-		     if (is_boundary(m, phi3(m, d)))
-			     return false;
-		     t.time([&] { unsew_volumes(m, M3::Face(d)); });
-		     return true;
-	     }},
-	    {"sew_volumes",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const Dart d = random_inner_dart(m, r), d3 = phi3(m, d);
-		     if (is_boundary(m, d3))
-			     return false;
-		     unsew_volumes(m, M3::Face(d)); // sew it back
-		     return guarded(
-		         t, [&] { return can_sew_volumes(m, M3::Face(d), M3::Face(d3)); },
-		         [&] { sew_volumes(m, M3::Face(d), M3::Face(d3)); });
-	     }},
-	    {"remove_volume",
-	     [](M3& m, std::mt19937& r, Timer& t)
-	     {
-		     const M3::Volume w(random_inner_dart(m, r));
-		     t.time([&] { remove_volume(m, w); });
-		     return true;
-	     }},
+		{"cut_edge",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_dart(m, r);
+			 t.time([&] { cut_edge(m, M3::Edge(d)); });
+			 return true;
+		 }},
+		{"cut_face",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 const Dart v = phi1(m, d);
+			 cut_edge(m, M3::Edge(d)); // the faces around the edge become quads
+			 const Dart w = phi1(m, phi1(m, v));
+			 return guarded(
+				 t, [&] { return can_cut_face(m, v, w); }, [&] { cut_face(m, v, w); });
+		 }},
+		{"merge_incident_faces",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 const Dart v = phi1(m, d);
+			 cut_edge(m, M3::Edge(d));
+			 const M3::Edge e = cut_face(m, v, phi1(m, phi1(m, v)));
+			 return guarded(
+				 t, [&] { return can_merge_incident_faces(m, e); }, [&] { merge_incident_faces(m, e); });
+		 }},
+		{"cut_volume",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 const std::vector<Dart> path = {d, phi1(m, d), phi_1(m, d)}; // around one face
+			 t.time([&] { cut_volume(m, path); });
+			 return true;
+		 }},
+		{"merge_incident_volumes",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 const M3::Face f = cut_volume(m, {d, phi1(m, d), phi_1(m, d)});
+			 return guarded(
+				 t, [&] { return can_merge_incident_volumes(m, f); }, [&] { merge_incident_volumes(m, f); });
+		 }},
+		{"collapse_edge",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const M3::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return edge_can_collapse(m, e); }, [&] { collapse_edge(m, e); });
+		 }},
+		{"flip_face",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const M3::Face f(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return face_can_flip(m, f); }, [&] { flip_face(m, f); });
+		 }},
+		{"flip_edge",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const M3::Edge e(random_dart(m, r));
+			 return guarded(
+				 t, [&] { return edge_can_flip(m, e); }, [&] { flip_edge(m, e); });
+		 }},
+		{"split_tetra",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const M3::Volume w(random_inner_dart(m, r));
+			 t.time([&] { split_tetra(m, w); });
+			 return true;
+		 }},
+		{"unsew_volumes",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r);
+			 if (is_boundary(m, phi3(m, d)))
+				 return false;
+			 t.time([&] { unsew_volumes(m, M3::Face(d)); });
+			 return true;
+		 }},
+		{"sew_volumes",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const Dart d = random_inner_dart(m, r), d3 = phi3(m, d);
+			 if (is_boundary(m, d3))
+				 return false;
+			 unsew_volumes(m, M3::Face(d)); // sew it back
+			 return guarded(
+				 t, [&] { return can_sew_volumes(m, M3::Face(d), M3::Face(d3)); },
+				 [&] { sew_volumes(m, M3::Face(d), M3::Face(d3)); });
+		 }},
+		{"remove_volume",
+		 [](M3& m, std::mt19937& r, Timer& t) {
+			 const M3::Volume w(random_inner_dart(m, r));
+			 t.time([&] { remove_volume(m, w); });
+			 return true;
+		 }},
 	};
 	return ops;
 }
@@ -435,14 +406,14 @@ void run(benchmark::State& state, const std::string& row, const Call<MAP>& call,
 
 template <typename MAP>
 void register_all(const char* prefix, const std::vector<std::pair<std::string, Call<MAP>>>& ops,
-                  MAP (*make)(uint32, bool))
+				  MAP (*make)(uint32, bool))
 {
 	for (const auto& [name, call] : ops)
 	{
 		const std::string row = std::string(prefix) + " | " + name;
 		auto* b =
-		    benchmark::RegisterBenchmark((std::string(prefix) + "/" + name).c_str(),
-		                                 [row, call, make](benchmark::State& s) { run<MAP>(s, row, call, make); });
+			benchmark::RegisterBenchmark((std::string(prefix) + "/" + name).c_str(),
+										 [row, call, make](benchmark::State& s) { run<MAP>(s, row, call, make); });
 		for (uint32 size : SIZES)
 			for (int indexed : {0, 1})
 				b->Args({int64_t(size), indexed});
@@ -460,7 +431,7 @@ void print_table()
 		if (small == r.ns_per_call.end() || large == r.ns_per_call.end())
 			continue;
 		std::printf("| %s | %.0f | %.0f | %.2f |\n", row.c_str(), small->second, large->second,
-		            large->second / small->second);
+					large->second / small->second);
 	}
 }
 

@@ -158,6 +158,8 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 		}
 		phi2_sew(m, b, z);
 	}
+	if (taken.empty())
+		return;
 	// A freed p is paired with the dart the edge led to before the change,
 	// through the fan that left: from p's former partner, turn through the
 	// volumes, across each cut face to the other side (`cut`), until an old
@@ -178,8 +180,6 @@ void close_phi3_holes(CMap3& m, const std::vector<Dart>& darts, std::vector<Dart
 				return phi3(m, c1 == x ? c2 : c1);
 		return Dart();
 	};
-	if (taken.empty())
-		return;
 	DartMarkerStore<CMap3> fresh_mark(m);
 	for (Dart b : fresh)
 		fresh_mark.mark(b);

@@ -359,17 +359,23 @@ bool can_cut_volume(const CMap3& m, const std::vector<Dart>& path)
 	const std::size_t k = path.size();
 	if (k < 3 || is_boundary(m, path[0]))
 		return false;
-	// each dart leaves a vertex of the volume not met before, from where the
-	// previous one arrived; so every dart is in the volume of path[0]
+	// each dart leaves the vertex of the volume where the previous one arrived
+	// (so every dart is in the volume of path[0]), and no vertex but the first
+	// is reached twice: each vertex of the volume is walked once
 	DartMarkerStore<CMap3> met(m);
+	met.mark_orbit(CMap3::Vertex2(path[0]));
 	for (std::size_t i = 0; i < k; ++i)
 	{
-		if (met.is_marked(path[i]))
-			return false;
-		met.mark_orbit(CMap3::Vertex2(path[i]));
 		const Dart next = path[(i + 1) % k];
+		const bool closing = i + 1 == k;
+		if (!closing && met.is_marked(next))
+			return false;
 		bool follows = false;
-		foreach_dart_of_orbit(m, CMap3::Vertex2(phi1(m, path[i])), [&](Dart x) { return !(follows = x == next); });
+		foreach_dart_of_orbit(m, CMap3::Vertex2(phi1(m, path[i])), [&](Dart x) {
+			if (!closing)
+				met.mark(x);
+			follows = follows || x == next;
+		});
 		if (!follows)
 			return false;
 	}

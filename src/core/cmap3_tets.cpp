@@ -63,6 +63,12 @@ std::vector<Dart> volumes_around(const CMap3& m, Vertex v)
 
 using Tet = std::array<uint32, 4>;
 
+bool all_distinct(std::vector<uint32> labels)
+{
+	std::sort(labels.begin(), labels.end());
+	return std::adjacent_find(labels.begin(), labels.end()) == labels.end();
+}
+
 // the four corner labels of the tet of dart w (any order)
 Tet corners(const CMap3& m, Dart w, VertexLabels& label)
 {
@@ -140,6 +146,11 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 		std::set<std::pair<uint32, uint32>> faces_at;
 		for (Dart w : volumes_around(m, v))
 		{
+			if (!is_tetra(m, w))
+			{
+				star_ok = false;
+				return;
+			}
 			bool repeated = false;
 			foreach_dart_of_orbit(m, Volume(w), [&](Dart x) {
 				if (label(x) != lv || face_seen.is_marked(x))
@@ -148,22 +159,10 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 				repeated = !faces_at.insert(pair_of(label(phi1(m, x)), label(phi_1(m, x)))).second;
 				return !repeated;
 			});
-			if (repeated)
+			const Tet t = corners(m, w, label);
+			if (repeated || !all_distinct({t.begin(), t.end()})) // volumes sewn onto themselves repeat a corner
 			{
 				star_ok = false;
-				return;
-			}
-			if (!is_tetra(m, w))
-			{
-				star_ok = false;
-				return;
-			}
-			Tet t = corners(m, w, label);
-			Tet sorted = t;
-			std::sort(sorted.begin(), sorted.end());
-			if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-			{
-				star_ok = false; // two corners are one vertex (volumes sewn onto themselves)
 				return;
 			}
 			std::vector<uint32> others;
@@ -266,9 +265,7 @@ bool face_can_flip(const CMap3& m, CMap3::Face f)
 	const Vertex apex_a(phi_1(m, phi2(m, d))), apex_b(phi_1(m, phi2(m, d3)));
 	// five distinct vertices (volumes sewn onto themselves can repeat one)
 	VertexLabels label(m);
-	std::set<uint32> corners{label(d), label(phi1(m, d)), label(phi_1(m, d)), label(apex_a.dart),
-							 label(apex_b.dart)};
-	if (corners.size() != 5)
+	if (!all_distinct({label(d), label(phi1(m, d)), label(phi_1(m, d)), label(apex_a.dart), label(apex_b.dart)}))
 		return false;
 	bool joined = false;
 	foreach_adjacent_vertex_through_edge(m, apex_a, [&](Vertex v) { return !(joined = same_orbit(m, v, apex_b)); });
@@ -314,9 +311,9 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 	for (Dart x : faces)
 		ring.push_back(label(phi_1(m, x)));
 	// the ends and the ring: distinct vertices (volumes sewn onto themselves can repeat one)
-	std::set<uint32> all(ring.begin(), ring.end());
-	all.insert({label(e.dart), label(phi1(m, e.dart))});
-	if (all.size() != ring.size() + 2)
+	std::vector<uint32> around = ring;
+	around.insert(around.end(), {label(e.dart), label(phi1(m, e.dart))});
+	if (!all_distinct(std::move(around)))
 		return false;
 	if (faces.size() == 3)
 	{
@@ -333,16 +330,14 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 			return false;
 		// a face around the edge c1 c2 whose third vertex is c3
 		foreach_dart_of_orbit(m, CMap3::Edge(c1c2), [&](Dart x) { return !(exists = label(phi_1(m, x)) == ring[2]); });
-		std::set<uint32> distinct(ring.begin(), ring.end());
-		return distinct.size() == 3 && !exists;
+		return !exists;
 	}
 	// 4-4: the diagonal c1 c3 must not be an edge already
 	bool joined = false;
 	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])), [&](Vertex v) {
 		return !(joined = label(v.dart) == ring[2]);
 	});
-	std::set<uint32> distinct(ring.begin(), ring.end());
-	return distinct.size() == 4 && !joined;
+	return !joined;
 }
 
 Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices)

@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstdint>
-#include <unordered_set>
 #include <vector>
 
 namespace cgogn::detail
@@ -112,14 +111,14 @@ void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 		bool walked = false;
 	};
 	std::vector<Part> parts;
-	std::unordered_set<uint32> placed; // darts known to lie in one of the parts
+	DartMarkerStore<MAP> placed(m); // darts known to lie in one of the parts
 	const auto place = [&](const std::vector<Dart>& darts) {
 		for (Dart d : darts)
-			placed.insert(d.index);
+			placed.mark(d);
 	};
 	for (Dart s : seeds)
 	{
-		if (placed.count(s.index))
+		if (placed.is_marked(s))
 			continue;
 		Part candidate{s, {}, false};
 		bool known = false;
@@ -142,7 +141,7 @@ void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 		}
 		if (!known)
 		{
-			placed.insert(s.index);
+			placed.mark(s);
 			parts.push_back(std::move(candidate));
 		}
 	}

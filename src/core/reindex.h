@@ -118,7 +118,6 @@ private:
 		}
 	}
 
-
 	std::array<std::vector<uint32>, NB_ORBITS> old_;
 	bool components_may_split_ = false;
 };

@@ -194,8 +194,9 @@ bool can_sew_faces(const CMap2& m, CMap2::Edge e1, CMap2::Edge e2);
 /// component held together only through a pinched vertex can fall apart: one
 /// part keeps the line, the others, walked whole, get new ones. Incidence
 /// caches are dropped. O(degree of the end vertices) (the boundary faces,
-/// holes as long as a border, are not walked); with components indexed, plus the size of e2's component when two
-/// components merge, and the darts met while telling parts apart.
+/// holes as long as a border, are not walked); with components indexed,
+/// plus the size of e2's component when two components merge, and the darts
+/// met while telling parts apart.
 /// Precondition: can_sew_faces(m, e1, e2).
 void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices = true);
 
