@@ -42,16 +42,21 @@ private:
 	uint32 next_ = 0;
 };
 
+// A tetrahedron: four triangles, three at each corner. Four triangles alone
+// can also make a sphere with a double edge (corners of 4, 4, 2 and 2
+// triangles, left by sewing a volume onto itself), which no tetrahedral
+// operator can rebuild.
 bool is_tetra(const CMap3& m, Dart w)
 {
 	uint32 darts = 0;
-	bool triangles = true;
+	bool tet = true;
 	foreach_dart_of_orbit(m, Volume(w), [&](Dart d) {
 		++darts;
-		triangles = triangles && phi<1, 1, 1>(m, d) == d;
-		return triangles && darts <= 12;
+		const Dart next = phi<2, 1>(m, d); // the next triangle around d's corner
+		tet = tet && phi<1, 1, 1>(m, d) == d && next != d && phi<2, 1, 2, 1>(m, next) == d;
+		return tet && darts <= 12;
 	});
-	return triangles && darts == 12;
+	return tet && darts == 12;
 }
 
 std::vector<Dart> volumes_around(const CMap3& m, Vertex v)
@@ -334,9 +339,8 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 	}
 	// 4-4: the diagonal c1 c3 must not be an edge already
 	bool joined = false;
-	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])), [&](Vertex v) {
-		return !(joined = label(v.dart) == ring[2]);
-	});
+	foreach_adjacent_vertex_through_edge(m, Vertex(phi_1(m, faces[0])),
+										 [&](Vertex v) { return !(joined = label(v.dart) == ring[2]); });
 	return !joined;
 }
 

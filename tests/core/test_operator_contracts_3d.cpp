@@ -338,3 +338,54 @@ TEST(OperatorContracts3, CollapseRefusedAcrossAnUnsewnFace)
 	ASSERT_INTEGRITY(m);
 	EXPECT_FALSE(collapsible_from(m, index_of(m, Vertex(c.dart))).dart.is_valid());
 }
+
+// Four triangles with three at every corner make a tetrahedron; four with
+// corners of 4, 4, 2 and 2 triangles make a sphere with a double edge (a tet
+// whose faces at one edge were merged, then cut along the other diagonal).
+// No tetrahedral predicate may take it for a tet: the flips and the collapse
+// rebuild tets from corners and would leave phi3 fixed points.
+TEST(OperatorContracts3, TetPredicatesRefuseASphereWithADoubleEdge)
+{
+	CMap3 m;
+	index_everything(m);
+	const Volume w = add_tetra(m);
+	const Dart cd = w.dart;
+	const uint32 c = index_of(m, Vertex(cd)), d = index_of(m, Vertex(phi1(m, cd)));
+	ASSERT_TRUE(can_merge_incident_faces(m, Edge(cd)));
+	const Face quad = merge_incident_faces(m, Edge(cd));
+	ASSERT_EQ(codegree(m, quad), 4u);
+	Dart a = quad.dart;
+	while (index_of(m, Vertex(a)) == c || index_of(m, Vertex(a)) == d)
+		a = phi1(m, a);
+	const Dart b = phi<1, 1>(m, a);
+	ASSERT_TRUE(can_cut_face(m, a, b));
+	cut_face(m, a, b);
+	ASSERT_INTEGRITY(m);
+	// the sphere: 12 darts in 4 triangles, 4 corners, 6 edges (two join a and b)
+	const Volume sphere(a);
+	uint32 triangles = 0;
+	foreach_incident_face(m, sphere, [&](Face f) { triangles += codegree(m, f) == 3; });
+	ASSERT_EQ(triangles, 4u);
+	ASSERT_EQ(counts(m).e, 6u);
+
+	// glue a real tet onto a face of the sphere
+	const Volume t = add_tetra(m);
+	const Face f1 =
+		find<Face>(m, [&](Face f) { return !is_boundary(m, f.dart) && same_orbit(m, Volume(f.dart), sphere); });
+	ASSERT_TRUE(can_sew_volumes(m, f1, Face(t.dart)));
+	sew_volumes(m, f1, Face(t.dart));
+	ASSERT_INTEGRITY(m);
+
+	foreach_dart_of_orbit(m, Face(f1.dart), [&](Dart x) {
+		EXPECT_FALSE(face_can_flip(m, Face(x))) << "dart " << x.index;
+		EXPECT_FALSE(face_can_flip(m, Face(phi3(m, x)))) << "dart " << x.index;
+	});
+	foreach_dart(m, [&](Dart x) {
+		if (!is_boundary(m, x))
+		{
+			EXPECT_FALSE(edge_can_flip(m, Edge(x))) << "dart " << x.index;
+			EXPECT_FALSE(edge_can_collapse(m, Edge(x))) << "dart " << x.index;
+		}
+	});
+	EXPECT_THROW(split_tetra(m, sphere), TopologyError);
+}
