@@ -48,12 +48,12 @@ void BM_RenderSphere1M(benchmark::State& state)
 	state.counters["triangles"] = double(nb_cells<CMap2::Face>(s.m));
 }
 BENCHMARK(BM_RenderSphere1M)
-    ->ArgNames({"ssaa", "edges", "color"})
-    ->Args({2, 0, 0})
-    ->Args({3, 0, 0})
-    ->Args({2, 1, 1})
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(3);
+	->ArgNames({"ssaa", "edges", "color"})
+	->Args({2, 0, 0})
+	->Args({3, 0, 0})
+	->Args({2, 1, 1})
+	->Unit(benchmark::kMillisecond)
+	->Iterations(3);
 
 } // namespace
 

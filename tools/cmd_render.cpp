@@ -3,10 +3,10 @@
 // volume mesh, drawn by the software rasterizer of cgogn::render.
 #include <cgogn/render/render.h>
 
+#include "commands.h"
+
 #include <cstdio>
 #include <map>
-
-#include "commands.h"
 
 namespace cgogn::tool
 {
@@ -39,10 +39,10 @@ int run_render(RenderCommandOptions o)
 	if (!o.background.empty())
 		o.render.background = render::parse_color(o.background);
 	const std::map<std::string, render::ColorSource> sources = {{"none", render::ColorSource::Uniform},
-	                                                            {"curvature", render::ColorSource::MeanCurvature},
-	                                                            {"gaussian", render::ColorSource::GaussianCurvature},
-	                                                            {"area", render::ColorSource::Area},
-	                                                            {"quality", render::ColorSource::Quality}};
+																{"curvature", render::ColorSource::MeanCurvature},
+																{"gaussian", render::ColorSource::GaussianCurvature},
+																{"area", render::ColorSource::Area},
+																{"quality", render::ColorSource::Quality}};
 	if (auto it = sources.find(o.color); it != sources.end())
 		o.render.color = it->second;
 	else
@@ -80,33 +80,33 @@ int run_render(RenderCommandOptions o)
 Command add_render_command(CLI::App& app)
 {
 	auto* sub = app.add_subcommand("render", "Draw a surface, or the boundary of a volume mesh, into a PNG picture "
-	                                         "(software rasterizer, orthographic camera)");
+											 "(software rasterizer, orthographic camera)");
 	auto o = std::make_shared<RenderCommandOptions>();
 	sub->add_option("IN", o->in, "input mesh file (surface or volume format)")->required();
 	sub->add_option("OUT", o->out, "output PNG file")->required();
 	sub->add_option("--size", o->size, "picture size WIDTHxHEIGHT (default 800x600)");
 	const std::map<std::string, render::View> views = {
-	    {"x", render::View::X}, {"y", render::View::Y}, {"z", render::View::Z}, {"iso", render::View::Iso}};
+		{"x", render::View::X}, {"y", render::View::Y}, {"z", render::View::Z}, {"iso", render::View::Iso}};
 	sub->add_option("--view", o->render.view,
-	                "x: looks down -x (+z up), y: down -y (+z up), z: down -z (+y up, +x right), iso: down "
-	                "-(1,1,1) (+y up; default)")
-	    ->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
+					"x: looks down -x (+z up), y: down -y (+z up), z: down -z (+y up, +x right), iso: down "
+					"-(1,1,1) (+y up; default)")
+		->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
 	sub->add_option("--azimuth", o->render.azimuth,
-	                "degrees: turns the camera about the view's up axis, towards its right (default 0)");
+					"degrees: turns the camera about the view's up axis, towards its right (default 0)");
 	sub->add_option("--elevation", o->render.elevation, "degrees: raises the camera towards the view's up axis")
-	    ->check(CLI::Range(-90.0, 90.0));
+		->check(CLI::Range(-90.0, 90.0));
 	const std::map<std::string, render::Shading> shadings = {{"flat", render::Shading::Flat},
-	                                                         {"smooth", render::Shading::Smooth}};
+															 {"smooth", render::Shading::Smooth}};
 	sub->add_option("--shading", o->render.shading, "flat or smooth (default)")
-	    ->transform(CLI::CheckedTransformer(shadings, CLI::ignore_case));
+		->transform(CLI::CheckedTransformer(shadings, CLI::ignore_case));
 	sub->add_option("--ssaa", o->render.supersampling, "supersampling: N x N samples per pixel (1-8, default 2)")
-	    ->check(CLI::Range(1u, 8u));
+		->check(CLI::Range(1u, 8u));
 	sub->add_flag("--edges", o->render.edges, "draw the mesh edges over the faces");
 	sub->add_flag("--show-defects", o->render.show_defects,
-	              "boundary edges in red, vertices split by the loader (non-manifold) as orange dots");
+				  "boundary edges in red, vertices split by the loader (non-manifold) as orange dots");
 	sub->add_option("--color", o->color,
-	                "curvature (mean), gaussian, area, quality (triangle shape), or the name of a double/float "
-	                "vertex or cell attribute of the file, through viridis with a legend (default: none)");
+					"curvature (mean), gaussian, area, quality (triangle shape), or the name of a double/float "
+					"vertex or cell attribute of the file, through viridis with a legend (default: none)");
 	sub->add_flag("!--no-legend", o->render.legend, "no min/max bar with --color");
 	sub->add_option("--background", o->background, "background colour: #rrggbb or r,g,b (default white)");
 	return {sub, [o] { return run_render(*o); }};

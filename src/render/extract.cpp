@@ -31,7 +31,7 @@ std::vector<std::string> scalar_attribute_names(const AttributeContainer& c)
 	std::vector<std::string> out;
 	for (const auto& a : c.attributes())
 		if ((a->type() == std::type_index(typeid(double)) || a->type() == std::type_index(typeid(float))) &&
-		    a->name() != "position" && a->name().rfind("__", 0) != 0)
+			a->name() != "position" && a->name().rfind("__", 0) != 0)
 			out.push_back(a->name());
 	return out;
 }
@@ -75,7 +75,7 @@ public:
 		});
 		if (face_darts_.empty())
 			throw RenderError(MAP::dimension == 2 ? "the mesh has no face to render"
-			                                      : "the volume mesh has no boundary face to render");
+												  : "the volume mesh has no boundary face to render");
 		finish_normals();
 		if (o_.show_defects)
 			find_split_vertices();
@@ -158,7 +158,8 @@ private:
 		for (std::size_t i = 0; i < normal_sum_.size(); ++i)
 		{
 			const double l = normal_sum_[i].norm();
-			s_.vertex_normal[i] = l > 0.0 ? Eigen::Vector3f((normal_sum_[i] / l).cast<float>()) : Eigen::Vector3f::Zero();
+			s_.vertex_normal[i] =
+				l > 0.0 ? Eigen::Vector3f((normal_sum_[i] / l).cast<float>()) : Eigen::Vector3f::Zero();
 		}
 		normal_sum_ = {};
 	}
@@ -193,7 +194,7 @@ private:
 };
 
 void polygon_quality(const std::vector<Vec3>& p, const std::vector<uint32_t>& tri, const std::vector<uint32_t>& face_of,
-                       std::vector<double>& out)
+					 std::vector<double>& out)
 {
 	for (std::size_t t = 0; t < face_of.size(); ++t)
 	{
@@ -205,7 +206,7 @@ void polygon_quality(const std::vector<Vec3>& p, const std::vector<uint32_t>& tr
 
 template <typename MAP>
 void add_scalar(const MAP& m, const AttributeArray<Vec3>& pos, const RenderOptions& o, Scene& s,
-                const std::vector<Dart>& face_darts, const std::vector<Dart>& vertex_darts)
+				const std::vector<Dart>& face_darts, const std::vector<Dart>& vertex_darts)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	using Face = typename mesh_traits<MAP>::Face;
@@ -279,8 +280,8 @@ void add_scalar(const MAP& m, const AttributeArray<Vec3>& pos, const RenderOptio
 	std::string list;
 	for (const std::string& n : names)
 		list += (list.empty() ? "" : ", ") + n;
-	throw RenderError("no double or float vertex or cell attribute named '" + o.attribute + "' (available: " +
-	                  (list.empty() ? std::string("none") : list) + ")");
+	throw RenderError("no double or float vertex or cell attribute named '" + o.attribute +
+					  "' (available: " + (list.empty() ? std::string("none") : list) + ")");
 }
 
 template <typename MAP, typename PRED>

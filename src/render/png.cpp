@@ -3,18 +3,16 @@
 // a failed write never leaves a truncated picture under the requested name.
 #include <cgogn/render/render.h>
 
-#include <png.h>
-
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <png.h>
 #include <string>
 #include <system_error>
-#include <vector>
-
 #include <unistd.h>
+#include <vector>
 
 namespace cgogn::render
 {
@@ -30,12 +28,12 @@ std::string encode(FILE* f, const Image& img, png_bytep* rows)
 	static thread_local char message[256];
 	message[0] = '\0';
 	png_structp png = png_create_write_struct(
-	    PNG_LIBPNG_VER_STRING, nullptr,
-	    [](png_structp p, png_const_charp msg) {
-		    std::snprintf(message, sizeof(message), "%s", msg);
-		    png_longjmp(p, 1);
-	    },
-	    [](png_structp, png_const_charp) {});
+		PNG_LIBPNG_VER_STRING, nullptr,
+		[](png_structp p, png_const_charp msg) {
+			std::snprintf(message, sizeof(message), "%s", msg);
+			png_longjmp(p, 1);
+		},
+		[](png_structp, png_const_charp) {});
 	if (png == nullptr)
 		return "cannot create the PNG encoder";
 	png_infop info = png_create_info_struct(png);
@@ -51,7 +49,7 @@ std::string encode(FILE* f, const Image& img, png_bytep* rows)
 	}
 	png_init_io(png, f);
 	png_set_IHDR(png, info, img.width, img.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-	             PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+				 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
 	png_set_compression_level(png, 6);
 	png_write_info(png, info);
 	png_write_image(png, rows);

@@ -215,7 +215,7 @@ void visibility(const Scene& s, Target& g)
 		// w0 weighs a (edge bc), w1 b (edge ca), w2 c (edge ab)
 		const int64_t b0 = edge_bias(g, b, c), b1 = edge_bias(g, c, a), b2 = edge_bias(g, a, b);
 		const int64_t sx0 = -(g.fy[c] - g.fy[b]) * SUB, sx1 = -(g.fy[a] - g.fy[c]) * SUB,
-		              sx2 = -(g.fy[b] - g.fy[a]) * SUB;
+					  sx2 = -(g.fy[b] - g.fy[a]) * SUB;
 		const double inv = 1.0 / double(st.area);
 		const double za = g.z[a] * inv, zb = g.z[b] * inv, zc = g.z[c] * inv;
 		const uint32_t id = uint32_t(t);
@@ -307,7 +307,7 @@ struct Shader
 		if (o.shading == Shading::Smooth)
 		{
 			const Eigen::Vector3f m =
-			    l0 * s.vertex_normal[st.a] + l1 * s.vertex_normal[st.b] + l2 * s.vertex_normal[st.c];
+				l0 * s.vertex_normal[st.a] + l1 * s.vertex_normal[st.b] + l2 * s.vertex_normal[st.c];
 			const float len = m.norm();
 			if (len > 1e-6f)
 				n = m / len;
@@ -327,11 +327,11 @@ struct Glyph
 	char c;
 	uint8_t rows[5];
 };
-constexpr Glyph font[] = {
-    {'0', {7, 5, 5, 5, 7}}, {'1', {2, 6, 2, 2, 7}}, {'2', {7, 1, 7, 4, 7}}, {'3', {7, 1, 7, 1, 7}},
-    {'4', {5, 5, 7, 1, 1}}, {'5', {7, 4, 7, 1, 7}}, {'6', {7, 4, 7, 5, 7}}, {'7', {7, 1, 1, 1, 1}},
-    {'8', {7, 5, 7, 5, 7}}, {'9', {7, 5, 7, 1, 7}}, {'-', {0, 0, 7, 0, 0}}, {'+', {0, 2, 7, 2, 0}},
-    {'.', {0, 0, 0, 0, 2}}, {'e', {0, 3, 7, 4, 3}}};
+constexpr Glyph font[] = {{'0', {7, 5, 5, 5, 7}}, {'1', {2, 6, 2, 2, 7}}, {'2', {7, 1, 7, 4, 7}},
+						  {'3', {7, 1, 7, 1, 7}}, {'4', {5, 5, 7, 1, 1}}, {'5', {7, 4, 7, 1, 7}},
+						  {'6', {7, 4, 7, 5, 7}}, {'7', {7, 1, 1, 1, 1}}, {'8', {7, 5, 7, 5, 7}},
+						  {'9', {7, 5, 7, 1, 7}}, {'-', {0, 0, 7, 0, 0}}, {'+', {0, 2, 7, 2, 0}},
+						  {'.', {0, 0, 0, 0, 2}}, {'e', {0, 3, 7, 4, 3}}};
 
 void put(Image& img, int x, int y, Rgb c)
 {
@@ -396,7 +396,7 @@ Image rasterize(const Scene& s, const RenderOptions& o)
 	const uint64_t samples = uint64_t(o.width) * o.height * uint64_t(n * n);
 	if (samples > (uint64_t(1) << 26) || o.width > 32768 || o.height > 32768)
 		throw RenderError("the picture is too large (" + std::to_string(o.width) + "x" + std::to_string(o.height) +
-		                  " with supersampling " + std::to_string(n) + ": more than 2^26 samples)");
+						  " with supersampling " + std::to_string(n) + ": more than 2^26 samples)");
 	const bool show_legend = o.legend && s.scalar_on != Scene::ScalarOn::None;
 
 	// camera: the bounding box's centre, scaled so that its projection fills
@@ -456,7 +456,8 @@ Image rasterize(const Scene& s, const RenderOptions& o)
 		for (int x = 0; x < g.w; ++x)
 		{
 			const std::size_t i = std::size_t(y) * g.w + x;
-			const Rgb c = g.tri[i] == NONE ? o.background : shader.shade(g, g.tri[i], x * SUB + SUB / 2, y * SUB + SUB / 2);
+			const Rgb c =
+				g.tri[i] == NONE ? o.background : shader.shade(g, g.tri[i], x * SUB + SUB / 2, y * SUB + SUB / 2);
 			g.rgb[3 * i] = c.r;
 			g.rgb[3 * i + 1] = c.g;
 			g.rgb[3 * i + 2] = c.b;

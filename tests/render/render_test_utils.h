@@ -6,7 +6,6 @@
 #include <cgogn/render/render.h>
 
 #include <png.h>
-
 #include <string>
 
 namespace cgogn::render_test

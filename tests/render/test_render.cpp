@@ -3,11 +3,11 @@
 // analytic disk given by the camera convention, viridis colours of known
 // scalar fields, the view conventions, determinism of the PNG bytes, and the
 // errors on bad input.
-#include <filesystem>
-#include <set>
-
 #include "../io/io_test_utils.h"
 #include "render_test_utils.h"
+
+#include <filesystem>
+#include <set>
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -53,7 +53,7 @@ render::RenderOptions unlit(render::View view, uint32_t w, uint32_t h)
 
 // matplotlib's viridis at 0, 1/4, 1/2, 3/4 and 1, as published
 constexpr render::Rgb viridis0{0x44, 0x01, 0x54}, viridis25{0x3b, 0x52, 0x8b}, viridis50{0x21, 0x91, 0x8c},
-                      viridis75{0x5e, 0xc9, 0x62}, viridis100{0xfd, 0xe7, 0x25};
+	viridis75{0x5e, 0xc9, 0x62}, viridis100{0xfd, 0xe7, 0x25};
 
 } // namespace
 
@@ -190,12 +190,12 @@ TEST(Render, ViewConventions)
 		bool positive; // ... or to the left / downwards when false
 	};
 	const Case cases[] = {
-	    {render::View::Z, 0, 1, 0, true, true},  // +x to the right
-	    {render::View::Z, 0, 1, 1, false, true}, // +y up
-	    {render::View::X, 1, 2, 1, true, true},  // +y to the right
-	    {render::View::X, 1, 2, 2, false, true}, // +z up
-	    {render::View::Y, 0, 2, 0, true, false}, // -x to the right
-	    {render::View::Y, 0, 2, 2, false, true}, // +z up
+		{render::View::Z, 0, 1, 0, true, true},  // +x to the right
+		{render::View::Z, 0, 1, 1, false, true}, // +y up
+		{render::View::X, 1, 2, 1, true, true},  // +y to the right
+		{render::View::X, 1, 2, 2, false, true}, // +z up
+		{render::View::Y, 0, 2, 0, true, false}, // -x to the right
+		{render::View::Y, 0, 2, 2, false, true}, // +z up
 	};
 	for (const Case& c : cases)
 	{
@@ -252,7 +252,7 @@ TEST(Render, EveryColourSourceAndOverlayRuns)
 	o.height = 120;
 	const render::Image plain = render::render_surface(m, *pos, o);
 	for (render::ColorSource c : {render::ColorSource::MeanCurvature, render::ColorSource::GaussianCurvature,
-	                              render::ColorSource::Area, render::ColorSource::Quality})
+								  render::ColorSource::Area, render::ColorSource::Quality})
 	{
 		o.color = c;
 		EXPECT_NE(render::render_surface(m, *pos, o).rgb, plain.rgb) << int(c);
@@ -379,8 +379,7 @@ TEST(Render, VolumeWithoutBoundaryIsAnError)
 	uint32_t sewn = 0;
 	for (CMap3::Face a : f0)
 		for (CMap3::Face b : f1)
-			if (is_boundary(m, phi3(m, a.dart)) && is_boundary(m, phi3(m, b.dart)) &&
-			    can_sew_volumes(m, a, b))
+			if (is_boundary(m, phi3(m, a.dart)) && is_boundary(m, phi3(m, b.dart)) && can_sew_volumes(m, a, b))
 			{
 				sew_volumes(m, a, b);
 				++sewn;

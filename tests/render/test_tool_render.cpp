@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `cgogn render` run as a program: a surface and a volume mesh from the test
 // data give valid PNG pictures; bad input exits 2 and writes nothing.
-#include <cgogn_test_data.h>
-
 #include "../io/io_test_utils.h"
 #include "render_test_utils.h"
+
+#include <cgogn_test_data.h>
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -39,9 +39,9 @@ TEST(ToolRender, SurfaceToPng)
 	EXPECT_GT(nb_colours(img), 20u);
 
 	r = run_tool("render " + in + " " + quoted(dir.file("c.png")) +
-	                 " --size 300x200 --view z --azimuth 30 --elevation 20 --shading flat --ssaa 1 --color "
-	                 "curvature --background 0,0,0 --show-defects",
-	             dir);
+					 " --size 300x200 --view z --azimuth 30 --elevation 20 --shading flat --ssaa 1 --color "
+					 "curvature --background 0,0,0 --show-defects",
+				 dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	const render::Image c = read_png(dir.file("c.png"));
 	ASSERT_EQ(c.width, 300u);

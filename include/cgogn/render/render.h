@@ -55,8 +55,8 @@ enum class View
 
 enum class Shading
 {
-	Flat,   ///< one normal per face
-	Smooth  ///< vertex normals (area-weighted face normals) interpolated per pixel
+	Flat,  ///< one normal per face
+	Smooth ///< vertex normals (area-weighted face normals) interpolated per pixel
 };
 
 /// What sets the colour of the surface. Scalars are mapped through viridis,
