@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(cmake ninja-build g++ clang libclang-rt-14-dev python3
           libgtest-dev libgmock-dev libbenchmark-dev
-          libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
+          libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libpng-dev
           libopenmesh-dev libcgal-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -17,5 +17,6 @@ Command add_remesh_command(CLI::App& app);
 Command add_subdivide_command(CLI::App& app);
 Command add_fill_holes_command(CLI::App& app);
 Command add_dual_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
 
 } // namespace cgogn::tool

@@ -6,3 +6,4 @@
 #include <cgogn/geometry.h>
 #include <cgogn/io.h>
 #include <cgogn/modeling.h>
+#include <cgogn/render.h>

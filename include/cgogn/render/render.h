@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: MIT
+// Software rendering of a surface, or of the boundary of a volume mesh, into
+// an RGB picture: no GPU and no display needed. The library prints nothing:
+// every failure is a RenderError.
+//
+// Camera: orthographic, looking at the centre of the axis-aligned bounding
+// box of the rendered vertices, scaled so that the projection of that box
+// fills 90% of the drawing area's width or height (whichever is reached
+// first), centred in it. The drawing area is the whole image, minus a strip
+// on the right for the legend when a scalar is shown (see legend_width()).
+// Base views (camera frame: right, up, and `back` pointing at the viewer):
+//   z:   looks down -z, +y up, +x to the right
+//   x:   looks down -x, +z up, +y to the right
+//   y:   looks down -y, +z up, -x to the right
+//   iso: the z view turned by azimuth 45 and elevation 35.26 degrees, i.e.
+//        looking down -(1, 1, 1) with +y up
+// The azimuth then turns the camera about the view's up axis (positive: from
+// its `back` towards its `right`), and the elevation raises it towards the up
+// axis, both in degrees, on top of the base view. The light is a headlight
+// (coming from the camera) and lights both sides of every face.
+#pragma once
+
+#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cgogn::render
+{
+
+/// Every failure of the renderer: empty mesh, non-finite positions, unknown
+/// attribute, bad option, unwritable file.
+class RenderError : public std::runtime_error
+{
+public:
+	using std::runtime_error::runtime_error;
+};
+
+struct Rgb
+{
+	uint8_t r = 0, g = 0, b = 0;
+	friend bool operator==(Rgb, Rgb) = default;
+};
+
+enum class View
+{
+	X,
+	Y,
+	Z,
+	Iso
+};
+
+enum class Shading
+{
+	Flat,  ///< one normal per face
+	Smooth ///< vertex normals (area-weighted face normals) interpolated per pixel
+};
+
+/// What sets the colour of the surface. Scalars are mapped through viridis,
+/// from their minimum (over the rendered cells) to their maximum.
+enum class ColorSource
+{
+	Uniform,           ///< RenderOptions::surface_color
+	MeanCurvature,     ///< per vertex, geometry::mean_curvature (surfaces only)
+	GaussianCurvature, ///< per vertex, geometry::gaussian_curvature (surfaces only)
+	Area,              ///< per face, geometry::face_area
+	Quality,           ///< per face, triangle_quality() (polygons: their worst fan triangle)
+	Attribute          ///< RenderOptions::attribute: a double or float vertex, face or volume attribute
+};
+
+struct RenderOptions
+{
+	uint32_t width = 800, height = 600;
+	View view = View::Iso;
+	double azimuth = 0.0, elevation = 0.0; ///< degrees, on top of `view`
+	Shading shading = Shading::Smooth;
+	/// Each pixel is the mean of ssaa x ssaa samples (1: no anti-aliasing).
+	uint32_t supersampling = 2;
+	/// Wireframe of the mesh edges, depth-tested with a small bias.
+	bool edges = false;
+	/// Boundary edges in red and split (non-manifold) vertices as orange dots,
+	/// drawn over everything so that hidden ones show too.
+	bool show_defects = false;
+	ColorSource color = ColorSource::Uniform;
+	std::string attribute; ///< the attribute's name, for ColorSource::Attribute
+	/// Min/max bar on the right when a scalar is shown.
+	bool legend = true;
+	/// false: colours as they are, without the light (0.2 + 0.8 |n.l| otherwise).
+	bool lighting = true;
+	Rgb background{255, 255, 255};
+	Rgb surface_color{190, 198, 214};
+	Rgb edge_color{35, 35, 40};
+};
+
+/// An 8-bit RGB picture, rows from the top, 3 bytes per pixel.
+struct Image
+{
+	uint32_t width = 0, height = 0;
+	std::vector<uint8_t> rgb;
+
+	Rgb at(uint32_t x, uint32_t y) const
+	{
+		const std::size_t i = (std::size_t(y) * width + x) * 3;
+		return {rgb[i], rgb[i + 1], rgb[i + 2]};
+	}
+};
+
+/// Renders the non-boundary faces of m (polygons fanned into triangles) with
+/// positions pos. O(number of darts + number of samples), single-threaded and
+/// deterministic: the same map, positions and options give the same bytes.
+/// Memory: about 12 bytes per sample (width x height x supersampling^2) plus
+/// about 100 bytes per triangle.
+/// Throws RenderError when the map has no face, a rendered vertex has a
+/// non-finite position, an option is out of range (empty size, supersampling
+/// outside 1..8, more than 2^26 samples), the colour source needs what the
+/// mesh does not have (the list of the usable attributes is in the message).
+/// Precondition: pos is a vertex attribute of m.
+Image render_surface(const CMap2& m, const AttributeArray<Vec3>& pos, const RenderOptions& options);
+
+/// Renders the boundary of a volume mesh: the faces of the volumes whose
+/// phi3 neighbour is a boundary volume, seen from outside. Same costs and
+/// errors as render_surface; a map with no boundary face is an error, and the
+/// curvature colour sources are not available (they are defined on surfaces).
+Image render_volume_boundary(const CMap3& m, const AttributeArray<Vec3>& pos, const RenderOptions& options);
+
+/// Writes img as an 8-bit RGB PNG (no time stamp: same image, same bytes).
+/// Writes a temporary file next to path and renames it, so that a failure
+/// never leaves a partial file at path. O(number of pixels). Throws
+/// RenderError naming path when it cannot be written or img is empty.
+void write_png(const Image& img, const std::string& path);
+
+/// The viridis colour map at t in [0, 1] (clamped; NaN gives t = 0), linear
+/// between the 256 entries of matplotlib's table. O(1).
+Rgb viridis(double t);
+
+/// "#rrggbb", "rrggbb" or "r,g,b" (0..255) as a colour; throws RenderError.
+Rgb parse_color(const std::string& text);
+
+/// Quality of a triangle: 4 sqrt(3) area / (sum of the squared edge
+/// lengths), 1 for an equilateral triangle, 0 for a degenerate one. O(1).
+double triangle_quality(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// Width in pixels of the legend strip on the right of an image of this size
+/// (when a scalar is shown with RenderOptions::legend): 48 * max(1, height /
+/// 200), at most half the width. O(1).
+uint32_t legend_width(uint32_t width, uint32_t height);
+
+} // namespace cgogn::render

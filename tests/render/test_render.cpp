@@ -1,0 +1,416 @@
+// SPDX-License-Identifier: MIT
+// The software renderer: picture size, the silhouette of a sphere against the
+// analytic disk given by the camera convention, viridis colours of known
+// scalar fields, the view conventions, determinism of the PNG bytes, and the
+// errors on bad input.
+#include "../io/io_test_utils.h"
+#include "render_test_utils.h"
+
+#include <filesystem>
+#include <set>
+
+using namespace cgogn;
+using namespace cgogn::io_test;
+using namespace cgogn::render_test;
+
+namespace
+{
+
+std::shared_ptr<AttributeArray<Vec3>> positions_of(CMap2& m)
+{
+	return get_attribute<Vec3, CMap2::Vertex>(m, "position");
+}
+
+/// A flat square [0,1]^2 in the plane of axes (a, b) of a third axis fixed
+/// at 0, with the vertex attribute "s" equal to coordinate `along`.
+void square(CMap2& m, int a, int b, int along)
+{
+	SurfaceSoup s = grid_soup(1, 1);
+	for (auto& p : s.positions)
+	{
+		const std::array<double, 3> q = p;
+		p = {0.0, 0.0, 0.0};
+		p[a] = q[0];
+		p[b] = q[1];
+	}
+	build_with_positions(m, s);
+	auto pos = positions_of(m);
+	auto attr = add_attribute<double, CMap2::Vertex>(m, "s");
+	foreach_cell(m, [&](CMap2::Vertex v) { (*attr)[v] = (*pos)[v][along]; });
+}
+
+render::RenderOptions unlit(render::View view, uint32_t w, uint32_t h)
+{
+	render::RenderOptions o;
+	o.view = view;
+	o.width = w;
+	o.height = h;
+	o.lighting = false;
+	o.legend = false;
+	o.supersampling = 1;
+	return o;
+}
+
+// matplotlib's viridis at 0, 1/4, 1/2, 3/4 and 1, as published
+constexpr render::Rgb viridis0{0x44, 0x01, 0x54}, viridis25{0x3b, 0x52, 0x8b}, viridis50{0x21, 0x91, 0x8c},
+	viridis75{0x5e, 0xc9, 0x62}, viridis100{0xfd, 0xe7, 0x25};
+
+} // namespace
+
+TEST(Render, PictureHasTheRequestedSizeAndIsNotUniform)
+{
+	CMap2 m;
+	build_with_positions(m, sphere_soup(32, 16, true));
+	render::RenderOptions o;
+	o.width = 321;
+	o.height = 123;
+	const render::Image img = render::render_surface(m, *positions_of(m), o);
+	EXPECT_EQ(img.width, 321u);
+	EXPECT_EQ(img.height, 123u);
+	ASSERT_EQ(img.rgb.size(), 321u * 123u * 3u);
+	std::set<std::tuple<int, int, int>> colours;
+	for (uint32_t y = 0; y < img.height; ++y)
+		for (uint32_t x = 0; x < img.width; ++x)
+		{
+			const render::Rgb c = img.at(x, y);
+			colours.insert({c.r, c.g, c.b});
+		}
+	EXPECT_GT(colours.size(), 20u) << "shading varies over the sphere";
+	EXPECT_EQ(img.at(0, 0), o.background);
+	EXPECT_NE(img.at(160, 61), o.background) << "the sphere is in the middle";
+}
+
+TEST(Render, SphereSilhouetteIsTheAnalyticDisk)
+{
+	// poles on z, the equator (nv even) is the silhouette seen along z
+	CMap2 m;
+	const SurfaceSoup soup = sphere_soup(256, 64, true);
+	build_with_positions(m, soup);
+	render::RenderOptions o;
+	o.view = render::View::Z;
+	o.width = 400;
+	o.height = 300;
+	const render::Image img = render::render_surface(m, *positions_of(m), o);
+
+	// the camera convention: orthographic, the bounding box's centre in the
+	// middle, its projection filling 90% of the width or of the height
+	double lo[3] = {1e9, 1e9, 1e9}, hi[3] = {-1e9, -1e9, -1e9};
+	for (const auto& p : soup.positions)
+		for (int i = 0; i < 3; ++i)
+		{
+			lo[i] = std::min(lo[i], p[i]);
+			hi[i] = std::max(hi[i], p[i]);
+		}
+	const double k = 0.9 * std::min(400.0 / (hi[0] - lo[0]), 300.0 / (hi[1] - lo[1]));
+	const double cx = 200.0 - 0.5 * (lo[0] + hi[0]) * k, cy = 150.0 + 0.5 * (lo[1] + hi[1]) * k, r = k;
+	uint32_t differ = 0, inside = 0;
+	double worst = 0.0;
+	for (uint32_t y = 0; y < img.height; ++y)
+		for (uint32_t x = 0; x < img.width; ++x)
+		{
+			const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+			const bool expected = d < r;
+			const bool drawn = img.at(x, y) != o.background;
+			inside += expected;
+			if (expected != drawn)
+			{
+				++differ;
+				worst = std::max(worst, std::abs(d - r));
+			}
+		}
+	EXPECT_GT(inside, 50000u); // radius 135 pixels
+	EXPECT_LE(differ, 0.015 * img.width * img.height) << differ << " pixels differ";
+	EXPECT_LE(differ, 0.02 * inside);
+	EXPECT_LE(worst, 2.0) << "every difference lies within 2 pixels of the circle";
+}
+
+TEST(Render, VertexScalarGivesViridisColours)
+{
+	// s = x on the unit square seen along z; height 40: 36 pixels per unit,
+	// the square spans pixels [2.5, 38.5] in x, so that pixel columns 11,
+	// 20, 29 have their centres at x = 1/4, 1/2, 3/4
+	CMap2 m;
+	square(m, 0, 1, 0);
+	render::RenderOptions o = unlit(render::View::Z, 41, 40);
+	o.color = render::ColorSource::Attribute;
+	o.attribute = "s";
+	const render::Image img = render::render_surface(m, *positions_of(m), o);
+	for (uint32_t y : {5u, 20u, 35u})
+	{
+		EXPECT_LE(distance(img.at(11, y), viridis25), 2) << y;
+		EXPECT_LE(distance(img.at(20, y), viridis50), 2) << y;
+		EXPECT_LE(distance(img.at(29, y), viridis75), 2) << y;
+	}
+	// the ends: dark purple on the left, yellow on the right
+	EXPECT_LE(distance(img.at(3, 20), viridis0), 12);
+	EXPECT_LE(distance(img.at(37, 20), viridis100), 25);
+	EXPECT_EQ(img.at(1, 20), o.background);
+	EXPECT_EQ(img.at(39, 20), o.background);
+
+	// lit: a face turned to the camera gets the full colour
+	o.lighting = true;
+	o.shading = render::Shading::Flat;
+	const render::Image lit = render::render_surface(m, *positions_of(m), o);
+	EXPECT_LE(distance(lit.at(20, 20), viridis50), 2);
+}
+
+TEST(Render, FaceScalarGivesViridisEnds)
+{
+	// two unit squares side by side, face attribute = x of the centre: the
+	// left one is the minimum (viridis 0), the right one the maximum
+	CMap2 m;
+	build_with_positions(m, grid_soup(2, 1));
+	auto pos = positions_of(m);
+	auto fa = add_attribute<float, CMap2::Face>(m, "cx");
+	foreach_cell(m, [&](CMap2::Face f) {
+		double x = 0.0;
+		int n = 0;
+		foreach_dart_of_orbit(m, f, [&](Dart d) {
+			x += (*pos)[CMap2::Vertex(d)][0];
+			++n;
+		});
+		(*fa)[f] = float(x / n);
+	});
+	render::RenderOptions o = unlit(render::View::Z, 200, 100);
+	o.color = render::ColorSource::Attribute;
+	o.attribute = "cx";
+	const render::Image img = render::render_surface(m, *pos, o);
+	EXPECT_EQ(img.at(60, 50), viridis0);
+	EXPECT_EQ(img.at(140, 50), viridis100);
+}
+
+TEST(Render, ViewConventions)
+{
+	struct Case
+	{
+		render::View view;
+		int a, b;      // the square's plane
+		int along;     // the scalar's axis
+		bool right;    // true: the scalar grows to the right, false: upwards
+		bool positive; // ... or to the left / downwards when false
+	};
+	const Case cases[] = {
+		{render::View::Z, 0, 1, 0, true, true},  // +x to the right
+		{render::View::Z, 0, 1, 1, false, true}, // +y up
+		{render::View::X, 1, 2, 1, true, true},  // +y to the right
+		{render::View::X, 1, 2, 2, false, true}, // +z up
+		{render::View::Y, 0, 2, 0, true, false}, // -x to the right
+		{render::View::Y, 0, 2, 2, false, true}, // +z up
+	};
+	for (const Case& c : cases)
+	{
+		CMap2 m;
+		square(m, c.a, c.b, c.along);
+		render::RenderOptions o = unlit(c.view, 100, 100);
+		o.color = render::ColorSource::Attribute;
+		o.attribute = "s";
+		const render::Image img = render::render_surface(m, *positions_of(m), o);
+		// 5.5 pixels inside the square at each end (t = 0.06 and 0.94): the
+		// low end is closer to viridis(0), the high end to viridis(1)
+		const render::Rgb left = img.at(10, 50), right = img.at(89, 50), top = img.at(50, 10), bottom = img.at(50, 89);
+		const render::Rgb low = c.right ? (c.positive ? left : right) : (c.positive ? bottom : top);
+		const render::Rgb high = c.right ? (c.positive ? right : left) : (c.positive ? top : bottom);
+		EXPECT_LT(distance(low, viridis0), distance(low, viridis100)) << int(c.view) << " " << c.along;
+		EXPECT_LT(distance(high, viridis100), distance(high, viridis0)) << int(c.view) << " " << c.along;
+		EXPECT_LE(distance(low, viridis0), 30) << int(c.view) << " " << c.along;
+		EXPECT_LE(distance(high, viridis100), 45) << int(c.view) << " " << c.along;
+	}
+}
+
+TEST(Render, SameInputSamePngBytes)
+{
+	TempDir dir;
+	CMap2 m;
+	build_with_positions(m, torus_soup(24, 12, true));
+	render::RenderOptions o;
+	o.edges = true;
+	o.color = render::ColorSource::MeanCurvature;
+	o.azimuth = 20;
+	o.elevation = -10;
+	render::write_png(render::render_surface(m, *positions_of(m), o), dir.file("a.png"));
+	render::write_png(render::render_surface(m, *positions_of(m), o), dir.file("b.png"));
+	const std::string a = read_text(dir.file("a.png")), b = read_text(dir.file("b.png"));
+	EXPECT_GT(a.size(), 1000u);
+	EXPECT_EQ(a, b);
+	// and the picture read back is the one rendered
+	const render::Image back = read_png(dir.file("a.png"));
+	EXPECT_EQ(back.rgb, render::render_surface(m, *positions_of(m), o).rgb);
+	// no temporary file left next to it
+	uint32_t files = 0;
+	for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.file("")))
+		++files;
+	EXPECT_EQ(files, 2u);
+}
+
+TEST(Render, EveryColourSourceAndOverlayRuns)
+{
+	CMap2 m;
+	build_with_positions(m, cylinder_soup(16, 4)); // open: two boundary loops
+	const auto pos = positions_of(m);
+	render::RenderOptions o;
+	o.width = 160;
+	o.height = 120;
+	const render::Image plain = render::render_surface(m, *pos, o);
+	for (render::ColorSource c : {render::ColorSource::MeanCurvature, render::ColorSource::GaussianCurvature,
+								  render::ColorSource::Area, render::ColorSource::Quality})
+	{
+		o.color = c;
+		EXPECT_NE(render::render_surface(m, *pos, o).rgb, plain.rgb) << int(c);
+	}
+	o.color = render::ColorSource::Uniform;
+	o.show_defects = true;
+	const render::Image defects = render::render_surface(m, *pos, o);
+	uint32_t red = 0;
+	for (uint32_t y = 0; y < defects.height; ++y)
+		for (uint32_t x = 0; x < defects.width; ++x)
+			red += defects.at(x, y) == render::Rgb{230, 25, 25};
+	EXPECT_GT(red, 100u) << "the two boundary loops are drawn in red";
+	o.show_defects = false;
+	o.edges = true;
+	EXPECT_NE(render::render_surface(m, *pos, o).rgb, plain.rgb);
+}
+
+TEST(Render, TriangleQuality)
+{
+	EXPECT_NEAR(render::triangle_quality(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, std::sqrt(3.0) / 2, 0)), 1.0, 1e-12);
+	EXPECT_NEAR(render::triangle_quality(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)), 0.0, 1e-12);
+	EXPECT_EQ(render::triangle_quality(Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3(1, 1, 1)), 0.0);
+}
+
+TEST(Render, ParseColor)
+{
+	EXPECT_EQ(render::parse_color("#ff8000"), (render::Rgb{255, 128, 0}));
+	EXPECT_EQ(render::parse_color("10,20,30"), (render::Rgb{10, 20, 30}));
+	EXPECT_THROW(render::parse_color("red"), render::RenderError);
+	EXPECT_THROW(render::parse_color("1,2,300"), render::RenderError);
+}
+
+TEST(Render, EmptyMeshIsAnError)
+{
+	CMap2 m;
+	auto pos = add_attribute<Vec3, CMap2::Vertex>(m, "position");
+	EXPECT_THROW(render::render_surface(m, *pos, {}), render::RenderError);
+}
+
+TEST(Render, NonFinitePositionIsAnError)
+{
+	for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+	{
+		CMap2 m;
+		build_with_positions(m, grid_soup(2, 2));
+		auto pos = positions_of(m);
+		bool first = true;
+		foreach_cell(m, [&](CMap2::Vertex v) {
+			if (first)
+				(*pos)[v][1] = bad;
+			first = false;
+		});
+		try
+		{
+			render::render_surface(m, *pos, {});
+			ADD_FAILURE() << "no error";
+		}
+		catch (const render::RenderError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+		}
+	}
+}
+
+TEST(Render, UnknownAttributeListsTheAvailableOnes)
+{
+	CMap2 m;
+	square(m, 0, 1, 0);
+	render::RenderOptions o;
+	o.color = render::ColorSource::Attribute;
+	o.attribute = "nope";
+	try
+	{
+		render::render_surface(m, *positions_of(m), o);
+		ADD_FAILURE() << "no error";
+	}
+	catch (const render::RenderError& e)
+	{
+		const std::string w = e.what();
+		EXPECT_NE(w.find("nope"), std::string::npos) << w;
+		EXPECT_NE(w.find("available: s"), std::string::npos) << w;
+	}
+}
+
+TEST(Render, VolumeBoundary)
+{
+	CMap3 m;
+	build_with_positions(m, hex_grid_soup(2, 2, 2));
+	auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	render::RenderOptions o = unlit(render::View::Z, 100, 100);
+	const render::Image img = render::render_volume_boundary(m, *pos, o);
+	// the 2x2 top of the cube fills the middle of the picture
+	EXPECT_EQ(img.at(50, 50), o.surface_color);
+	EXPECT_EQ(img.at(2, 50), o.background);
+	o.color = render::ColorSource::MeanCurvature;
+	EXPECT_THROW(render::render_volume_boundary(m, *pos, o), render::RenderError);
+}
+
+TEST(Render, VolumeWithoutBoundaryIsAnError)
+{
+	{
+		CMap3 m;
+		auto pos = add_attribute<Vec3, CMap3::Vertex>(m, "position");
+		EXPECT_THROW(render::render_volume_boundary(m, *pos, {}), render::RenderError);
+	}
+	// two tetrahedra glued along their four faces: a closed 3-manifold
+	CMap3 m;
+	CMap3::Volume v[2];
+	VolumeSoup s;
+	s.nb_vertices = 4;
+	s.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+	s.cell_sizes = {4};
+	s.cell_vertices = {0, 1, 2, 3};
+	build_with_positions(m, s);
+	build_with_positions(m, s);
+	uint32_t k = 0;
+	foreach_cell(m, [&](CMap3::Volume w) { v[k++] = w; });
+	ASSERT_EQ(k, 2u);
+	std::vector<CMap3::Face> f0, f1;
+	foreach_incident_face(m, v[0], [&](CMap3::Face f) { f0.push_back(f); });
+	foreach_incident_face(m, v[1], [&](CMap3::Face f) { f1.push_back(f); });
+	ASSERT_EQ(f0.size(), 4u);
+	ASSERT_EQ(f1.size(), 4u);
+	uint32_t sewn = 0;
+	for (CMap3::Face a : f0)
+		for (CMap3::Face b : f1)
+			if (is_boundary(m, phi3(m, a.dart)) && is_boundary(m, phi3(m, b.dart)) && can_sew_volumes(m, a, b))
+			{
+				sew_volumes(m, a, b);
+				++sewn;
+				break;
+			}
+	if (sewn < 4)
+		GTEST_SKIP() << "only " << sewn << " faces could be glued";
+	auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	try
+	{
+		render::render_volume_boundary(m, *pos, {});
+		ADD_FAILURE() << "no error";
+	}
+	catch (const render::RenderError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("no boundary face"), std::string::npos) << e.what();
+	}
+}
+
+TEST(Render, WritePngFailsCleanly)
+{
+	TempDir dir;
+	const render::Image empty;
+	EXPECT_THROW(render::write_png(empty, dir.file("e.png")), render::RenderError);
+	EXPECT_FALSE(std::filesystem::exists(dir.file("e.png")));
+	render::Image one;
+	one.width = one.height = 1;
+	one.rgb = {1, 2, 3};
+	EXPECT_THROW(render::write_png(one, dir.file("missing/x.png")), render::RenderError);
+	render::write_png(one, dir.file("one.png"));
+	const render::Image back = read_png(dir.file("one.png"));
+	EXPECT_EQ(back.width, 1u);
+	EXPECT_EQ(back.rgb, one.rgb);
+}

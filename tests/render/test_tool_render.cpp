@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// `cgogn render` run as a program: a surface and a volume mesh from the test
+// data give valid PNG pictures; bad input exits 2 and writes nothing.
+#include "../io/io_test_utils.h"
+#include "render_test_utils.h"
+
+#include <cgogn_test_data.h>
+
+using namespace cgogn;
+using namespace cgogn::io_test;
+using namespace cgogn::render_test;
+
+namespace
+{
+
+/// Distinct colours in a picture (capped at 1000).
+std::size_t nb_colours(const render::Image& img)
+{
+	std::set<uint32_t> s;
+	for (std::size_t i = 0; i + 2 < img.rgb.size() && s.size() < 1000; i += 3)
+		s.insert(uint32_t(img.rgb[i]) << 16 | uint32_t(img.rgb[i + 1]) << 8 | img.rgb[i + 2]);
+	return s.size();
+}
+
+} // namespace
+
+TEST(ToolRender, SurfaceToPng)
+{
+	TempDir dir;
+	const std::string in = quoted(cgogn_test_data::path("surface/spot_control_mesh.obj"));
+	ToolRun r = run_tool("render " + in + " " + quoted(dir.file("s.png")) + " --size 300x200 --edges", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(r.err, "");
+	EXPECT_EQ(r.out, "");
+	const render::Image img = read_png(dir.file("s.png"));
+	ASSERT_EQ(img.width, 300u);
+	ASSERT_EQ(img.height, 200u);
+	EXPECT_EQ(img.at(0, 0), (render::Rgb{255, 255, 255}));
+	EXPECT_GT(nb_colours(img), 20u);
+
+	r = run_tool("render " + in + " " + quoted(dir.file("c.png")) +
+					 " --size 300x200 --view z --azimuth 30 --elevation 20 --shading flat --ssaa 1 --color "
+					 "curvature --background 0,0,0 --show-defects",
+				 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const render::Image c = read_png(dir.file("c.png"));
+	ASSERT_EQ(c.width, 300u);
+	EXPECT_EQ(c.at(0, 0), (render::Rgb{0, 0, 0}));
+	EXPECT_NE(c.rgb, img.rgb);
+}
+
+TEST(ToolRender, VolumeBoundaryToPng)
+{
+	TempDir dir;
+	const std::string in = quoted(cgogn_test_data::path("volume/liver_hex_624.mesh"));
+	const ToolRun r = run_tool("render " + in + " " + quoted(dir.file("v.png")) + " --size 120x90 --color area", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const render::Image img = read_png(dir.file("v.png"));
+	ASSERT_EQ(img.width, 120u);
+	ASSERT_EQ(img.height, 90u);
+	EXPECT_GT(nb_colours(img), 20u);
+}
+
+TEST(ToolRender, BadInputExits2AndWritesNothing)
+{
+	TempDir dir;
+	const std::string out = dir.file("o.png");
+	write_text(dir.file("empty.off"), "OFF\n0 0 0\n");
+	ToolRun r = run_tool("render " + quoted(dir.file("empty.off")) + " " + quoted(out), dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("empty.off"), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find("no face"), std::string::npos) << r.err;
+	EXPECT_FALSE(std::filesystem::exists(out));
+
+	write_text(dir.file("nan.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n");
+	r = run_tool("render " + quoted(dir.file("nan.off")) + " " + quoted(out), dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("nan.off"), std::string::npos) << r.err;
+	EXPECT_FALSE(std::filesystem::exists(out));
+
+	const std::string spot = quoted(cgogn_test_data::path("surface/spot_control_mesh.obj"));
+	r = run_tool("render " + spot + " " + quoted(out) + " --color nope", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("'nope'"), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find("available"), std::string::npos) << r.err;
+	EXPECT_FALSE(std::filesystem::exists(out));
+
+	r = run_tool("render " + spot + " " + quoted(out) + " --size 0x10", dir);
+	EXPECT_EQ(r.status, 2);
+	r = run_tool("render " + spot + " " + quoted(out) + " --ssaa 9", dir);
+	EXPECT_EQ(r.status, 2);
+	r = run_tool("render " + spot + " " + quoted(out) + " --background pink", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_FALSE(std::filesystem::exists(out));
+
+	r = run_tool("render " + spot + " " + quoted(dir.file("no/such/dir.png")), dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("dir.png"), std::string::npos) << r.err;
+}

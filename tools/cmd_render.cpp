@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// `cgogn render`: a shaded PNG picture of a surface, or of the boundary of a
+// volume mesh, drawn by the software rasterizer of cgogn::render.
+#include <cgogn/render/render.h>
+
+#include "commands.h"
+
+#include <cstdio>
+#include <map>
+
+namespace cgogn::tool
+{
+
+namespace
+{
+
+struct RenderCommandOptions
+{
+	std::string in, out;
+	std::string size = "800x600";
+	std::string color = "none";
+	std::string background;
+	render::RenderOptions render;
+};
+
+void parse_size(const std::string& text, render::RenderOptions& o)
+{
+	unsigned w = 0, h = 0;
+	char tail = 0;
+	if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0)
+		throw std::invalid_argument("--size: '" + text + "' is not WIDTHxHEIGHT (e.g. 800x600)");
+	o.width = w;
+	o.height = h;
+}
+
+int run_render(RenderCommandOptions o)
+{
+	parse_size(o.size, o.render);
+	if (!o.background.empty())
+		o.render.background = render::parse_color(o.background);
+	const std::map<std::string, render::ColorSource> sources = {{"none", render::ColorSource::Uniform},
+																{"curvature", render::ColorSource::MeanCurvature},
+																{"gaussian", render::ColorSource::GaussianCurvature},
+																{"area", render::ColorSource::Area},
+																{"quality", render::ColorSource::Quality}};
+	if (auto it = sources.find(o.color); it != sources.end())
+		o.render.color = it->second;
+	else
+	{
+		o.render.color = render::ColorSource::Attribute;
+		o.render.attribute = o.color;
+	}
+	Progress progress;
+	render::Image img;
+	with_loaded(o.in, progress, [&](auto& m, const io::LoadReport&) {
+		using Vertex = typename mesh_traits<std::decay_t<decltype(m)>>::Vertex;
+		auto pos = get_attribute<Vec3, Vertex>(m, "position");
+		if (!pos)
+			throw std::runtime_error(o.in + ": the mesh has no vertex positions");
+		progress.stage("rendering");
+		try
+		{
+			if constexpr (std::is_same_v<std::decay_t<decltype(m)>, CMap3>)
+				img = render::render_volume_boundary(m, *pos, o.render);
+			else
+				img = render::render_surface(m, *pos, o.render);
+		}
+		catch (const render::RenderError& e)
+		{
+			throw render::RenderError(o.in + ": " + e.what());
+		}
+	});
+	progress.stage("writing " + o.out);
+	render::write_png(img, o.out);
+	return 0;
+}
+
+} // namespace
+
+Command add_render_command(CLI::App& app)
+{
+	auto* sub = app.add_subcommand("render", "Draw a surface, or the boundary of a volume mesh, into a PNG picture "
+											 "(software rasterizer, orthographic camera)");
+	auto o = std::make_shared<RenderCommandOptions>();
+	sub->add_option("IN", o->in, "input mesh file (surface or volume format)")->required();
+	sub->add_option("OUT", o->out, "output PNG file")->required();
+	sub->add_option("--size", o->size, "picture size WIDTHxHEIGHT (default 800x600)");
+	const std::map<std::string, render::View> views = {
+		{"x", render::View::X}, {"y", render::View::Y}, {"z", render::View::Z}, {"iso", render::View::Iso}};
+	sub->add_option("--view", o->render.view,
+					"x: looks down -x (+z up), y: down -y (+z up), z: down -z (+y up, +x right), iso: down "
+					"-(1,1,1) (+y up; default)")
+		->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
+	sub->add_option("--azimuth", o->render.azimuth,
+					"degrees: turns the camera about the view's up axis, towards its right (default 0)");
+	sub->add_option("--elevation", o->render.elevation, "degrees: raises the camera towards the view's up axis")
+		->check(CLI::Range(-90.0, 90.0));
+	const std::map<std::string, render::Shading> shadings = {{"flat", render::Shading::Flat},
+															 {"smooth", render::Shading::Smooth}};
+	sub->add_option("--shading", o->render.shading, "flat or smooth (default)")
+		->transform(CLI::CheckedTransformer(shadings, CLI::ignore_case));
+	sub->add_option("--ssaa", o->render.supersampling, "supersampling: N x N samples per pixel (1-8, default 2)")
+		->check(CLI::Range(1u, 8u));
+	sub->add_flag("--edges", o->render.edges, "draw the mesh edges over the faces");
+	sub->add_flag("--show-defects", o->render.show_defects,
+				  "boundary edges in red, vertices split by the loader (non-manifold) as orange dots");
+	sub->add_option("--color", o->color,
+					"curvature (mean), gaussian, area, quality (triangle shape), or the name of a double/float "
+					"vertex or cell attribute of the file, through viridis with a legend (default: none)");
+	sub->add_flag("!--no-legend", o->render.legend, "no min/max bar with --color");
+	sub->add_option("--background", o->background, "background colour: #rrggbb or r,g,b (default white)");
+	return {sub, [o] { return run_render(*o); }};
+}
+
+} // namespace cgogn::tool
