@@ -5,7 +5,9 @@ set -euo pipefail
 packages=(cmake ninja-build g++ clang libclang-rt-14-dev python3
           libgtest-dev libgmock-dev libbenchmark-dev
           libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libpng-dev
-          libopenmesh-dev libcgal-dev)
+          libopenmesh-dev libcgal-dev
+          pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-meshio
+          python3-venv python3-pip python3-setuptools python3-wheel python3-build)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: MIT
+"""cgogn: combinatorial maps for mesh processing.
+
+Surfaces are :class:`CMap2`, volume meshes :class:`CMap3`. Cells (vertices,
+edges, faces, volumes) are named by integer *ids*: after loading, building
+from arrays or :meth:`CMap2.compact`, the ids of a kind are exactly
+0..nb_cells-1 in traversal order. Editing operators keep the ids of the
+cells they keep, give new cells new ids and free the ids of removed cells,
+so ids may then have gaps until ``compact()`` renumbers them densely.
+Attribute arrays (``positions``, ``attribute(...)``) have one row per id
+(``id_bound(kind)`` rows); arrays that list cells (``faces()``,
+``incidence()``, ``cell_ids()``) list the live cells in id order.
+"""
+
+from ._cgogn import CMap2, CMap3, Error, IOError, RenderError, load, nb_workers, set_nb_workers
+from ._arrays import laplacian
+from ._interop import from_meshio, to_meshio, to_pyvista, to_trimesh
+
+__all__ = [
+    "CMap2",
+    "CMap3",
+    "Error",
+    "IOError",
+    "RenderError",
+    "load",
+    "laplacian",
+    "set_nb_workers",
+    "nb_workers",
+    "to_meshio",
+    "from_meshio",
+    "to_pyvista",
+    "to_trimesh",
+]
+
+
+def _laplacian_method(self, kind="cotan"):
+    return laplacian(self, kind)
+
+
+CMap2.laplacian = _laplacian_method
+CMap2.laplacian.__doc__ = laplacian.__doc__

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// Attributes by name, cell kind and dtype, as NumPy arrays indexed by cell id.
+#include "py_map.h"
+
+#include <pybind11/stl.h>
+#include <tuple>
+
+namespace cgogn::python
+{
+
+namespace
+{
+
+// The value types Python can use, with their NumPy names.
+using Types = std::tuple<double, float, int32, int64, uint32, bool, Vec2, Vec3, Vec4>;
+
+template <typename T>
+std::string dtype_name()
+{
+	if constexpr (std::is_same_v<T, double>)
+		return "float64";
+	else if constexpr (std::is_same_v<T, float>)
+		return "float32";
+	else if constexpr (std::is_same_v<T, int32>)
+		return "int32";
+	else if constexpr (std::is_same_v<T, int64>)
+		return "int64";
+	else if constexpr (std::is_same_v<T, uint32>)
+		return "uint32";
+	else if constexpr (std::is_same_v<T, bool>)
+		return "bool";
+	else
+		return "float64";
+}
+
+// Calls f.template operator()<T>() for the value type of (dtype, components);
+// ValueError when there is none.
+template <typename F>
+decltype(auto) with_type(const std::string& dtype, int components, F&& f)
+{
+	if (components == 1)
+	{
+		if (dtype == "float64" || dtype == "double" || dtype == "float")
+			return f.template operator()<double>();
+		if (dtype == "float32")
+			return f.template operator()<float>();
+		if (dtype == "int32")
+			return f.template operator()<int32>();
+		if (dtype == "int64" || dtype == "int")
+			return f.template operator()<int64>();
+		if (dtype == "uint32")
+			return f.template operator()<uint32>();
+		if (dtype == "bool")
+			return f.template operator()<bool>();
+	}
+	else if (dtype == "float64" || dtype == "double" || dtype == "float")
+	{
+		if (components == 2)
+			return f.template operator()<Vec2>();
+		if (components == 3)
+			return f.template operator()<Vec3>();
+		if (components == 4)
+			return f.template operator()<Vec4>();
+	}
+	throw py::value_error("unsupported attribute type: dtype '" + dtype + "' with " + std::to_string(components) +
+						  " component(s) (float64 with 1 to 4, or float32, int32, int64, uint32, bool with 1)");
+}
+
+// Calls f(attribute) with the typed attribute of this name and kind, if any;
+// returns false when there is none.
+template <typename MAP, typename CELL, typename F>
+bool with_existing(const MAP& m, const std::string& name, F&& f)
+{
+	bool found = false;
+	std::apply(
+		[&](auto... t) {
+			(
+				[&] {
+					using T = decltype(t);
+					if (found)
+						return;
+					if (auto a = get_attribute<T, CELL>(m, name))
+					{
+						found = true;
+						f(std::shared_ptr<AttributeArray<T>>(a));
+					}
+				}(),
+				...);
+		},
+		Types{});
+	return found;
+}
+
+template <typename MAP>
+py::array get_array(PyMap<MAP>& w, const std::string& name, Kind k)
+{
+	return with_kind<MAP>(k, [&]<typename CELL>() {
+		py::array out;
+		const uint32 rows = container_of<CELL::ORBIT>(w.m).end_index();
+		if (!with_existing<MAP, CELL>(w.m, name, [&](auto a) { out = attribute_array(a, rows, w.views); }))
+			throw py::key_error(std::string("no ") + kind_name(k) + " attribute named '" + name + "'");
+		return out;
+	});
+}
+
+template <typename MAP>
+void bind_attribute_methods(py::class_<PyMap<MAP>>& c)
+{
+	using W = PyMap<MAP>;
+	c.def(
+		 "add_attribute",
+		 [](W& w, const std::string& name, const std::string& kind, const std::string& dtype, int components) {
+			 const Kind k = kind_of(kind);
+			 if (name.rfind("__", 0) == 0)
+				 throw py::value_error("names starting with '__' are the library's own");
+			 with_kind<MAP>(k, [&]<typename CELL>() {
+				 if (container_of<CELL::ORBIT>(w.m).find(name) != nullptr)
+					 throw py::value_error(std::string("a ") + kind_name(k) + " attribute named '" + name +
+										   "' exists already");
+				 with_type(dtype, components, [&]<typename T>() { add_attribute<T, CELL>(w.m, name); });
+			 });
+			 return get_array(w, name, k);
+		 },
+		 py::arg("name"), py::arg("kind"), py::arg("dtype") = "float64", py::arg("components") = 1,
+		 "Adds an attribute (values at their default: 0, False, zero vectors) on the cells of a kind, indexing "
+		 "the kind if needed, and returns its array (see attribute()). dtype: float64 (1 to 4 components), "
+		 "float32, int32, int64, uint32 or bool.")
+		.def(
+			"attribute",
+			[](W& w, const std::string& name, const std::string& kind) { return get_array(w, name, kind_of(kind)); },
+			py::arg("name"), py::arg("kind"),
+			"The values of an attribute, one row per cell id (id_bound(kind) rows): an array aliasing the "
+			"map's memory (writes go to the map) below 2^28 ids, a read-only copy beyond. KeyError when absent.")
+		.def(
+			"set_attribute",
+			[](W& w, const std::string& name, const std::string& kind, const py::array& values) {
+				const Kind k = kind_of(kind);
+				with_kind<MAP>(k, [&]<typename CELL>() {
+					const uint32 rows = container_of<CELL::ORBIT>(w.m).end_index();
+					if (!with_existing<MAP, CELL>(w.m, name, [&](auto a) { assign_attribute(*a, rows, values); }))
+						throw py::key_error(std::string("no ") + kind_name(k) + " attribute named '" + name + "'");
+				});
+			},
+			py::arg("name"), py::arg("kind"), py::arg("values"),
+			"Copies values (id_bound(kind) rows) into an attribute.")
+		.def(
+			"remove_attribute",
+			[](W& w, const std::string& name, const std::string& kind) {
+				const Kind k = kind_of(kind);
+				if (k == Kind::Vertex && name == "position")
+					throw py::value_error("the position attribute cannot be removed");
+				with_kind<MAP>(k, [&]<typename CELL>() {
+					if (!with_existing<MAP, CELL>(w.m, name, [&](auto a) { remove_attribute(w.m, a); }))
+						throw py::key_error(std::string("no ") + kind_name(k) + " attribute named '" + name + "'");
+				});
+			},
+			py::arg("name"), py::arg("kind"),
+			"Removes an attribute. Arrays already returned keep the values (they own a reference).")
+		.def(
+			"attributes",
+			[](W& w, const std::string& kind) {
+				const Kind k = kind_of(kind);
+				py::list out;
+				with_kind<MAP>(k, [&]<typename CELL>() {
+					for (const auto& a : container_of<CELL::ORBIT>(w.m).attributes())
+					{
+						const std::string& name = a->name();
+						if (name.rfind("__", 0) == 0)
+							continue;
+						with_existing<MAP, CELL>(w.m, name, [&](auto typed) {
+							using T = typename std::decay_t<decltype(*typed)>::value_type;
+							out.append(py::make_tuple(name, dtype_name<T>(), ValueLayout<T>::components));
+						});
+					}
+				});
+				return out;
+			},
+			py::arg("kind"), "The attributes of a kind Python can read: [(name, dtype, components)].");
+}
+
+} // namespace
+
+void bind_attributes(py::module_& mod)
+{
+	auto surface = py::class_<Surface>(mod.attr("CMap2"));
+	bind_attribute_methods(surface);
+	auto volume = py::class_<VolumeMesh>(mod.attr("CMap3"));
+	bind_attribute_methods(volume);
+}
+
+} // namespace cgogn::python

@@ -1,0 +1,518 @@
+// SPDX-License-Identifier: MIT
+// The map classes: construction, files, counts, positions, faces and cells,
+// incidence relations as CSR arrays, compaction and integrity.
+#include <cgogn/io.h>
+
+#include "py_map.h"
+
+#include <cmath>
+#include <pybind11/stl.h>
+
+namespace cgogn::python
+{
+
+Kind kind_of(const std::string& name)
+{
+	if (name == "vertex" || name == "vertices")
+		return Kind::Vertex;
+	if (name == "edge" || name == "edges")
+		return Kind::Edge;
+	if (name == "face" || name == "faces")
+		return Kind::Face;
+	if (name == "volume" || name == "volumes")
+		return Kind::Volume;
+	throw py::value_error("unknown cell kind '" + name + "': use \"vertex\", \"edge\", \"face\" or \"volume\"");
+}
+
+const char* kind_name(Kind k)
+{
+	switch (k)
+	{
+	case Kind::Vertex:
+		return "vertex";
+	case Kind::Edge:
+		return "edge";
+	case Kind::Face:
+		return "face";
+	default:
+		return "volume";
+	}
+}
+
+py::tuple csr(std::vector<uint32>&& offsets, std::vector<uint32>&& indices)
+{
+	return py::make_tuple(to_numpy(std::move(offsets)), to_numpy(std::move(indices)));
+}
+
+namespace
+{
+
+// ---- reading arrays
+
+std::vector<std::array<double, 3>> read_points(const py::array& points)
+{
+	auto p = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
+	if (!p || p.ndim() != 2 || p.shape(1) != 3)
+		throw py::value_error("points must be an (N, 3) array of numbers");
+	std::vector<std::array<double, 3>> out(std::size_t(p.shape(0)));
+	const double* d = p.data();
+	for (std::size_t i = 0; i < out.size(); ++i)
+	{
+		out[i] = {d[3 * i], d[3 * i + 1], d[3 * i + 2]};
+		if (!std::isfinite(out[i][0]) || !std::isfinite(out[i][1]) || !std::isfinite(out[i][2]))
+			throw py::value_error("point " + std::to_string(i) + " is not finite");
+	}
+	return out;
+}
+
+std::vector<uint32> read_ids(const py::array& a, const char* what)
+{
+	auto v = py::array_t<int64, py::array::c_style | py::array::forcecast>::ensure(a);
+	if (!v)
+		throw py::value_error(std::string(what) + " must be an integer array");
+	std::vector<uint32> out(std::size_t(v.size()));
+	const int64* d = v.data();
+	for (std::size_t i = 0; i < out.size(); ++i)
+	{
+		if (d[i] < 0 || d[i] >= int64(INVALID_INDEX))
+			throw py::value_error(std::string(what) + " holds the id " + std::to_string(d[i]) + ", out of range");
+		out[i] = uint32(d[i]);
+	}
+	return out;
+}
+
+// Cells given as an (F, k) array or an (offsets, indices) pair: sizes and ids.
+void read_cells(const py::object& cells, std::vector<uint32>& sizes, std::vector<uint32>& ids)
+{
+	if (py::isinstance<py::tuple>(cells) || py::isinstance<py::list>(cells))
+	{
+		py::sequence s = cells;
+		if (py::len(s) != 2)
+			throw py::value_error("cells must be an (F, k) array or an (offsets, indices) pair");
+		const std::vector<uint32> offsets = read_ids(py::array::ensure(s[0]), "offsets");
+		ids = read_ids(py::array::ensure(s[1]), "indices");
+		if (offsets.empty() || offsets.front() != 0 || offsets.back() != ids.size())
+			throw py::value_error("offsets must start at 0 and end at len(indices)");
+		for (std::size_t i = 0; i + 1 < offsets.size(); ++i)
+		{
+			if (offsets[i + 1] < offsets[i])
+				throw py::value_error("offsets must not decrease");
+			sizes.push_back(offsets[i + 1] - offsets[i]);
+		}
+		return;
+	}
+	py::array a = py::array::ensure(cells);
+	if (!a || a.ndim() != 2)
+		throw py::value_error("cells must be an (F, k) array or an (offsets, indices) pair");
+	ids = read_ids(a, "cells");
+	sizes.assign(std::size_t(a.shape(0)), uint32(a.shape(1)));
+}
+
+// ---- what both map types offer
+
+template <typename MAP>
+uint32 count(const MAP& m, Kind k)
+{
+	return with_kind<MAP>(k, [&]<typename CELL>() { return nb_cells<CELL>(m); });
+}
+
+// The ids of the live cells of kind k, in traversal order.
+template <typename MAP>
+py::array_t<uint32> cell_ids(MAP& m, Kind k)
+{
+	ensure_indexed(m, k);
+	return with_kind<MAP>(k, [&]<typename CELL>() {
+		std::vector<uint32> ids;
+		ids.reserve(nb_cells<CELL>(m));
+		foreach_cell(m, [&](CELL c) { ids.push_back(index_of(m, c)); });
+		return to_numpy(std::move(ids));
+	});
+}
+
+// Calls f(TO) for each cell of type TO incident to (or, for the same type,
+// adjacent to) c: the map's local traversals.
+template <typename TO, typename MAP, typename FROM, typename F>
+void foreach_related(const MAP& m, FROM c, const F& f)
+{
+	using T = mesh_traits<MAP>;
+	if constexpr (std::is_same_v<TO, typename T::Vertex>)
+	{
+		if constexpr (std::is_same_v<FROM, TO>)
+			foreach_adjacent_vertex_through_edge(m, c, f);
+		else
+			foreach_incident_vertex(m, c, f);
+	}
+	else if constexpr (std::is_same_v<TO, typename T::Edge>)
+	{
+		if constexpr (std::is_same_v<FROM, TO>)
+			foreach_adjacent_edge_through_vertex(m, c, f);
+		else
+			foreach_incident_edge(m, c, f);
+	}
+	else if constexpr (std::is_same_v<TO, typename T::Face>)
+	{
+		if constexpr (std::is_same_v<FROM, TO>)
+			foreach_adjacent_face_through_edge(m, c, f);
+		else
+			foreach_incident_face(m, c, f);
+	}
+	else
+	{
+		if constexpr (std::is_same_v<FROM, TO>)
+			foreach_adjacent_volume_through_face(m, c, f);
+		else
+			foreach_incident_volume(m, c, f);
+	}
+}
+
+// CSR of the relation from -> to: one row per live `from` cell in traversal
+// order, holding the ids of the related `to` cells in the map's local order.
+template <typename MAP>
+py::tuple incidence(MAP& m, Kind from, Kind to)
+{
+	if (MAP::dimension == 2 && (from == Kind::Volume || to == Kind::Volume))
+		throw py::value_error("a surface has no volume relations");
+	ensure_indexed(m, from);
+	ensure_indexed(m, to);
+	return with_kind<MAP>(from, [&]<typename FROM>() {
+		std::vector<uint32> offsets{0}, indices;
+		offsets.reserve(nb_cells<FROM>(m) + 1);
+		with_kind<MAP>(to, [&]<typename TO>() {
+			if constexpr (MAP::dimension == 3 || (!std::is_same_v<FROM, typename mesh_traits<MAP>::Volume> &&
+												  !std::is_same_v<TO, typename mesh_traits<MAP>::Volume>))
+				foreach_cell(m, [&](FROM c) {
+					foreach_related<TO>(m, c, [&](TO x) { indices.push_back(index_of(m, x)); });
+					offsets.push_back(uint32(indices.size()));
+				});
+		});
+		return csr(std::move(offsets), std::move(indices));
+	});
+}
+
+// The vertex ids of the faces (surfaces) or of the boundary faces (volumes).
+template <typename MAP>
+py::tuple faces_csr(MAP& m)
+{
+	using Face = typename mesh_traits<MAP>::Face;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	std::vector<uint32> offsets{0}, indices;
+	offsets.reserve(nb_cells<Face>(m) + 1);
+	indices.reserve(std::size_t(nb_darts(m)) / 2 + 8);
+	foreach_cell(m, [&](Face f) {
+		Dart d = f.dart;
+		if constexpr (MAP::dimension == 3)
+		{
+			if (!is_boundary(m, phi3(m, d)))
+				return; // an inner face
+		}
+		do
+		{
+			indices.push_back(index_of(m, Vertex(d)));
+			d = phi1(m, d);
+		} while (d != f.dart);
+		offsets.push_back(uint32(indices.size()));
+	});
+	return csr(std::move(offsets), std::move(indices));
+}
+
+// (F, 3) array when every face is a triangle.
+template <typename MAP>
+py::array_t<uint32> triangles(MAP& m)
+{
+	using Face = typename mesh_traits<MAP>::Face;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	std::vector<uint32> out;
+	out.reserve(std::size_t(nb_cells<Face>(m)) * 3);
+	bool polygons = false;
+	foreach_cell(m, [&](Face f) {
+		const Dart d = f.dart, e = phi1(m, d), g = phi1(m, e);
+		if (phi1(m, g) != d)
+		{
+			polygons = true;
+			return false;
+		}
+		if constexpr (MAP::dimension == 3)
+			if (!is_boundary(m, phi3(m, d)))
+				return true;
+		out.insert(out.end(), {index_of(m, Vertex(d)), index_of(m, Vertex(e)), index_of(m, Vertex(g))});
+		return true;
+	});
+	if (polygons)
+		throw py::value_error("the mesh has faces that are not triangles: use faces_csr()");
+	const py::ssize_t rows = py::ssize_t(out.size() / 3);
+	auto* heap = new std::vector<uint32>(std::move(out));
+	py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<uint32>*>(p); });
+	return py::array_t<uint32>({rows, py::ssize_t(3)}, {py::ssize_t(3 * sizeof(uint32)), py::ssize_t(sizeof(uint32))},
+							   heap->data(), owner);
+}
+
+template <typename MAP>
+void refuse_compaction_with_views(PyMap<MAP>& w, const char* what)
+{
+	if (const std::size_t n = w.live_views(); n > 0)
+		throw std::runtime_error(std::string(what) + ": " + std::to_string(n) +
+								 " NumPy array(s) still alias this map's attributes (positions or attribute "
+								 "arrays); they would point to released memory. Delete them (del a) or keep "
+								 "copies (a.copy()) first.");
+}
+
+py::dict integrity_report(const IntegrityReport& r)
+{
+	py::list messages;
+	for (const auto& e : r.errors)
+		messages.append(e.message);
+	py::dict d;
+	d["ok"] = r.ok();
+	d["nb_errors"] = r.nb_errors;
+	d["messages"] = messages;
+	return d;
+}
+
+template <typename MAP>
+void bind_common(py::class_<PyMap<MAP>>& c)
+{
+	using W = PyMap<MAP>;
+	c.def(py::init<>(), "An empty map (with a `position` vertex attribute).")
+		.def_property_readonly_static("dimension", [](py::object) { return MAP::dimension; })
+		.def(
+			"nb_cells", [](W& w, const std::string& kind) { return count(w.m, kind_of(kind)); }, py::arg("kind"),
+			"Number of cells of a kind (\"vertex\", \"edge\", \"face\", \"volume\"), boundary cells excluded. "
+			"O(1) when the kind is indexed, O(darts) otherwise.")
+		.def(
+			"nb_darts", [](W& w) { return nb_darts(w.m); }, "Number of darts, boundary darts included.")
+		.def(
+			"euler_characteristic",
+			[](W& w) {
+				int64 chi =
+					int64(count(w.m, Kind::Vertex)) - int64(count(w.m, Kind::Edge)) + int64(count(w.m, Kind::Face));
+				if constexpr (MAP::dimension == 3)
+					chi -= int64(count(w.m, Kind::Volume));
+				return chi;
+			},
+			"V - E + F (- W for volumes), boundary cells excluded. O(darts).")
+		.def(
+			"nb_connected_components", [](W& w) { return nb_connected_components(w.m); },
+			"Number of connected components. O(darts).")
+		.def(
+			"cell_ids", [](W& w, const std::string& kind) { return cell_ids(w.m, kind_of(kind)); }, py::arg("kind"),
+			"The ids of the live cells of a kind, in traversal order (0..n-1 on a compact map). Indexes the kind "
+			"if it is not.")
+		.def(
+			"id_bound", [](W& w, const std::string& kind) { return id_bound(w.m, kind_of(kind)); }, py::arg("kind"),
+			"One past the largest cell id of a kind: the number of rows of its attribute arrays.")
+		.def(
+			"is_compact",
+			[](W& w, const std::string& kind) {
+				const Kind k = kind_of(kind);
+				ensure_indexed(w.m, k);
+				return count(w.m, k) == id_bound(w.m, k);
+			},
+			py::arg("kind"), "True when the ids of a kind are exactly 0..nb_cells-1.")
+		.def_property(
+			"positions",
+			[](W& w) {
+				return attribute_array(w.pos, container_of<mesh_traits<MAP>::Vertex::ORBIT>(w.m).end_index(), w.views);
+			},
+			[](W& w, const py::array& values) {
+				assign_attribute(*w.pos, container_of<mesh_traits<MAP>::Vertex::ORBIT>(w.m).end_index(), values);
+			},
+			"Vertex positions, an (id_bound('vertex'), 3) float64 array indexed by vertex id. It aliases the "
+			"map's memory (writes are seen by every algorithm) unless the map has more than 2^28 vertex ids, "
+			"where it is a read-only copy. Rows of removed vertices hold stale values. Assigning an array "
+			"copies it in.")
+		.def(
+			"faces_csr", [](W& w) { return faces_csr(w.m); },
+			MAP::dimension == 2 ? "(offsets, indices): the vertex ids of every face, in traversal order (face k is "
+								  "face id k on a compact map). O(darts)."
+								: "(offsets, indices): the vertex ids of every boundary face, seen from outside.")
+		.def(
+			"faces", [](W& w) { return triangles(w.m); },
+			MAP::dimension == 2 ? "(F, 3) uint32 array of the vertex ids of the triangles; ValueError when a face "
+								  "is not a triangle."
+								: "(F, 3) vertex ids of the boundary triangles; ValueError when a face is not a "
+								  "triangle.")
+		.def(
+			"incidence",
+			[](W& w, const std::string& from, const std::string& to) {
+				return incidence(w.m, kind_of(from), kind_of(to));
+			},
+			py::arg("source"), py::arg("target"),
+			"(offsets, indices): for each live cell of kind `source`, in traversal order (see cell_ids), the ids "
+			"of the cells of kind `target` incident to it, or adjacent to it when both kinds are the same "
+			"(vertices through edges, edges through vertices, faces through edges, volumes through faces). "
+			"Indexes both kinds. O(darts).")
+		.def(
+			"compact",
+			[](W& w) {
+				refuse_compaction_with_views(w, "compact");
+				compact(w.m);
+			},
+			"Renumbers darts and the cells of every indexed kind densely (ids 0..n-1, order kept). Refused "
+			"(RuntimeError) while a NumPy array aliases the map's attributes. O(darts + cells x attributes).")
+		.def(
+			"check_integrity", [](W& w) { return integrity_report(check_integrity(w.m)); },
+			"Checks every invariant of the map; returns {'ok': bool, 'nb_errors': int, 'messages': [str]}.")
+		.def("__repr__", [](W& w) {
+			std::string s = MAP::dimension == 2 ? "<cgogn.CMap2" : "<cgogn.CMap3";
+			s += " vertices=" + std::to_string(count(w.m, Kind::Vertex));
+			s += " edges=" + std::to_string(count(w.m, Kind::Edge));
+			s += " faces=" + std::to_string(count(w.m, Kind::Face));
+			if constexpr (MAP::dimension == 3)
+				s += " volumes=" + std::to_string(count(w.m, Kind::Volume));
+			return s + ">";
+		});
+}
+
+template <typename MAP>
+std::unique_ptr<PyMap<MAP>> from_arrays(const py::array& points, const py::object& cells)
+{
+	const auto p = read_points(points);
+	std::vector<uint32> sizes, ids;
+	read_cells(cells, sizes, ids);
+	for (uint32 id : ids)
+		if (id >= p.size())
+			throw py::value_error("a cell refers to point " + std::to_string(id) + ", but there are " +
+								  std::to_string(p.size()) + " points");
+	auto w = std::make_unique<PyMap<MAP>>();
+	BuildReport r;
+	{
+		py::gil_scoped_release release;
+		if constexpr (MAP::dimension == 2)
+			r = build_surface(w->m, uint32(p.size()), sizes, ids);
+		else
+			r = build_volume(w->m, uint32(p.size()), sizes, ids);
+		for (std::size_t i = 0; i < p.size(); ++i)
+			if (container_of<mesh_traits<MAP>::Vertex::ORBIT>(w->m).is_live(r.vertex_offset + uint32(i)))
+				(*w->pos)[r.vertex_offset + uint32(i)] = Vec3(p[i][0], p[i][1], p[i][2]);
+		for (auto [line, original] : r.split_vertices)
+			(*w->pos)[line] = Vec3(p[original][0], p[original][1], p[original][2]);
+	}
+	if (r.nb_cells_invalid > 0)
+		throw py::value_error(std::to_string(r.nb_cells_invalid) + " cell(s) are of a size the map cannot build");
+	return w;
+}
+
+template <typename MAP>
+std::unique_ptr<PyMap<MAP>> load_into(const std::string& path, const io::LoadReport** report_out = nullptr)
+{
+	(void)report_out;
+	auto w = std::make_unique<PyMap<MAP>>();
+	{
+		py::gil_scoped_release release;
+		if constexpr (MAP::dimension == 2)
+			io::load_surface(w->m, path);
+		else
+			io::load_volume(w->m, path);
+	}
+	w->ensure_position();
+	return w;
+}
+
+bool is_volume_format(io::Format f)
+{
+	return f == io::Format::Medit || f == io::Format::VtkLegacy || f == io::Format::Vtu || f == io::Format::Gmsh ||
+		   f == io::Format::TetGen;
+}
+
+} // namespace
+
+void bind_maps(py::module_& mod)
+{
+	py::class_<Surface> surface(mod, "CMap2", "A surface: an oriented 2-map of polygons, closed by boundary faces.");
+	bind_common(surface);
+	surface
+		.def_static(
+			"from_arrays",
+			[](const py::array& points, const py::object& faces) { return from_arrays<CMap2>(points, faces); },
+			py::arg("points"), py::arg("faces"),
+			"A surface from (N, 3) points and faces: an (F, k) integer array or an (offsets, indices) pair. "
+			"Vertex id i is point i unless the builder repaired the input (non-manifold vertices split: their "
+			"copies get new ids after the others; unused points: their ids are free). O(total size).")
+		.def(
+			"save",
+			[](Surface& w, const std::string& path, bool binary) {
+				py::gil_scoped_release release;
+				io::SaveOptions o;
+				o.binary = binary;
+				io::save_surface(w.m, path, o);
+			},
+			py::arg("path"), py::arg("binary") = false,
+			"Writes the surface in the format of the extension (off, obj, ply, stl; binary for ply and stl). Raises "
+			"cgogn.IOError on failure.");
+
+	py::class_<VolumeMesh> volume(mod, "CMap3",
+								  "A volume mesh: an oriented 3-map of polyhedra, closed by boundary volumes.");
+	bind_common(volume);
+	volume
+		.def_static(
+			"from_arrays",
+			[](const py::array& points, const py::object& cells) { return from_arrays<CMap3>(points, cells); },
+			py::arg("points"), py::arg("cells"),
+			"A volume mesh from (N, 3) points and cells: an (C, k) integer array or an (offsets, indices) pair; "
+			"4 ids make a tetrahedron, 5 a pyramid, 6 a prism, 8 a hexahedron (VTK order).")
+		.def(
+			"cells_csr",
+			[](VolumeMesh& w) {
+				CMap3& m = w.m;
+				std::vector<uint32> offsets{0}, indices;
+				foreach_cell(m, [&](CMap3::Volume v) {
+					foreach_incident_vertex(m, v, [&](CMap3::Vertex x) { indices.push_back(index_of(m, x)); });
+					offsets.push_back(uint32(indices.size()));
+				});
+				return csr(std::move(offsets), std::move(indices));
+			},
+			"(offsets, indices): the vertex ids of every volume, in traversal order (the order of the map's "
+			"incident-vertex traversal, not a VTK cell order).")
+		.def(
+			"cells",
+			[](VolumeMesh& w) {
+				CMap3& m = w.m;
+				std::vector<uint32> out;
+				bool tets = true;
+				foreach_cell(m, [&](CMap3::Volume v) {
+					const Dart d = v.dart;
+					const Dart e = phi1(m, d), g = phi1(m, e), h = phi_1(m, phi2(m, d));
+					out.insert(out.end(), {index_of(m, CMap3::Vertex(d)), index_of(m, CMap3::Vertex(g)),
+										   index_of(m, CMap3::Vertex(e)), index_of(m, CMap3::Vertex(h))});
+					uint32 n = 0;
+					foreach_dart_of_orbit(m, v, [&](Dart) { return ++n <= 12; });
+					tets = tets && n == 12 && phi1(m, g) == d;
+					return tets;
+				});
+				if (!tets)
+					throw py::value_error("the mesh has volumes that are not tetrahedra: use cells_csr()");
+				const py::ssize_t rows = py::ssize_t(out.size() / 4);
+				auto* heap = new std::vector<uint32>(std::move(out));
+				py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<uint32>*>(p); });
+				return py::array_t<uint32>({rows, py::ssize_t(4)},
+										   {py::ssize_t(4 * sizeof(uint32)), py::ssize_t(sizeof(uint32))}, heap->data(),
+										   owner);
+			},
+			"(C, 4) vertex ids of the tetrahedra (d on the side of the normal of (a, b, c), as from_arrays "
+			"takes them); ValueError when a volume is not a tetrahedron.")
+		.def(
+			"save",
+			[](VolumeMesh& w, const std::string& path, bool binary) {
+				py::gil_scoped_release release;
+				io::SaveOptions o;
+				o.binary = binary;
+				io::save_volume(w.m, path, o);
+			},
+			py::arg("path"), py::arg("binary") = false,
+			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension). Raises cgogn.IOError on "
+			"failure.");
+
+	mod.def(
+		"load",
+		[](const std::string& path) -> py::object {
+			if (is_volume_format(io::format_from_extension(path)))
+				return py::cast(load_into<CMap3>(path));
+			return py::cast(load_into<CMap2>(path));
+		},
+		py::arg("path"),
+		"Loads a mesh file: a CMap2 for the surface formats (off, obj, ply, stl), a CMap3 for the volume "
+		"formats (mesh, vtk, vtu, msh, node/ele). Raises cgogn.IOError naming the file, line and problem on bad "
+		"input.");
+}
+
+} // namespace cgogn::python

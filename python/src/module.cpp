@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The compiled part of the `cgogn` Python package (cgogn._cgogn): the library's
+// errors become Python exceptions carrying its messages.
+#include <cgogn/io.h>
+#include <cgogn/render.h>
+
+#include "py_map.h"
+
+PYBIND11_MODULE(_cgogn, m)
+{
+	m.doc() = "cgogn: combinatorial maps for mesh processing (compiled core; use the `cgogn` package)";
+	static py::exception<cgogn::Error> error(m, "Error", PyExc_RuntimeError);
+	static py::exception<cgogn::io::Error> io_error(m, "IOError", error.ptr());
+	static py::exception<cgogn::render::RenderError> render_error(m, "RenderError", error.ptr());
+	py::register_exception_translator([](std::exception_ptr p) {
+		try
+		{
+			if (p)
+				std::rethrow_exception(p);
+		}
+		catch (const cgogn::io::Error& e)
+		{
+			io_error(e.what());
+		}
+		catch (const cgogn::render::RenderError& e)
+		{
+			render_error(e.what());
+		}
+		catch (const cgogn::Error& e)
+		{
+			error(e.what());
+		}
+	});
+	cgogn::python::bind_maps(m);
+	cgogn::python::bind_attributes(m);
+	cgogn::python::bind_operators(m);
+	cgogn::python::bind_algorithms(m);
+}

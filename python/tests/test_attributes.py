@@ -1,0 +1,66 @@
+# SPDX-License-Identifier: MIT
+"""Attributes of every dtype, by name and kind, as arrays indexed by cell id."""
+import numpy as np
+import pytest
+
+import cgogn
+
+DTYPES = [("float64", 1, np.float64), ("float32", 1, np.float32), ("int32", 1, np.int32), ("int64", 1, np.int64),
+          ("uint32", 1, np.uint32), ("bool", 1, np.bool_), ("float64", 2, np.float64), ("float64", 3, np.float64),
+          ("float64", 4, np.float64)]
+
+
+@pytest.mark.parametrize("kind", ["vertex", "edge", "face"])
+@pytest.mark.parametrize("dtype,components,np_type", DTYPES)
+def test_every_dtype_on_every_kind(data, kind, dtype, components, np_type):
+    m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+    a = m.add_attribute("a", kind, dtype, components)
+    n = m.id_bound(kind)
+    assert a.dtype == np_type and a.shape == ((n,) if components == 1 else (n, components))
+    assert not a.any()  # defaults: zero, False
+    values = (np.arange(a.size) % 7).reshape(a.shape).astype(np_type)
+    a[...] = values
+    assert np.array_equal(m.attribute("a", kind), values)  # the same memory
+    m.set_attribute("a", kind, values[::-1].copy())
+    assert np.array_equal(a, values[::-1])
+    assert ("a", dtype, components) in m.attributes(kind)
+    m.remove_attribute("a", kind)
+    with pytest.raises(KeyError):
+        m.attribute("a", kind)
+    assert np.array_equal(a, values[::-1])  # the array keeps its values
+
+
+def test_volume_attributes(data):
+    m = cgogn.load(str(data / "volume" / "liver_hex_624.mesh"))
+    w = m.add_attribute("w", "volume", "int64")
+    assert w.shape == (624,)
+    w[:] = np.arange(624)
+    assert m.attribute("w", "volume")[623] == 623
+
+
+def test_attribute_errors(data):
+    m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+    m.add_attribute("x", "vertex")
+    with pytest.raises(ValueError, match="exists"):
+        m.add_attribute("x", "vertex")
+    with pytest.raises(ValueError, match="unsupported"):
+        m.add_attribute("y", "vertex", "complex128")
+    with pytest.raises(ValueError, match="unknown cell kind"):
+        m.add_attribute("y", "corner")
+    with pytest.raises(ValueError, match="library"):
+        m.add_attribute("__y", "vertex")
+    with pytest.raises(ValueError, match="shape"):
+        m.set_attribute("x", "vertex", np.zeros(3))
+    with pytest.raises(ValueError, match="position"):
+        m.remove_attribute("position", "vertex")
+
+
+def test_new_cells_get_default_values_and_survivors_keep_theirs(data):
+    m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+    m.triangulate()
+    t = m.add_attribute("t", "vertex", "int32")
+    t[:] = np.arange(len(t)) + 1
+    v = m.cut_edge(0)
+    t = m.attribute("t", "vertex")
+    assert t[v] == 0
+    assert np.array_equal(t[:v], np.arange(v) + 1)
