@@ -7,8 +7,6 @@
 
 #include <cgogn/render/render.h>
 
-#include <Eigen/Geometry>
-
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -24,6 +24,7 @@
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -59,8 +60,11 @@ enum class Shading
 	Smooth ///< vertex normals (area-weighted face normals) interpolated per pixel
 };
 
-/// What sets the colour of the surface. Scalars are mapped through viridis,
-/// from their minimum (over the rendered cells) to their maximum.
+/// What sets the colour of the surface. Scalars are mapped through viridis
+/// over a range: by default the robust range of the rendered values (their
+/// 2nd to 98th percentile, see scalar_range()), or the one given by
+/// RenderOptions::range_min / range_max; values beyond it get the colour of
+/// its nearest end.
 enum class ColorSource
 {
 	Uniform,           ///< RenderOptions::surface_color
@@ -82,11 +86,18 @@ struct RenderOptions
 	/// Wireframe of the mesh edges, depth-tested with a small bias.
 	bool edges = false;
 	/// Boundary edges in red and split (non-manifold) vertices as orange dots,
-	/// drawn over everything so that hidden ones show too.
+	/// depth-tested with the bias of the edges: the visible ones in full
+	/// colour, the hidden ones blended at 25% over what hides them, so that
+	/// they show without covering the object.
 	bool show_defects = false;
 	ColorSource color = ColorSource::Uniform;
 	std::string attribute; ///< the attribute's name, for ColorSource::Attribute
-	/// Min/max bar on the right when a scalar is shown.
+	/// The ends of the colour range of a scalar; unset: the 2nd and 98th
+	/// percentiles of the rendered values. Set both or neither, with
+	/// range_min < range_max (RenderError otherwise).
+	std::optional<double> range_min, range_max;
+	/// Colour bar on the right when a scalar is shown, with the ends of the
+	/// range used; an end that clamps some values gets a triangle beyond it.
 	bool legend = true;
 	/// false: colours as they are, without the light (0.2 + 0.8 |n.l| otherwise).
 	bool lighting = true;
@@ -131,6 +142,26 @@ Image render_volume_boundary(const CMap3& m, const AttributeArray<Vec3>& pos, co
 /// never leaves a partial file at path. O(number of pixels). Throws
 /// RenderError naming path when it cannot be written or img is empty.
 void write_png(const Image& img, const std::string& path);
+
+/// The range a scalar field is coloured over: values in [lo, hi] map
+/// linearly to [0, 1], values beyond are clamped; `below` / `above` tell
+/// whether some values lie beyond each end.
+struct ScalarRange
+{
+	double lo = 0.0, hi = 0.0;
+	bool below = false, above = false;
+	/// v in [0, 1] (0.5 when lo == hi); NaN for a non-finite v.
+	double normalized(double v) const;
+};
+
+/// The colour range of values (non-finite ones ignored): [min, max] when
+/// given, otherwise the 2nd and 98th percentiles (linear between the sorted
+/// values), so that a few outliers do not squeeze the other values into one
+/// colour. No finite value: {0, 0}. O(n) (selections, not a sort). Throws
+/// RenderError when only one end is given, when min >= max or an end is not
+/// finite.
+ScalarRange scalar_range(const std::vector<double>& values, std::optional<double> min = {},
+						 std::optional<double> max = {});
 
 /// The viridis colour map at t in [0, 1] (clamped; NaN gives t = 0), linear
 /// between the 256 entries of matplotlib's table. O(1).
