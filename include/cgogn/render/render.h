@@ -137,6 +137,59 @@ Image render_surface(const CMap2& m, const AttributeArray<Vec3>& pos, const Rend
 /// curvature colour sources are not available (they are defined on surfaces).
 Image render_volume_boundary(const CMap3& m, const AttributeArray<Vec3>& pos, const RenderOptions& options);
 
+/// What `viewer_html` puts in the page and how the page opens.
+struct ViewerOptions
+{
+	std::string title; ///< shown on the page; empty: "cgogn view"
+	/// The colouring selected when the page opens (ColorSource::Attribute:
+	/// the attribute named `attribute`).
+	ColorSource color = ColorSource::Uniform;
+	std::string attribute;
+	/// Every colour quantity the mesh has (true), or only `color` (smaller
+	/// page: each quantity costs 2 bytes per vertex or per triangle).
+	bool all_quantities = true;
+	bool edges = false;        ///< edges shown when the page opens
+	bool show_defects = false; ///< boundary edges and split vertices shown when the page opens
+};
+
+/// A self-contained HTML page (three.js and the page's script inline, no
+/// network access) that draws a surface in the browser with WebGL 2:
+/// rotate, zoom and pan, toggles for edges, boundary edges and split
+/// vertices, a choice of colouring with a legend. Positions are embedded as
+/// base64 Float32, triangles (polygons fanned) as base64 Uint32, one flag
+/// byte per triangle, and each colour quantity as base64 Uint16: its values
+/// computed here as render_surface computes them, normalized over
+/// scalar_range() (65535: no value). O(number of darts); the page is about
+/// 12 bytes per vertex plus 17 bytes per triangle, times 4/3 (base64), plus
+/// 2.7 bytes per vertex or triangle and quantity, plus 0.5 MB of script.
+/// Throws RenderError as render_surface (empty mesh, non-finite position,
+/// unknown attribute). Precondition: pos is a vertex attribute of m.
+std::string viewer_html(const CMap2& m, const AttributeArray<Vec3>& pos, const ViewerOptions& options = {});
+
+/// The same for a volume mesh: the page draws its boundary faces (the faces
+/// whose phi3 neighbour is a boundary volume) and offers a clipping plane,
+/// normal to x, y or z, that shows the cells it cuts: the volume cells
+/// entirely beyond the plane are hidden, the cells the plane crosses are
+/// drawn whole (all their faces), and the cells entirely on the kept side
+/// show their boundary faces. Every face of every cell is embedded (an inner
+/// face twice, once per cell), grouped by cell. Colour quantities: area,
+/// quality and the double/float vertex, face and volume attributes (no
+/// curvature). Throws RenderError also when the map has no boundary face.
+std::string viewer_html(const CMap3& m, const AttributeArray<Vec3>& pos, const ViewerOptions& options = {});
+
+/// viewer_html written to path, through a temporary file next to it that is
+/// renamed: a failure never leaves a partial file. Throws RenderError
+/// naming path when it cannot be written; nothing is written when the page
+/// cannot be made.
+void write_viewer_html(const CMap2& m, const AttributeArray<Vec3>& pos, const std::string& path,
+					   const ViewerOptions& options = {});
+void write_viewer_html(const CMap3& m, const AttributeArray<Vec3>& pos, const std::string& path,
+					   const ViewerOptions& options = {});
+
+/// Writes bytes (a page of viewer_html) to path through a temporary file
+/// next to it that is renamed. Throws RenderError naming path.
+void write_file(const std::string& bytes, const std::string& path);
+
 /// Writes img as an 8-bit RGB PNG (no time stamp: same image, same bytes).
 /// Writes a temporary file next to path and renames it, so that a failure
 /// never leaves a partial file at path. O(number of pixels). Throws
