@@ -14,9 +14,10 @@
 //   cgogn-split_vertices  Uint32 vertex numbers
 //   cgogn-cell_offsets    Uint32, volumes: cell c has the triangles
 //                         [offsets[c], offsets[c+1])
-//   cgogn-qN              Uint16 per vertex or per triangle: quantity N
-//                         normalized over its range times 65534, 65535 when
-//                         the value is not finite
+//   cgogn-qN              Uint8 per vertex or per triangle: quantity N
+//                         normalized over its range times 254, 255 when the
+//                         value is not finite (the page maps it to one of the
+//                         256 viridis colours: 8 bits lose nothing visible)
 #include "extract.h"
 
 #include <cerrno>
@@ -148,17 +149,17 @@ struct Quantity
 	ScalarRange range;
 };
 
-/// Quantity values as Uint16 over their robust range; per face values are
-/// spread to the face's triangles.
-std::vector<uint16_t> quantize(const Scene& s, const ScalarRange& r)
+/// Quantity values as 0..254 over their robust range (255: no value); per
+/// face values are spread to the face's triangles.
+std::vector<uint8_t> quantize(const Scene& s, const ScalarRange& r)
 {
 	const bool faces = s.scalar_on == Scene::ScalarOn::Faces;
 	const std::size_t n = faces ? s.triangle_face.size() : s.scalar.size();
-	std::vector<uint16_t> q(n);
+	std::vector<uint8_t> q(n);
 	for (std::size_t i = 0; i < n; ++i)
 	{
 		const double t = r.normalized(faces ? s.scalar[s.triangle_face[i]] : s.scalar[i]);
-		q[i] = std::isnan(t) ? uint16_t(65535) : uint16_t(std::lround(t * 65534.0));
+		q[i] = std::isnan(t) ? uint8_t(255) : uint8_t(std::lround(t * 254.0));
 	}
 	return q;
 }
@@ -240,7 +241,7 @@ std::string page(const MAP& m, const AttributeArray<Vec3>& pos, const ViewerOpti
 		q.array = "q" + std::to_string(quantities.size());
 		q.on = s.scalar_on == Scene::ScalarOn::Vertices ? "vertices" : "triangles";
 		q.range = scalar_range(s.scalar);
-		p.add(q.array, "Uint16", quantize(s, q.range));
+		p.add(q.array, "Uint8", quantize(s, q.range));
 		if (selected)
 			initial = quantities.size();
 		quantities.push_back(std::move(q));

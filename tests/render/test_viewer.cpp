@@ -133,11 +133,11 @@ TEST(Viewer, SurfacePageEmbedsTheMesh)
 		EXPECT_NE(meta.find(label), std::string::npos) << label;
 	// quantity 5 is the attribute: per vertex, selected, spread over [0, 1]
 	EXPECT_NE(meta.find("\"initial\":{\"color\":5"), std::string::npos) << meta.substr(meta.find("\"initial\""));
-	const auto q = array<uint16_t>(html, "q5");
+	const auto q = array<uint8_t>(html, "q5");
 	ASSERT_EQ(q.size(), nv);
 	EXPECT_EQ(*std::min_element(q.begin(), q.end()), 0);
-	EXPECT_EQ(*std::max_element(q.begin(), q.end()), 65534);
-	EXPECT_EQ(array<uint16_t>(html, "q3").size(), 2u * nf) << "face area: per triangle";
+	EXPECT_EQ(*std::max_element(q.begin(), q.end()), 254);
+	EXPECT_EQ(array<uint8_t>(html, "q3").size(), 2u * nf) << "face area: per triangle";
 	expect_self_contained(html);
 
 	o.all_quantities = false;

@@ -10,7 +10,7 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 const EDGE_AB = 1, EDGE_BC = 2, EDGE_CA = 4; // polygon edges to draw
 const BOUNDARY_AB = 8, BOUNDARY_BC = 16, BOUNDARY_CA = 32; // boundary edges
 const ON_BOUNDARY = 64; // the face is on the boundary of the volume mesh
-const NO_VALUE = 65535;
+const NO_VALUE = 255; // quantities: 0..254 over their range
 
 function showNoWebGL(reason) {
   const m = document.getElementById('no-webgl');
@@ -254,7 +254,7 @@ function main() {
       for (let i = 0; i < 3 * nt; ++i) colors.set(uniform, 3 * i);
     } else {
       const s = scalarArrays[q.array] || (scalarArrays[q.array] = decode(meta, q.array));
-      const rgb = (u) => (u === NO_VALUE ? [128, 128, 128] : viridis[Math.min(255, Math.round(u / 65534 * 255))]);
+      const rgb = (u) => (u === NO_VALUE ? [128, 128, 128] : viridis[Math.min(255, Math.round(u / 254 * 255))]);
       for (let i = 0; i < 3 * nt; ++i) colors.set(rgb(q.on === 'vertices' ? s[tri[i]] : s[Math.floor(i / 3)]), 3 * i);
     }
     colorAttr.needsUpdate = true;
@@ -329,7 +329,9 @@ function main() {
   });
   renderer.render(scene, camera);
   document.body.dataset.state = 'ready';
-  document.body.dataset.loadMs = String(Math.round(performance.now() - t0));
+  // milliseconds spent in this script, and since the page started loading
+  document.body.dataset.scriptMs = String(Math.round(performance.now() - t0));
+  document.body.dataset.readyMs = String(Math.round(performance.now()));
 }
 
 try {

@@ -146,7 +146,7 @@ struct ViewerOptions
 	ColorSource color = ColorSource::Uniform;
 	std::string attribute;
 	/// Every colour quantity the mesh has (true), or only `color` (smaller
-	/// page: each quantity costs 2 bytes per vertex or per triangle).
+	/// page: each quantity costs 1.33 bytes per vertex or per triangle).
 	bool all_quantities = true;
 	bool edges = false;        ///< edges shown when the page opens
 	bool show_defects = false; ///< boundary edges and split vertices shown when the page opens
@@ -157,11 +157,14 @@ struct ViewerOptions
 /// rotate, zoom and pan, toggles for edges, boundary edges and split
 /// vertices, a choice of colouring with a legend. Positions are embedded as
 /// base64 Float32, triangles (polygons fanned) as base64 Uint32, one flag
-/// byte per triangle, and each colour quantity as base64 Uint16: its values
+/// byte per triangle, and each colour quantity as base64 Uint8: its values
 /// computed here as render_surface computes them, normalized over
-/// scalar_range() (65535: no value). O(number of darts); the page is about
-/// 12 bytes per vertex plus 17 bytes per triangle, times 4/3 (base64), plus
-/// 2.7 bytes per vertex or triangle and quantity, plus 0.5 MB of script.
+/// scalar_range() to 0..254 (255: no value; the page maps them to the 256
+/// viridis colours). O(number of darts + number of triangles x number of
+/// quantities); the page is about 12 bytes per vertex plus 13 bytes per
+/// triangle, times 4/3 (base64), plus 1.33 bytes per vertex or triangle and
+/// quantity, plus 0.5 MB of script: 30 MB for 1M triangles with the four
+/// quantities of a surface.
 /// Throws RenderError as render_surface (empty mesh, non-finite position,
 /// unknown attribute). Precondition: pos is a vertex attribute of m.
 std::string viewer_html(const CMap2& m, const AttributeArray<Vec3>& pos, const ViewerOptions& options = {});
