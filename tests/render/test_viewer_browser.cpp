@@ -28,16 +28,17 @@ std::string chromium()
 }
 
 /// Runs headless Chromium on the page with extra flags; its output goes to
-/// `out` (with --dump-dom, the page's DOM once loaded). True when it ran.
+/// `out` (with --dump-dom, the page's DOM once loaded); hash is appended to
+/// the page's URL. True when it ran.
 bool run_chromium(const std::string& program, const std::string& page, const std::string& flags, const TempDir& dir,
-				  const std::string& out)
+				  const std::string& out, const std::string& hash = "")
 {
 	const std::string cmd = "timeout 120 " + program +
 							" --headless --no-sandbox --disable-gpu --disable-background-networking "
 							"--disable-component-update --disable-sync --no-first-run --disable-dev-shm-usage "
 							"--user-data-dir=" +
 							quoted(dir.file("profile")) + " --window-size=800,600 --virtual-time-budget=10000 " +
-							flags + " " + quoted("file://" + page) + " >" + quoted(out) + " 2>" +
+							flags + " " + quoted("file://" + page + hash) + " >" + quoted(out) + " 2>" +
 							quoted(dir.file("chromium.log"));
 	return std::system(cmd.c_str()) == 0;
 }
@@ -110,4 +111,33 @@ TEST(ViewerBrowser, WithoutWebGLThePageSaysSo)
 	// the message element is shown: no longer `hidden`
 	EXPECT_NE(dom.find("<div id=\"no-webgl\">"), std::string::npos);
 	EXPECT_NE(dom.find("WebGL is not available"), std::string::npos);
+}
+
+TEST(ViewerBrowser, TheClippingPlaneShowsTheCellsItCuts)
+{
+	const std::string program = chromium();
+	if (program.empty())
+		GTEST_SKIP() << "chromium is not installed (Debian package chromium; scripts/install-deps.sh installs it)";
+	TempDir dir;
+	CMap3 m;
+	build_with_positions(m, hex_grid_soup(4, 4, 4)); // unit cubes in [0, 4]^3
+	auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	const std::string page = dir.file("cube.html");
+	render::write_viewer_html(m, *pos, page);
+	// the plane x = 2.4 (0.6 of the box), keeping x <= 2.4: the 16 cells of
+	// [2, 3] are crossed and drawn whole (16 x 6 quads), the 32 cells of
+	// [0, 2] show their boundary quads (16 at x = 0, 8 on each of the four
+	// sides), the cells of [3, 4] are hidden: 2 x (96 + 48) of 768 triangles
+	ASSERT_TRUE(run_chromium(program, page, "--use-angle=swiftshader --enable-unsafe-swiftshader --dump-dom", dir,
+							 dir.file("dom.html"), "#clip=x:0.6"))
+		<< read_text(dir.file("chromium.log"));
+	const std::string dom = read_text(dir.file("dom.html"));
+	EXPECT_NE(dom.find("data-state=\"ready\""), std::string::npos);
+	EXPECT_NE(dom.find("288 of 768 triangles"), std::string::npos)
+		<< dom.substr(std::min(dom.find("clip-count"), dom.size()), 100);
+	// the other side (x >= 2.4): the crossed cells and the 32 boundary quads of
+	// the cells of [3, 4]: 192 + 64 triangles
+	ASSERT_TRUE(run_chromium(program, page, "--use-angle=swiftshader --enable-unsafe-swiftshader --dump-dom", dir,
+							 dir.file("dom.html"), "#clip=x:0.6:flip"));
+	EXPECT_NE(read_text(dir.file("dom.html")).find("256 of 768 triangles"), std::string::npos);
 }

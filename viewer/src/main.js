@@ -305,6 +305,16 @@ function main() {
     flipBox.addEventListener('change', () => { clip.flip = flipBox.checked; refresh(); });
     ui.append(el('div', { class: 'group' }, el('label', {}, onBox, ' clip'), ' axis ', axis, ' ', el('label', {}, flipBox, ' keep the other side'),
       el('div', {}, slider), el('div', { id: 'clip-count', class: 'small' })));
+    // a link can open the page clipped: #clip=AXIS:AT[:flip], AT in [0, 1]
+    const wanted = /clip=([xyz]):([0-9.]+)(:flip)?/.exec(window.location.hash);
+    if (wanted) {
+      clip.on = onBox.checked = true;
+      axis.value = wanted[1];
+      clip.axis = 'xyz'.indexOf(wanted[1]);
+      clip.at = Math.min(1, Math.max(0, Number(wanted[2]) || 0));
+      slider.value = String(Math.round(clip.at * 1000));
+      clip.flip = flipBox.checked = !!wanted[3];
+    }
   }
   const homeButton = el('button', { text: 'reset view' });
   homeButton.addEventListener('click', () => { home(); controls.target.copy(centre); controls.update(); redraw(); });
@@ -313,6 +323,7 @@ function main() {
 
   setColors(meta.quantities[meta.initial.color]);
   updateShown();
+  updateLines();
 
   let pending = false;
   function redraw() {
