@@ -65,7 +65,8 @@ std::vector<T> array(const std::string& html, const std::string& name)
 {
 	const std::vector<uint8_t> bytes = base64_decode(element(html, "cgogn-" + name));
 	std::vector<T> v(bytes.size() / sizeof(T));
-	std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
+	if (!v.empty())
+		std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
 	EXPECT_EQ(bytes.size() % sizeof(T), 0u) << name;
 	return v;
 }
