@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <map>
+#include <vector>
 
 namespace cgogn::tool
 {
@@ -20,6 +21,7 @@ struct RenderCommandOptions
 	std::string size = "800x600";
 	std::string color = "none";
 	std::string background;
+	std::vector<double> range;
 	render::RenderOptions render;
 };
 
@@ -38,6 +40,12 @@ int run_render(RenderCommandOptions o)
 	parse_size(o.size, o.render);
 	if (!o.background.empty())
 		o.render.background = render::parse_color(o.background);
+	if (o.range.size() == 2)
+	{
+		o.render.range_min = o.range[0];
+		o.render.range_max = o.range[1];
+		render::scalar_range({}, o.render.range_min, o.render.range_max); // checks it
+	}
 	const std::map<std::string, render::ColorSource> sources = {{"none", render::ColorSource::Uniform},
 																{"curvature", render::ColorSource::MeanCurvature},
 																{"gaussian", render::ColorSource::GaussianCurvature},
@@ -103,11 +111,16 @@ Command add_render_command(CLI::App& app)
 		->check(CLI::Range(1u, 8u));
 	sub->add_flag("--edges", o->render.edges, "draw the mesh edges over the faces");
 	sub->add_flag("--show-defects", o->render.show_defects,
-				  "boundary edges in red, vertices split by the loader (non-manifold) as orange dots");
+				  "boundary edges in red, vertices split by the loader (non-manifold) as orange dots; hidden "
+				  "ones faint");
 	sub->add_option("--color", o->color,
 					"curvature (mean), gaussian, area, quality (triangle shape), or the name of a double/float "
 					"vertex or cell attribute of the file, through viridis with a legend (default: none)");
-	sub->add_flag("!--no-legend", o->render.legend, "no min/max bar with --color");
+	sub->add_option("--range", o->range,
+					"MIN MAX: the values coloured from the first to the last viridis colour (default: the 2nd "
+					"to 98th percentile of the drawn values; values beyond get the end colours)")
+		->expected(2);
+	sub->add_flag("!--no-legend", o->render.legend, "no colour bar with --color");
 	sub->add_option("--background", o->background, "background colour: #rrggbb or r,g,b (default white)");
 	return {sub, [o] { return run_render(*o); }};
 }

@@ -18,5 +18,6 @@ Command add_subdivide_command(CLI::App& app);
 Command add_fill_holes_command(CLI::App& app);
 Command add_dual_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
+Command add_view_command(CLI::App& app);
 
 } // namespace cgogn::tool

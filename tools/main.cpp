@@ -18,7 +18,7 @@ int main(int argc, char** argv)
 		tool::add_decimate_command(app),	tool::add_remesh_command(app),
 		tool::add_subdivide_command(app),
 		tool::add_fill_holes_command(app),	tool::add_dual_command(app),
-		tool::add_render_command(app),
+		tool::add_render_command(app),		tool::add_view_command(app),
 	};
 	try
 	{

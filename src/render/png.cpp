@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // PNG output through libpng, written to a temporary file then renamed so that
 // a failed write never leaves a truncated picture under the requested name.
-#include <cgogn/render/render.h>
+#include "scene.h"
 
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <png.h>
 #include <string>
 #include <system_error>
@@ -68,13 +69,21 @@ void write_png(const Image& img, const std::string& path)
 	for (uint32_t y = 0; y < img.height; ++y)
 		rows[y] = const_cast<png_bytep>(img.rgb.data() + std::size_t(y) * img.width * 3);
 
+	detail::write_file(path, [&](FILE* f) { return encode(f, img, rows.data()); });
+}
+
+namespace detail
+{
+
+void write_file(const std::string& path, const std::function<std::string(FILE*)>& body)
+{
 	// the temporary file is in the target's folder, so that the rename stays
 	// on one file system and is atomic
 	const std::string tmp = path + ".tmp" + std::to_string(::getpid());
 	FILE* f = std::fopen(tmp.c_str(), "wb");
 	if (f == nullptr)
 		throw RenderError(path + ": cannot write (" + std::strerror(errno) + ")");
-	std::string error = encode(f, img, rows.data());
+	std::string error = body(f);
 	if (std::fflush(f) != 0 && error.empty())
 		error = std::strerror(errno);
 	if (std::fclose(f) != 0 && error.empty())
@@ -92,5 +101,7 @@ void write_png(const Image& img, const std::string& path)
 		throw RenderError(path + ": cannot write (" + error + ")");
 	}
 }
+
+} // namespace detail
 
 } // namespace cgogn::render

@@ -44,6 +44,60 @@ Rgb parse_color(const std::string& text)
 	return {uint8_t(v >> 16), uint8_t(v >> 8), uint8_t(v)};
 }
 
+double ScalarRange::normalized(double v) const
+{
+	if (!std::isfinite(v))
+		return std::numeric_limits<double>::quiet_NaN();
+	return hi > lo ? std::clamp((v - lo) / (hi - lo), 0.0, 1.0) : 0.5;
+}
+
+ScalarRange scalar_range(const std::vector<double>& values, std::optional<double> min, std::optional<double> max)
+{
+	if (min.has_value() != max.has_value())
+		throw RenderError("the colour range needs both its ends (minimum and maximum)");
+	if (min && !(std::isfinite(*min) && std::isfinite(*max) && *min < *max))
+		throw RenderError("the colour range must have finite ends with minimum < maximum");
+	std::vector<double> v;
+	v.reserve(values.size());
+	for (double x : values)
+		if (std::isfinite(x))
+			v.push_back(x);
+	ScalarRange r;
+	if (v.empty())
+	{
+		if (min)
+			r.lo = *min, r.hi = *max;
+		return r;
+	}
+	if (min)
+	{
+		r.lo = *min;
+		r.hi = *max;
+	}
+	else
+	{
+		// linear interpolation between the sorted values at q (n - 1)
+		auto percentile = [&](double q) {
+			const double at = q * double(v.size() - 1);
+			const std::size_t i = std::size_t(at);
+			std::nth_element(v.begin(), v.begin() + i, v.end());
+			const double a = v[i];
+			if (i + 1 >= v.size())
+				return a;
+			const double b = *std::min_element(v.begin() + i + 1, v.end());
+			return a + (b - a) * (at - double(i));
+		};
+		r.lo = percentile(0.02);
+		r.hi = percentile(0.98);
+	}
+	for (double x : v)
+	{
+		r.below = r.below || x < r.lo;
+		r.above = r.above || x > r.hi;
+	}
+	return r;
+}
+
 namespace detail
 {
 
@@ -108,20 +162,44 @@ struct Target
 	std::vector<double> sx, sy;  // the same, unrounded
 	std::vector<float> z;        // towards the camera
 
-	void plot(int x, int y, float zz, float bias, bool test, Rgb c)
+	/// Test: drawn where it is not behind the surface (with the bias);
+	/// Defect: like Test, and blended at 25% where it is behind, once per
+	/// sample (stamp: 0 untouched, 1 faint, 2 full).
+	enum class Mode
+	{
+		Test,
+		Defect
+	};
+	std::vector<uint8_t> stamp;
+
+	void plot(int x, int y, float zz, float bias, Mode mode, Rgb c)
 	{
 		if (x < 0 || y < 0 || x >= w || y >= h)
 			return;
 		const std::size_t i = std::size_t(y) * w + x;
-		if (test && zz + bias < depth[i])
+		const bool hidden = zz + bias < depth[i];
+		if (mode == Mode::Test && hidden)
 			return;
+		if (mode == Mode::Defect)
+		{
+			if (stamp[i] == 2 || (hidden && stamp[i] == 1))
+				return;
+			stamp[i] = hidden ? 1 : 2;
+			if (hidden)
+			{
+				rgb[3 * i] = uint8_t((3 * rgb[3 * i] + c.r + 2) / 4);
+				rgb[3 * i + 1] = uint8_t((3 * rgb[3 * i + 1] + c.g + 2) / 4);
+				rgb[3 * i + 2] = uint8_t((3 * rgb[3 * i + 2] + c.b + 2) / 4);
+				return;
+			}
+		}
 		rgb[3 * i] = c.r;
 		rgb[3 * i + 1] = c.g;
 		rgb[3 * i + 2] = c.b;
 	}
 
 	/// A line `thick` samples wide from vertex a to vertex b.
-	void line(uint32_t a, uint32_t b, int thick, float bias, bool test, Rgb c)
+	void line(uint32_t a, uint32_t b, int thick, float bias, Mode mode, Rgb c)
 	{
 		const double dx = sx[b] - sx[a], dy = sy[b] - sy[a];
 		const int n = std::max(1, int(std::ceil(std::max(std::abs(dx), std::abs(dy)))));
@@ -135,18 +213,19 @@ struct Target
 			{
 				const int x = int(std::floor(px)), y0 = int(std::ceil(py - thick / 2.0 - 0.5));
 				for (int j = 0; j < thick; ++j)
-					plot(x, y0 + j, zz, bias, test, c);
+					plot(x, y0 + j, zz, bias, mode, c);
 			}
 			else
 			{
 				const int y = int(std::floor(py)), x0 = int(std::ceil(px - thick / 2.0 - 0.5));
 				for (int j = 0; j < thick; ++j)
-					plot(x0 + j, y, zz, bias, test, c);
+					plot(x0 + j, y, zz, bias, mode, c);
 			}
 		}
 	}
 
-	void dot(uint32_t v, double radius, Rgb c)
+	/// A disk around vertex v at the vertex's depth.
+	void dot(uint32_t v, double radius, float bias, Rgb c)
 	{
 		const int r = int(std::ceil(radius));
 		const int cx = int(std::floor(sx[v])), cy = int(std::floor(sy[v]));
@@ -155,7 +234,7 @@ struct Target
 			{
 				const double ddx = x + 0.5 - sx[v], ddy = y + 0.5 - sy[v];
 				if (ddx * ddx + ddy * ddy <= radius * radius)
-					plot(x, y, 0.0f, 0.0f, false, c);
+					plot(x, y, z[v], bias, Mode::Defect, c);
 			}
 	}
 };
@@ -245,7 +324,7 @@ struct Shader
 	const Scene& s;
 	const RenderOptions& o;
 	Eigen::Vector3f light;
-	double lo = 0.0, hi = 0.0;
+	ScalarRange range;
 	std::vector<float> vertex_t; // normalized scalar per vertex (NaN: none)
 	std::vector<Rgb> face_rgb;   // colour per face
 
@@ -253,21 +332,13 @@ struct Shader
 
 	double normalized(double v) const
 	{
-		if (!std::isfinite(v))
-			return std::numeric_limits<double>::quiet_NaN();
-		return hi > lo ? (v - lo) / (hi - lo) : 0.5;
+		return range.normalized(v);
 	}
 
 	Shader(const Scene& sc, const RenderOptions& op, const Vec3& back) : s(sc), o(op), light(back.cast<float>())
 	{
-		bool any = false;
-		for (double v : s.scalar)
-			if (std::isfinite(v))
-			{
-				lo = any ? std::min(lo, v) : v;
-				hi = any ? std::max(hi, v) : v;
-				any = true;
-			}
+		if (s.scalar_on != Scene::ScalarOn::None)
+			range = scalar_range(s.scalar, o.range_min, o.range_max);
 		if (s.scalar_on == Scene::ScalarOn::Vertices)
 		{
 			vertex_t.resize(s.scalar.size());
@@ -366,7 +437,10 @@ std::string number(double v)
 	return buf;
 }
 
-void legend(Image& img, const RenderOptions& o, double lo, double hi)
+/// The bar from range.lo (bottom) to range.hi (top), the two numbers next to
+/// its ends, and a triangle beyond an end that clamps values (as
+/// matplotlib's extended colour bars).
+void legend(Image& img, const RenderOptions& o, const ScalarRange& range)
 {
 	const int s = int(std::max(1u, img.height / 200));
 	const int x0 = int(img.width) - int(legend_width(img.width, img.height)) + 4 * s;
@@ -378,10 +452,24 @@ void legend(Image& img, const RenderOptions& o, double lo, double hi)
 		for (int x = x0; x < x0 + bw; ++x)
 			put(img, x, y, c);
 	}
+	// triangles of height bw: row j (from the bar) spans bw - 2 j * ... pixels
+	auto triangle = [&](int ybase, int dir, Rgb c) {
+		for (int j = 1; j <= bw; ++j)
+		{
+			const double half = 0.5 * bw * double(bw - j) / bw;
+			for (int x = x0; x < x0 + bw; ++x)
+				if (std::abs(x + 0.5 - (x0 + 0.5 * bw)) <= half + 0.5)
+					put(img, x, ybase + dir * j, c);
+		}
+	};
+	if (range.above)
+		triangle(ytop, -1, viridis(1.0));
+	if (range.below)
+		triangle(ybot, 1, viridis(0.0));
 	const Rgb bg = o.background;
 	const Rgb ink = 299 * bg.r + 587 * bg.g + 114 * bg.b > 128000 ? Rgb{0, 0, 0} : Rgb{255, 255, 255};
-	text(img, x0 + bw + 2 * s, ytop, s, number(hi), ink);
-	text(img, x0 + bw + 2 * s, ybot - 5 * s + 1, s, number(lo), ink);
+	text(img, x0 + bw + 2 * s, ytop, s, number(range.hi), ink);
+	text(img, x0 + bw + 2 * s, ybot - 5 * s + 1, s, number(range.lo), ink);
 }
 
 } // namespace
@@ -464,15 +552,21 @@ Image rasterize(const Scene& s, const RenderOptions& o)
 		}
 
 	// overlays, in samples: edges one pixel wide, depth-tested with a bias of
-	// 0.5% of the depth of the bounding box so that the edges of the visible
-	// faces win against those faces; defects on top of everything
+	// 0.5% of the diagonal of the bounding box so that the edges of the
+	// visible faces win against those faces; defects with the same test, in
+	// full colour where visible and faint (25%) where hidden
 	const float bias = float(0.005 * (hi - lo).norm());
 	for (std::size_t e = 0; 2 * e < s.edges.size(); ++e)
-		g.line(s.edges[2 * e], s.edges[2 * e + 1], n, bias, true, o.edge_color);
+		g.line(s.edges[2 * e], s.edges[2 * e + 1], n, bias, Target::Mode::Test, o.edge_color);
+	if (!s.boundary_edges.empty() || !s.split_vertices.empty())
+		g.stamp.assign(ns, 0);
 	for (std::size_t e = 0; 2 * e < s.boundary_edges.size(); ++e)
-		g.line(s.boundary_edges[2 * e], s.boundary_edges[2 * e + 1], 2 * n, 0.0f, false, Rgb{230, 25, 25});
+		g.line(s.boundary_edges[2 * e], s.boundary_edges[2 * e + 1], 2 * n, bias, Target::Mode::Defect,
+			   Rgb{230, 25, 25});
+	// the dots go over the lines: a sample of a line may take a dot's colour
+	std::fill(g.stamp.begin(), g.stamp.end(), uint8_t(0));
 	for (uint32_t v : s.split_vertices)
-		g.dot(v, 3.0 * n, Rgb{255, 140, 0});
+		g.dot(v, 3.0 * n, bias, Rgb{255, 140, 0});
 
 	// box filter
 	Image img;
@@ -495,7 +589,7 @@ Image rasterize(const Scene& s, const RenderOptions& o)
 			}
 
 	if (show_legend)
-		legend(img, o, shader.lo, shader.hi);
+		legend(img, o, shader.range);
 	return img;
 }
 

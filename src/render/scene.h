@@ -7,9 +7,9 @@
 
 #include <cgogn/render/render.h>
 
-#include <Eigen/Geometry>
-
 #include <cstdint>
+#include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,7 +36,18 @@ struct Scene
 	std::vector<uint32_t> edges;          ///< 2 vertex numbers per edge, when asked
 	std::vector<uint32_t> boundary_edges; ///< 2 vertex numbers per boundary edge, when asked
 	std::vector<uint32_t> split_vertices; ///< vertex numbers, when asked
+
+	/// Per triangle (a, b, c), when asked instead of the edge lists: which of
+	/// its sides are polygon edges to draw, and which are boundary edges.
+	std::vector<uint8_t> triangle_flags;
+	static constexpr uint8_t EDGE_AB = 1, EDGE_BC = 2, EDGE_CA = 4;
+	static constexpr uint8_t BOUNDARY_AB = 8, BOUNDARY_BC = 16, BOUNDARY_CA = 32;
 };
+
+/// Writes a file through body (returns an error text, empty on success) into
+/// a temporary file next to path, renamed to path on success and removed
+/// otherwise. Throws RenderError naming path.
+void write_file(const std::string& path, const std::function<std::string(FILE*)>& body);
 
 /// Draws a scene (non-empty, finite positions) with the options. Throws
 /// RenderError on bad options.

@@ -179,6 +179,141 @@ TEST(Render, FaceScalarGivesViridisEnds)
 	EXPECT_EQ(img.at(140, 50), viridis100);
 }
 
+TEST(Render, ScalarRangeIsRobustToOutliers)
+{
+	std::vector<double> v;
+	for (int i = 0; i <= 100; ++i)
+		v.push_back(i);
+	v.push_back(1e9);
+	v.push_back(-1e9);
+	v.push_back(std::numeric_limits<double>::quiet_NaN());
+	// 103 finite values: the 2nd percentile lies at 2.04 between the sorted
+	// values (-1e9, 0, 1, 2, ...), i.e. 1.04; the 98th at 99.96, i.e. 98.96
+	const render::ScalarRange r = render::scalar_range(v);
+	EXPECT_NEAR(r.lo, 1.04, 1e-9);
+	EXPECT_NEAR(r.hi, 98.96, 1e-9);
+	EXPECT_TRUE(r.below);
+	EXPECT_TRUE(r.above);
+	EXPECT_EQ(r.normalized(1e9), 1.0);
+	EXPECT_EQ(r.normalized(-5.0), 0.0);
+	EXPECT_NEAR(r.normalized(50.0), 0.5, 1e-12);
+	EXPECT_TRUE(std::isnan(r.normalized(std::numeric_limits<double>::infinity())));
+
+	const render::ScalarRange given = render::scalar_range(v, 0.0, 200.0);
+	EXPECT_EQ(given.lo, 0.0);
+	EXPECT_EQ(given.hi, 200.0);
+	EXPECT_TRUE(given.below);
+	EXPECT_TRUE(given.above);
+	const render::ScalarRange all = render::scalar_range(v, -2e9, 2e9);
+	EXPECT_FALSE(all.below);
+	EXPECT_FALSE(all.above);
+	EXPECT_THROW(render::scalar_range(v, 1.0, 1.0), render::RenderError);
+	EXPECT_THROW(render::scalar_range(v, 1.0, std::nullopt), render::RenderError);
+	EXPECT_THROW(render::scalar_range(v, std::numeric_limits<double>::quiet_NaN(), 1.0), render::RenderError);
+	const render::ScalarRange none = render::scalar_range({});
+	EXPECT_EQ(none.lo, 0.0);
+	EXPECT_EQ(none.hi, 0.0);
+}
+
+TEST(Render, OutliersDoNotFlattenTheColours)
+{
+	// s = x on a 10 x 10 grid of [0,1]^2 seen along z, but one corner vertex
+	// holds 1e9: a min/max range would paint everything viridis(0); the
+	// robust range still spreads the colours over x
+	CMap2 m;
+	SurfaceSoup soup = grid_soup(10, 10);
+	for (auto& p : soup.positions)
+		p = {p[0] / 10.0, p[1] / 10.0, 0.0};
+	build_with_positions(m, soup);
+	auto pos = positions_of(m);
+	auto attr = add_attribute<double, CMap2::Vertex>(m, "s");
+	foreach_cell(m, [&](CMap2::Vertex v) {
+		const Vec3& p = (*pos)[v];
+		(*attr)[v] = p[0] > 0.99 && p[1] > 0.99 ? 1e9 : p[0];
+	});
+	render::RenderOptions o = unlit(render::View::Z, 41, 40);
+	o.color = render::ColorSource::Attribute;
+	o.attribute = "s";
+	const render::Image img = render::render_surface(m, *pos, o);
+	EXPECT_LE(distance(img.at(11, 20), viridis25), 3);
+	EXPECT_LE(distance(img.at(20, 20), viridis50), 3);
+	EXPECT_LE(distance(img.at(29, 20), viridis75), 3);
+
+	// an explicit range: [0, 2] puts x = 1/2 at a quarter of the map
+	o.range_min = 0.0;
+	o.range_max = 2.0;
+	const render::Image given = render::render_surface(m, *pos, o);
+	EXPECT_LE(distance(given.at(20, 20), viridis25), 3);
+	o.range_max = 0.0;
+	EXPECT_THROW(render::render_surface(m, *pos, o), render::RenderError);
+}
+
+TEST(Render, LegendMarksClampedEnds)
+{
+	// the legend's bar spans rows 15% to 85% of the height; a clamped end
+	// gets a triangle of its end colour just beyond it
+	CMap2 m;
+	square(m, 0, 1, 0);
+	auto pos = positions_of(m);
+	render::RenderOptions o = unlit(render::View::Z, 400, 200);
+	o.legend = true;
+	o.color = render::ColorSource::Attribute;
+	o.attribute = "s";
+	const uint32_t xbar = 400 - render::legend_width(400, 200) + 4 + 2, ytop = 30, ybot = 170;
+	const render::Image full = render::render_surface(m, *pos, o);
+	EXPECT_EQ(full.at(xbar, ytop), viridis100);
+	EXPECT_EQ(full.at(xbar, ytop - 2), o.background) << "nothing clamped: no triangle";
+	EXPECT_EQ(full.at(xbar, ybot + 2), o.background);
+	o.range_min = 0.25;
+	o.range_max = 0.75;
+	const render::Image clamped = render::render_surface(m, *pos, o);
+	EXPECT_EQ(clamped.at(xbar, ytop - 2), viridis100);
+	EXPECT_EQ(clamped.at(xbar, ybot + 2), viridis0);
+	o.range_min = -1.0;
+	const render::Image top = render::render_surface(m, *pos, o);
+	EXPECT_EQ(top.at(xbar, ytop - 2), viridis100);
+	EXPECT_EQ(top.at(xbar, ybot + 2), o.background);
+}
+
+TEST(Render, HiddenDefectsAreFaint)
+{
+	// a closed sphere hides an open square behind it, a second open square
+	// beside it is in view: the visible boundary is red, the hidden one is
+	// blended at 25% over the sphere
+	CMap2 m;
+	build_with_positions(m, sphere_soup(48, 24, true));
+	auto square_at = [&](double x0, double z) {
+		SurfaceSoup s = grid_soup(1, 1);
+		for (auto& p : s.positions)
+			p = {x0 + p[0], p[1] - 0.5, z};
+		build_with_positions(m, s);
+	};
+	square_at(-0.5, -3.0); // behind the sphere
+	square_at(2.0, 0.0);   // beside it
+	render::RenderOptions o = unlit(render::View::Z, 400, 200);
+	o.show_defects = true;
+	const render::Image img = render::render_surface(m, *positions_of(m), o);
+	const render::Rgb red{230, 25, 25}, s = o.surface_color;
+	const render::Rgb faint{uint8_t((3 * s.r + red.r + 2) / 4), uint8_t((3 * s.g + red.g + 2) / 4),
+							uint8_t((3 * s.b + red.b + 2) / 4)};
+	// the bounding box is [-1, 3] x [-1, 1]: 90 pixels per unit, x = 0 at
+	// column 110, y = 0 at row 100
+	uint32_t red_left = 0, red_right = 0, faint_left = 0;
+	for (uint32_t y = 0; y < img.height; ++y)
+		for (uint32_t x = 0; x < img.width; ++x)
+		{
+			const render::Rgb c = img.at(x, y);
+			const bool left = x < 200; // the sphere's side
+			red_left += left && c == red;
+			red_right += !left && c == red;
+			faint_left += left && c == faint;
+		}
+	EXPECT_GT(red_right, 300u) << "the visible square's outline, 4 x 90 pixels long";
+	EXPECT_GT(faint_left, 300u) << "the hidden square's outline shows faintly";
+	EXPECT_EQ(red_left, 0u) << "hidden boundary edges are not drawn in full colour";
+	EXPECT_EQ(img.at(110, 100), s) << "inside the hidden outline, the sphere is untouched";
+}
+
 TEST(Render, ViewConventions)
 {
 	struct Case

@@ -47,6 +47,14 @@ TEST(ToolRender, SurfaceToPng)
 	ASSERT_EQ(c.width, 300u);
 	EXPECT_EQ(c.at(0, 0), (render::Rgb{0, 0, 0}));
 	EXPECT_NE(c.rgb, img.rgb);
+
+	// an explicit colour range changes the colours
+	r = run_tool("render " + in + " " + quoted(dir.file("r.png")) +
+					 " --size 300x200 --view z --azimuth 30 --elevation 20 --shading flat --ssaa 1 --color "
+					 "curvature --background 0,0,0 --show-defects --range -100 100",
+				 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(read_png(dir.file("r.png")).rgb, c.rgb);
 }
 
 TEST(ToolRender, VolumeBoundaryToPng)
@@ -85,6 +93,11 @@ TEST(ToolRender, BadInputExits2AndWritesNothing)
 	EXPECT_NE(r.err.find("available"), std::string::npos) << r.err;
 	EXPECT_FALSE(std::filesystem::exists(out));
 
+	r = run_tool("render " + spot + " " + quoted(out) + " --color curvature --range 2 1", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("range"), std::string::npos) << r.err;
+	r = run_tool("render " + spot + " " + quoted(out) + " --range 1", dir);
+	EXPECT_EQ(r.status, 2);
 	r = run_tool("render " + spot + " " + quoted(out) + " --size 0x10", dir);
 	EXPECT_EQ(r.status, 2);
 	r = run_tool("render " + spot + " " + quoted(out) + " --ssaa 9", dir);

@@ -24,6 +24,7 @@
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -59,8 +60,11 @@ enum class Shading
 	Smooth ///< vertex normals (area-weighted face normals) interpolated per pixel
 };
 
-/// What sets the colour of the surface. Scalars are mapped through viridis,
-/// from their minimum (over the rendered cells) to their maximum.
+/// What sets the colour of the surface. Scalars are mapped through viridis
+/// over a range: by default the robust range of the rendered values (their
+/// 2nd to 98th percentile, see scalar_range()), or the one given by
+/// RenderOptions::range_min / range_max; values beyond it get the colour of
+/// its nearest end.
 enum class ColorSource
 {
 	Uniform,           ///< RenderOptions::surface_color
@@ -82,11 +86,18 @@ struct RenderOptions
 	/// Wireframe of the mesh edges, depth-tested with a small bias.
 	bool edges = false;
 	/// Boundary edges in red and split (non-manifold) vertices as orange dots,
-	/// drawn over everything so that hidden ones show too.
+	/// depth-tested with the bias of the edges: the visible ones in full
+	/// colour, the hidden ones blended at 25% over what hides them, so that
+	/// they show without covering the object.
 	bool show_defects = false;
 	ColorSource color = ColorSource::Uniform;
 	std::string attribute; ///< the attribute's name, for ColorSource::Attribute
-	/// Min/max bar on the right when a scalar is shown.
+	/// The ends of the colour range of a scalar; unset: the 2nd and 98th
+	/// percentiles of the rendered values. Set both or neither, with
+	/// range_min < range_max (RenderError otherwise).
+	std::optional<double> range_min, range_max;
+	/// Colour bar on the right when a scalar is shown, with the ends of the
+	/// range used; an end that clamps some values gets a triangle beyond it.
 	bool legend = true;
 	/// false: colours as they are, without the light (0.2 + 0.8 |n.l| otherwise).
 	bool lighting = true;
@@ -126,11 +137,87 @@ Image render_surface(const CMap2& m, const AttributeArray<Vec3>& pos, const Rend
 /// curvature colour sources are not available (they are defined on surfaces).
 Image render_volume_boundary(const CMap3& m, const AttributeArray<Vec3>& pos, const RenderOptions& options);
 
+/// What `viewer_html` puts in the page and how the page opens.
+struct ViewerOptions
+{
+	std::string title; ///< shown on the page; empty: "cgogn view"
+	/// The colouring selected when the page opens (ColorSource::Attribute:
+	/// the attribute named `attribute`).
+	ColorSource color = ColorSource::Uniform;
+	std::string attribute;
+	/// Every colour quantity the mesh has (true), or only `color` (smaller
+	/// page: each quantity costs 1.33 bytes per vertex or per triangle).
+	bool all_quantities = true;
+	bool edges = false;        ///< edges shown when the page opens
+	bool show_defects = false; ///< boundary edges and split vertices shown when the page opens
+};
+
+/// A self-contained HTML page (three.js and the page's script inline, no
+/// network access) that draws a surface in the browser with WebGL 2:
+/// rotate, zoom and pan, toggles for edges, boundary edges and split
+/// vertices, a choice of colouring with a legend. Positions are embedded as
+/// base64 Float32, triangles (polygons fanned) as base64 Uint32, one flag
+/// byte per triangle, and each colour quantity as base64 Uint8: its values
+/// computed here as render_surface computes them, normalized over
+/// scalar_range() to 0..254 (255: no value; the page maps them to the 256
+/// viridis colours). O(number of darts + number of triangles x number of
+/// quantities); the page is about 12 bytes per vertex plus 13 bytes per
+/// triangle, times 4/3 (base64), plus 1.33 bytes per vertex or triangle and
+/// quantity, plus 0.5 MB of script: 30 MB for 1M triangles with the four
+/// quantities of a surface.
+/// Throws RenderError as render_surface (empty mesh, non-finite position,
+/// unknown attribute). Precondition: pos is a vertex attribute of m.
+std::string viewer_html(const CMap2& m, const AttributeArray<Vec3>& pos, const ViewerOptions& options = {});
+
+/// The same for a volume mesh: the page draws its boundary faces (the faces
+/// whose phi3 neighbour is a boundary volume) and offers a clipping plane,
+/// normal to x, y or z, that shows the cells it cuts: the volume cells
+/// entirely beyond the plane are hidden, the cells the plane crosses are
+/// drawn whole (all their faces), and the cells entirely on the kept side
+/// show their boundary faces. Every face of every cell is embedded (an inner
+/// face twice, once per cell), grouped by cell. Colour quantities: area,
+/// quality and the double/float vertex, face and volume attributes (no
+/// curvature). Throws RenderError also when the map has no boundary face.
+std::string viewer_html(const CMap3& m, const AttributeArray<Vec3>& pos, const ViewerOptions& options = {});
+
+/// viewer_html written to path, through a temporary file next to it that is
+/// renamed: a failure never leaves a partial file. Throws RenderError
+/// naming path when it cannot be written; nothing is written when the page
+/// cannot be made.
+void write_viewer_html(const CMap2& m, const AttributeArray<Vec3>& pos, const std::string& path,
+					   const ViewerOptions& options = {});
+void write_viewer_html(const CMap3& m, const AttributeArray<Vec3>& pos, const std::string& path,
+					   const ViewerOptions& options = {});
+
+/// Writes bytes (a page of viewer_html) to path through a temporary file
+/// next to it that is renamed. Throws RenderError naming path.
+void write_file(const std::string& bytes, const std::string& path);
+
 /// Writes img as an 8-bit RGB PNG (no time stamp: same image, same bytes).
 /// Writes a temporary file next to path and renames it, so that a failure
 /// never leaves a partial file at path. O(number of pixels). Throws
 /// RenderError naming path when it cannot be written or img is empty.
 void write_png(const Image& img, const std::string& path);
+
+/// The range a scalar field is coloured over: values in [lo, hi] map
+/// linearly to [0, 1], values beyond are clamped; `below` / `above` tell
+/// whether some values lie beyond each end.
+struct ScalarRange
+{
+	double lo = 0.0, hi = 0.0;
+	bool below = false, above = false;
+	/// v in [0, 1] (0.5 when lo == hi); NaN for a non-finite v.
+	double normalized(double v) const;
+};
+
+/// The colour range of values (non-finite ones ignored): [min, max] when
+/// given, otherwise the 2nd and 98th percentiles (linear between the sorted
+/// values), so that a few outliers do not squeeze the other values into one
+/// colour. No finite value: {0, 0}. O(n) (selections, not a sort). Throws
+/// RenderError when only one end is given, when min >= max or an end is not
+/// finite.
+ScalarRange scalar_range(const std::vector<double>& values, std::optional<double> min = {},
+						 std::optional<double> max = {});
 
 /// The viridis colour map at t in [0, 1] (clamped; NaN gives t = 0), linear
 /// between the 256 entries of matplotlib's table. O(1).

@@ -6,6 +6,8 @@
 #include <cgogn/core/types/maps/mesh_traits.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
+#include <Eigen/Geometry> // cross()
+
 #include <algorithm>
 #include <cmath>
 

@@ -5,6 +5,8 @@
 #include <cgogn/core/functions/traversals/local_cmap2.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
+#include <Eigen/Geometry> // cross()
+
 #include <vector>
 
 namespace cgogn::geometry

@@ -5,6 +5,7 @@
 #include <cgogn/geometry/algos/normal.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <cmath>
 

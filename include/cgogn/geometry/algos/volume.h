@@ -4,6 +4,8 @@
 #include <cgogn/core/functions/traversals/local_cmap3.h>
 #include <cgogn/geometry/algos/normal.h>
 
+#include <Eigen/Geometry> // cross()
+
 namespace cgogn::geometry
 {
 

@@ -4,6 +4,8 @@
 #include <cgogn/core/functions/traversals/global.h>
 #include <cgogn/geometry/algos/normal.h>
 
+#include <Eigen/Geometry> // cross()
+
 #include <vector>
 
 namespace cgogn::geometry
