@@ -47,6 +47,33 @@ void refuse_rebuild_with_views(PyMap<MAP>& w, const char* what)
 								 "the map; delete them (del a) or keep copies (a.copy()) first.");
 }
 
+// "curvature", "gaussian", "area", "quality" or an attribute's name (set in `attribute`).
+render::ColorSource color_source(const std::string& v, std::string& attribute)
+{
+	if (v == "curvature")
+		return render::ColorSource::MeanCurvature;
+	if (v == "gaussian")
+		return render::ColorSource::GaussianCurvature;
+	if (v == "area")
+		return render::ColorSource::Area;
+	if (v == "quality")
+		return render::ColorSource::Quality;
+	if (v == "uniform")
+		return render::ColorSource::Uniform;
+	attribute = v;
+	return render::ColorSource::Attribute;
+}
+
+render::ViewerOptions viewer_options(const std::string& color, bool edges, bool show_defects, const std::string& title)
+{
+	render::ViewerOptions o;
+	o.color = color_source(color, o.attribute);
+	o.edges = edges;
+	o.show_defects = show_defects;
+	o.title = title;
+	return o;
+}
+
 render::RenderOptions render_options(const py::dict& o)
 {
 	render::RenderOptions r;
@@ -94,23 +121,14 @@ render::RenderOptions render_options(const py::dict& o)
 			r.show_defects = value.cast<bool>();
 		else if (k == "legend")
 			r.legend = value.cast<bool>();
-		else if (k == "color")
+		else if (k == "range")
 		{
-			const std::string v = value.cast<std::string>();
-			if (v == "curvature")
-				r.color = render::ColorSource::MeanCurvature;
-			else if (v == "gaussian")
-				r.color = render::ColorSource::GaussianCurvature;
-			else if (v == "area")
-				r.color = render::ColorSource::Area;
-			else if (v == "quality")
-				r.color = render::ColorSource::Quality;
-			else
-			{
-				r.color = render::ColorSource::Attribute;
-				r.attribute = v;
-			}
+			auto range = value.cast<std::pair<double, double>>();
+			r.range_min = range.first;
+			r.range_max = range.second;
 		}
+		else if (k == "color")
+			r.color = color_source(value.cast<std::string>(), r.attribute);
 		else
 			throw py::type_error("render() got an unexpected option '" + k + "'");
 	}
@@ -346,7 +364,21 @@ void bind_surface_algorithms(py::class_<Surface>& c)
 			py::arg("path"),
 			"Writes a PNG picture of the surface, as `cgogn render`: size=(w, h), view='x'|'y'|'z'|'iso', "
 			"azimuth, elevation, shading='flat'|'smooth', ssaa, edges, show_defects, legend, color='curvature'|"
-			"'gaussian'|'area'|'quality'|ATTRIBUTE. Raises cgogn.Error on bad input (empty mesh, NaN positions), "
+			"'gaussian'|'area'|'quality'|ATTRIBUTE, range=(min, max) (default: the 2nd to 98th percentile). "
+			"Raises cgogn.Error on bad input (empty mesh, NaN positions), "
+			"writing no file.")
+		.def(
+			"view",
+			[](Surface& w, const std::string& path, const std::string& color, bool edges, bool show_defects,
+			   const std::string& title) {
+				const render::ViewerOptions o = viewer_options(color, edges, show_defects, title);
+				py::gil_scoped_release release;
+				render::write_viewer_html(w.m, *w.pos, path, o);
+			},
+			py::arg("path"), py::arg("color") = "uniform", py::arg("edges") = false, py::arg("show_defects") = false,
+			py::arg("title") = "",
+			"Writes a self-contained HTML page showing the surface in a browser (WebGL), as `cgogn view`: "
+			"rotate, zoom, pan, edges, boundary, defects and colourings. Raises cgogn.RenderError on bad input, "
 			"writing no file.");
 }
 
@@ -375,7 +407,19 @@ void bind_volume_algorithms(py::class_<VolumeMesh>& c)
 				py::gil_scoped_release release;
 				render::write_png(render::render_volume_boundary(w.m, *w.pos, o), path);
 			},
-			py::arg("path"), "Writes a PNG picture of the boundary of the volume mesh (options as CMap2.render).");
+			py::arg("path"), "Writes a PNG picture of the boundary of the volume mesh (options as CMap2.render).")
+		.def(
+			"view",
+			[](VolumeMesh& w, const std::string& path, const std::string& color, bool edges, bool show_defects,
+			   const std::string& title) {
+				const render::ViewerOptions o = viewer_options(color, edges, show_defects, title);
+				py::gil_scoped_release release;
+				render::write_viewer_html(w.m, *w.pos, path, o);
+			},
+			py::arg("path"), py::arg("color") = "uniform", py::arg("edges") = false, py::arg("show_defects") = false,
+			py::arg("title") = "",
+			"Writes a self-contained HTML page of the volume mesh, with a clipping plane that shows the cells "
+			"it cuts, as `cgogn view`.");
 }
 
 } // namespace

@@ -342,6 +342,34 @@ void bind_common(py::class_<PyMap<MAP>>& c)
 			"(vertices through edges, edges through vertices, faces through edges, volumes through faces). "
 			"Indexes both kinds. O(darts).")
 		.def(
+			"incident",
+			[](W& w, const std::string& source, int64 id, const std::string& target) {
+				const Kind from = kind_of(source), to = kind_of(target);
+				if (MAP::dimension == 2 && (from == Kind::Volume || to == Kind::Volume))
+					throw py::value_error("a surface has no volume relations");
+				ensure_indexed(w.m, from);
+				ensure_indexed(w.m, to);
+				std::vector<uint32> out;
+				with_kind<MAP>(from, [&]<typename FROM>() {
+					const AttributeContainer& c = container_of<FROM::ORBIT>(w.m);
+					if (id < 0 || id >= int64(c.end_index()) || !c.is_live(uint32(id)))
+						throw py::index_error("no live " + std::string(kind_name(from)) + " with id " +
+											  std::to_string(id));
+					const FROM cell{Dart(c.key()[uint32(id)])};
+					with_kind<MAP>(to, [&]<typename TO>() {
+						if constexpr (MAP::dimension == 3 ||
+									  (!std::is_same_v<FROM, typename mesh_traits<MAP>::Volume> &&
+									   !std::is_same_v<TO, typename mesh_traits<MAP>::Volume>))
+							foreach_related<TO>(w.m, cell, [&](TO x) { out.push_back(index_of(w.m, x)); });
+					});
+				});
+				return out;
+			},
+			py::arg("source"), py::arg("id"), py::arg("target"),
+			"The ids of the cells of kind `target` incident to (or adjacent to, for the same kind) the cell `id` "
+			"of kind `source`, as a list: one row of incidence(), for walking a small mesh cell by cell. "
+			"O(size of the neighbourhood).")
+		.def(
 			"compact",
 			[](W& w) {
 				refuse_compaction_with_views(w, "compact");

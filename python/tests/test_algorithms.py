@@ -126,3 +126,26 @@ def test_workers():
     cgogn.set_nb_workers(1)
     assert cgogn.nb_workers() == 1
     cgogn.set_nb_workers(n)
+
+
+def test_view_writes_a_self_contained_page(data, tmp_path):
+    m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+    out = tmp_path / "spot.html"
+    m.view(str(out), color="curvature", edges=True, title="spot")
+    page = out.read_text()
+    assert page.startswith("<!DOCTYPE html>") or page.lstrip().lower().startswith("<!doctype html>")
+    assert "https://" not in page and "spot" in page
+    v = cgogn.load(str(data / "volume" / "liver_hex_624.mesh"))
+    v.view(str(tmp_path / "liver.html"))
+    assert (tmp_path / "liver.html").stat().st_size > 100000
+    with pytest.raises(cgogn.RenderError):
+        cgogn.CMap2().view(str(tmp_path / "empty.html"))
+    assert not (tmp_path / "empty.html").exists()
+
+
+def test_render_range(data, tmp_path):
+    m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+    m.render(str(tmp_path / "a.png"), size=(64, 48), color="area", range=(0.0, 1.0))
+    with pytest.raises(cgogn.RenderError):
+        m.render(str(tmp_path / "b.png"), size=(64, 48), color="area", range=(1.0, 0.0))
+    assert not (tmp_path / "b.png").exists()

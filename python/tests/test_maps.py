@@ -50,6 +50,11 @@ def test_incidences_match_the_faces(data):
     fo, fi = m.incidence("face", "vertex")
     for f in range(m.nb_cells("face")):
         assert set(fi[fo[f] : fo[f + 1]]) == face_vertices[f]
+    # one row at a time, for walking cell by cell
+    for v in range(0, m.nb_cells("vertex"), 7):
+        assert m.incident("vertex", v, "face") == vi[vo[v] : vo[v + 1]].tolist()
+    with pytest.raises(IndexError):
+        m.incident("vertex", 10**6, "face")
     # vertex -> vertex: the neighbours through edges
     ao, ai = m.incidence("vertex", "vertex")
     eo, ei = m.incidence("edge", "vertex")
