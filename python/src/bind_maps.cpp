@@ -189,28 +189,52 @@ py::tuple incidence(MAP& m, Kind from, Kind to)
 	});
 }
 
+// Calls f(dart) on one dart of every face (boundary faces excluded), in
+// traversal order (see foreach_cell): the face container's line order when
+// faces are indexed; otherwise the order of the smallest dart of each face,
+// found without the marks foreach_cell needs (a face starts at a dart whose
+// phi1 cycle holds no smaller dart), which is several times faster on a
+// freshly loaded surface.
+template <typename MAP, typename F>
+void foreach_face_dart(const MAP& m, const F& f)
+{
+	using Face = typename mesh_traits<MAP>::Face;
+	if (MAP::dimension == 3 || is_indexed<Face>(m))
+	{
+		foreach_cell(m, [&](Face x) { return f(x.dart); });
+		return;
+	}
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			return true;
+		for (Dart x = phi1(m, d); x != d; x = phi1(m, x))
+			if (x.index < d.index)
+				return true;
+		return f(d);
+	});
+}
+
 // The vertex ids of the faces (surfaces) or of the boundary faces (volumes).
 template <typename MAP>
 py::tuple faces_csr(MAP& m)
 {
-	using Face = typename mesh_traits<MAP>::Face;
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	std::vector<uint32> offsets{0}, indices;
-	offsets.reserve(nb_cells<Face>(m) + 1);
-	indices.reserve(std::size_t(nb_darts(m)) / 2 + 8);
-	foreach_cell(m, [&](Face f) {
-		Dart d = f.dart;
+	indices.reserve(nb_darts(m));
+	foreach_face_dart(m, [&](const Dart first) {
 		if constexpr (MAP::dimension == 3)
 		{
-			if (!is_boundary(m, phi3(m, d)))
-				return; // an inner face
+			if (!is_boundary(m, phi3(m, first)))
+				return true; // an inner face
 		}
+		Dart d = first;
 		do
 		{
 			indices.push_back(index_of(m, Vertex(d)));
 			d = phi1(m, d);
-		} while (d != f.dart);
+		} while (d != first);
 		offsets.push_back(uint32(indices.size()));
+		return true;
 	});
 	return csr(std::move(offsets), std::move(indices));
 }
@@ -219,13 +243,12 @@ py::tuple faces_csr(MAP& m)
 template <typename MAP>
 py::array_t<uint32> triangles(MAP& m)
 {
-	using Face = typename mesh_traits<MAP>::Face;
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	std::vector<uint32> out;
-	out.reserve(std::size_t(nb_cells<Face>(m)) * 3);
+	out.reserve(nb_darts(m));
 	bool polygons = false;
-	foreach_cell(m, [&](Face f) {
-		const Dart d = f.dart, e = phi1(m, d), g = phi1(m, e);
+	foreach_face_dart(m, [&](const Dart d) {
+		const Dart e = phi1(m, d), g = phi1(m, e);
 		if (phi1(m, g) != d)
 		{
 			polygons = true;
@@ -234,7 +257,9 @@ py::array_t<uint32> triangles(MAP& m)
 		if constexpr (MAP::dimension == 3)
 			if (!is_boundary(m, phi3(m, d)))
 				return true;
-		out.insert(out.end(), {index_of(m, Vertex(d)), index_of(m, Vertex(e)), index_of(m, Vertex(g))});
+		out.push_back(index_of(m, Vertex(d)));
+		out.push_back(index_of(m, Vertex(e)));
+		out.push_back(index_of(m, Vertex(g)));
 		return true;
 	});
 	if (polygons)
