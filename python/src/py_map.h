@@ -5,6 +5,7 @@
 
 #include <cgogn/cgogn.h>
 
+#include <algorithm>
 #include <memory>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -155,6 +156,9 @@ py::array attribute_array(const std::shared_ptr<AttributeArray<T>>& a, uint32 ro
 		py::capsule owner(holder, [](void* p) { delete static_cast<std::shared_ptr<AttributeArray<T>>*>(p); });
 		S* data = reinterpret_cast<S*>(&(*a)[0]);
 		py::array arr(py::dtype::of<S>(), shape, strides, data, owner);
+		if (views.size() >= 64) // drop the references to arrays that are gone
+			views.erase(std::remove_if(views.begin(), views.end(), [](const py::object& w) { return w().is_none(); }),
+						views.end());
 		views.push_back(py::module_::import("weakref").attr("ref")(arr));
 		return arr;
 	}

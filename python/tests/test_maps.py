@@ -132,3 +132,15 @@ def test_split_vertices_get_ids_after_the_others(data):
     p = m.positions
     for v in range(len(points), m.nb_cells("vertex")):
         assert np.array_equal(p[v], p[original[v]])
+
+
+def test_many_position_reads_keep_compaction_possible(data):
+    m = cgogn.load(str(data / "surface" / "hemisphere.off"))
+    total = 0.0
+    for _ in range(1000):
+        total += float(m.positions[0, 0])  # each read makes a view that dies at once
+    import gc
+
+    gc.collect()
+    m.compact()
+    assert m.check_integrity()["ok"]
