@@ -38,15 +38,6 @@ py::array computed(MAP& m, const FILL& fill)
 	return out;
 }
 
-template <typename MAP>
-void refuse_rebuild_with_views(PyMap<MAP>& w, const char* what)
-{
-	if (const std::size_t n = w.live_views(); n > 0)
-		throw std::runtime_error(std::string(what) + ": " + std::to_string(n) +
-								 " NumPy array(s) still alias this map's attributes, and this operation rebuilds "
-								 "the map; delete them (del a) or keep copies (a.copy()) first.");
-}
-
 // "curvature", "gaussian", "area", "quality" or an attribute's name (set in `attribute`).
 render::ColorSource color_source(const std::string& v, std::string& attribute)
 {
@@ -387,7 +378,7 @@ void bind_volume_algorithms(py::class_<VolumeMesh>& c)
 	c.def(
 		 "subdivide",
 		 [](VolumeMesh& w, uint32 iterations) {
-			 refuse_rebuild_with_views(w, "subdivide");
+			 w.refuse_while_aliased("subdivide");
 			 for (uint32 i = 0; i < iterations; ++i)
 			 {
 				 py::gil_scoped_release release;

@@ -271,16 +271,6 @@ py::array_t<uint32> triangles(MAP& m)
 							   heap->data(), owner);
 }
 
-template <typename MAP>
-void refuse_compaction_with_views(PyMap<MAP>& w, const char* what)
-{
-	if (const std::size_t n = w.live_views(); n > 0)
-		throw std::runtime_error(std::string(what) + ": " + std::to_string(n) +
-								 " NumPy array(s) still alias this map's attributes (positions or attribute "
-								 "arrays); they would point to released memory. Delete them (del a) or keep "
-								 "copies (a.copy()) first.");
-}
-
 py::dict integrity_report(const IntegrityReport& r)
 {
 	py::list messages;
@@ -397,7 +387,7 @@ void bind_common(py::class_<PyMap<MAP>>& c)
 		.def(
 			"compact",
 			[](W& w) {
-				refuse_compaction_with_views(w, "compact");
+				w.refuse_while_aliased("compact");
 				compact(w.m);
 			},
 			"Renumbers darts and the cells of every indexed kind densely (ids 0..n-1, order kept). Refused "

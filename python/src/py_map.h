@@ -42,6 +42,16 @@ struct PyMap
 		if (!pos)
 			pos = add_attribute<Vec3, Vertex>(m, "position");
 	}
+	/// Throws RuntimeError when a view is alive: `what` (compaction, a
+	/// rebuild) gives memory back, and the view would point to it.
+	void refuse_while_aliased(const char* what)
+	{
+		if (const std::size_t n = live_views(); n > 0)
+			throw std::runtime_error(std::string(what) + ": " + std::to_string(n) +
+									 " NumPy array(s) still alias this map's attributes (positions or attribute "
+									 "arrays); they would point to released memory. Delete them (del a) or keep "
+									 "copies (a.copy()) first.");
+	}
 	/// Number of views still alive (drops the dead weakrefs).
 	std::size_t live_views()
 	{
