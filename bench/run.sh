@@ -31,7 +31,7 @@ for name in $("$BIN" --benchmark_list_tests --benchmark_filter='^memory/'); do
 done
 
 # shellcheck disable=SC2086
-python3 bench/report.py $files > "$OUT/tables.md"
+python3 bench/suite/report.py $files > "$OUT/tables.md"
 # shellcheck disable=SC2086
-python3 bench/report.py --check $files
+python3 bench/suite/report.py --check $files
 echo "tables: $OUT/tables.md"

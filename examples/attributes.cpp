@@ -1,4 +1,4 @@
-// The "Attributes" section of the API guide, as a program.
+// The "Attributes" section of the CGoGN API guide, as a program.
 #include <cgogn/cgogn.h>
 
 #include <iostream>

@@ -1,4 +1,4 @@
-// The "CellCache" section of the API guide: a cache of the degree 5
+// The "CellCache" section of the CGoGN API guide: a cache of the degree 5
 // vertices, and the snapshot property: cells created while traversing a
 // cache are not visited.
 #include <cgogn/cgogn.h>

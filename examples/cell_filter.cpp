@@ -1,4 +1,4 @@
-// The "CellFilter" section of the API guide: traverse only the faces whose
+// The "CellFilter" section of the CGoGN API guide: traverse only the faces whose
 // area is above a threshold.
 #include <cgogn/cgogn.h>
 

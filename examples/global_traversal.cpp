@@ -1,4 +1,4 @@
-// The "Global traversals" section of the API guide: foreach_cell deduces the
+// The "Global traversals" section of the CGoGN API guide: foreach_cell deduces the
 // cell type from the callable, and a callable returning bool can stop early.
 #include <cgogn/cgogn.h>
 

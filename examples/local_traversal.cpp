@@ -1,4 +1,4 @@
-// The "Local traversals" section of the API guide: a generic average over the
+// The "Local traversals" section of the CGoGN API guide: a generic average over the
 // vertices incident to any cell, in a 2-map and in a 3-map.
 #include <cgogn/cgogn.h>
 

@@ -1,4 +1,4 @@
-// The "Marking" section of the API guide: cell markers, and stores for few cells.
+// The "Marking" section of the CGoGN API guide: cell markers, and stores for few cells.
 #include <cgogn/cgogn.h>
 
 #include <iostream>

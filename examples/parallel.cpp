@@ -1,4 +1,4 @@
-// The "Parallelism" section of the API guide: a parallel displacement of the
+// The "Parallelism" section of the CGoGN API guide: a parallel displacement of the
 // vertices, then the average edge length reduced with per-thread slots
 // indexed by current_thread_index().
 #include <cgogn/cgogn.h>

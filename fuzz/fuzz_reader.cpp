@@ -8,11 +8,11 @@
 // attributes whose names the formats use, with other types: a load that
 // throws must leave that map exactly as it was, and one that succeeds must
 // give a map passing check_integrity.
-#include <cgogn/core/builder/generators.h>
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/integrity.h>
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/build/generators.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/properties/integrity.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/error.h>
 

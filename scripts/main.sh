@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds (release), and runs the
+# The main command: installs what is missing, builds (release), and runs the
 # `cgogn` tool on the mesh the project ships: `info` (counts, topology,
 # geometry), then a conversion OBJ -> binary PLY, `check` of the result, and
 # a picture (PNG) and a viewer page (HTML) of the mesh, whose paths it prints.

@@ -2,7 +2,7 @@
 // `cgogn decimate`: quadric-error edge-collapse decimation of a triangle surface.
 #include "commands.h"
 
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/modeling/decimation.h>
 
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "commands.h"
 #include "mesh_info.h"
 
-#include <cgogn/core/functions/integrity.h>
+#include <cgogn/core/properties/integrity.h>
 
 #include <nlohmann/json.hpp>
 

@@ -2,9 +2,9 @@
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/options.h>
 
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/global.h>
 
 #include "mesh_info.h"
 

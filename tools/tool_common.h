@@ -3,7 +3,7 @@
 // a terminal, format dispatch, loading and saving.
 #pragma once
 
-#include <cgogn/core/functions/attributes.h>
+#include <cgogn/core/attributes/attributes.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/surface.h>
 #include <cgogn/io/volume.h>

@@ -1,4 +1,4 @@
-// The API guide's "Mesh abstraction" and "Attributes" sections, written as a
+// The CGoGN API guide's "Mesh abstraction" and "Attributes" sections, written as a
 // user writes them: `using namespace cgogn;` and the guide's own `using`
 // declarations at file scope.
 #include <cgogn/cgogn.h>

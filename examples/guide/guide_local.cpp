@@ -1,4 +1,4 @@
-// The API guide's "Local traversals" and "Properties" sections, written as a
+// The CGoGN API guide's "Local traversals" and "Properties" sections, written as a
 // user writes them.
 #include <cgogn/cgogn.h>
 

@@ -1,4 +1,4 @@
-// The API guide's "Operators", "Creation" and "Marking" sections, written as
+// The CGoGN API guide's "Operators", "Creation" and "Marking" sections, written as
 // a user writes them.
 #include <cgogn/cgogn.h>
 

@@ -1,4 +1,4 @@
-// The API guide's "Global traversals", "Early stop" and "Parallelism"
+// The CGoGN API guide's "Global traversals", "Early stop" and "Parallelism"
 // sections, written as a user writes them.
 #include <cgogn/cgogn.h>
 

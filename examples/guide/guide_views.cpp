@@ -1,4 +1,4 @@
-// The API guide's "CellFilter" and "CellCache" sections, written as a user
+// The CGoGN API guide's "CellFilter" and "CellCache" sections, written as a user
 // writes them.
 #include <cgogn/cgogn.h>
 

@@ -121,13 +121,13 @@ void bind_shared(py::class_<PyMap<MAP>>& c)
 			py::arg("face"), py::arg("a"), py::arg("b"),
 			"Cuts a face by a new edge between its corners a and b (vertex ids); returns the new edge id.")
 		.def(
-			"can_collapse_edge", [](W& w, int64 edge) { return edge_can_collapse(w.m, cell<Edge>(w.m, edge)); },
+			"can_collapse_edge", [](W& w, int64 edge) { return can_collapse_edge(w.m, cell<Edge>(w.m, edge)); },
 			py::arg("edge"), "True when collapse_edge(edge) keeps the map a manifold (link condition).")
 		.def(
 			"collapse_edge",
 			[](W& w, int64 edge, int64 keep) {
 				const Edge e = directed(w.m, cell<Edge>(w.m, edge), keep);
-				if (!edge_can_collapse(w.m, e))
+				if (!can_collapse_edge(w.m, e))
 					throw py::value_error("collapse_edge: refused by can_collapse_edge");
 				return id_of(w.m, collapse_edge(w.m, e));
 			},
@@ -135,7 +135,7 @@ void bind_shared(py::class_<PyMap<MAP>>& c)
 			"Contracts an edge; the vertex `keep` (an end of it; by default one of them) survives with its id and "
 			"values. Returns the surviving vertex id. ValueError when can_collapse_edge refuses it.")
 		.def(
-			"can_flip_edge", [](W& w, int64 edge) { return edge_can_flip(w.m, cell<Edge>(w.m, edge)); },
+			"can_flip_edge", [](W& w, int64 edge) { return can_flip_edge(w.m, cell<Edge>(w.m, edge)); },
 			py::arg("edge"), "True when flip_edge(edge) is allowed.");
 }
 
@@ -150,7 +150,7 @@ void bind_operators(py::module_& mod)
 			"flip_edge",
 			[](Surface& w, int64 edge) {
 				const CMap2::Edge e = cell<CMap2::Edge>(w.m, edge);
-				if (!edge_can_flip(w.m, e))
+				if (!can_flip_edge(w.m, e))
 					throw py::value_error("flip_edge: refused by can_flip_edge");
 				flip_edge(w.m, e);
 			},
@@ -173,19 +173,19 @@ void bind_operators(py::module_& mod)
 			"flip_edge",
 			[](VolumeMesh& w, int64 edge) {
 				const CMap3::Edge e = cell<CMap3::Edge>(w.m, edge);
-				if (!edge_can_flip(w.m, e))
+				if (!can_flip_edge(w.m, e))
 					throw py::value_error("flip_edge: refused by can_flip_edge");
 				flip_edge(w.m, e);
 			},
 			py::arg("edge"), "3-2 (degree 3) or 4-4 (degree 4) flip of an inner edge of tetrahedra.")
 		.def(
-			"can_flip_face", [](VolumeMesh& w, int64 face) { return face_can_flip(w.m, cell<CMap3::Face>(w.m, face)); },
+			"can_flip_face", [](VolumeMesh& w, int64 face) { return can_flip_face(w.m, cell<CMap3::Face>(w.m, face)); },
 			py::arg("face"), "True when flip_face(face) (2-3 flip) is allowed.")
 		.def(
 			"flip_face",
 			[](VolumeMesh& w, int64 face) {
 				const CMap3::Face f = cell<CMap3::Face>(w.m, face);
-				if (!face_can_flip(w.m, f))
+				if (!can_flip_face(w.m, f))
 					throw py::value_error("flip_face: refused by can_flip_face");
 				return id_of(w.m, flip_face(w.m, f));
 			},

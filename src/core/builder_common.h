@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/indexing.h>
-#include <cgogn/core/types/marker.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/map/indexing.h>
+#include <cgogn/core/marking/marker.h>
 
 #include <algorithm>
 #include <span>

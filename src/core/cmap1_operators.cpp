@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/functions/orbits.h>
+#include <cgogn/core/map/orbits.h>
 #include <cgogn/core/operators/cmap1.h>
 
-#include "index_helpers.h"
+#include "index_lines.h"
 
 namespace cgogn
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/maps/cmap2.h>
+#include <cgogn/core/map/cmap2.h>
 
 #include <vector>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Edge operators of 2-maps: cut, collapse, flip.
-#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
 
-#include "index_helpers.h"
+#include "index_lines.h"
 
 #include <algorithm>
 #include <array>
@@ -55,7 +55,7 @@ bool adjacent_or_same_by_topology(const CMap2& m, CMap2::Vertex c, CMap2::Vertex
 // are wrong (changed behind the library's back) are caught in debug builds.
 bool adjacent_or_same(const CMap2& m, CMap2::Vertex c, CMap2::Vertex y)
 {
-	const AttributeArray<uint32>* idx = m.cell_index_[orbit_index(V)];
+	const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(V)];
 	const uint32 iy = idx ? (*idx)[y.dart.index] : INVALID_INDEX;
 	if (iy == INVALID_INDEX)
 		return adjacent_or_same_by_topology(m, c, y);
@@ -99,7 +99,7 @@ CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 	return CMap2::Vertex(n1);
 }
 
-bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
+bool can_collapse_edge(const CMap2& m, CMap2::Edge e)
 {
 	const Dart d = e.dart;
 	const Dart d2 = phi2(m, d);
@@ -168,7 +168,7 @@ void hand_over_representative(CMap2& m, Dart from, Dart to)
 	const uint32 line = detail::index_or_invalid<O>(m, from);
 	if (line != INVALID_INDEX)
 	{
-		uint32& key = m.cells_[orbit_index(O)]->key()[line];
+		uint32& key = detail::cells_of(m)[orbit_index(O)]->key()[line];
 		if (key == from.index)
 			key = to.index;
 	}
@@ -243,7 +243,7 @@ void remove_two_gon(CMap2& m, Dart p, std::initializer_list<Dart*> held, bool se
 
 CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 {
-	assert(edge_can_collapse(m, e));
+	assert(can_collapse_edge(m, e));
 	const Dart d = e.dart;	  // a -> b, a disappears
 	const Dart d2 = phi2(m, d); // b -> a
 	const uint32 a_line = detail::index_or_invalid<V>(m, d);
@@ -293,7 +293,7 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 		detail::set_representative<V>(m, keep);
 		detail::release_index<V>(m, a_line);
 	}
-	else if (set_indices && m.cell_index_[orbit_index(V)] != nullptr)
+	else if (set_indices && detail::cell_index_of(m)[orbit_index(V)] != nullptr)
 		detail::merge_cell_indices(m, CMap2::Vertex(keep), b_line, a_line);
 	return CMap2::Vertex(keep);
 }
@@ -315,7 +315,7 @@ bool flip_sides_allowed(const CMap2& m, Dart d, Dart d2)
 }
 } // namespace
 
-bool edge_can_flip(const CMap2& m, CMap2::Edge e)
+bool can_flip_edge(const CMap2& m, CMap2::Edge e)
 {
 	const Dart d = e.dart;
 	const Dart d2 = phi2(m, d);
@@ -327,7 +327,7 @@ bool edge_can_flip(const CMap2& m, CMap2::Edge e)
 	return !adjacent_or_same(m, CMap2::Vertex(phi<1, 1>(m, d)), CMap2::Vertex(phi<1, 1>(m, d2)));
 }
 
-bool edge_can_flip_back(const CMap2& m, CMap2::Edge e)
+bool can_flip_back_edge(const CMap2& m, CMap2::Edge e)
 {
 	const Dart d = e.dart;
 	const Dart d2 = phi2(m, d);
@@ -359,7 +359,7 @@ void fix_after_flip(CMap2& m, Dart d, Dart d2, Dart moved_to_f2, Dart moved_to_f
 
 void flip_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 {
-	assert(edge_can_flip(m, e));
+	assert(can_flip_edge(m, e));
 	const Dart d = e.dart, d2 = phi2(m, d);
 	const Dart d1 = phi1(m, d), d11 = phi1(m, d1), dp = phi_1(m, d);
 	const Dart e1 = phi1(m, d2), e11 = phi1(m, e1), ep = phi_1(m, d2);
@@ -377,7 +377,7 @@ void flip_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 
 void flip_back_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 {
-	assert(edge_can_flip_back(m, e));
+	assert(can_flip_back_edge(m, e));
 	const Dart d = e.dart, d2 = phi2(m, d);
 	const Dart d1 = phi1(m, d), dp = phi_1(m, d), dpp = phi_1(m, dp);
 	const Dart e1 = phi1(m, d2), ep = phi_1(m, d2), epp = phi_1(m, ep);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/darts.h>
+#include <cgogn/core/map/darts.h>
 
 namespace cgogn::detail
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Whole-surface operators of 2-maps: closed polyhedra, removal of a
 // component, orientation, merge of maps.
-#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
 
-#include "index_helpers.h"
+#include "index_lines.h"
 
 namespace cgogn
 {
@@ -92,10 +92,10 @@ void remove_volume(CMap2& m, CMap2::Volume w)
 	foreach_dart_of_orbit(m, w, [&](Dart d) { darts.push_back(d); });
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		const AttributeArray<uint32>* idx = m.cell_index_[o];
+		const AttributeArray<uint32>* idx = detail::cell_index_of(m)[o];
 		if (idx == nullptr)
 			continue;
-		AttributeContainer& c = *m.cells_[o];
+		AttributeContainer& c = *detail::cells_of(m)[o];
 		for (Dart d : darts)
 		{
 			const uint32 i = (*idx)[d.index];
@@ -110,13 +110,13 @@ void remove_volume(CMap2& m, CMap2::Volume w)
 void reverse_orientation(CMap2& m)
 {
 	// phi1 becomes phi_1; a dart now starts where its old phi1 started
-	std::vector<uint32> prev(m.darts_->end_index(), INVALID_INDEX);
+	std::vector<uint32> prev(detail::darts_of(m)->end_index(), INVALID_INDEX);
 	foreach_dart(m, [&](Dart d) { prev[phi1(m, d).index] = d.index; });
-	AttributeArray<uint32>* vidx = m.cell_index_[orbit_index(V)];
+	AttributeArray<uint32>* vidx = detail::cell_index_of(m)[orbit_index(V)];
 	std::vector<uint32> new_vertex;
 	if (vidx)
 	{
-		new_vertex.resize(m.darts_->end_index());
+		new_vertex.resize(detail::darts_of(m)->end_index());
 		foreach_dart(m, [&](Dart d) { new_vertex[d.index] = (*vidx)[phi1(m, d).index]; });
 	}
 	foreach_dart(m, [&](Dart d) { detail::set_phi1(m, d, Dart(prev[d.index])); });
@@ -124,7 +124,7 @@ void reverse_orientation(CMap2& m)
 	{
 		foreach_dart(m, [&](Dart d) { (*vidx)[d.index] = new_vertex[d.index]; });
 		// a representative now starts at its old end: its old predecessor starts at the vertex
-		AttributeContainer& vc = *m.cells_[orbit_index(V)];
+		AttributeContainer& vc = *detail::cells_of(m)[orbit_index(V)];
 		for (uint32 i = 0; i < vc.end_index(); ++i)
 			if (vc.is_live(i))
 				vc.key()[i] = phi1(m, Dart(vc.key()[i])).index;
@@ -139,13 +139,13 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 		(
 			[&] {
 				if constexpr (C::ORBIT != Orbit::DART)
-					if (other.cell_index_[orbit_index(C::ORBIT)] != nullptr &&
-						m.cell_index_[orbit_index(C::ORBIT)] == nullptr)
+					if (detail::cell_index_of(other)[orbit_index(C::ORBIT)] != nullptr &&
+						detail::cell_index_of(m)[orbit_index(C::ORBIT)] == nullptr)
 						index_cells<C>(m);
 			}(),
 			...);
 	}(static_cast<mesh_traits<CMap2>::Cells*>(nullptr));
-	std::vector<Dart> copy(other.darts_->end_index());
+	std::vector<Dart> copy(detail::darts_of(other)->end_index());
 	foreach_dart(other, [&](Dart d) { copy[d.index] = detail::add_dart(m); });
 	foreach_dart(other, [&](Dart d) {
 		const Dart c = copy[d.index];
@@ -169,22 +169,22 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 					target->copy_line_from(line_of(i), *a, i);
 		}
 	};
-	copy_attributes(*other.darts_, *m.darts_, [&](uint32 i) { return copy[i].index; });
+	copy_attributes(*detail::darts_of(other), *detail::darts_of(m), [&](uint32 i) { return copy[i].index; });
 	// indexed orbits of other: one new line per line, written on the copied darts
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		const AttributeArray<uint32>* oidx = other.cell_index_[o];
+		const AttributeArray<uint32>* oidx = detail::cell_index_of(other)[o];
 		if (oidx == nullptr)
 			continue;
-		if (m.cell_index_[o] == nullptr)
+		if (detail::cell_index_of(m)[o] == nullptr)
 		{
-			m.cell_index_[o] =
-				m.darts_->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX).get();
-			m.cells_[o]->set_cell_index(m.cell_index_[o]);
+			detail::cell_index_of(m)[o] =
+				detail::darts_of(m)->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX).get();
+			detail::cells_of(m)[o]->set_cell_index(detail::cell_index_of(m)[o]);
 		}
-		AttributeArray<uint32>& midx = *m.cell_index_[o];
-		const AttributeContainer& oc = *other.cells_[o];
-		AttributeContainer& mc = *m.cells_[o];
+		AttributeArray<uint32>& midx = *detail::cell_index_of(m)[o];
+		const AttributeContainer& oc = *detail::cells_of(other)[o];
+		AttributeContainer& mc = *detail::cells_of(m)[o];
 		std::vector<uint32> line(oc.end_index(), INVALID_INDEX);
 		for (uint32 i = 0; i < oc.end_index(); ++i)
 			if (oc.is_live(i))

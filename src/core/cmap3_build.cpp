@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/functions/darts.h>
-#include <cgogn/core/types/dart_marker.h>
+#include <cgogn/core/map/darts.h>
+#include <cgogn/core/marking/dart_marker.h>
 
 #include "cmap3_build.h"
-#include "index_helpers.h"
+#include "index_lines.h"
 
 #include <map>
 #include <unordered_map>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 #include <span>
 #include <utility>

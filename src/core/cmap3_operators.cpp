@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // General operators of 3-maps: creation, closing, sewing, removal, cuts and merges.
-#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
 #include "cmap3_build.h"

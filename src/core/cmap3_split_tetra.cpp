@@ -2,9 +2,9 @@
 // The 1-to-4 split of a tetrahedron, written directly on the darts: the
 // generic cavity re-tetrahedralization (cmap3_cavity.cpp) builds hash maps per
 // call, this one touches 48 darts and allocates nothing.
-#include <cgogn/core/functions/indexing.h>
+#include <cgogn/core/map/indexing.h>
 #include <cgogn/core/operators/cmap3.h>
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/utils/error.h>
 
 #include <array>
 
@@ -86,11 +86,11 @@ public:
 private:
 	AttributeArray<uint32>* index(Orbit o)
 	{
-		return m_.cell_index_[orbit_index(o)];
+		return detail::cell_index_of(m_)[orbit_index(o)];
 	}
 	uint32 new_line(Orbit o, Dart key)
 	{
-		return m_.cells_[orbit_index(o)]->new_line(key.index);
+		return detail::cells_of(m_)[orbit_index(o)]->new_line(key.index);
 	}
 	template <typename FUNC>
 	void for_new_darts(const FUNC& f)
@@ -166,7 +166,7 @@ private:
 		AttributeArray<uint32>* idx = index(Orbit::PHI1_PHI2);
 		if (idx == nullptr)
 			return;
-		AttributeContainer& cells = *m_.cells_[orbit_index(Orbit::PHI1_PHI2)];
+		AttributeContainer& cells = *detail::cells_of(m_)[orbit_index(Orbit::PHI1_PHI2)];
 		for (uint32 f = 0; f < 4; ++f)
 		{
 			uint32 l = f == 0 ? (*idx)[old_[0][0].index] : INVALID_INDEX;
@@ -187,7 +187,7 @@ private:
 	// keeps own's line when own is its representative, else gets a new one
 	uint32 keep_or_new(Orbit o, AttributeArray<uint32>& idx, Dart own)
 	{
-		AttributeContainer& cells = *m_.cells_[orbit_index(o)];
+		AttributeContainer& cells = *detail::cells_of(m_)[orbit_index(o)];
 		const uint32 l = idx[own.index];
 		if (l != INVALID_INDEX && cells.key()[l] == own.index)
 			return l;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Operators of tetrahedral 3-maps: edge collapse, flips (the 1-to-4 split is
 // in cmap3_split_tetra.cpp).
-#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap3.h>
 
 #include "cmap3_cavity.h"
@@ -127,7 +127,7 @@ bool link_is_sphere_or_disk(const std::vector<std::array<uint32, 3>>& triangles)
 }
 } // namespace
 
-bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
+bool can_collapse_edge(const CMap3& m, CMap3::Edge e)
 {
 	const Dart d = e.dart;
 	const Vertex a(d), b(phi1(m, d));
@@ -244,7 +244,7 @@ bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
 
 Vertex collapse_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 {
-	assert(edge_can_collapse(m, e));
+	assert(can_collapse_edge(m, e));
 	const Dart d = e.dart;
 	detail::Cavity cavity(m, volumes_around(m, Vertex(d)));
 	const uint32 la = cavity.label(d), lb = cavity.label(phi1(m, d));
@@ -262,7 +262,7 @@ Vertex collapse_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 	return Vertex(cavity.vertex_dart(lb));
 }
 
-bool face_can_flip(const CMap3& m, CMap3::Face f)
+bool can_flip_face(const CMap3& m, CMap3::Face f)
 {
 	const Dart d = f.dart, d3 = phi3(m, d);
 	if (is_boundary(m, d) || is_boundary(m, d3) || !is_tetra(m, d) || !is_tetra(m, d3))
@@ -279,7 +279,7 @@ bool face_can_flip(const CMap3& m, CMap3::Face f)
 
 CMap3::Edge flip_face(CMap3& m, CMap3::Face f, bool set_indices)
 {
-	assert(face_can_flip(m, f));
+	assert(can_flip_face(m, f));
 	const Dart d = f.dart, d3 = phi3(m, d);
 	detail::Cavity cavity(m, {d, d3});
 	const uint32 a = cavity.label(d), b = cavity.label(phi1(m, d)), c = cavity.label(phi_1(m, d));
@@ -306,7 +306,7 @@ bool ring_of(const CMap3& m, CMap3::Edge e, std::vector<Dart>& faces)
 }
 } // namespace
 
-bool edge_can_flip(const CMap3& m, CMap3::Edge e)
+bool can_flip_edge(const CMap3& m, CMap3::Edge e)
 {
 	std::vector<Dart> faces;
 	if (!ring_of(m, e, faces) || (faces.size() != 3 && faces.size() != 4))
@@ -346,7 +346,7 @@ bool edge_can_flip(const CMap3& m, CMap3::Edge e)
 
 Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 {
-	assert(edge_can_flip(m, e));
+	assert(can_flip_edge(m, e));
 	std::vector<Dart> faces;
 	ring_of(m, e, faces);
 	std::vector<Dart> volumes(faces.begin(), faces.end());

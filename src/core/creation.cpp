@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/functions/darts.h>
+#include <cgogn/core/map/darts.h>
 #include <cgogn/core/operators/creation.h>
 
-#include "index_helpers.h"
+#include "index_lines.h"
 
 namespace cgogn
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/builder/generators.h>
+#include <cgogn/core/build/generators.h>
 
 #include <cmath>
 #include <numbers>

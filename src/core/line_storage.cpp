@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/container/line_storage.h>
+#include <cgogn/core/attributes/line_storage.h>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <sys/mman.h>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/indexing.h>
-#include <cgogn/core/types/marker.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/map/indexing.h>
+#include <cgogn/core/marking/marker.h>
 
 #include "builder_common.h"
 #include "cmap2_close.h"
-#include "index_helpers.h"
+#include "index_lines.h"
 
 #include <algorithm>
 
@@ -51,8 +51,8 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 
 	if (!is_indexed<CMap2::Vertex>(m))
 		index_cells<CMap2::Vertex>(m);
-	AttributeArray<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21)];
-	AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21)];
+	AttributeArray<uint32>& vidx = *detail::cell_index_of(m)[orbit_index(Orbit::PHI21)];
+	AttributeContainer& vertices = *detail::cells_of(m)[orbit_index(Orbit::PHI21)];
 	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
 	report.vertex_offset = offset;
 
@@ -63,7 +63,7 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 		total += s;
 	darts.reserve(std::min(total, face_vertices.size()));
 	// room for the faces' darts only: boundary darts (none on a closed mesh) grow as needed
-	m.darts_->reserve(uint32(std::min<std::size_t>(uint64(m.darts_->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
+	detail::darts_of(m)->reserve(uint32(std::min<std::size_t>(uint64(detail::darts_of(m)->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
 	std::size_t first = 0;
 	std::vector<uint32> sorted;
 	for (uint32 n : face_sizes)

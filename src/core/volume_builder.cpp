@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/indexing.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/map/indexing.h>
 
 #include "builder_common.h"
 #include "cmap3_build.h"
-#include "index_helpers.h"
+#include "index_lines.h"
 
 #include <algorithm>
 #include <array>
@@ -20,8 +20,8 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 
 	if (!is_indexed<CMap3::Vertex>(m))
 		index_cells<CMap3::Vertex>(m);
-	AttributeArray<uint32>& vidx = *m.cell_index_[orbit_index(Orbit::PHI21_PHI31)];
-	AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21_PHI31)];
+	AttributeArray<uint32>& vidx = *detail::cell_index_of(m)[orbit_index(Orbit::PHI21_PHI31)];
+	AttributeContainer& vertices = *detail::cells_of(m)[orbit_index(Orbit::PHI21_PHI31)];
 	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
 	report.vertex_offset = offset;
 	auto origin = [&](Dart d) { return vidx[d.index] - offset; };

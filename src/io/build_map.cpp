@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/io/error.h>
 
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include "map_transfer.h"
@@ -105,7 +105,7 @@ void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string&
 class DartPredictor
 {
 public:
-	explicit DartPredictor(const CMapBase& m) : free_(m.darts_->free_lines()), end_(m.darts_->end_index())
+	explicit DartPredictor(const CMapBase& m) : free_(container_of<Orbit::DART>(m).free_lines()), end_(container_of<Orbit::DART>(m).end_index())
 	{
 	}
 	Dart operator()(uint64 k) const
@@ -150,7 +150,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	// 1. everything that can fail, before touching m
 	check_names<Vertex, Top>(m, d, path);
 	if (uint64(d.nb_vertices()) + container_of<Vertex::ORBIT>(m).end_index() >= INVALID_INDEX ||
-		uint64(d.cell_vertices.size()) * 6 + m.darts_->end_index() >= INVALID_INDEX)
+		uint64(d.cell_vertices.size()) * 6 + container_of<Orbit::DART>(m).end_index() >= INVALID_INDEX)
 		throw Error(path, "the mesh is too large for 32-bit indices");
 
 	// which cells the builder will build (same rules as build_surface/build_volume)

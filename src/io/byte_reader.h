@@ -4,7 +4,7 @@
 
 #include <cgogn/io/error.h>
 
-#include <cgogn/core/types/numeric.h>
+#include <cgogn/core/utils/numeric.h>
 
 #include <bit>
 #include <cstring>

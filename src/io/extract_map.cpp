@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/io/error.h>
 
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/traversals/global.h>
-#include <cgogn/core/types/marker.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/marking/marker.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include "map_transfer.h"

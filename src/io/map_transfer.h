@@ -5,7 +5,7 @@
 
 #include <cgogn/io/options.h>
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 #include "mesh_data.h"
 

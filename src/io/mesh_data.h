@@ -3,7 +3,7 @@
 // named per-vertex and per-cell columns, independent of any map.
 #pragma once
 
-#include <cgogn/core/types/numeric.h>
+#include <cgogn/core/utils/numeric.h>
 
 #include <string>
 #include <vector>

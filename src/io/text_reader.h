@@ -5,7 +5,7 @@
 
 #include <cgogn/io/error.h>
 
-#include <cgogn/core/types/numeric.h>
+#include <cgogn/core/utils/numeric.h>
 
 #include <charconv>
 #include <cmath>

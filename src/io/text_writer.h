@@ -3,7 +3,7 @@
 // reads back to the same double).
 #pragma once
 
-#include <cgogn/core/types/numeric.h>
+#include <cgogn/core/utils/numeric.h>
 
 #include <bit>
 #include <charconv>

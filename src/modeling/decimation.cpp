@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/modeling/decimation.h>
 
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/global.h>
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/modeling/quadric.h>
 
 #include <Eigen/Geometry>
@@ -70,7 +70,7 @@ public:
 				continue;
 			if (c.error > o_.max_error)
 				break;
-			if (!edge_can_collapse(m_, Edge(c.dart)))
+			if (!can_collapse_edge(m_, Edge(c.dart)))
 				continue;
 			Vec3 target;
 			placement(c.dart, target);

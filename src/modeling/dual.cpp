@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/global.h>
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/algos/centroid.h>
 #include <cgogn/modeling/dual.h>
 
@@ -24,7 +24,7 @@ std::shared_ptr<AttributeArray<Vec3>> dual(const CMap2& m, const AttributeArray<
 		                    " boundary loop(s); the dual is defined for closed surfaces (fill the holes first)");
 
 	// dual vertex of each face, by dart
-	std::vector<uint32> face_of_dart(m.darts_->end_index(), INVALID_INDEX);
+	std::vector<uint32> face_of_dart(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
 	std::vector<Vec3> centers;
 	foreach_cell(m,
 	             [&](CMap2::Face f)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/modeling/fairing.h>
 
 #include <Eigen/Geometry>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/modeling/hole_filling.h>
 #include <cgogn/modeling/triangulation.h>
 
@@ -61,7 +61,7 @@ void fill_loop(CMap2& m, AttributeArray<Vec3>& pos, const std::vector<Dart>& loo
 	for (Dart d : loop)
 		patch.target_length[index_of(m, Vertex(d))] = mean_incident_length(m, pos, Vertex(d));
 
-	cgogn::fill_hole(m, loop[0]);
+	cgogn::fill_hole_with_face(m, loop[0]);
 	if (optimal)
 		detail::cut_hole(m, loop, triangulation);
 	else

@@ -2,7 +2,7 @@
 // The steps of modeling::fill_hole, one file each (internal).
 #pragma once
 
-#include <cgogn/core/types/marker.h>
+#include <cgogn/core/marking/marker.h>
 #include <cgogn/modeling/hole_filling.h>
 
 #include <unordered_map>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Refinement of a hole's patch to the density of the surface around it
 // (Liepa 2003): centroid splits and Delaunay flips.
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
@@ -57,7 +57,7 @@ bool is_inner_edge(const CMap2 &m, const Patch &patch, Dart d)
 
 bool relax_edge(CMap2& m, const AttributeArray<Vec3>& pos, const Patch& patch, Dart d)
 {
-	if (!is_inner_edge(m, patch, d) || !should_flip(m, pos, d) || !edge_can_flip(m, CMap2::Edge(d)))
+	if (!is_inner_edge(m, patch, d) || !should_flip(m, pos, d) || !can_flip_edge(m, CMap2::Edge(d)))
 		return false;
 	flip_edge(m, CMap2::Edge(d));
 	return true;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Minimal-weight triangulation of a hole's boundary loop (Liepa 2003).
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/geometry/algos/normal.h>
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/modeling/remeshing.h>
 
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/global.h>
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/operators/cmap2.h>
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/algos/angle.h>
 #include <cgogn/geometry/algos/length.h>
 #include <cgogn/modeling/triangle_tree.h>
@@ -271,7 +271,7 @@ private:
 		const Dart gone = locked_a ? d2 : d;
 		const Vec3 x = locked_a ? position(d) : (locked_b ? position(d2) : 0.5 * (position(d) + position(d2)));
 		// the geometric tests first: they are cheaper than the link condition and fail more often
-		if (!stays_short(gone, x) || !normals_stay(gone, x) || !edge_can_collapse(m_, Edge(gone)))
+		if (!stays_short(gone, x) || !normals_stay(gone, x) || !can_collapse_edge(m_, Edge(gone)))
 			return false;
 		const uint8 kept_flags = uint8(flags(d) | flags(d2)); // at most one end is locked
 		// a vanished triangle merges its two other edges (collapse_edge keeps
@@ -345,7 +345,7 @@ private:
 			const int va = valence_excess(d), vb = valence_excess(d2), vc = valence_excess(c), ve = valence_excess(e);
 			const int before = std::abs(va) + std::abs(vb) + std::abs(vc) + std::abs(ve);
 			const int after = std::abs(va - 1) + std::abs(vb - 1) + std::abs(vc + 1) + std::abs(ve + 1);
-			if (after >= before || !edge_can_flip(m_, Edge(d)) || !flip_keeps_orientation(d))
+			if (after >= before || !can_flip_edge(m_, Edge(d)) || !flip_keeps_orientation(d))
 				continue;
 			flip_edge(m_, Edge(d));
 			++r_.flips;

@@ -66,7 +66,7 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos,
 	// 1. the face points, and for each dart the slot of its face's point
 	// (boundary darts have none), so that edges and vertices read them
 	std::vector<Vec3> face_points(faces.size());
-	std::vector<uint32> face_of_dart(m.darts_->end_index(), INVALID_INDEX);
+	std::vector<uint32> face_of_dart(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
 	for (std::size_t i = 0; i < faces.size(); ++i)
 	{
 		if (!step.computing(i, total))

@@ -4,10 +4,10 @@
 // the two-phase progress of a step.
 #pragma once
 
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/indexing.h>
-#include <cgogn/core/functions/orbits.h>
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/indexing.h>
+#include <cgogn/core/map/orbits.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/modeling/subdivision.h>
 
 #include <algorithm>

@@ -28,7 +28,7 @@ bool has_degree_at_least(const CMap2 &m, Dart d, uint32 k)
 	return true;
 }
 
-/// edge_can_flip for an old edge d between two split triangles, in O(degree)
+/// can_flip_edge for an old edge d between two split triangles, in O(degree)
 /// instead of O(degree^2): the new edge would join the centroids c1, c2 of
 /// the two triangles, which fails only when they are already joined (two
 /// triangles sharing two edges: the first flip joined them) or when an end

@@ -4,11 +4,12 @@
 // cell as the scheme needs), then the map is rebuilt with build_volume: far
 // simpler and faster than cutting every cell with cut_edge / cut_face /
 // cut_volume, which would re-sew the same faces many times.
-#include <cgogn/core/builder/map_builder.h>
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/indexing.h>
-#include <cgogn/core/functions/orbits.h>
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/indexing.h>
+#include <cgogn/core/map/orbits.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/operators/maintenance.h>
 #include <cgogn/modeling/subdivision.h>
 
 #include <Eigen/Geometry>
@@ -82,7 +83,7 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 {
 	r.vertex_id.assign(pos.container()->end_index(), INVALID_INDEX);
 	foreach_cell(m, [&](Vertex v) { r.vertex_id[index_of(m, v)] = r.add(position(m, pos, v.dart)); });
-	r.edge_id.assign(m.darts_->end_index(), INVALID_INDEX);
+	r.edge_id.assign(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
 	foreach_cell(m,
 	             [&](Edge e)
 	             {
@@ -91,7 +92,7 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 	             });
 	if (!faces)
 		return;
-	r.face_id.assign(m.darts_->end_index(), INVALID_INDEX);
+	r.face_id.assign(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
 	foreach_cell(m,
 	             [&](Face f)
 	             {
@@ -113,11 +114,7 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 /// orbit is indexed), then builds the listed cells into it.
 void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 cell_size)
 {
-	m.incidence_tables_.clear();
-	m.darts_->clear();
-	m.nb_boundary_darts_ = 0;
-	for (auto &c : m.cells_)
-		c->clear();
+	clear(m);
 	const std::vector<uint32> sizes(r.cell_vertices.size() / cell_size, cell_size);
 	const BuildReport report = build_volume(m, uint32(r.positions.size()), sizes, r.cell_vertices);
 	for (std::size_t i = 0; i < r.positions.size(); ++i)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/modeling/triangle_tree.h>
 
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/traversals/global.h>
 
 #include <algorithm>
 #include <cassert>

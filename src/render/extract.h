@@ -3,8 +3,8 @@
 // by the rasterizer's entry points and by the HTML viewer.
 #pragma once
 
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/algos/area.h>
 #include <cgogn/geometry/algos/gaussian_curvature.h>
 #include <cgogn/geometry/algos/mean_curvature.h>

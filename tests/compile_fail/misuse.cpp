@@ -53,6 +53,8 @@ void misuse()
 	value(c2, area, CMap2::Face(Dart(0))) = 1.0;
 #elif CASE(attribute_indexed_by_other_orbit)
 	(*area)[CMap2::Vertex(Dart(0))] = 1.0;
+#elif CASE(map_members_are_private)
+	(void)m2.darts_; // the maps' containers are reached through the free functions
 #else
 #error "unknown CGOGN_CASE"
 #endif

@@ -1,4 +1,4 @@
-// The attribute section of the API guide, as tests.
+// The attribute section of the CGoGN API guide, as tests.
 #include <cgogn/core.h>
 
 #include <gtest/gtest.h>

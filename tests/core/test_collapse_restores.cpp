@@ -11,7 +11,7 @@
 #include <random>
 
 #include "cgogn_test_data.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -76,7 +76,7 @@ void split_then_collapse(CMap2& m, const std::vector<Face>& faces, const std::ve
 	for (std::size_t k : collapse_order)
 	{
 		const Edge e(centres[k].dart);
-		ASSERT_TRUE(edge_can_collapse(m, e));
+		ASSERT_TRUE(can_collapse_edge(m, e));
 		const uint32 survivor = index_of(m, Vertex(phi2(m, e.dart)));
 		const Vertex v = collapse_edge(m, e);
 		EXPECT_EQ(index_of(m, v), survivor);
@@ -166,7 +166,7 @@ TEST(CollapseRestores, TheLowerEdgeOfAVanishingTriangleSurvivesWhole)
 	const auto faces = test::all<Face>(m);
 	split_then_collapse(m, {faces[3], faces[10], faces[20]}, {2, 0, 1});
 	const Edge e = test::all<Edge>(m)[17];
-	ASSERT_TRUE(edge_can_collapse(m, e));
+	ASSERT_TRUE(can_collapse_edge(m, e));
 	std::vector<uint32> expected_gone = {e.dart.index, phi2(m, e.dart).index};
 	for (Dart side : {e.dart, phi2(m, e.dart)})
 	{
@@ -243,7 +243,7 @@ TEST(CollapseRestores, ATriangleSharingTwoEdgesWithTheOtherFace)
 			around_b.push_back(phi2(m, d));
 		});
 		const Edge e(around_b[which]); // b -> x or x -> b
-		ASSERT_TRUE(edge_can_collapse(m, e)) << which;
+		ASSERT_TRUE(can_collapse_edge(m, e)) << which;
 		const uint32 survivor = index_of(m, Vertex(phi2(m, e.dart)));
 		const Vertex v = collapse_edge(m, e);
 		EXPECT_EQ(index_of(m, v), survivor);

@@ -1,4 +1,4 @@
-#include <cgogn/core/container/attribute_container.h>
+#include <cgogn/core/attributes/attribute_container.h>
 
 #include <gtest/gtest.h>
 

@@ -30,7 +30,7 @@ Dart inner_dart(const CMap2& m)
 }
 AttributeArray<uint32>& index_attr(CMap2& m, Orbit o)
 {
-	return *m.cell_index_[orbit_index(o)];
+	return *cgogn::detail::cell_index_of(m)[orbit_index(o)];
 }
 } // namespace
 
@@ -101,18 +101,18 @@ TEST(Integrity, BoundaryDartCount)
 	EXPECT_TRUE(check_integrity(m).ok());
 	uint32 marked = 0;
 	foreach_dart(m, [&](Dart d) { marked += is_boundary(m, d); });
-	EXPECT_EQ(m.nb_boundary_darts_, marked);
+	EXPECT_EQ(cgogn::detail::nb_boundary_darts_of(m), marked);
 	Dart b;
 	foreach_dart(m, [&](Dart d) {
 		b = d;
 		return !is_boundary(m, d);
 	});
-	fill_hole(m, b); // the grid's only hole
+	fill_hole_with_face(m, b); // the grid's only hole
 	EXPECT_FALSE(has_boundary(m));
-	EXPECT_EQ(m.nb_boundary_darts_, 0u);
+	EXPECT_EQ(cgogn::detail::nb_boundary_darts_of(m), 0u);
 	EXPECT_TRUE(check_integrity(m).ok());
 	foreach_cell(m, [&](CMap2::Vertex v) { EXPECT_FALSE(is_incident_to_boundary(m, v)); });
-	m.boundary_->set(inner_dart(m).index); // behind the count's back
+	cgogn::detail::boundary_of(m)->set(inner_dart(m).index); // behind the count's back
 	EXPECT_TRUE(check_integrity(m).has(Kind::BoundaryCountWrong));
 }
 
@@ -228,7 +228,7 @@ TEST(Integrity, ReportCountsBeyondTheDescribedOnes)
 TEST(Integrity, FreeListDuplicate)
 {
 	CMap2 m = indexed_grid();
-	AttributeContainer& faces = *m.cells_[orbit_index(Orbit::PHI1)];
+	AttributeContainer& faces = *cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI1)];
 	const Dart d = inner_dart(m);
 	// a face released twice: its line is twice in the free list
 	const uint32 line = index_attr(m, Orbit::PHI1)[d.index];
@@ -241,7 +241,7 @@ TEST(Integrity, FreeListDuplicate)
 TEST(Integrity, LiveLineOnTheFreeList)
 {
 	CMap2 m = indexed_grid();
-	AttributeContainer& faces = *m.cells_[orbit_index(Orbit::PHI1)];
+	AttributeContainer& faces = *cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI1)];
 	const Dart d = inner_dart(m);
 	const uint32 line = index_attr(m, Orbit::PHI1)[d.index];
 	faces.release_line(line);
@@ -254,15 +254,15 @@ TEST(Integrity, StaleValuesPastTheEnd)
 	{
 		// a dart line never handed out that holds an index
 		CMap2 m = indexed_grid();
-		ASSERT_LT(m.darts_->end_index(), m.darts_->capacity());
-		index_attr(m, Orbit::PHI2)[m.darts_->end_index()] = 0;
+		ASSERT_LT(cgogn::detail::darts_of(m)->end_index(), cgogn::detail::darts_of(m)->capacity());
+		index_attr(m, Orbit::PHI2)[cgogn::detail::darts_of(m)->end_index()] = 0;
 		const IntegrityReport r = check_integrity(m);
 		EXPECT_TRUE(r.has(Kind::StaleUnusedLine)) << r.to_string();
 	}
 	{
 		// a cell line never handed out that holds a representative
 		CMap2 m = indexed_grid();
-		AttributeContainer& vertices = *m.cells_[orbit_index(Orbit::PHI21)];
+		AttributeContainer& vertices = *cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)];
 		ASSERT_LT(vertices.end_index(), vertices.capacity());
 		vertices.key()[vertices.end_index()] = 0;
 		EXPECT_TRUE(check_integrity(m).has(Kind::StaleUnusedLine));

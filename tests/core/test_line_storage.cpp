@@ -1,4 +1,4 @@
-#include <cgogn/core/container/line_storage.h>
+#include <cgogn/core/attributes/line_storage.h>
 
 #include <gtest/gtest.h>
 

@@ -45,14 +45,14 @@ TEST(Maintenance, CompactAfterEditingKeepsCellsAndValues)
 		std::vector<CMap2::Edge> edges;
 		foreach_cell(m, [&](CMap2::Edge e) { edges.push_back(e); });
 		CMap2::Edge e = edges[rng() % edges.size()];
-		if (edge_can_collapse(m, e))
+		if (can_collapse_edge(m, e))
 			collapse_edge(m, e);
 	}
 	const auto before = neighbourhoods(m, *pos);
 	const uint32 darts = nb_darts(m), faces = nb_cells<CMap2::Face>(m);
-	ASSERT_LT(darts, m.darts_->end_index()); // there are holes
+	ASSERT_LT(darts, cgogn::detail::darts_of(m)->end_index()); // there are holes
 	CompactMaps maps = compact(m);
-	EXPECT_EQ(m.darts_->end_index(), darts);
+	EXPECT_EQ(cgogn::detail::darts_of(m)->end_index(), darts);
 	EXPECT_EQ(nb_darts(m), darts);
 	EXPECT_EQ(container_of<Orbit::PHI1>(m).end_index(), faces);
 	EXPECT_EQ(container_of<Orbit::PHI21>(m).end_index(), nb_cells<CMap2::Vertex>(m));

@@ -4,7 +4,7 @@
 // as documented, caches are dropped, containers hand out default values.
 #include <cgogn/core.h>
 
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -61,8 +61,8 @@ void expect_consistent_containers(const CMap2& m)
 		std::sort(v.begin(), v.end());
 		return std::adjacent_find(v.begin(), v.end()) == v.end();
 	};
-	EXPECT_TRUE(no_duplicates(m.darts_->free_lines()));
-	for (const auto& c : m.cells_)
+	EXPECT_TRUE(no_duplicates(cgogn::detail::darts_of(m)->free_lines()));
+	for (const auto& c : cgogn::detail::cells_of(m))
 		EXPECT_TRUE(no_duplicates(c->free_lines()));
 }
 } // namespace
@@ -74,12 +74,12 @@ TEST(OperatorContracts, FlipBackHasItsOwnPredicate)
 	CMap2 m = surface(5, {{0, 1, 2}, {1, 0, 3, 4}, {2, 1, 4}});
 	const Edge e(dart_from(m, 0, 1));
 	ASSERT_TRUE(e.dart.is_valid());
-	EXPECT_TRUE(edge_can_flip(m, e));		// joins 2 and 3
-	EXPECT_FALSE(edge_can_flip_back(m, e)); // would join 2 and 4, already joined
+	EXPECT_TRUE(can_flip_edge(m, e));		// joins 2 and 3
+	EXPECT_FALSE(can_flip_back_edge(m, e)); // would join 2 and 4, already joined
 	// the forward flip is fine, and so is flipping it back
 	flip_edge(m, e);
 	EXPECT_INTEGRITY(m);
-	ASSERT_TRUE(edge_can_flip_back(m, e));
+	ASSERT_TRUE(can_flip_back_edge(m, e));
 	flip_back_edge(m, e);
 	EXPECT_INTEGRITY(m);
 	EXPECT_EQ(dart_from(m, 0, 1), e.dart);
@@ -108,7 +108,7 @@ TEST(OperatorContracts, BoundaryChangesDropIncidenceCaches)
 
 	VF::build(m);
 	ASSERT_TRUE(is_boundary(m, inner.dart));
-	fill_hole(m, inner.dart);
+	fill_hole_with_face(m, inner.dart);
 	EXPECT_FALSE(VF::is_built(m));
 	EXPECT_INTEGRITY(m);
 
@@ -156,8 +156,8 @@ TEST(OperatorContracts, CollapseRefusedAlongAPinchedTriangle)
 	{
 		const Dart d = dart_from(m, a, b);
 		ASSERT_TRUE(d.is_valid());
-		EXPECT_FALSE(edge_can_collapse(m, Edge(d))) << a << " -> " << b;
-		EXPECT_FALSE(edge_can_collapse(m, Edge(phi2(m, d)))) << b << " -> " << a;
+		EXPECT_FALSE(can_collapse_edge(m, Edge(d))) << a << " -> " << b;
+		EXPECT_FALSE(can_collapse_edge(m, Edge(phi2(m, d)))) << b << " -> " << a;
 	}
 }
 
@@ -173,7 +173,7 @@ TEST(OperatorContracts, NewLinesAfterCompactionHoldDefaults)
 		// free some lines, then give every live line a value
 		for (int i = 0; i < 4; ++i)
 		{
-			const Edge e = test::find<Edge>(m, [&](Edge x) { return edge_can_collapse(m, x); });
+			const Edge e = test::find<Edge>(m, [&](Edge x) { return can_collapse_edge(m, x); });
 			collapse_edge(m, e);
 		}
 		auto vtag = get_attribute<uint32, Vertex>(m, "vtag");
@@ -221,8 +221,8 @@ TEST(OperatorContracts, BoundaryFaceOfOneEdge)
 		ASSERT_TRUE(b.is_valid());
 		ASSERT_EQ(phi1(m, b), b);
 		// its edge is a loop: it cannot be contracted
-		EXPECT_FALSE(edge_can_collapse(m, Edge(b)));
-		EXPECT_FALSE(edge_can_collapse(m, Edge(phi2(m, b))));
+		EXPECT_FALSE(can_collapse_edge(m, Edge(b)));
+		EXPECT_FALSE(can_collapse_edge(m, Edge(phi2(m, b))));
 		remove_face(m, Face(phi2(m, b)));
 		EXPECT_INTEGRITY(m);
 		expect_consistent_containers(m);

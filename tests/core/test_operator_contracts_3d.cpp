@@ -4,7 +4,7 @@
 // predicates refuse the pinched configurations the operators cannot handle.
 #include <cgogn/core.h>
 
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -62,7 +62,7 @@ Edge collapsible_from(const CMap3& m, uint32 a)
 {
 	Edge r;
 	foreach_dart(m, [&](Dart d) {
-		if (is_boundary(m, d) || index_of(m, Vertex(d)) != a || !edge_can_collapse(m, Edge(d)))
+		if (is_boundary(m, d) || index_of(m, Vertex(d)) != a || !can_collapse_edge(m, Edge(d)))
 			return true;
 		r = Edge(d);
 		return false;
@@ -114,16 +114,16 @@ TEST(OperatorContracts3, EveryOperatorDropsIncidenceCaches)
 		{"collapse_edge",
 		 [](CMap3& m) {
 			 split_tetra(m, all<Volume>(m)[0]);
-			 const Edge e = find<Edge>(m, [&](Edge x) { return edge_can_collapse(m, x); });
+			 const Edge e = find<Edge>(m, [&](Edge x) { return can_collapse_edge(m, x); });
 			 VW::build(m);
 			 collapse_edge(m, e);
 		 }},
-		{"flip_face", [](CMap3& m) { flip_face(m, find<Face>(m, [&](Face f) { return face_can_flip(m, f); })); }},
+		{"flip_face", [](CMap3& m) { flip_face(m, find<Face>(m, [&](Face f) { return can_flip_face(m, f); })); }},
 		{"flip_edge",
 		 [](CMap3& m) {
-			 const Edge e = flip_face(m, find<Face>(m, [&](Face f) { return face_can_flip(m, f); }));
+			 const Edge e = flip_face(m, find<Face>(m, [&](Face f) { return can_flip_face(m, f); }));
 			 VW::build(m);
-			 ASSERT_TRUE(edge_can_flip(m, e));
+			 ASSERT_TRUE(can_flip_edge(m, e));
 			 flip_edge(m, e);
 		 }},
 	};
@@ -286,7 +286,7 @@ TEST(OperatorContracts3, UnsewAndRemoveLines)
 TEST(OperatorContracts3, FlipsKeepTheSurroundingLines)
 {
 	CMap3 m = indexed(tet_grid_soup(1, 1, 1));
-	const Face f = find<Face>(m, [&](Face x) { return face_can_flip(m, x); });
+	const Face f = find<Face>(m, [&](Face x) { return can_flip_face(m, x); });
 	ASSERT_TRUE(f.dart.is_valid());
 	const Dart outside = phi3(m, phi2(m, f.dart)); // a face of the first tet, seen from outside it
 	const uint32 face = index_of(m, Face(outside)), vertex = index_of(m, Vertex(f.dart));
@@ -377,14 +377,14 @@ TEST(OperatorContracts3, TetPredicatesRefuseASphereWithADoubleEdge)
 	ASSERT_INTEGRITY(m);
 
 	foreach_dart_of_orbit(m, Face(f1.dart), [&](Dart x) {
-		EXPECT_FALSE(face_can_flip(m, Face(x))) << "dart " << x.index;
-		EXPECT_FALSE(face_can_flip(m, Face(phi3(m, x)))) << "dart " << x.index;
+		EXPECT_FALSE(can_flip_face(m, Face(x))) << "dart " << x.index;
+		EXPECT_FALSE(can_flip_face(m, Face(phi3(m, x)))) << "dart " << x.index;
 	});
 	foreach_dart(m, [&](Dart x) {
 		if (!is_boundary(m, x))
 		{
-			EXPECT_FALSE(edge_can_flip(m, Edge(x))) << "dart " << x.index;
-			EXPECT_FALSE(edge_can_collapse(m, Edge(x))) << "dart " << x.index;
+			EXPECT_FALSE(can_flip_edge(m, Edge(x))) << "dart " << x.index;
+			EXPECT_FALSE(can_collapse_edge(m, Edge(x))) << "dart " << x.index;
 		}
 	});
 	EXPECT_THROW(split_tetra(m, sphere), TopologyError);

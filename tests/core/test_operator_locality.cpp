@@ -9,7 +9,7 @@
 #include <cgogn/core.h>
 
 #include "component_split.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -91,7 +91,7 @@ const std::vector<Edit<CMap3>>& volume_edits()
 		{"flip_face",
 		 [](CMap3& m) {
 			 const CMap3::Face f(inner_face_dart(m));
-			 ASSERT_TRUE(face_can_flip(m, f));
+			 ASSERT_TRUE(can_flip_face(m, f));
 			 flip_face(m, f);
 		 }},
 		{"collapse_edge",
@@ -99,7 +99,7 @@ const std::vector<Edit<CMap3>>& volume_edits()
 			 // the first edge of the corner tetrahedron the predicate accepts
 			 Dart e;
 			 foreach_dart_of_orbit(m, CMap3::Volume(Dart(0)), [&](Dart d) {
-				 if (edge_can_collapse(m, CMap3::Edge(d)))
+				 if (can_collapse_edge(m, CMap3::Edge(d)))
 					 e = d;
 				 return !e.is_valid();
 			 });
@@ -115,7 +115,7 @@ const std::vector<Edit<CMap2>>& surface_edits()
 	static const std::vector<Edit<CMap2>> edits = {
 		{"cut_edge", [](CMap2& m) { cut_edge(m, CMap2::Edge(Dart(0))); }},
 		{"remove_face", [](CMap2& m) { remove_face(m, CMap2::Face(Dart(0))); }},
-		{"fill_hole",
+		{"fill_hole_with_face",
 		 [](CMap2& m) {
 			 // the first face away from the border, in container order
 			 Dart d;
@@ -124,9 +124,9 @@ const std::vector<Edit<CMap2>>& surface_edits()
 					 d = x;
 			 });
 			 remove_face(m, CMap2::Face(d));
-			 ASSERT_TRUE(can_fill_hole(m, d));
+			 ASSERT_TRUE(can_fill_hole_with_face(m, d));
 			 detail::reset_reindexed_dart_count();
-			 fill_hole(m, d);
+			 fill_hole_with_face(m, d);
 		 }},
 		{"unsew_faces",
 		 [](CMap2& m) {
@@ -148,9 +148,9 @@ const std::vector<Edit<CMap2>>& surface_edits()
 		{"collapse_edge",
 		 [](CMap2& m) {
 			 Dart d(0);
-			 for (uint32 i = 0; i < 3 && !edge_can_collapse(m, CMap2::Edge(d)); ++i)
+			 for (uint32 i = 0; i < 3 && !can_collapse_edge(m, CMap2::Edge(d)); ++i)
 				 d = phi1(m, d);
-			 ASSERT_TRUE(edge_can_collapse(m, CMap2::Edge(d)));
+			 ASSERT_TRUE(can_collapse_edge(m, CMap2::Edge(d)));
 			 collapse_edge(m, CMap2::Edge(d));
 		 }},
 	};
@@ -185,7 +185,7 @@ TEST(OperatorLocality, VolumeEditsVisitTheSameDartsOnSmallAndLargeMeshes)
 }
 
 // 2-maps index the cells of an edit directly; the count covers the walks of
-// components (remove_face, fill_hole, sew and unsew).
+// components (remove_face, fill_hole_with_face, sew and unsew).
 TEST(OperatorLocality, SurfaceEditsVisitTheSameDartsOnSmallAndLargeMeshes)
 {
 	expect_local(surface_edits(), grid, 8, 300, 500);

@@ -1,6 +1,6 @@
 #include <cgogn/core.h>
 
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -56,7 +56,7 @@ TEST(Operators2, CollapseEdgeOnATriangleTorus)
 	CMap2 m = indexed(torus_soup(6, 5, true));
 	const Counts before = counts(m);
 	Edge e = all<Edge>(m)[7];
-	ASSERT_TRUE(edge_can_collapse(m, e));
+	ASSERT_TRUE(can_collapse_edge(m, e));
 	const uint32 survivor_line = index_of(m, Vertex(phi2(m, e.dart)));
 	Vertex v = collapse_edge(m, e);
 	EXPECT_EQ(index_of(m, v), survivor_line);
@@ -69,7 +69,7 @@ TEST(Operators2, LinkConditionRefusals)
 	{
 		CMap2 m;
 		add_face(m, 3); // a lone triangle: nothing can collapse
-		foreach_cell(m, [&](Edge e) { EXPECT_FALSE(edge_can_collapse(m, e)); });
+		foreach_cell(m, [&](Edge e) { EXPECT_FALSE(can_collapse_edge(m, e)); });
 	}
 	{
 		CMap2 m = indexed(grid_soup(2, 2, true));
@@ -80,10 +80,10 @@ TEST(Operators2, LinkConditionRefusals)
 										  is_incident_to_boundary(m, Vertex(phi2(m, e.dart)));
 			if (both_on_boundary && !is_incident_to_boundary(m, e))
 			{
-				EXPECT_FALSE(edge_can_collapse(m, e));
+				EXPECT_FALSE(can_collapse_edge(m, e));
 				++refused;
 			}
-			else if (edge_can_collapse(m, e))
+			else if (can_collapse_edge(m, e))
 				++allowed;
 		});
 		EXPECT_GT(refused, 0u);
@@ -95,11 +95,11 @@ TEST(Operators2, LinkConditionRefusals)
 		add_tetra(m);
 		index_everything(m);
 		Edge e = all<Edge>(m)[0];
-		ASSERT_TRUE(edge_can_collapse(m, e));
+		ASSERT_TRUE(can_collapse_edge(m, e));
 		collapse_edge(m, e);
 		EXPECT_EQ(counts(m), (Counts{3, 3, 2, 1}));
 		EXPECT_INTEGRITY(m);
-		foreach_cell(m, [&](Edge x) { EXPECT_FALSE(edge_can_collapse(m, x)); });
+		foreach_cell(m, [&](Edge x) { EXPECT_FALSE(can_collapse_edge(m, x)); });
 	}
 }
 
@@ -107,7 +107,7 @@ TEST(Operators2, CollapseABoundaryEdge)
 {
 	CMap2 m = indexed(grid_soup(3, 3, true));
 	const Counts before = counts(m);
-	Edge e = find<Edge>(m, [&](Edge x) { return is_incident_to_boundary(m, x) && edge_can_collapse(m, x); });
+	Edge e = find<Edge>(m, [&](Edge x) { return is_incident_to_boundary(m, x) && can_collapse_edge(m, x); });
 	ASSERT_TRUE(e.is_valid());
 	collapse_edge(m, e);
 	EXPECT_EQ(counts(m), (Counts{before.v - 1, before.e - 2, before.f - 1, 1}));
@@ -120,7 +120,7 @@ TEST(Operators2, FlipAndFlipBack)
 	CMap2 m = indexed(torus_soup(6, 6, true));
 	const Counts before = counts(m);
 	Edge e = all<Edge>(m)[3];
-	ASSERT_TRUE(edge_can_flip(m, e));
+	ASSERT_TRUE(can_flip_edge(m, e));
 	// darts that keep their origin through the flip (e.dart itself moves)
 	const Vertex a(phi<2, 1>(m, e.dart)), b(phi1(m, e.dart));
 	const Vertex c(phi<1, 1>(m, e.dart)), y(phi<1, 1>(m, phi2(m, e.dart)));
@@ -145,7 +145,7 @@ TEST(Operators2, FlipAndFlipBack)
 	foreach_cell(g, [&](Edge x) {
 		if (is_incident_to_boundary(g, x))
 		{
-			EXPECT_FALSE(edge_can_flip(g, x));
+			EXPECT_FALSE(can_flip_edge(g, x));
 		}
 	});
 }
@@ -154,7 +154,7 @@ TEST(Operators2, FlipOnQuads)
 {
 	CMap2 m = indexed(torus_soup(5, 5));
 	Edge e = all<Edge>(m)[0];
-	ASSERT_TRUE(edge_can_flip(m, e));
+	ASSERT_TRUE(can_flip_edge(m, e));
 	flip_edge(m, e);
 	EXPECT_INTEGRITY(m);
 	flip_back_edge(m, e);
@@ -272,7 +272,7 @@ TEST(Operators2, CloseAndFillHoles)
 	});
 	const Counts before = counts(m);
 	// a hole of 2 edges would become a face of 2 edges: sewing closes it
-	EXPECT_FALSE(can_fill_hole(m, b));
+	EXPECT_FALSE(can_fill_hole_with_face(m, b));
 	ASSERT_TRUE(can_sew_faces(m, Edge(phi2(m, b)), Edge(phi2(m, phi1(m, b)))));
 	sew_faces(m, Edge(phi2(m, b)), Edge(phi2(m, phi1(m, b))));
 	EXPECT_EQ(counts(m), (Counts{before.v, before.e - 1, before.f, 1}));
@@ -284,9 +284,9 @@ TEST(Operators2, CloseAndFillHoles)
 		if (is_boundary(m, d))
 			b = d;
 	});
-	ASSERT_TRUE(can_fill_hole(m, b));
+	ASSERT_TRUE(can_fill_hole_with_face(m, b));
 	const Counts open = counts(m);
-	const Face f = fill_hole(m, b);
+	const Face f = fill_hole_with_face(m, b);
 	EXPECT_EQ(codegree(m, f), 4u);
 	EXPECT_EQ(counts(m), (Counts{open.v, open.e, open.f + 1, 1}));
 	EXPECT_INTEGRITY(m);
@@ -424,13 +424,13 @@ void random_editing(CMap2& m, uint32 steps, uint32 seed)
 			break;
 		case 1: {
 			Edge e = pick(edges);
-			if ((done = edge_can_collapse(m, e)))
+			if ((done = can_collapse_edge(m, e)))
 				collapse_edge(m, e);
 			break;
 		}
 		case 2: {
 			Edge e = pick(edges);
-			if ((done = edge_can_flip(m, e)))
+			if ((done = can_flip_edge(m, e)))
 				flip_edge(m, e);
 			break;
 		}
@@ -467,7 +467,7 @@ void random_editing(CMap2& m, uint32 steps, uint32 seed)
 		}
 		case 8: {
 			Edge e = pick(edges);
-			if ((done = edge_can_flip_back(m, e)))
+			if ((done = can_flip_back_edge(m, e)))
 				flip_back_edge(m, e);
 			break;
 		}
@@ -530,7 +530,7 @@ TEST(Operators2, SplitEveryFaceThenCollapseRestores)
 	{
 		// collapse an edge leaving the centre: the centre disappears
 		Edge e(c.dart);
-		ASSERT_TRUE(edge_can_collapse(m, e));
+		ASSERT_TRUE(can_collapse_edge(m, e));
 		collapse_edge(m, e);
 	}
 	EXPECT_EQ(counts(m), before);
@@ -552,7 +552,7 @@ TEST(Operators2, PureTopologyWithoutIndices)
 	merge_incident_faces(m, cut, false);
 	Vertex c = triangulate_face(m, all<Face>(m)[1], false);
 	Edge e = all<Edge>(m)[4];
-	if (edge_can_flip(m, e))
+	if (can_flip_edge(m, e))
 	{
 		flip_edge(m, e, false);
 		flip_back_edge(m, e, false);
@@ -560,7 +560,7 @@ TEST(Operators2, PureTopologyWithoutIndices)
 	merge_incident_faces(m, c, false);
 	Vertex w = all<Vertex>(m)[2];
 	split_vertex(m, w.dart, phi<2, 1, 2, 1>(m, w.dart), false);
-	Edge col = find<Edge>(m, [&](Edge x) { return edge_can_collapse(m, x); });
+	Edge col = find<Edge>(m, [&](Edge x) { return can_collapse_edge(m, x); });
 	ASSERT_TRUE(col.is_valid());
 	collapse_edge(m, col, false);
 	EXPECT_EQ(counts(m).euler(), chi);
@@ -575,3 +575,36 @@ TEST(Operators2, PureTopologyWithoutIndices)
 	index_cells<Face>(m);
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 }
+
+// The predicates' former names (kept, deprecated, for one release) answer as
+// the new ones, and the former fill_hole fills as fill_hole_with_face.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+TEST(Operators2, FormerNamesAnswerAsTheNewOnes)
+{
+	CMap2 m = indexed(grid_soup(3, 3));
+	uint32 differences = 0, edges = 0;
+	foreach_cell(m, [&](Edge e) {
+		++edges;
+		differences += edge_can_collapse(m, e) != can_collapse_edge(m, e);
+		differences += edge_can_flip(m, e) != can_flip_edge(m, e);
+		differences += edge_can_flip_back(m, e) != can_flip_back_edge(m, e);
+		return true;
+	});
+	EXPECT_EQ(edges, 24u);
+	EXPECT_EQ(differences, 0u);
+	remove_face(m, all<Face>(m)[4]); // a second hole
+	Dart b;
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			b = d;
+		return true;
+	});
+	ASSERT_TRUE(b.is_valid());
+	EXPECT_EQ(can_fill_hole(m, b), can_fill_hole_with_face(m, b));
+	const uint32 faces = nb_cells<Face>(m);
+	fill_hole(m, b);
+	EXPECT_EQ(nb_cells<Face>(m), faces + 1);
+	EXPECT_INTEGRITY(m);
+}
+#pragma GCC diagnostic pop

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// triangulate_face and edge_can_flip / flip_edge on known meshes: exact lines
+// triangulate_face and can_flip_edge / flip_edge on known meshes: exact lines
 // of the fan, and the O(degree) flip predicate against its definition, on
 // indexed and unindexed maps.
 #include <cgogn/core.h>
 
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ using test::all;
 namespace
 {
 
-// edge_can_flip as the documentation states it, walking every orbit it
+// can_flip_edge as the documentation states it, walking every orbit it
 // needs (the reference the O(degree) predicate must agree with)
 bool can_flip_by_definition(const CMap2& m, Edge e)
 {
@@ -49,7 +49,7 @@ struct FlipTally
 	uint32 allowed = 0, refused = 0;
 };
 
-// Every edge of a snapshot: edge_can_flip must equal the definition; the
+// Every edge of a snapshot: can_flip_edge must equal the definition; the
 // allowed ones are flipped, so that later edges meet vertices made adjacent
 // by earlier flips.
 FlipTally flip_all_allowed(CMap2& m, bool set_indices)
@@ -58,7 +58,7 @@ FlipTally flip_all_allowed(CMap2& m, bool set_indices)
 	for (Edge e : all<Edge>(m))
 	{
 		const bool expected = can_flip_by_definition(m, e);
-		EXPECT_EQ(edge_can_flip(m, e), expected);
+		EXPECT_EQ(can_flip_edge(m, e), expected);
 		if (!expected)
 		{
 			++t.refused;
@@ -142,7 +142,7 @@ TEST(Operators2FanFlip, NoEdgeOfATetrahedronCanFlip)
 			index_vertices_and_faces(m);
 		add_tetra(m, indexed);
 		for (Edge e : all<Edge>(m))
-			EXPECT_FALSE(edge_can_flip(m, e));
+			EXPECT_FALSE(can_flip_edge(m, e));
 	}
 }
 

@@ -1,6 +1,6 @@
 #include <cgogn/core.h>
 
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -233,7 +233,7 @@ TEST(Operators3, SplitEveryTetThenCollapseRestores)
 	for (Vertex c : centres)
 	{
 		Edge e(c.dart); // leaves the centre: the centre disappears
-		ASSERT_TRUE(edge_can_collapse(m, e));
+		ASSERT_TRUE(can_collapse_edge(m, e));
 		collapse_edge(m, e);
 	}
 	EXPECT_EQ(counts(m), before);
@@ -249,7 +249,7 @@ TEST(Operators3, CollapseInteriorEdgeAndLinkCondition)
 		return !is_incident_to_boundary(m, Vertex(x.dart)) && !is_incident_to_boundary(m, Vertex(phi1(m, x.dart)));
 	});
 	ASSERT_TRUE(e.is_valid());
-	ASSERT_TRUE(edge_can_collapse(m, e));
+	ASSERT_TRUE(can_collapse_edge(m, e));
 	const uint32 k = degree(m, e); // tets around the edge
 	collapse_edge(m, e);
 	EXPECT_EQ(counts(m).v, before.v - 1);
@@ -262,7 +262,7 @@ TEST(Operators3, CollapseInteriorEdgeAndLinkCondition)
 		if (!is_incident_to_boundary(m, x) && is_incident_to_boundary(m, Vertex(x.dart)) &&
 			is_incident_to_boundary(m, Vertex(phi1(m, x.dart))))
 		{
-			EXPECT_FALSE(edge_can_collapse(m, x));
+			EXPECT_FALSE(can_collapse_edge(m, x));
 			++refused;
 		}
 	});
@@ -273,18 +273,18 @@ TEST(Operators3, Flips)
 {
 	CMap3 m = indexed(tet_grid_soup(2, 2, 2));
 	const Counts before = counts(m);
-	Face f = find<Face>(m, [&](Face x) { return face_can_flip(m, x); });
+	Face f = find<Face>(m, [&](Face x) { return can_flip_face(m, x); });
 	ASSERT_TRUE(f.is_valid());
 	Edge e = flip_face(m, f);
 	EXPECT_EQ(degree(m, e), 3u);
 	EXPECT_EQ(counts(m), (Counts{before.v, before.e + 1, before.f + 2, before.w + 1}));
 	EXPECT_INTEGRITY(m);
-	ASSERT_TRUE(edge_can_flip(m, e));
+	ASSERT_TRUE(can_flip_edge(m, e));
 	flip_edge(m, e); // 3-2 back
 	EXPECT_EQ(counts(m), before);
 	EXPECT_INTEGRITY(m);
 	// a 4-4 flip
-	Edge e4 = find<Edge>(m, [&](Edge x) { return degree(m, x) == 4 && edge_can_flip(m, x); });
+	Edge e4 = find<Edge>(m, [&](Edge x) { return degree(m, x) == 4 && can_flip_edge(m, x); });
 	ASSERT_TRUE(e4.is_valid());
 	flip_edge(m, e4);
 	EXPECT_EQ(counts(m), before);
@@ -297,7 +297,7 @@ TEST(Operators3, PureTopology)
 	Volume a = add_tetra(m, false);
 	Volume b = add_tetra(m, false);
 	sew_volumes(m, Face(a.dart), Face(b.dart), false);
-	ASSERT_TRUE(face_can_flip(m, Face(a.dart)));
+	ASSERT_TRUE(can_flip_face(m, Face(a.dart)));
 	Edge e = flip_face(m, Face(a.dart), false);
 	split_tetra(m, Volume(e.dart), false);
 	cut_edge(m, e, false);
@@ -328,19 +328,19 @@ TEST(Operators3Random, TetrahedralEditing)
 		else if (op == 1)
 		{
 			Edge e = pick(all<Edge>(m));
-			if ((done = edge_can_collapse(m, e)))
+			if ((done = can_collapse_edge(m, e)))
 				collapse_edge(m, e);
 		}
 		else if (op == 2)
 		{
 			Face f = pick(all<Face>(m));
-			if ((done = face_can_flip(m, f)))
+			if ((done = can_flip_face(m, f)))
 				flip_face(m, f);
 		}
 		else if (op == 3)
 		{
 			Edge e = pick(all<Edge>(m));
-			if ((done = edge_can_flip(m, e)))
+			if ((done = can_flip_edge(m, e)))
 				flip_edge(m, e);
 		}
 		applied += done;

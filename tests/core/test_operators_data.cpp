@@ -8,7 +8,7 @@
 #include <random>
 
 #include "cgogn_test_data.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 using namespace cgogn;
 
@@ -73,14 +73,14 @@ TEST(OperatorsOnData, SurfaceWithHoles)
 		{
 		case 0: {
 			auto e = random_cell<CMap2::Edge>(m, rng);
-			if (!edge_can_collapse(m, e))
+			if (!can_collapse_edge(m, e))
 				return false;
 			collapse_edge(m, e);
 			return true;
 		}
 		case 1: {
 			auto e = random_cell<CMap2::Edge>(m, rng);
-			if (!edge_can_flip(m, e))
+			if (!can_flip_edge(m, e))
 				return false;
 			flip_edge(m, e);
 			return true;
@@ -107,21 +107,21 @@ TEST(OperatorsOnData, TetMeshWithANonManifoldVertex)
 		{
 		case 0: {
 			auto e = random_cell<CMap3::Edge>(m, rng);
-			if (!edge_can_collapse(m, e))
+			if (!can_collapse_edge(m, e))
 				return false;
 			collapse_edge(m, e);
 			return true;
 		}
 		case 1: {
 			auto f = random_cell<CMap3::Face>(m, rng);
-			if (!face_can_flip(m, f))
+			if (!can_flip_face(m, f))
 				return false;
 			flip_face(m, f);
 			return true;
 		}
 		case 2: {
 			auto e = random_cell<CMap3::Edge>(m, rng);
-			if (!edge_can_flip(m, e))
+			if (!can_flip_edge(m, e))
 				return false;
 			flip_edge(m, e);
 			return true;

@@ -235,9 +235,9 @@ namespace
 template <typename CELL, typename MAP>
 void drop_index(MAP& m)
 {
-	AttributeArray<uint32>*& idx = m.cell_index_[orbit_index(CELL::ORBIT)];
+	AttributeArray<uint32>*& idx = cgogn::detail::cell_index_of(m)[orbit_index(CELL::ORBIT)];
 	ASSERT_NE(idx, nullptr);
-	ASSERT_TRUE(m.darts_->remove_attribute(idx));
+	ASSERT_TRUE(cgogn::detail::darts_of(m)->remove_attribute(idx));
 	idx = nullptr;
 }
 
@@ -362,7 +362,7 @@ TEST_P(Parallel, FloodedOrbitsNotIndexedAfterOperators)
 	uint32 collapsed = 0;
 	for (std::size_t k = 0; k < centres.size(); k += 2, ++collapsed)
 	{
-		ASSERT_TRUE(edge_can_collapse(m, Edge(centres[k].dart)));
+		ASSERT_TRUE(can_collapse_edge(m, Edge(centres[k].dart)));
 		collapse_edge(m, Edge(centres[k].dart));
 	}
 	const uint32 split = uint32(centres.size()) - collapsed;

@@ -13,7 +13,7 @@
 #include <cgogn/cgogn.h>
 
 #include "cgogn_test_data.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 #include <gtest/gtest.h>
 
@@ -184,21 +184,21 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 		return "cut_edge";
 	case 1: {
 		const E2 e(pick_dart(m, rng, [](Dart) { return true; }));
-		if (!may_shrink || !edge_can_collapse(m, e))
+		if (!may_shrink || !can_collapse_edge(m, e))
 			return nullptr;
 		collapse_edge(m, e);
 		return "collapse_edge";
 	}
 	case 2: {
 		const E2 e = pick<E2>(m, rng);
-		if (!edge_can_flip(m, e))
+		if (!can_flip_edge(m, e))
 			return nullptr;
 		flip_edge(m, e);
 		return "flip_edge";
 	}
 	case 3: {
 		const E2 e(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d); }));
-		if (!edge_can_flip_back(m, e))
+		if (!can_flip_back_edge(m, e))
 			return nullptr;
 		flip_back_edge(m, e);
 		return "flip_back_edge";
@@ -256,10 +256,10 @@ const char* edit_surface(CMap2& m, std::mt19937& rng, uint32 initial_darts, Comp
 	}
 	case 11: {
 		const Dart b = pick_dart(m, rng, [&](Dart d) { return is_boundary(m, d); });
-		if (!b.is_valid() || !can_fill_hole(m, b))
+		if (!b.is_valid() || !can_fill_hole_with_face(m, b))
 			return nullptr;
-		fill_hole(m, b);
-		return "fill_hole";
+		fill_hole_with_face(m, b);
+		return "fill_hole_with_face";
 	}
 	case 12:
 	case 13: {
@@ -460,7 +460,7 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 			return nullptr;
 		const E3 e = first_accepted(
 			8, [&] { return E3(pick_dart(m, rng, [&](Dart d) { return !is_boundary(m, d); })); },
-			[&](E3 x) { return edge_can_collapse(m, x); });
+			[&](E3 x) { return can_collapse_edge(m, x); });
 		if (!e.dart.is_valid())
 			return nullptr;
 		collapse_edge(m, e);
@@ -468,7 +468,7 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 	}
 	case 8: {
 		const F3 f = first_accepted(
-			8, [&] { return pick<F3>(m, rng); }, [&](F3 x) { return face_can_flip(m, x); });
+			8, [&] { return pick<F3>(m, rng); }, [&](F3 x) { return can_flip_face(m, x); });
 		if (!f.dart.is_valid())
 			return nullptr;
 		flip_face(m, f);
@@ -476,7 +476,7 @@ const char* edit_volume(CMap3& m, std::mt19937& rng, uint32 initial_darts, Compa
 	}
 	case 9: {
 		const E3 e = first_accepted(
-			8, [&] { return pick<E3>(m, rng); }, [&](E3 x) { return edge_can_flip(m, x); });
+			8, [&] { return pick<E3>(m, rng); }, [&](E3 x) { return can_flip_edge(m, x); });
 		if (!e.dart.is_valid())
 			return nullptr;
 		flip_edge(m, e);
@@ -751,7 +751,7 @@ TEST(RandomEditing, TetCollapseKeepsTheSurvivorsLine)
 	for (uint32 round = 0; round < 400 && collapsed < 60; ++round)
 	{
 		const E3 e = test::find<E3>(
-			m, [&](E3 x) { return (x.dart.index * 7919u + round) % 13u == 0u && edge_can_collapse(m, x); });
+			m, [&](E3 x) { return (x.dart.index * 7919u + round) % 13u == 0u && can_collapse_edge(m, x); });
 		if (!e.dart.is_valid())
 			continue;
 		const uint32 survivor = index_of(m, V3(phi1(m, e.dart)));

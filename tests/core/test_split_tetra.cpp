@@ -12,7 +12,7 @@
 
 #include "../../src/core/cmap3_cavity.h"
 #include "cgogn_test_data.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;

@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "cgogn_test_data.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;

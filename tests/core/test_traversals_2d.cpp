@@ -218,7 +218,7 @@ TEST_F(Grid, VolumeIncidences)
 
 TEST_F(Grid, GuideEarlyStopLookup)
 {
-	// the API guide's example: the first vertex with a negative x
+	// the CGoGN API guide's example: the first vertex with a negative x
 	auto position = add_attribute<std::array<double, 3>, Vertex>(m, "position");
 	foreach_cell(m, [&](Vertex v) { value<std::array<double, 3>>(m, position, v) = {double(id(v) % 4) - 2.5, 0, 0}; });
 	Vertex looked_up_v;
@@ -368,7 +368,7 @@ namespace
 template <typename CELL>
 void expect_each_cell_once(const CMap2& m)
 {
-	std::vector<uint32> covered(m.darts_->end_index(), 0);
+	std::vector<uint32> covered(cgogn::detail::darts_of(m)->end_index(), 0);
 	uint32 cells = 0, located = 0;
 	foreach_cell(m, [&](CELL c) {
 		++cells;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cgogn_test_data.h"
-#include "map_test_helpers.h"
+#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -341,8 +341,8 @@ TEST(Traversals3D, ThrowingCallableLeavesNoMark)
 		return n;
 	}();
 	auto first_free_mark = [&] {
-		MarkAttribute* mark = m.darts_->acquire_mark();
-		m.darts_->release_mark(mark);
+		MarkAttribute* mark = cgogn::detail::darts_of(m)->acquire_mark();
+		cgogn::detail::darts_of(m)->release_mark(mark);
 		return mark;
 	};
 	MarkAttribute* const free_before = first_free_mark();

@@ -26,7 +26,7 @@ struct ViewGrid : ::testing::Test
 	}
 };
 
-// generic code written against mesh_traits, as in the API guide
+// generic code written against mesh_traits, as in the CGoGN API guide
 template <typename MESH>
 uint32 count_vertices_and_faces(const MESH& m)
 {
@@ -119,7 +119,7 @@ TEST_F(ViewGrid, FilterAppliesToLocatedNeighbours)
 
 TEST_F(ViewGrid, CacheBuildAddClear)
 {
-	CellCache cache(m); // class template argument deduction, as in the API guide
+	CellCache cache(m); // class template argument deduction, as in the CGoGN API guide
 	cache.build<Vertex>([&](Vertex v) { return degree(m, v) == 3; });
 	EXPECT_EQ(cache.size<Vertex>(), 10u);
 	EXPECT_EQ(nb_cells<Vertex>(cache), 10u);

@@ -204,9 +204,9 @@ TEST(Measures, MeanPositionSkipsTheLinesOfRemovedVertices)
 	Edge collapsible;
 	foreach_cell(m, [&](Edge e) {
 		collapsible = e;
-		return !edge_can_collapse(m, e);
+		return !can_collapse_edge(m, e);
 	});
-	ASSERT_TRUE(edge_can_collapse(m, collapsible));
+	ASSERT_TRUE(can_collapse_edge(m, collapsible));
 	collapse_edge(m, collapsible);
 	ASSERT_EQ(nb_cells<Vertex>(m), 7u * 6u - 1u);
 	EXPECT_NEAR((mean_position(m, *pos) - mean_by_traversal(m, *pos)).norm(), 0.0, 1e-14);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Helpers shared by the io tests: temporary files, maps with positions.
+// Shared by the io tests: temporary files, maps with positions.
 #pragma once
 
 #include <cgogn/cgogn.h>

@@ -10,7 +10,7 @@
 #include <ctime>
 #include <filesystem>
 
-#include "../../bench/modeling_peers.h"
+#include "../../bench/modeling/modeling_peers.h"
 #include "cgogn_test_data.h"
 
 using namespace cgogn;

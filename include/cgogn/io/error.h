@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/utils/error.h>
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/builder/map_builder.h>
+#include <cgogn/core/build/map_builder.h>
 
 #include <string>
 

@@ -4,7 +4,7 @@
 #include <cgogn/io/error.h>
 #include <cgogn/io/options.h>
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 #include <string>
 

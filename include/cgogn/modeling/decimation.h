@@ -2,7 +2,7 @@
 // Decimation of triangle surfaces by edge collapses ordered by quadric error.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
 

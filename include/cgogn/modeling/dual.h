@@ -2,7 +2,7 @@
 // The dual of a closed polygonal surface.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <memory>

@@ -2,7 +2,7 @@
 // Fairing: smooth positions for chosen vertices, the others fixed.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <span>

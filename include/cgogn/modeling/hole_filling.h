@@ -3,7 +3,7 @@
 // refinement and fairing.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/fairing.h>
 #include <cgogn/modeling/progress.h>
@@ -66,9 +66,8 @@ struct HoleFillingResult
 /// vertex position attribute; new vertices get positions there. Precondition
 /// (throws TopologyError): d is a boundary dart of m. Cost O(n^3) for a loop of n edges (n <= max_optimal_size),
 /// O(n^2) to O(n^3) by ear clipping above, plus the refinement and a sparse
-/// solve on the patch. Named like core's cgogn::fill_hole(m, d) (which turns
-/// the hole into one polygon) but with positions and options: the two never
-/// clash, their parameters differ.
+/// solve on the patch. Core's cgogn::fill_hole_with_face(m, d) is the purely
+/// topological counterpart: it turns the hole into one polygon.
 HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options = {},
                             const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.

@@ -2,7 +2,7 @@
 // Progress reporting and cancellation of the long modeling algorithms.
 #pragma once
 
-#include <cgogn/core/types/numeric.h>
+#include <cgogn/core/utils/numeric.h>
 
 #include <functional>
 

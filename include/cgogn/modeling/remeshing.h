@@ -2,7 +2,7 @@
 // Isotropic remeshing of triangle surfaces (Botsch and Kobbelt 2004).
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
 
@@ -36,9 +36,9 @@ struct RemeshingResult
 /// (1) splits edges longer than 4/3 L at their midpoint (cut_edge, then
 /// cut_face towards the opposite corners), until none is left; (2) collapses
 /// edges shorter than 4/5 L into their midpoint (onto the locked end when one
-/// end is locked) when edge_can_collapse allows it, no edge of the result is
+/// end is locked) when can_collapse_edge allows it, no edge of the result is
 /// longer than 4/3 L and no face normal turns over; (3) flips edges
-/// (edge_can_flip) that bring the valences of their four vertices closer to
+/// (can_flip_edge) that bring the valences of their four vertices closer to
 /// 6 (4 on the boundary) without folding a face; (4) moves every free vertex
 /// to the uniform centroid of its neighbours, in its tangent plane (area-
 /// weighted normal); (5) projects the moved vertices onto the input surface

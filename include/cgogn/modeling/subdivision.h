@@ -3,9 +3,9 @@
 // refinement of hexahedral and tetrahedral volume meshes.
 #pragma once
 
-#include <cgogn/core/types/error.h>
-#include <cgogn/core/types/maps/cmap2.h>
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/utils/error.h>
+#include <cgogn/core/map/cmap2.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
 

@@ -3,7 +3,7 @@
 // surface's vertices to another surface.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <array>
@@ -29,7 +29,7 @@ public:
 
 	struct Hit
 	{
-		Vec3 point;				  ///< the closest point
+		Vec3 point = Vec3::Zero();				  ///< the closest point
 		double squared_distance;  ///< to the query point
 		uint32 triangle;		  ///< index of the triangle it lies on
 	};
@@ -50,9 +50,9 @@ public:
 private:
 	struct Node
 	{
-		Vec3 lo, hi;
-		uint32 begin, end; // triangles_[begin, end) for a leaf
-		uint32 right;	   // second child (the first is the next node); 0 for a leaf
+		Vec3 lo = Vec3::Zero(), hi = Vec3::Zero(); // the box of the node's triangles
+		uint32 begin = 0, end = 0; // triangles_[begin, end) for a leaf
+		uint32 right = 0;	   // second child (the first is the next node); 0 for a leaf
 	};
 
 	void build();

@@ -2,7 +2,7 @@
 // Triangulation of polygonal faces by ear clipping.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 namespace cgogn::modeling

@@ -20,7 +20,7 @@
 // (coming from the camera) and lights both sides of every face.
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <cstdint>

@@ -35,7 +35,7 @@ CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 /// at least 3 edges, and two incident triangles do not have the same opposite
 /// vertex.
 /// Pure topology. O(degree of the two vertices).
-bool edge_can_collapse(const CMap2& m, CMap2::Edge e);
+bool can_collapse_edge(const CMap2& m, CMap2::Edge e);
 
 /// Contracts edge e: the origin of e.dart disappears, the other end survives
 /// with its line. Incident triangles degenerate and are removed: their two
@@ -47,7 +47,7 @@ bool edge_can_collapse(const CMap2& m, CMap2::Edge e);
 /// exactly the darts, relations and lines the split found. Dart handles to
 /// the edges around the vanished triangles may be invalidated (check with
 /// is_dart_valid). Returns the surviving vertex.
-/// Precondition: edge_can_collapse(m, e).
+/// Precondition: can_collapse_edge(m, e).
 /// O(degree of the two vertices + degree of the faces around the triangles).
 CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
@@ -60,22 +60,22 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 /// topology, lines changed behind the library's back are caught by an
 /// assertion in debug builds. Otherwise O(degree of both new ends) with a
 /// dart mark.
-bool edge_can_flip(const CMap2& m, CMap2::Edge e);
+bool can_flip_edge(const CMap2& m, CMap2::Edge e);
 
 /// Rotates edge e forward inside its two faces: each end moves to the next
 /// vertex of its face (in a triangle pair: the classic flip). Faces keep
-/// their lines. Precondition: edge_can_flip(m, e). O(degree of the faces).
+/// their lines. Precondition: can_flip_edge(m, e). O(degree of the faces).
 void flip_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
-/// True when edge e can be flipped back: the conditions of edge_can_flip on
+/// True when edge e can be flipped back: the conditions of can_flip_edge on
 /// the faces and end vertices, and the new edge's ends (the origins of
 /// phi_1(e.dart) and phi_1(phi2(e.dart)), not the forward flip's unless both
 /// faces are triangles) distinct and not already adjacent. Same cost as
-/// edge_can_flip.
-bool edge_can_flip_back(const CMap2& m, CMap2::Edge e);
+/// can_flip_edge.
+bool can_flip_back_edge(const CMap2& m, CMap2::Edge e);
 
 /// The inverse of flip_edge: each end moves to the previous vertex of its
-/// face. Faces keep their lines. Precondition: edge_can_flip_back(m, e).
+/// face. Faces keep their lines. Precondition: can_flip_back_edge(m, e).
 /// O(degree of the faces).
 void flip_back_edge(CMap2& m, CMap2::Edge e, bool set_indices = true);
 
@@ -170,13 +170,13 @@ uint32 close(CMap2& m, bool set_indices = true);
 /// True when d is a boundary dart of a hole of at least 3 edges (a hole of 1
 /// or 2 edges would become a face of 1 or 2 edges; sew its edges instead).
 /// O(1).
-bool can_fill_hole(const CMap2& m, Dart d);
+bool can_fill_hole_with_face(const CMap2& m, Dart d);
 
 /// Turns the boundary face of dart d into a real face (fills the hole with one
 /// polygon) and returns it. The face gets a new line; no other line changes.
-/// Incidence caches are dropped. Precondition: can_fill_hole(m, d).
+/// Incidence caches are dropped. Precondition: can_fill_hole_with_face(m, d).
 /// O(size of the hole).
-CMap2::Face fill_hole(CMap2& m, Dart d, bool set_indices = true);
+CMap2::Face fill_hole_with_face(CMap2& m, Dart d, bool set_indices = true);
 
 /// True when e1.dart and e2.dart are non-boundary darts whose phi2 are
 /// boundary darts, of distinct edges. O(1).
@@ -241,5 +241,33 @@ void reverse_orientation(CMap2& m);
 /// of other, its copy in m (indexed by dart index; invalid for free lines).
 /// O(size of other).
 std::vector<Dart> merge(CMap2& m, const CMap2& other);
+
+// ---- former names, kept for one release
+
+/// \deprecated Use can_collapse_edge.
+[[deprecated("use can_collapse_edge")]] inline bool edge_can_collapse(const CMap2& m, CMap2::Edge e)
+{
+	return can_collapse_edge(m, e);
+}
+/// \deprecated Use can_flip_edge.
+[[deprecated("use can_flip_edge")]] inline bool edge_can_flip(const CMap2& m, CMap2::Edge e)
+{
+	return can_flip_edge(m, e);
+}
+/// \deprecated Use can_flip_back_edge.
+[[deprecated("use can_flip_back_edge")]] inline bool edge_can_flip_back(const CMap2& m, CMap2::Edge e)
+{
+	return can_flip_back_edge(m, e);
+}
+/// \deprecated Use can_fill_hole_with_face.
+[[deprecated("use can_fill_hole_with_face")]] inline bool can_fill_hole(const CMap2& m, Dart d)
+{
+	return can_fill_hole_with_face(m, d);
+}
+/// \deprecated Use fill_hole_with_face (modeling::fill_hole is the geometric hole filling).
+[[deprecated("use fill_hole_with_face")]] inline CMap2::Face fill_hole(CMap2& m, Dart d, bool set_indices = true)
+{
+	return fill_hole_with_face(m, d, set_indices);
+}
 
 } // namespace cgogn

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 #include <vector>
 
@@ -150,37 +150,55 @@ CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices = true);
 /// common vertices, edges and triangles of the links of its two ends are
 /// exactly those of the link of e, the outside counting as a vertex). Pure
 /// topology. O(size of the stars of the two ends).
-bool edge_can_collapse(const CMap3& m, CMap3::Edge e);
+bool can_collapse_edge(const CMap3& m, CMap3::Edge e);
 /// Contracts edge e: the origin of e.dart disappears, the other end survives
 /// with its line; the tetrahedra around e vanish, the others around the
 /// removed vertex are rebuilt on the survivor with new volume, inner face and
 /// inner edge lines (the replaced ones are released); the faces, edges and
 /// vertices around the star keep theirs. Returns the surviving vertex.
-/// Precondition: edge_can_collapse(m, e). O(size of the star of the origin).
+/// Precondition: can_collapse_edge(m, e). O(size of the star of the origin).
 CMap3::Vertex collapse_edge(CMap3& m, CMap3::Edge e, bool set_indices = true);
 
 /// True when the face between two tetrahedra can be flipped 2-3: both sides
 /// are tetrahedra (not boundary), their five corners are distinct vertices and
 /// their apexes are not already joined by an edge. O(size of the five vertices).
-bool face_can_flip(const CMap3& m, CMap3::Face f);
+bool can_flip_face(const CMap3& m, CMap3::Face f);
 /// 2-3 flip: the two tetrahedra of face f become three around the edge joining
 /// their apexes. The new tets, faces and edge inside get new lines and the
 /// replaced ones are released; vertices and the six outer faces (with their
-/// edges) keep theirs. Returns the new edge. Precondition: face_can_flip(m, f).
+/// edges) keep theirs. Returns the new edge. Precondition: can_flip_face(m, f).
 CMap3::Edge flip_face(CMap3& m, CMap3::Face f, bool set_indices = true);
 
 /// True when edge e is an interior edge of 3 or 4 tetrahedra that can be
 /// flipped: its ends and the vertices around it are distinct, and 3-2 (its 3
 /// surrounding vertices do not form a face already) or 4-4 (the diagonal
 /// through the origin of the edge's ring is not an edge already).
-bool edge_can_flip(const CMap3& m, CMap3::Edge e);
+bool can_flip_edge(const CMap3& m, CMap3::Edge e);
 /// 3-2 flip (degree 3: the three tetrahedra become two on the surrounding
 /// triangle) or 4-4 flip (degree 4: the four tetrahedra become four around the
 /// diagonal of the surrounding quad that starts at the third vertex of the
 /// face of e.dart). As for flip_face, the cells inside get new lines and the
 /// replaced ones are released; the vertices and the outer faces keep theirs.
 /// Returns a dart of the new face (3-2) or of the new edge (4-4).
-/// Precondition: edge_can_flip(m, e). O(1).
+/// Precondition: can_flip_edge(m, e). O(1).
 Dart flip_edge(CMap3& m, CMap3::Edge e, bool set_indices = true);
+
+// ---- former names, kept for one release
+
+/// \deprecated Use can_collapse_edge.
+[[deprecated("use can_collapse_edge")]] inline bool edge_can_collapse(const CMap3& m, CMap3::Edge e)
+{
+	return can_collapse_edge(m, e);
+}
+/// \deprecated Use can_flip_face.
+[[deprecated("use can_flip_face")]] inline bool face_can_flip(const CMap3& m, CMap3::Face f)
+{
+	return can_flip_face(m, f);
+}
+/// \deprecated Use can_flip_edge.
+[[deprecated("use can_flip_edge")]] inline bool edge_can_flip(const CMap3& m, CMap3::Edge e)
+{
+	return can_flip_edge(m, e);
+}
 
 } // namespace cgogn

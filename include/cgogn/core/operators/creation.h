@@ -2,7 +2,7 @@
 #pragma once
 
 #include <cgogn/core/operators/dimension_guards.h>
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 namespace cgogn
 {

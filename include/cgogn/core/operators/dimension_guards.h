@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 #include <vector>
 
@@ -30,11 +30,12 @@ CMap1::Vertex collapse_edge(CMap3& m, CMap1::Edge e, bool set_indices = true) = 
 CMap2::Face add_face(CMap3& m, uint32 n, bool set_indices = true) = delete;
 void remove_face(CMap3& m, CMap2::Face f, bool set_indices = true) = delete;
 CMap2::Vertex cut_edge(CMap3& m, CMap2::Edge e, bool set_indices = true) = delete;
-bool edge_can_collapse(const CMap3& m, CMap2::Edge e) = delete;
+bool can_collapse_edge(const CMap3& m, CMap2::Edge e) = delete;
 CMap2::Vertex collapse_edge(CMap3& m, CMap2::Edge e, bool set_indices = true) = delete;
-bool edge_can_flip(const CMap3& m, CMap2::Edge e) = delete;
+bool can_flip_edge(const CMap3& m, CMap2::Edge e) = delete;
 void flip_edge(CMap3& m, CMap2::Edge e, bool set_indices = true) = delete;
 void flip_back_edge(CMap3& m, CMap2::Edge e, bool set_indices = true) = delete;
+bool can_flip_back_edge(const CMap3& m, CMap2::Edge e) = delete;
 bool can_cut_face(const CMap3& m, CMap2::Vertex v1, CMap2::Vertex v2) = delete;
 CMap2::Edge cut_face(CMap3& m, CMap2::Vertex v1, CMap2::Vertex v2, bool set_indices = true) = delete;
 bool can_merge_incident_faces(const CMap3& m, CMap2::Edge e) = delete;
@@ -46,6 +47,13 @@ CMap2::Edge merge_incident_edges(CMap3& m, CMap2::Vertex v, bool set_indices = t
 CMap2::Edge split_vertex(CMap3& m, Dart d1, Dart d2, bool set_indices = true) = delete;
 CMap2::Vertex triangulate_face(CMap3& m, CMap2::Face f, bool set_indices = true) = delete;
 CMap2::Face close_hole(CMap3& m, Dart d, bool mark_boundary, bool set_indices) = delete;
+bool can_fill_hole_with_face(const CMap3& m, Dart d) = delete;
+CMap2::Face fill_hole_with_face(CMap3& m, Dart d, bool set_indices = true) = delete;
+// the former names of the predicates and of fill_hole_with_face
+bool edge_can_collapse(const CMap3& m, CMap2::Edge e) = delete;
+bool edge_can_flip(const CMap3& m, CMap2::Edge e) = delete;
+bool edge_can_flip_back(const CMap3& m, CMap2::Edge e) = delete;
+bool can_fill_hole(const CMap3& m, Dart d) = delete;
 CMap2::Face fill_hole(CMap3& m, Dart d, bool set_indices = true) = delete;
 bool can_sew_faces(const CMap3& m, CMap2::Edge e1, CMap2::Edge e2) = delete;
 void sew_faces(CMap3& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices = true) = delete;

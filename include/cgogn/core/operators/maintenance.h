@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/maps/cmap3.h>
+#include <cgogn/core/map/cmap3.h>
 
 #include <array>
 #include <cstdint>
@@ -19,8 +19,13 @@ struct CompactMaps
 	std::array<std::vector<uint32>, NB_ORBITS> cells;
 };
 
+/// Removes every dart and every cell of m. Its attributes stay (empty), and
+/// each orbit stays indexed or not as it was. Incidence caches are dropped.
+/// Precondition: no marker alive. O(darts + cells).
+void clear(CMapBase& m);
+
 /// Renumbers the darts and the lines of every orbit container densely (live
-/// lines first, in their order), so that a long editing session recovers
+/// lines first, in their order), so that a long run of edits recovers
 /// contiguous memory; attribute values follow their cells, relations and
 /// indices are remapped, free memory chunks are released. Invalidates Dart
 /// and Cell values held by the caller (use the returned maps) and incidence

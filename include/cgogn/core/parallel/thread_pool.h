@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/types/numeric.h>
+#include <cgogn/core/utils/numeric.h>
 
 #include <memory>
 

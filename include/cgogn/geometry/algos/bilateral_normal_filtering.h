@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/geometry/algos/normal.h>
 
 #include <cassert>
@@ -47,7 +47,7 @@ void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const 
 	assert(p.sigma_r > 0.0 && p.sigma_s >= 0.0);
 
 	// number the faces densely through their darts: no face attribute needed
-	std::vector<uint32> face_of_dart(map_of(m).darts_->end_index(), INVALID_INDEX);
+	std::vector<uint32> face_of_dart(container_of<Orbit::DART>(map_of(m)).end_index(), INVALID_INDEX);
 	std::vector<Dart> faces;
 	foreach_cell(m, [&](Face f) {
 		foreach_dart_of_orbit(m, f, [&](Dart d) { face_of_dart[d.index] = uint32(faces.size()); });
@@ -105,7 +105,7 @@ void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const 
 		normal.swap(filtered);
 	}
 
-	std::vector<uint8> moves(map_of(m).cells_[orbit_index(Vertex::ORBIT)]->end_index(), 0);
+	std::vector<uint8> moves(container_of<Vertex::ORBIT>(map_of(m)).end_index(), 0);
 	foreach_cell(m, [&](Vertex v) { moves[index_of(m, v)] = !(p.fix_boundary && is_incident_to_boundary(m, v)); });
 	std::vector<Vec3> delta(moves.size(), Vec3::Zero());
 	for (uint32 it = 0; it < p.vertex_iterations; ++it)

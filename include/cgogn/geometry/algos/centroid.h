@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_cmap3.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 namespace cgogn::geometry

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/attributes.h>
-#include <cgogn/core/functions/darts.h>
-#include <cgogn/core/types/maps/mesh_traits.h>
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/darts.h>
+#include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <Eigen/Geometry> // cross()

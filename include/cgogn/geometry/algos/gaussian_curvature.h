@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/geometry/algos/angle.h>
 #include <cgogn/geometry/algos/voronoi_area.h>
 

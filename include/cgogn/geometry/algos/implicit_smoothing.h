@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/types/error.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/algos/laplacian.h>
 
 #include <Eigen/SparseCholesky>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/properties.h>
-#include <cgogn/core/functions/traversals/local_cmap3.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/local_cmap3.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 #include <cassert>
@@ -52,7 +52,7 @@ struct UniformSmoother
 private:
 	uint32 end_index() const
 	{
-		return map_of(m_).cells_[orbit_index(Vertex::ORBIT)]->end_index();
+		return container_of<Vertex::ORBIT>(map_of(m_)).end_index();
 	}
 
 	const MESH& m_;

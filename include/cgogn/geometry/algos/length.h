@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 namespace cgogn::geometry

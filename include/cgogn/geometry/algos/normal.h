@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/traversals/global.h>
-#include <cgogn/core/functions/traversals/local_cmap2.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 #include <Eigen/Geometry> // cross()

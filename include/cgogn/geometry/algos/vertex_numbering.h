@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/functions/traversals/global.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 #include <vector>
@@ -39,11 +39,11 @@ VertexNumbering vertex_numbering(const MESH& m)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	VertexNumbering n;
-	const uint32 end = map_of(m).cells_[orbit_index(Vertex::ORBIT)]->end_index();
+	const uint32 end = container_of<Vertex::ORBIT>(map_of(m)).end_index();
 	n.dense_of_line_.assign(end, INVALID_INDEX);
 	n.line_of_dense_.reserve(nb_cells<Vertex>(m));
 	for (uint32 i = 0; i < end; ++i)
-		if (map_of(m).cells_[orbit_index(Vertex::ORBIT)]->is_live(i))
+		if (container_of<Vertex::ORBIT>(map_of(m)).is_live(i))
 		{
 			n.dense_of_line_[i] = uint32(n.line_of_dense_.size());
 			n.line_of_dense_.push_back(i);

@@ -1,0 +1,655 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/attributes/attribute.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <mutex>
+#include <type_traits>
+
+namespace cgogn
+{
+
+/// A set of attributes that all have the same lines. One attribute, the key
+/// (an AttributeArray<uint32>), tells which lines are live: a line is free when its
+/// key is INVALID_INDEX. For a map's dart container the key is phi1; for a cell
+/// container it is the representative dart of each cell. Free lines are kept
+/// in a list and reused first. Mark attributes (a bit per line) are reserved
+/// from a pool: reservation is thread-safe and lock-free for the first 64.
+class AttributeContainer
+{
+public:
+	/// `max_contiguous_lines` caps the lines each attribute and mark keeps in
+	/// its reserved range (see LineStorage); the lines beyond go to blocks.
+	/// Only tests lower it, to exercise the blocks with small containers.
+	explicit AttributeContainer(const std::string& key_name, uint64 max_contiguous_lines = ~uint64(0))
+		: max_contiguous_lines_(max_contiguous_lines)
+	{
+		key_ = add_attribute<uint32>(key_name, INVALID_INDEX).get();
+	}
+	~AttributeContainer()
+	{
+		for (auto& a : attributes_)
+		{
+			a->container_ = nullptr;
+			a->cell_index_ = nullptr;
+		}
+	}
+	AttributeContainer(const AttributeContainer&) = delete;
+	AttributeContainer& operator=(const AttributeContainer&) = delete;
+
+	/// Adds an attribute; nullptr when one with this name exists already.
+	/// Adds an attribute; nullptr when one with this name exists already. A
+	/// is the attribute's class (a CellAttribute<T, O> for add_attribute<T, CELL>).
+	template <typename T, typename A = AttributeArray<T>>
+	std::shared_ptr<A> add_attribute(const std::string& name, T default_value = T())
+	{
+		static_assert(std::is_base_of_v<AttributeArray<T>, A>);
+		if (find(name) != nullptr)
+			return nullptr;
+		auto a =
+		    std::make_shared<A>(this, name, std::move(default_value),
+		                        std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
+		a->set_nb_chunks(nb_chunks_);
+		static_cast<AttributeBase&>(*a).cell_index_ = cell_index_;
+		attributes_.push_back(a);
+		return a;
+	}
+
+	/// The attribute of this name and type; nullptr when absent or of another type.
+	template <typename T>
+	std::shared_ptr<AttributeArray<T>> get_attribute(const std::string& name) const
+	{
+		auto a = find(name);
+		if (a == nullptr || a->type() != typeid(T))
+			return nullptr;
+		return std::static_pointer_cast<AttributeArray<T>>(a);
+	}
+
+	std::shared_ptr<AttributeBase> find(const std::string& name) const
+	{
+		auto it = std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a->name() == name; });
+		return it == attributes_.end() ? nullptr : *it;
+	}
+
+	/// Removes the attribute (not the key); returns false when it is not here.
+	bool remove_attribute(const AttributeBase* attr)
+	{
+		if (attr == key_)
+			return false;
+		auto it = std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a.get() == attr; });
+		if (it == attributes_.end())
+			return false;
+		(*it)->container_ = nullptr;
+		(*it)->cell_index_ = nullptr;
+		attributes_.erase(it);
+		return true;
+	}
+
+	const std::vector<std::shared_ptr<AttributeBase>>& attributes() const
+	{
+		return attributes_;
+	}
+
+	AttributeArray<uint32>& key()
+	{
+		return *key_;
+	}
+
+	/// The orbit whose cells own the lines of this container (DART for the
+	/// dart container); set by the map.
+	Orbit orbit() const
+	{
+		return orbit_;
+	}
+	void set_orbit(Orbit o)
+	{
+		orbit_ = o;
+	}
+	/// The dart attribute that holds each dart's line in this container
+	/// (nullptr while the orbit is not indexed); set by the map when it
+	/// indexes the orbit. `attr[cell]` reads it.
+	const AttributeArray<uint32>* cell_index() const
+	{
+		return cell_index_;
+	}
+	void set_cell_index(const AttributeArray<uint32>* index)
+	{
+		cell_index_ = index;
+		for (auto& a : attributes_)
+			a->cell_index_ = index;
+	}
+	const AttributeArray<uint32>& key() const
+	{
+		return *key_;
+	}
+
+	/// A new line (a freed one first) with every attribute at its default
+	/// value but the key, set to `key_value`. O(number of attributes).
+	uint32 new_line(uint32 key_value)
+	{
+		uint32 i;
+		if (!free_lines_.empty())
+		{
+			i = free_lines_.back();
+			free_lines_.pop_back();
+			for (auto& a : attributes_)
+				a->reset_line(i);
+		}
+		else
+		{
+			if (size_ == nb_chunks_ * CHUNK_SIZE)
+				set_nb_chunks(nb_chunks_ + 1);
+			i = size_++;
+		}
+		(*key_)[i] = key_value;
+		return i;
+	}
+
+	/// `n` new consecutive lines at the end of the container (free lines are
+	/// left for later); returns the first. Their keys are INVALID_INDEX: the
+	/// caller sets them (or releases the lines it does not use).
+	uint32 new_lines_at_end(uint32 n)
+	{
+		uint32 first = size_;
+		uint64 needed = (uint64(size_) + n + CHUNK_SIZE - 1) / CHUNK_SIZE;
+		if (needed > nb_chunks_)
+			set_nb_chunks(uint32(needed));
+		size_ += n;
+		return first;
+	}
+
+	/// Frees a line: its key becomes INVALID_INDEX and it will be reused.
+	void release_line(uint32 i)
+	{
+		assert(i < size_ && (*key_)[i] != INVALID_INDEX);
+		(*key_)[i] = INVALID_INDEX;
+		free_lines_.push_back(i);
+	}
+	/// Frees a line whose key is already INVALID_INDEX (see new_lines_at_end).
+	void release_unkeyed_line(uint32 i)
+	{
+		assert(i < size_ && (*key_)[i] == INVALID_INDEX);
+		free_lines_.push_back(i);
+	}
+
+	bool is_live(uint32 i) const
+	{
+		return i < size_ && (*key_)[i] != INVALID_INDEX;
+	}
+	/// Number of live lines, O(1).
+	uint32 nb_lines() const
+	{
+		return size_ - uint32(free_lines_.size());
+	}
+	/// Number of lines allocated (whole chunks): lines in [end_index(),
+	/// capacity()) hold their attributes' default values.
+	uint32 capacity() const
+	{
+		return nb_chunks_ * CHUNK_SIZE;
+	}
+	/// One past the highest line ever used: iterate [0, end_index()) and skip
+	/// the lines that are not live.
+	uint32 end_index() const
+	{
+		return size_;
+	}
+	uint32 first_index() const
+	{
+		uint32 i = 0;
+		while (i < size_ && (*key_)[i] == INVALID_INDEX)
+			++i;
+		return i;
+	}
+	uint32 next_index(uint32 i) const
+	{
+		do
+			++i;
+		while (i < size_ && (*key_)[i] == INVALID_INDEX);
+		return i;
+	}
+	const std::vector<uint32>& free_lines() const
+	{
+		return free_lines_;
+	}
+
+	/// Allocates room for n lines in total, so that building does not grow
+	/// chunk by chunk.
+	void reserve(uint32 n)
+	{
+		uint32 needed = (n + CHUNK_SIZE - 1) / CHUNK_SIZE;
+		if (needed > nb_chunks_)
+			set_nb_chunks(needed);
+	}
+
+	/// Removes every line (keeps the attributes, frees their memory).
+	void clear()
+	{
+		size_ = 0;
+		free_lines_.clear();
+		set_nb_chunks(0);
+	}
+
+	/// Reserves a cleared mark attribute. Thread-safe. Give it back with
+	/// release_mark() after clearing it.
+	MarkAttribute* acquire_mark()
+	{
+		uint64 used = used_slots_.load(std::memory_order_relaxed);
+		while (~used != 0)
+		{
+			uint32 s = uint32(std::countr_zero(~used));
+			if (used_slots_.compare_exchange_weak(used, used | (uint64(1) << s), std::memory_order_acquire,
+												  std::memory_order_relaxed))
+			{
+				if (!slots_[s])
+				{
+					std::lock_guard lock(mutex_);
+					slots_[s] = new_mark();
+					slots_[s]->set_nb_chunks(nb_chunks_);
+					slots_[s]->pool_slot = s;
+				}
+				return slots_[s].get();
+			}
+		}
+		std::lock_guard lock(mutex_);
+		if (overflow_free_.empty())
+		{
+			overflow_.push_back(new_mark());
+			overflow_.back()->set_nb_chunks(nb_chunks_);
+			return overflow_.back().get();
+		}
+		MarkAttribute* m = overflow_free_.back();
+		overflow_free_.pop_back();
+		return m;
+	}
+	/// Gives back a mark reserved by acquire_mark(); it must be cleared.
+	void release_mark(MarkAttribute* m)
+	{
+		if (m->pool_slot != INVALID_INDEX)
+		{
+			used_slots_.fetch_and(~(uint64(1) << m->pool_slot), std::memory_order_release);
+			return;
+		}
+		std::lock_guard lock(mutex_);
+		overflow_free_.push_back(m);
+	}
+	/// Frees the memory of the pooled marks nobody holds (released marks keep
+	/// their chunks to be reused at once; a later acquire_mark allocates them
+	/// again). Builders call it when they are done, so that the marks a build
+	/// used do not stay allocated next to the mesh (one bit per line each).
+	/// Not thread-safe: no mark may be acquired or released meanwhile.
+	void release_idle_marks()
+	{
+		std::lock_guard lock(mutex_);
+		const uint64 used = used_slots_.load(std::memory_order_acquire);
+		for (uint32 s = 0; s < slots_.size(); ++s)
+			if (((used >> s) & 1u) == 0)
+				slots_[s].reset();
+		for (MarkAttribute* idle : overflow_free_)
+			std::erase_if(overflow_, [&](const auto& m) { return m.get() == idle; });
+		overflow_free_.clear();
+	}
+
+	/// A mark attribute owned by the container for its whole life (e.g. the
+	/// boundary mark of the darts).
+	MarkAttribute* add_persistent_mark()
+	{
+		persistent_marks_.push_back(new_mark());
+		persistent_marks_.back()->set_nb_chunks(nb_chunks_);
+		return persistent_marks_.back().get();
+	}
+
+	/// Bytes held by attributes and marks (allocated chunks, live or not;
+	/// pooled marks too, held or idle).
+	std::size_t memory_bytes() const
+	{
+		std::size_t b = 0;
+		for (const auto& a : attributes_)
+			b += a->memory_bytes();
+		for (const auto& m : persistent_marks_)
+			b += m->memory_bytes();
+		for (const auto& m : slots_)
+			if (m)
+				b += m->memory_bytes();
+		for (const auto& m : overflow_)
+			b += m->memory_bytes();
+		return b + free_lines_.capacity() * sizeof(uint32);
+	}
+
+	/// Lets every attribute and mark swap two lines (used by compaction and
+	/// reordering; the caller keeps the key and the free list consistent).
+	void swap_lines(uint32 a, uint32 b)
+	{
+		for (auto& at : attributes_)
+			at->swap_lines(a, b);
+		for (auto& m : persistent_marks_)
+			m->swap_lines(a, b);
+	}
+	/// After lines were moved so that the live ones are [0, n): forget the rest.
+	/// The lines past n that stay allocated (in the last chunk) get their
+	/// default values back, as new_line hands lines at the end out as they are.
+	void truncate(uint32 n)
+	{
+		const uint32 allocated_end = std::min(size_, nb_chunks_ * CHUNK_SIZE);
+		for (uint32 i = n; i < allocated_end; ++i)
+		{
+			for (auto& a : attributes_)
+				a->reset_line(i);
+			for (auto& m : persistent_marks_)
+				m->reset(i);
+		}
+		size_ = n;
+		free_lines_.clear();
+		set_nb_chunks((n + CHUNK_SIZE - 1) / CHUNK_SIZE);
+	}
+
+	/// Moves the live lines to [0, nb_lines()) keeping their order, frees the
+	/// rest and returns old line -> new line (INVALID_INDEX for free lines).
+	/// Values follow their lines; callers remap what refers to lines.
+	/// Precondition: no mark is reserved. O(lines x attributes).
+	std::vector<uint32> compact()
+	{
+		std::vector<uint32> old_to_new(size_, INVALID_INDEX);
+		uint32 n = 0;
+		for (uint32 i = 0; i < size_; ++i)
+			if ((*key_)[i] != INVALID_INDEX)
+			{
+				if (n != i)
+					swap_lines(n, i); // line n is free (or already moved): its old values do not matter
+				old_to_new[i] = n++;
+			}
+		truncate(n);
+		return old_to_new;
+	}
+
+	/// Permutes the lines: the line at i goes to new_position[i]. Every line
+	/// below end_index() must have a distinct position below end_index().
+	/// O(lines x attributes).
+	void permute(const std::vector<uint32>& new_position)
+	{
+		std::vector<uint32> at(new_position.size()); // at[p] = old line now at p during the cycles
+		std::vector<uint32> where(new_position.size());
+		for (uint32 i = 0; i < at.size(); ++i)
+			at[i] = where[i] = i;
+		for (uint32 i = 0; i < new_position.size(); ++i)
+		{
+			// bring old line i to new_position[i]
+			const uint32 from = where[i], to = new_position[i];
+			if (from == to)
+				continue;
+			swap_lines(from, to);
+			const uint32 other = at[to];
+			at[to] = i;
+			at[from] = other;
+			where[i] = to;
+			where[other] = from;
+		}
+		std::vector<uint32> free_lines;
+		for (uint32 i : free_lines_)
+			free_lines.push_back(new_position[i]);
+		free_lines_ = std::move(free_lines);
+	}
+
+private:
+	std::unique_ptr<MarkAttribute> new_mark() const
+	{
+		return std::make_unique<MarkAttribute>(std::min(max_contiguous_lines_, MarkAttribute::default_contiguous_lines()));
+	}
+
+	void set_nb_chunks(uint32 n)
+	{
+		for (auto& a : attributes_)
+			a->set_nb_chunks(n);
+		for (auto& m : persistent_marks_)
+			m->set_nb_chunks(n);
+		for (auto& m : slots_)
+			if (m)
+				m->set_nb_chunks(n);
+		for (auto& m : overflow_)
+			m->set_nb_chunks(n);
+		nb_chunks_ = n;
+	}
+
+	uint64 max_contiguous_lines_;
+	Orbit orbit_ = Orbit::DART;
+	const AttributeArray<uint32>* cell_index_ = nullptr;
+	std::vector<std::shared_ptr<AttributeBase>> attributes_;
+	AttributeArray<uint32>* key_ = nullptr;
+	uint32 size_ = 0;
+	uint32 nb_chunks_ = 0;
+	std::vector<uint32> free_lines_;
+
+	std::vector<std::unique_ptr<MarkAttribute>> persistent_marks_;
+	std::atomic<uint64> used_slots_{0};
+	std::array<std::unique_ptr<MarkAttribute>, 64> slots_;
+	std::mutex mutex_;
+	std::vector<std::unique_ptr<MarkAttribute>> overflow_;
+	std::vector<MarkAttribute*> overflow_free_;
+};
+
+/// A mark reserved from a container's pool for the life of its owner and given
+/// back when it dies, exceptions included. The owner clears the bits it set
+/// before then, in its own way: all at once, or only those it recorded.
+class ReservedMark
+{
+public:
+	explicit ReservedMark(AttributeContainer& c) : container_(c), mark_(c.acquire_mark())
+	{
+	}
+	~ReservedMark()
+	{
+		container_.release_mark(mark_);
+	}
+	ReservedMark(const ReservedMark&) = delete;
+	ReservedMark& operator=(const ReservedMark&) = delete;
+
+	MarkAttribute& operator*() const
+	{
+		return *mark_;
+	}
+	MarkAttribute* operator->() const
+	{
+		return mark_;
+	}
+
+private:
+	AttributeContainer& container_;
+	MarkAttribute* mark_;
+};
+
+template <typename T>
+std::shared_ptr<AttributeBase> AttributeArray<T>::clone_empty(AttributeContainer& to) const
+{
+	return to.add_attribute<T>(name_, default_value_);
+}
+
+template <typename T, Orbit O>
+std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContainer& to) const
+{
+	return to.add_attribute<T, CellAttribute<T, O>>(this->name(), this->default_value());
+}
+
+template <typename T>
+template <Orbit O>
+CGOGN_INLINE uint32 AttributeArray<T>::line_of(Cell<O> c) const
+{
+	assert(container_ != nullptr && "attribute removed from its map");
+	assert(container_->orbit() == O && "attribute indexed by a cell of another orbit");
+	if constexpr (O == Orbit::DART)
+		return c.dart.index;
+	else
+	{
+		assert(this->cell_index_ != nullptr && this->cell_index_ == container_->cell_index() && "orbit not indexed");
+		return (*this->cell_index_)[c.dart.index];
+	}
+}
+
+template <typename T>
+template <typename FUNC>
+void AttributeArray<T>::foreach_live_run(const FUNC& f) const
+{
+	const AttributeContainer* lines = container();
+	if (lines == nullptr) // a removed attribute
+		return;
+	const AttributeArray<uint32>& key = lines->key();
+	// with no free line every line in [first, end) is live: whole runs, no key read
+	const bool check_live = !lines->free_lines().empty();
+	for (uint32 i = lines->first_index(), end = lines->end_index(); i < end;)
+	{
+		const uint32 stop = std::min(end, run_end(i));
+		if (!check_live)
+		{
+			f(&(*this)[i], stop - i);
+			i = stop;
+			continue;
+		}
+		while (i < stop)
+		{
+			while (i < stop && key[i] == INVALID_INDEX)
+				++i;
+			uint32 j = i;
+			while (j < stop && key[j] != INVALID_INDEX)
+				++j;
+			if (j > i)
+				f(&(*this)[i], j - i);
+			i = j;
+		}
+	}
+}
+
+/// Iterates the values of the live lines of an attribute. It steps with a
+/// pointer through each run of lines whose values are at consecutive addresses
+/// (one run below 2 GiB of values, then one per block, see LineStorage) and
+/// reads the key only when the container has free lines, so that a range-for
+/// over a dense attribute costs what a loop over a plain array does: one
+/// increment and two pointer compares per value. Iterators compare by the
+/// address of their value; end() is one past the last line's value.
+template <typename T>
+template <bool IS_CONST>
+class AttributeArray<T>::basic_iterator
+{
+	using Attr = std::conditional_t<IS_CONST, const AttributeArray<T>, AttributeArray<T>>;
+	using Value = std::conditional_t<IS_CONST, const T, T>;
+
+public:
+	using value_type = T;
+	using difference_type = std::ptrdiff_t;
+	using reference = Value&;
+	using iterator_category = std::forward_iterator_tag;
+
+	basic_iterator() = default;
+	/// Positioned at line i (live, or end) of an attribute iterated up to line end.
+	CGOGN_INLINE basic_iterator(Attr* a, uint32 i, uint32 end) : attr_(a), end_(end)
+	{
+		if (a->container() != nullptr)
+		{
+			key_ = &a->container()->key();
+			check_live_ = !a->container()->free_lines().empty();
+		}
+		if (i < end)
+		{
+			enter_run(i);
+			if (check_live_)
+				skip_free_lines();
+		}
+		else if (end > 0)
+		{
+			// where the walk over the last run stops
+			run_first_line_ = end;
+			run_first_value_ = value_ = run_end_ = &(*a)[end - 1] + 1;
+		}
+	}
+	CGOGN_INLINE Value& operator*() const
+	{
+		return *value_;
+	}
+	CGOGN_INLINE Value* operator->() const
+	{
+		return value_;
+	}
+	CGOGN_INLINE basic_iterator& operator++()
+	{
+		step();
+		if (check_live_) [[unlikely]]
+			skip_free_lines();
+		return *this;
+	}
+	basic_iterator operator++(int)
+	{
+		basic_iterator t = *this;
+		++*this;
+		return t;
+	}
+	CGOGN_INLINE bool operator==(const basic_iterator& o) const
+	{
+		return value_ == o.value_;
+	}
+	/// The line of the current value.
+	uint32 index() const
+	{
+		return run_first_line_ + uint32(value_ - run_first_value_);
+	}
+
+private:
+	CGOGN_INLINE void step()
+	{
+		if (++value_ == run_end_) [[unlikely]]
+			next_run();
+	}
+	CGOGN_INLINE void next_run()
+	{
+		const uint32 i = index();
+		if (i < end_)
+			enter_run(i);
+		// else: value_ is one past the last line's value, as end()'s
+	}
+	CGOGN_INLINE void enter_run(uint32 i)
+	{
+		run_first_line_ = i;
+		run_first_value_ = value_ = &(*attr_)[i];
+		const uint32 run_end = std::min(end_, attr_->run_end(i));
+		run_end_ = value_ + (run_end - i);
+	}
+	void skip_free_lines()
+	{
+		while (index() < end_ && (*key_)[index()] == INVALID_INDEX)
+			step();
+	}
+
+	Attr* attr_ = nullptr;
+	const AttributeArray<uint32>* key_ = nullptr;
+	uint32 end_ = 0;
+	bool check_live_ = false;
+	Value* value_ = nullptr;
+	/// The current run: its first line, that line's value, one past its last value.
+	uint32 run_first_line_ = 0;
+	Value* run_first_value_ = nullptr;
+	Value* run_end_ = nullptr;
+};
+
+// A removed attribute (no container) iterates over nothing.
+template <typename T>
+typename AttributeArray<T>::iterator AttributeArray<T>::begin()
+{
+	return container_ ? iterator(this, container_->first_index(), container_->end_index()) : iterator();
+}
+template <typename T>
+typename AttributeArray<T>::iterator AttributeArray<T>::end()
+{
+	return container_ ? iterator(this, container_->end_index(), container_->end_index()) : iterator();
+}
+template <typename T>
+typename AttributeArray<T>::const_iterator AttributeArray<T>::begin() const
+{
+	return container_ ? const_iterator(this, container_->first_index(), container_->end_index()) : const_iterator();
+}
+template <typename T>
+typename AttributeArray<T>::const_iterator AttributeArray<T>::end() const
+{
+	return container_ ? const_iterator(this, container_->end_index(), container_->end_index()) : const_iterator();
+}
+
+} // namespace cgogn

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/build/map_builder.h>
+
+#include <array>
+
+namespace cgogn
+{
+
+/// A polygon soup with one position per vertex, as produced by the generators
+/// (the core has no vector type: positions are plain arrays).
+struct SurfaceSoup
+{
+	uint32 nb_vertices = 0;
+	std::vector<uint32> face_sizes;
+	std::vector<uint32> face_vertices;
+	std::vector<std::array<double, 3>> positions;
+};
+
+/// A cell soup (tetrahedra, pyramids, prisms, hexahedra) with positions.
+struct VolumeSoup
+{
+	uint32 nb_vertices = 0;
+	std::vector<uint32> cell_sizes;
+	std::vector<uint32> cell_vertices;
+	std::vector<std::array<double, 3>> positions;
+};
+
+/// A flat nx x ny grid of unit squares in the z = 0 plane, (nx+1)(ny+1)
+/// vertices, one boundary loop; quads, or each quad split in two triangles.
+SurfaceSoup grid_soup(uint32 nx, uint32 ny, bool triangles = false);
+/// An open cylinder of radius 1 and height 1: nu around, nv along; two
+/// boundary loops. Precondition: nu >= 3.
+SurfaceSoup cylinder_soup(uint32 nu, uint32 nv, bool triangles = false);
+/// A closed genus-0 polyhedron on the unit sphere: nu meridians, nv parallels
+/// (nv >= 2), triangle fans at the poles, quads or triangles between them.
+SurfaceSoup sphere_soup(uint32 nu, uint32 nv, bool triangles = false);
+/// A closed torus (radii 1 and 0.5): nu x nv quads, or 2 nu nv triangles.
+/// Precondition: nu, nv >= 3.
+SurfaceSoup torus_soup(uint32 nu, uint32 nv, bool triangles = false);
+/// An nx x ny x nz grid of unit cubes, each split into 6 positively oriented
+/// tetrahedra (conforming across cubes).
+VolumeSoup tet_grid_soup(uint32 nx, uint32 ny, uint32 nz);
+/// An nx x ny x nz grid of unit hexahedra.
+VolumeSoup hex_grid_soup(uint32 nx, uint32 ny, uint32 nz);
+
+inline BuildReport build_surface(CMap2& m, const SurfaceSoup& s)
+{
+	return build_surface(m, s.nb_vertices, s.face_sizes, s.face_vertices);
+}
+inline BuildReport build_volume(CMap3& m, const VolumeSoup& s)
+{
+	return build_volume(m, s.nb_vertices, s.cell_sizes, s.cell_vertices);
+}
+
+} // namespace cgogn

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/map/cmap3.h>
+
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace cgogn
+{
+
+/// What a builder did with its input. Builders never throw on bad topology:
+/// they build what they can and count the rest here.
+struct BuildReport
+{
+	/// Soup vertex i is the vertex of line `vertex_offset + i` (0 in an empty map).
+	uint32 vertex_offset = 0;
+	uint32 nb_cells_read = 0;  // faces (surface) or volumes (volume)
+	uint32 nb_cells_built = 0;
+	/// Cells with fewer than 3 vertices (surface) or a repeated vertex.
+	uint32 nb_cells_degenerate = 0;
+	/// Cells referring to a vertex id >= nb_vertices, or of an unknown kind.
+	uint32 nb_cells_invalid = 0;
+	/// Soup vertices used by no cell: their lines are released.
+	uint32 nb_isolated_vertices = 0;
+	/// Edges (surface) or faces (volume) shared by more cells than a manifold
+	/// allows, or by cells of incompatible orientation: the extra cells were
+	/// detached along them (the map stays valid, with boundary there).
+	uint32 nb_nonmanifold_edges = 0;
+	uint32 nb_nonmanifold_faces = 0;
+	/// Boundary cells created to close the map (holes, outside of volumes).
+	uint32 nb_boundary_cells = 0;
+	/// Vertices whose cells form several fans (surface) or several
+	/// face-connected groups (volume): each extra group got its own vertex.
+	/// Pairs (new vertex line, original soup vertex id).
+	std::vector<std::pair<uint32, uint32>> split_vertices;
+	/// Number of distinct soup vertices that were split.
+	uint32 nb_nonmanifold_vertices = 0;
+};
+
+/// Builds closed 2-map faces from a polygon soup and appends them to m.
+/// `face_sizes[f]` is the number of vertices of face f and `face_vertices` their
+/// ids, face after face, in [0, nb_vertices). Opposite half-edges are sewn,
+/// holes are closed by boundary faces. Vertices are indexed: soup vertex i is
+/// the vertex of line `report.vertex_offset + i`. Other indexed orbits of m get
+/// their new cells indexed too. Faces with fewer than 3 vertices, a repeated
+/// vertex or an id out of range are skipped and counted; non-manifold edges are
+/// detached and non-manifold vertices split (see BuildReport). O(total size).
+BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> face_sizes,
+						  std::span<const uint32> face_vertices);
+
+/// Builds a closed 3-map from a list of cells and appends them to m. A cell of 4
+/// vertices is a tetrahedron (a, b, c, d with d on the side of the normal of
+/// (a, b, c)), 5 a pyramid (base quad then apex), 6 a prism (triangle then the
+/// triangle above it), 8 a hexahedron (bottom quad then the top quad, VTK and
+/// MEDIT order). Faces of adjacent cells are sewn; the outside is closed by
+/// boundary volumes. Vertices are indexed as for build_surface. Cells of other
+/// sizes or with out-of-range ids are skipped and counted. O(total size).
+BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
+						 std::span<const uint32> cell_vertices);
+
+} // namespace cgogn

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/map/cmap1.h>
+
+namespace cgogn
+{
+
+/// A 2-dimensional combinatorial map: faces (phi1 cycles) glued along edges by
+/// the fixed-point-free involution phi2. The map is always closed: holes are
+/// boundary faces whose darts carry the boundary mark.
+class CMap2 : public CMap1
+{
+public:
+	static constexpr uint32 dimension = 2;
+
+	using HalfEdge = Cell<Orbit::DART>;
+	using Vertex = Cell<Orbit::PHI21>;
+	using Edge = Cell<Orbit::PHI2>;
+	using Face = Cell<Orbit::PHI1>;
+	/// A connected component: the surface seen as one volume.
+	using Volume = Cell<Orbit::PHI1_PHI2>;
+
+	CMap2()
+	{
+		phi2_ = add_relation("__phi2");
+	}
+
+private:
+	friend struct detail::MapMembers;
+	AttributeArray<uint32>* phi2_ = nullptr;
+};
+
+} // namespace cgogn

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/utils/function_traits.h>
+#include <cgogn/core/map/mesh_traits.h>
+
+#include <cassert>
+
+namespace cgogn
+{
+
+/// Next dart in the face cycle. O(1).
+CGOGN_INLINE Dart phi1(const CMap1& m, Dart d)
+{
+	return Dart((*detail::phi1_of(m))[d.index]);
+}
+
+/// Previous dart in the face cycle. phi_1 is not stored (see bench/README.md:
+/// it would cost 4 bytes per dart): O(degree of the face).
+inline Dart phi_1(const CMap1& m, Dart d)
+{
+	Dart it = d;
+	for (Dart n = phi1(m, it); n != d; n = phi1(m, it))
+		it = n;
+	return it;
+}
+
+/// The dart of the adjacent face along the same edge, opposite direction. O(1).
+CGOGN_INLINE Dart phi2(const CMap2& m, Dart d)
+{
+	return Dart((*detail::phi2_of(m))[d.index]);
+}
+
+/// Previous dart in the face cycle, in a 2-map. A boundary face of a surface
+/// is a hole, which can be as long as the whole border of the mesh: for a
+/// boundary dart, the previous dart is found around the origin of d instead
+/// (it is phi2 of the dart z before d there, phi1(phi2(z)) == d). O(degree of
+/// the face) for a dart of a real face, O(degree of its origin) for a
+/// boundary dart.
+inline Dart phi_1(const CMap2& m, Dart d)
+{
+	if (!detail::boundary_of(m)->test(d.index))
+		return phi_1(static_cast<const CMap1&>(m), d);
+	Dart z = d;
+	for (Dart n = phi1(m, phi2(m, z)); n != d; n = phi1(m, phi2(m, z)))
+		z = n;
+	return phi2(m, z);
+}
+
+/// Previous dart in the face cycle, in a 3-map: the faces of a 3-map, boundary
+/// ones included, are faces of volumes. O(degree of the face).
+inline Dart phi_1(const CMap3& m, Dart d)
+{
+	return phi_1(static_cast<const CMap1&>(m), d);
+}
+
+/// The dart of the adjacent volume along the same face, opposite direction. O(1).
+CGOGN_INLINE Dart phi3(const CMap3& m, Dart d)
+{
+	return Dart((*detail::phi3_of(m))[d.index]);
+}
+
+/// Composition of relations applied left to right: phi<1, 2>(m, d) is
+/// phi2(m, phi1(m, d)); -1 stands for phi_1.
+template <int... N, typename MAP>
+Dart phi(const MAP& m, Dart d)
+{
+	auto apply = [&](int n) {
+		if (n == 1)
+			d = phi1(m, d);
+		else if (n == -1)
+			d = phi_1(m, d);
+		else if (n == 2)
+		{
+			if constexpr (MAP::dimension >= 2)
+				d = phi2(m, d);
+		}
+		else if (n == 3)
+		{
+			if constexpr (MAP::dimension >= 3)
+				d = phi3(m, d);
+		}
+	};
+	static_assert(((N == 1 || N == -1 || (N == 2 && MAP::dimension >= 2) || (N == 3 && MAP::dimension >= 3)) && ...),
+				  "phi<...>: relation not available in this map");
+	(apply(N), ...);
+	return d;
+}
+
+/// Number of live darts, boundary darts included. O(1).
+inline uint32 nb_darts(const CMapBase& m)
+{
+	return detail::darts_of(m)->nb_lines();
+}
+
+/// True when the dart belongs to a boundary cell (a boundary face of a 2-map,
+/// a boundary volume of a 3-map). O(1).
+CGOGN_INLINE bool is_boundary(const CMapBase& m, Dart d)
+{
+	return detail::boundary_of(m)->test(d.index);
+}
+
+/// True when the map has boundary cells (an open surface, a volume mesh with
+/// an outside). O(1): the map counts its boundary darts.
+CGOGN_INLINE bool has_boundary(const CMapBase& m)
+{
+	return detail::nb_boundary_darts_of(m) != 0;
+}
+
+/// True when d is a live dart of m. O(1).
+inline bool is_dart_valid(const CMapBase& m, Dart d)
+{
+	return d.is_valid() && detail::darts_of(m)->is_live(d.index);
+}
+
+/// Calls f(Dart) on every live dart, boundary darts included; f may return
+/// false to stop. O(number of darts).
+template <typename FUNC>
+void foreach_dart(const CMapBase& m, const FUNC& func)
+{
+	held_callable_t<FUNC> f = func; // see held_callable_t
+	const AttributeContainer& c = *detail::darts_of(m);
+	const AttributeArray<uint32>& key = c.key();
+	for (uint32 i = 0, end = c.end_index(); i < end; ++i)
+		if (key[i] != INVALID_INDEX)
+			if (!call_and_continue(f, Dart(i)))
+				return;
+}
+
+namespace detail
+{
+
+inline Dart add_dart(CMapBase& m)
+{
+	if (!detail::incidence_tables_of(m).empty())
+		detail::incidence_tables_of(m).clear(); // see drop_incidence_caches
+	uint32 i = detail::darts_of(m)->new_line(0);
+	for (AttributeArray<uint32>* r : detail::relations_of(m))
+		(*r)[i] = i;
+	return Dart(i);
+}
+
+/// Boundary marks, like relations and the set of darts, define the cells the
+/// quick incidence caches hold: every change drops them.
+inline void set_boundary(CMapBase& m, Dart d, bool b)
+{
+	if (detail::boundary_of(m)->test(d.index) == b)
+		return;
+	if (!detail::incidence_tables_of(m).empty())
+		detail::incidence_tables_of(m).clear(); // see drop_incidence_caches
+	detail::boundary_of(m)->set_value(d.index, b);
+	if (b)
+		++detail::nb_boundary_darts_of(m);
+	else
+		--detail::nb_boundary_darts_of(m);
+}
+
+inline void remove_dart(CMapBase& m, Dart d)
+{
+	if (!detail::incidence_tables_of(m).empty())
+		detail::incidence_tables_of(m).clear(); // see drop_incidence_caches
+	set_boundary(m, d, false);
+	detail::darts_of(m)->release_line(d.index);
+}
+
+/// Every change of a relation goes through these: a topological change makes
+/// the quick incidence caches wrong, so they are dropped (one test of a
+/// null pointer when there are none).
+inline void drop_incidence_caches(CMapBase& m)
+{
+	if (!detail::incidence_tables_of(m).empty())
+		detail::incidence_tables_of(m).clear();
+}
+/// Frees the pooled marks nobody holds in every container of m (see
+/// AttributeContainer::release_idle_marks; builders call it at the end).
+inline void release_idle_marks(CMapBase& m)
+{
+	detail::darts_of(m)->release_idle_marks();
+	for (auto& c : detail::cells_of(m))
+		c->release_idle_marks();
+}
+inline void set_phi1(CMap1& m, Dart d, Dart e)
+{
+	drop_incidence_caches(m);
+	(*detail::phi1_of(m))[d.index] = e.index;
+}
+inline void set_phi2(CMap2& m, Dart d, Dart e)
+{
+	drop_incidence_caches(m);
+	(*detail::phi2_of(m))[d.index] = e.index;
+}
+inline void set_phi3(CMap3& m, Dart d, Dart e)
+{
+	drop_incidence_caches(m);
+	(*detail::phi3_of(m))[d.index] = e.index;
+}
+
+} // namespace detail
+
+/// Exchanges phi1(d) and phi1(e): joins two cycles into one, or splits one
+/// cycle into two (the CMap1 sew/unsew primitive). Low level: no indexing.
+inline void phi1_sew(CMap1& m, Dart d, Dart e)
+{
+	Dart f = phi1(m, d);
+	Dart g = phi1(m, e);
+	detail::set_phi1(m, d, g);
+	detail::set_phi1(m, e, f);
+}
+
+/// Detaches phi1(d) from its cycle, which it leaves as a fixed point. Low level.
+inline void phi1_unsew(CMap1& m, Dart d)
+{
+	Dart e = phi1(m, d);
+	Dart f = phi1(m, e);
+	detail::set_phi1(m, d, f);
+	detail::set_phi1(m, e, e);
+}
+
+/// Links d and e by phi2; both must be phi2 fixed points. Low level: the map is
+/// not closed while fixed points remain (builders use it; operators keep maps closed).
+inline void phi2_sew(CMap2& m, Dart d, Dart e)
+{
+	assert(phi2(m, d) == d && phi2(m, e) == e);
+	detail::set_phi2(m, d, e);
+	detail::set_phi2(m, e, d);
+}
+
+/// Unlinks d and phi2(d), leaving two fixed points. Low level.
+inline void phi2_unsew(CMap2& m, Dart d)
+{
+	Dart e = phi2(m, d);
+	detail::set_phi2(m, d, d);
+	detail::set_phi2(m, e, e);
+}
+
+/// Links d and e by phi3; both must be phi3 fixed points. Low level.
+inline void phi3_sew(CMap3& m, Dart d, Dart e)
+{
+	assert(phi3(m, d) == d && phi3(m, e) == e);
+	detail::set_phi3(m, d, e);
+	detail::set_phi3(m, e, d);
+}
+
+/// Unlinks d and phi3(d). Low level.
+inline void phi3_unsew(CMap3& m, Dart d)
+{
+	Dart e = phi3(m, d);
+	detail::set_phi3(m, d, d);
+	detail::set_phi3(m, e, e);
+}
+
+} // namespace cgogn

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/map/cmap3.h>
+
+#include <concepts>
+#include <tuple>
+
+namespace cgogn
+{
+
+/// Everything generic code needs to know about a mesh type: its dimension,
+/// its cell types and its attribute type. Specialized for every map and view.
+template <typename MESH>
+struct mesh_traits;
+
+template <>
+struct mesh_traits<CMap1>
+{
+	static constexpr uint32 dimension = 1;
+	using MapType = CMap1;
+	using Vertex = CMap1::Vertex;
+	using Edge = CMap1::Edge;
+	using Face = CMap1::Face;
+	using Cells = std::tuple<Vertex, Face>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>;
+	using AttributeGen = AttributeBase;
+};
+
+template <>
+struct mesh_traits<CMap2>
+{
+	static constexpr uint32 dimension = 2;
+	using MapType = CMap2;
+	using HalfEdge = CMap2::HalfEdge;
+	using Vertex = CMap2::Vertex;
+	using Edge = CMap2::Edge;
+	using Face = CMap2::Face;
+	using Volume = CMap2::Volume;
+	using Cells = std::tuple<HalfEdge, Vertex, Edge, Face, Volume>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>;
+	using AttributeGen = AttributeBase;
+};
+
+template <>
+struct mesh_traits<CMap3>
+{
+	static constexpr uint32 dimension = 3;
+	using MapType = CMap3;
+	using HalfEdge = CMap3::HalfEdge;
+	using Vertex = CMap3::Vertex;
+	using Vertex2 = CMap3::Vertex2;
+	using Edge = CMap3::Edge;
+	using Edge2 = CMap3::Edge2;
+	using Face = CMap3::Face;
+	using Face2 = CMap3::Face2;
+	using Volume = CMap3::Volume;
+	using CC = CMap3::CC;
+	using Cells = std::tuple<HalfEdge, Vertex, Vertex2, Edge, Edge2, Face, Face2, Volume, CC>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>;
+	using AttributeGen = AttributeBase;
+};
+
+/// A type usable as a mesh by generic algorithms: a map or a view on one.
+template <typename M>
+concept MeshType = requires
+{
+	{ mesh_traits<M>::dimension } -> std::convertible_to<uint32>;
+	typename mesh_traits<M>::Vertex;
+	typename mesh_traits<M>::MapType;
+};
+
+/// One of the combinatorial map types (not a view).
+template <typename M>
+concept MapType = std::derived_from<M, CMapBase> && MeshType<M>;
+
+template <typename M>
+concept SurfaceMesh = MeshType<M> && mesh_traits<M>::dimension == 2;
+template <typename M>
+concept VolumeMesh = MeshType<M> && mesh_traits<M>::dimension == 3;
+
+/// True when CELL is one of the cell types of MESH.
+template <typename MESH, typename CELL>
+inline constexpr bool has_cell_type_v = []<typename... C>(std::tuple<C...>*) {
+	return (std::is_same_v<CELL, C> || ...);
+}(static_cast<typename mesh_traits<MESH>::Cells*>(nullptr));
+
+} // namespace cgogn

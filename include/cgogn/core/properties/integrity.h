@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/map/cmap3.h>
+
+#include <string>
+#include <vector>
+
+namespace cgogn
+{
+
+/// One violated invariant found by check_integrity.
+struct IntegrityError
+{
+	enum class Kind
+	{
+		DeadRelation,          // a relation points to a dart that is not live
+		Phi1NotPermutation,    // two darts have the same phi1
+		PhiNotInvolution,      // phi_i(phi_i(d)) != d for i >= 2
+		PhiFixedPoint,         // phi_i(d) == d for i >= 2: the map is not closed
+		Phi1Phi3NotInvolution, // phi3 o phi1 is not an involution (3-maps)
+		BoundaryLinked,        // phi_n links two boundary darts
+		BoundaryMarkNotConstant, // a boundary cell is only partly marked
+		BoundaryCountWrong,    // the map's count of boundary darts is not the number of marked darts
+		IndexNotConstant,      // two darts of one orbit have different indices
+		MissingIndex,          // a cell of an indexed orbit has no index
+		BoundaryCellIndexed,   // a boundary cell has an index
+		DeadIndex,             // a dart refers to a free line
+		BadRepresentative,     // a line's representative dart is not a dart of its cell
+		IndexShared,           // two cells use the same line
+		FreeLineLive,          // the free list holds a live line
+		FreeLineDuplicate,     // the free list holds a line twice (it would be handed out twice)
+		StaleUnusedLine,       // a line never handed out since the last compaction holds an old index
+		ShortFace,             // a non-boundary face of a 2- or 3-map has 1 or 2 edges
+		IncidenceCacheStale,   // a quick incidence cache disagrees with the map (see IncidenceCache)
+	};
+	Kind kind;
+	Orbit orbit = Orbit::DART; // for indexing errors
+	uint32 dart = INVALID_INDEX;
+	uint32 index = INVALID_INDEX;
+	std::string message;
+};
+
+/// The result of check_integrity: every violated invariant (the first 1000
+/// are described; `nb_errors` counts them all).
+struct IntegrityReport
+{
+	std::vector<IntegrityError> errors;
+	std::size_t nb_errors = 0;
+
+	bool ok() const
+	{
+		return nb_errors == 0;
+	}
+	bool has(IntegrityError::Kind k) const
+	{
+		for (const auto& e : errors)
+			if (e.kind == k)
+				return true;
+		return false;
+	}
+	/// All messages, one per line.
+	std::string to_string() const;
+};
+
+/// Checks every invariant of the map: relations are permutations/fixed-point-
+/// free involutions between live darts (and phi3 o phi1 is an involution in
+/// 3-maps), no phi_n between two boundary darts, the boundary mark is constant
+/// on each boundary cell, and for every indexed orbit: all darts of a cell
+/// share one live index, boundary cells have none, no line is shared by two
+/// cells, every live line's representative dart belongs to its cell, the free
+/// lists hold only free lines, each once; the lines allocated past the last
+/// one in use hold no relation, key or index (what new_line hands out is
+/// clean); in 2- and 3-maps no non-boundary face has fewer than 3 edges;
+/// every quick incidence cache present (IncidenceCache) matches the relation
+/// recomputed from the darts. O(number of darts x number of indexed orbits +
+/// size of the cached relations + number of lines).
+IntegrityReport check_integrity(const CMap1& m);
+IntegrityReport check_integrity(const CMap2& m);
+IntegrityReport check_integrity(const CMap3& m);
+
+} // namespace cgogn
