@@ -8,9 +8,9 @@
 // attributes whose names the formats use, with other types: a load that
 // throws must leave that map exactly as it was, and one that succeeds must
 // give a map passing check_integrity.
+#include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
-#include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
@@ -64,8 +64,7 @@ io::detail::MeshData parse(int kind, std::string_view in, const std::string& pat
 		return io::detail::read_vtu(in, path);
 	case GMSH:
 		return io::detail::read_gmsh(in, path);
-	default:
-	{
+	default: {
 		// the .node and .ele contents, separated by the first NUL byte
 		const std::size_t sep = in.find('\0');
 		const std::string_view node = in.substr(0, sep);
@@ -81,8 +80,8 @@ template <typename MAP>
 void add_colliding_attributes(MAP& m)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
-	using Top = std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face,
-								   typename mesh_traits<MAP>::Volume>;
+	using Top =
+		std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face, typename mesh_traits<MAP>::Volume>;
 	add_attribute<double, Vertex>(m, "normal");
 	add_attribute<Vec2, Vertex>(m, "color");
 	add_attribute<Vec3, Vertex>(m, "tex_coord");

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `cgogn decimate`: quadric-error edge-collapse decimation of a triangle surface.
-#include "commands.h"
-
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/modeling/decimation.h>
+
+#include "commands.h"
 
 #include <cmath>
 

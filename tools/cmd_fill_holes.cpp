@@ -2,9 +2,9 @@
 // `cgogn fill-holes`: closes the holes of a surface file (modeling::fill_holes).
 #include <cgogn/modeling/hole_filling.h>
 
-#include <iostream>
-
 #include "commands.h"
+
+#include <iostream>
 
 namespace cgogn::tool
 {
@@ -20,7 +20,7 @@ struct FillHolesOptions
 	uint32 max_size = 0;
 };
 
-int run_fill_holes(const FillHolesOptions &o)
+int run_fill_holes(const FillHolesOptions& o)
 {
 	modeling::HoleFillingOptions options;
 	options.refine = !o.no_refine;
@@ -37,21 +37,21 @@ int run_fill_holes(const FillHolesOptions &o)
 		save_surface_file(m, o.files.out, o.files.binary, progress);
 	}
 	std::cout << "holes: " << r.holes_found << " found, " << r.holes_filled << " filled, " << r.holes_skipped
-	          << " skipped; added " << r.vertices_added << " vertices, " << r.faces_added << " faces\n";
+			  << " skipped; added " << r.vertices_added << " vertices, " << r.faces_added << " faces\n";
 	return 0;
 }
 
 } // namespace
 
-Command add_fill_holes_command(CLI::App &app)
+Command add_fill_holes_command(CLI::App& app)
 {
-	auto *sub = app.add_subcommand("fill-holes", "Fill the holes of a surface (triangulate, refine, fair)");
+	auto* sub = app.add_subcommand("fill-holes", "Fill the holes of a surface (triangulate, refine, fair)");
 	auto o = std::make_shared<FillHolesOptions>();
 	add_edit_files(*sub, o->files);
 	sub->add_flag("--no-refine", o->no_refine, "only triangulate the holes, no new vertex");
 	sub->add_flag("--no-fair", o->no_fair, "keep the refined patches flat (no fairing)");
 	sub->add_option("--max-size", o->max_size, "leave open the holes of more boundary edges than this")
-	    ->check(CLI::Range(3u, 4000000000u));
+		->check(CLI::Range(3u, 4000000000u));
 	return {sub, [o] { return run_fill_holes(*o); }};
 }
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `cgogn info`, `cgogn check`, `cgogn convert`: inspect and convert mesh files.
+#include <cgogn/core/properties/integrity.h>
+
 #include "commands.h"
 #include "mesh_info.h"
-
-#include <cgogn/core/properties/integrity.h>
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `cgogn remesh`: isotropic remeshing of a triangle surface.
-#include "commands.h"
-
 #include <cgogn/modeling/remeshing.h>
+
+#include "commands.h"
 
 #include <cmath>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `cgogn smooth`: the geometry layer's smoothing filters on a surface file.
-#include "commands.h"
-
 #include <cgogn/geometry.h>
+
+#include "commands.h"
 
 #include <map>
 
@@ -78,7 +78,8 @@ Command add_smooth_command(CLI::App& app)
 												   {"implicit", Method::Implicit}};
 	sub->add_option("--method", o->method, "filter (default taubin)")
 		->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
-	sub->add_option("--iterations,-n", o->iterations, "passes of the filter (default 10; implicit: 1 step, each shrinks the shape further)")
+	sub->add_option("--iterations,-n", o->iterations,
+					"passes of the filter (default 10; implicit: 1 step, each shrinks the shape further)")
 		->check(CLI::Range(1u, 1000000u));
 	sub->add_option("--lambda", o->lambda, "laplacian/taubin step in (0, 1] (default 0.5)")
 		->check(CLI::Range(1e-9, 1.0));

@@ -3,10 +3,10 @@
 // sqrt3) or a volume mesh (hexahedra or tetrahedra, 1-to-8).
 #include <cgogn/modeling/subdivision.h>
 
+#include "commands.h"
+
 #include <map>
 #include <stdexcept>
-
-#include "commands.h"
 
 namespace cgogn::tool
 {
@@ -35,14 +35,14 @@ bool is_volume_scheme(Scheme s)
 	return s == Scheme::Hex || s == Scheme::Tet;
 }
 
-int run_subdivide(const SubdivideOptions &o)
+int run_subdivide(const SubdivideOptions& o)
 {
 	Progress progress;
 	const bool volume_in = is_volume_format(format_of(o.files.in));
 	if (volume_in != is_volume_scheme(o.scheme))
 		throw std::invalid_argument(o.files.in +
-		                            ": the schemes loop, catmull-clark and sqrt3 take surfaces, hex and tet "
-		                            "take volume meshes");
+									": the schemes loop, catmull-clark and sqrt3 take surfaces, hex and tet "
+									"take volume meshes");
 	if (volume_in && !is_volume_format(format_of(o.files.out)))
 		throw io::Error(o.files.out, "not a volume format");
 	try
@@ -72,13 +72,13 @@ int run_subdivide(const SubdivideOptions &o)
 		CMap2 m;
 		load_surface_file(m, o.files.in, progress);
 		const modeling::SurfaceScheme scheme = o.scheme == Scheme::Loop    ? modeling::SurfaceScheme::Loop
-		                                       : o.scheme == Scheme::Sqrt3 ? modeling::SurfaceScheme::Sqrt3
-		                                                                   : modeling::SurfaceScheme::CatmullClark;
+											   : o.scheme == Scheme::Sqrt3 ? modeling::SurfaceScheme::Sqrt3
+																		   : modeling::SurfaceScheme::CatmullClark;
 		modeling::subdivide(m, *positions(m), scheme, o.iterations, progress.percent("subdividing"));
 		save_surface_file(m, o.files.out, o.files.binary, progress);
 		return 0;
 	}
-	catch (const modeling::SubdivisionError &e)
+	catch (const modeling::SubdivisionError& e)
 	{
 		throw modeling::SubdivisionError(o.files.in + ": " + e.what());
 	}
@@ -86,21 +86,21 @@ int run_subdivide(const SubdivideOptions &o)
 
 } // namespace
 
-Command add_subdivide_command(CLI::App &app)
+Command add_subdivide_command(CLI::App& app)
 {
-	auto *sub = app.add_subcommand("subdivide", "Uniform subdivision: loop, catmull-clark, sqrt3 (surfaces), hex, tet "
-	                                            "(volume meshes, 1-to-8)");
+	auto* sub = app.add_subcommand("subdivide", "Uniform subdivision: loop, catmull-clark, sqrt3 (surfaces), hex, tet "
+												"(volume meshes, 1-to-8)");
 	auto o = std::make_shared<SubdivideOptions>();
 	add_edit_files(*sub, o->files);
 	const std::map<std::string, Scheme> schemes = {{"loop", Scheme::Loop},
-	                                               {"catmull-clark", Scheme::CatmullClark},
-	                                               {"sqrt3", Scheme::Sqrt3},
-	                                               {"hex", Scheme::Hex},
-	                                               {"tet", Scheme::Tet}};
+												   {"catmull-clark", Scheme::CatmullClark},
+												   {"sqrt3", Scheme::Sqrt3},
+												   {"hex", Scheme::Hex},
+												   {"tet", Scheme::Tet}};
 	sub->add_option("--scheme", o->scheme,
-	                "loop (triangles), catmull-clark (any polygons, default), sqrt3 "
-	                "(triangles), hex (hexahedra), tet (tetrahedra)")
-	    ->transform(CLI::CheckedTransformer(schemes, CLI::ignore_case));
+					"loop (triangles), catmull-clark (any polygons, default), sqrt3 "
+					"(triangles), hex (hexahedra), tet (tetrahedra)")
+		->transform(CLI::CheckedTransformer(schemes, CLI::ignore_case));
 	sub->add_option("--iterations,-n", o->iterations, "number of steps (default 1)")->check(CLI::Range(1u, 20u));
 	return {sub, [o] { return run_subdivide(*o); }};
 }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `cgogn triangulate`: ear clipping of every polygonal face of a surface file.
-#include "commands.h"
-
 #include <cgogn/modeling/triangulation.h>
+
+#include "commands.h"
 
 namespace cgogn::tool
 {

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/geometry/types/vector_traits.h>
-#include <cgogn/io/options.h>
+#include "mesh_info.h"
 
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
-
-#include "mesh_info.h"
+#include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/options.h>
 
 #include <algorithm>
 #include <limits>
@@ -146,8 +145,8 @@ json volume_info(const CMap3& m, const io::LoadReport& r)
 		else
 			++others;
 	});
-	j["cell_kinds"] = {{"tetrahedra", tets}, {"pyramids", pyramids}, {"prisms", prisms}, {"hexahedra", hexes},
-					   {"other", others}};
+	j["cell_kinds"] = {
+		{"tetrahedra", tets}, {"pyramids", pyramids}, {"prisms", prisms}, {"hexahedra", hexes}, {"other", others}};
 	geometry(m, j);
 	return j;
 }
@@ -165,11 +164,33 @@ std::string info_text(const json& j)
 			s << v.dump();
 		s << "\n";
 	};
-	for (const char* k : {"file", "format", "dimension", "vertices", "edges", "faces", "volumes", "halfedges",
-						  "boundary_edges", "boundary_faces", "boundary_components", "connected_components",
-						  "euler_characteristic", "genus", "manifold", "isolated_vertices", "nonmanifold_vertices",
-						  "split_vertex_copies", "nonmanifold_edges", "nonmanifold_faces", "skipped_cells",
-						  "holes_closed", "reoriented_cells", "cell_kinds", "face_degrees", "bbox", "edge_length"})
+	for (const char* k : {"file",
+						  "format",
+						  "dimension",
+						  "vertices",
+						  "edges",
+						  "faces",
+						  "volumes",
+						  "halfedges",
+						  "boundary_edges",
+						  "boundary_faces",
+						  "boundary_components",
+						  "connected_components",
+						  "euler_characteristic",
+						  "genus",
+						  "manifold",
+						  "isolated_vertices",
+						  "nonmanifold_vertices",
+						  "split_vertex_copies",
+						  "nonmanifold_edges",
+						  "nonmanifold_faces",
+						  "skipped_cells",
+						  "holes_closed",
+						  "reoriented_cells",
+						  "cell_kinds",
+						  "face_degrees",
+						  "bbox",
+						  "edge_length"})
 		if (j.contains(k))
 			line(k, j[k]);
 	return s.str();

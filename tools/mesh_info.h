@@ -2,9 +2,8 @@
 // What `cgogn info` reports about a loaded map, as a JSON object.
 #pragma once
 
-#include <cgogn/io/options.h>
-
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/io/options.h>
 
 #include <nlohmann/json.hpp>
 

@@ -33,11 +33,11 @@
 //                instead of two (phi2, then phi1), as a half-edge structure
 // Same input as bench_suite (--input=data|generated|small); the numbers are
 // in bench/README.md.
-#include "harness.h"
-#include "inputs.h"
-
 #include <cgogn/core.h>
 #include <cgogn/geometry/types/vector_traits.h>
+
+#include "harness.h"
+#include "inputs.h"
 
 #include <benchmark/benchmark.h>
 
@@ -428,42 +428,78 @@ void run(benchmark::State& state, Layouts& l, F&& pass, POSITIONS& positions)
 void soa(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Soa{l, l.plain}); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(Soa{l, l.plain});
+		},
+		l.pos);
 }
 void aos16(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Aos16{{{l, l.plain}}}); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(Aos16{{{l, l.plain}}});
+		},
+		l.pos);
 }
 void soa_prefetch(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(SoaPrefetch{{l, l.plain}}); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(SoaPrefetch{{l, l.plain}});
+		},
+		l.pos);
 }
 void aos8(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Aos8{{l, l.plain}}); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(Aos8{{l, l.plain}});
+		},
+		l.pos);
 }
 void paired_explicit(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Soa{l, l.paired}, l.paired_vertex_dart); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(Soa{l, l.paired}, l.paired_vertex_dart);
+		},
+		l.pos);
 }
 void paired_checked(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(PairedChecked{{l, l.paired}}, l.paired_vertex_dart); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(PairedChecked{{l, l.paired}}, l.paired_vertex_dart);
+		},
+		l.pos);
 }
 void paired(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(Paired{{l, l.paired}}, l.paired_vertex_dart); }, l.pos);
+	run(
+		state, l,
+		[&] {
+			l.smooth(Paired{{l, l.paired}}, l.paired_vertex_dart);
+		},
+		l.pos);
 }
 void block_table(benchmark::State& state)
 {
 	Layouts& l = layouts();
-	run(state, l, [&] { l.smooth(BlockTable{l}); }, l.pos);
+	run(
+		state, l, [&] { l.smooth(BlockTable{l}); }, l.pos);
 }
 void range_check(benchmark::State& state)
 {
@@ -472,8 +508,11 @@ void range_check(benchmark::State& state)
 	run(
 		state, l,
 		[&] {
-			l.smooth(RangeCheck{{l.plain.phi1.data(), lim}, {l.plain.phi2.data(), lim}, {l.plain.vertex.data(), lim},
-								{l.plain.boundary_bits.data(), lim}, {l.pos.data(), lim}});
+			l.smooth(RangeCheck{{l.plain.phi1.data(), lim},
+								{l.plain.phi2.data(), lim},
+								{l.plain.vertex.data(), lim},
+								{l.plain.boundary_bits.data(), lim},
+								{l.pos.data(), lim}});
 		},
 		l.pos);
 }
@@ -481,7 +520,12 @@ void lib_access(benchmark::State& state)
 {
 	Layouts& l = layouts();
 	const CMap2& m = l.map;
-	run(state, l, [&] { l.smooth(LibAccess{m, *l.position, *cgogn::detail::cell_index_of(m)[orbit_index(Orbit::PHI21)]}); }, *l.position);
+	run(
+		state, l,
+		[&] {
+			l.smooth(LibAccess{m, *l.position, *cgogn::detail::cell_index_of(m)[orbit_index(Orbit::PHI21)]});
+		},
+		*l.position);
 }
 void lib_memory(benchmark::State& state)
 {

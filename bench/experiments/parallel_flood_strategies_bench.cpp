@@ -23,6 +23,8 @@
 // generated 998,250-tet grid). Arguments of each benchmark: number of workers.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -33,8 +35,6 @@
 #include <sys/resource.h>
 #include <utility>
 #include <vector>
-
-#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -59,8 +59,8 @@ CMap3& volume_map()
 			build_volume(map, tet_grid_soup(55, 55, 55));
 		else
 			io::load_volume(
-			    map, cgogn_test_data::path(std::string("volume/") + (which == "elephant" ? "elephant_hex_110k.mesh"
-			                                                                             : "armadillo_tet_461k.mesh")));
+				map, cgogn_test_data::path(std::string("volume/") + (which == "elephant" ? "elephant_hex_110k.mesh"
+																						 : "armadillo_tet_461k.mesh")));
 		// the non-indexed path for vertices: drop the index the reader made
 		AttributeArray<uint32>*& idx = cgogn::detail::cell_index_of(map)[orbit_index(Orbit::PHI21_PHI31)];
 		cgogn::detail::darts_of(map)->remove_attribute(idx);
@@ -80,24 +80,24 @@ void per_chunk(const CMap3& m, const FUNC& f)
 	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
 	MarkAttribute* seen = cgogn::detail::darts_of(m)->acquire_mark();
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
-		const uint32 b = bb * 64, e = std::min(be * 64, end);
-		for (uint32 i = b; i < e; ++i)
-		{
-			if (key[i] == INVALID_INDEX || seen->test(i) || is_boundary(m, Dart(i)))
-				continue;
-			uint32 smallest = i;
-			foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
-				if (x.index >= b && x.index < e)
-					seen->set(x.index);
-				if (x.index < smallest && !is_boundary(m, x))
-					smallest = x.index;
-			});
-			if (smallest == i)
-				f(CELL(Dart(i)));
-		}
-		for (uint32 i = b; i < e; ++i)
-			seen->reset(i);
-	}));
+									const uint32 b = bb * 64, e = std::min(be * 64, end);
+									for (uint32 i = b; i < e; ++i)
+									{
+										if (key[i] == INVALID_INDEX || seen->test(i) || is_boundary(m, Dart(i)))
+											continue;
+										uint32 smallest = i;
+										foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
+											if (x.index >= b && x.index < e)
+												seen->set(x.index);
+											if (x.index < smallest && !is_boundary(m, x))
+												smallest = x.index;
+										});
+										if (smallest == i)
+											f(CELL(Dart(i)));
+									}
+									for (uint32 i = b; i < e; ++i)
+										seen->reset(i);
+								}));
 	cgogn::detail::darts_of(m)->release_mark(seen);
 }
 
@@ -115,33 +115,34 @@ void per_worker(const CMap3& m, const FUNC& f)
 	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
 	std::vector<Worker> workers(thread_pool()->nb_workers());
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
-		Worker& w = workers[current_thread_index()];
-		if (w.flooded == nullptr)
-		{
-			w.flooded = cgogn::detail::darts_of(m)->acquire_mark();
-			w.owner = cgogn::detail::darts_of(m)->acquire_mark();
-		}
-		for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
-		{
-			if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
-				continue;
-			if (w.flooded->test(i))
-			{
-				if (w.owner->test(i))
-					f(CELL(Dart(i)));
-				continue;
-			}
-			uint32 smallest = i;
-			detail::flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
-				if (x.index < smallest && !is_boundary(m, x))
-					smallest = x.index;
-			});
-			if (smallest == i)
-				f(CELL(Dart(i)));
-			else
-				w.owner->set(smallest);
-		}
-	}));
+									Worker& w = workers[current_thread_index()];
+									if (w.flooded == nullptr)
+									{
+										w.flooded = cgogn::detail::darts_of(m)->acquire_mark();
+										w.owner = cgogn::detail::darts_of(m)->acquire_mark();
+									}
+									for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+									{
+										if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
+											continue;
+										if (w.flooded->test(i))
+										{
+											if (w.owner->test(i))
+												f(CELL(Dart(i)));
+											continue;
+										}
+										uint32 smallest = i;
+										detail::flood_orbit_keep_marks<CELL::ORBIT>(
+											m, Dart(i), *w.flooded, w.work, [&](Dart x) {
+												if (x.index < smallest && !is_boundary(m, x))
+													smallest = x.index;
+											});
+										if (smallest == i)
+											f(CELL(Dart(i)));
+										else
+											w.owner->set(smallest);
+									}
+								}));
 	for (Worker& w : workers)
 		for (MarkAttribute* mark : {w.flooded, w.owner})
 			if (mark != nullptr)
@@ -158,28 +159,29 @@ void claim_all(const CMap3& m, const FUNC& f)
 	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
 	std::vector<Worker> workers(thread_pool()->nb_workers());
 	MarkAttribute* claimed = cgogn::detail::darts_of(m)->acquire_mark();
-	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
-		Worker& w = workers[current_thread_index()];
-		if (w.flooded == nullptr)
-			w.flooded = cgogn::detail::darts_of(m)->acquire_mark();
-		for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
-		{
-			if (key[i] == INVALID_INDEX || claimed->atomic_test(i) || is_boundary(m, Dart(i)))
-				continue;
-			uint32 owner = i;
-			bool owner_is_mine = false;
-			detail::flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
-				const bool mine = claimed->atomic_test_and_set(x.index);
-				if (x.index <= owner && !is_boundary(m, x))
-				{
-					owner = x.index;
-					owner_is_mine = mine;
-				}
-			});
-			if (owner_is_mine)
-				f(CELL(Dart(owner)));
-		}
-	}));
+	detail::parallel_for_chunks(
+		(end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
+			Worker& w = workers[current_thread_index()];
+			if (w.flooded == nullptr)
+				w.flooded = cgogn::detail::darts_of(m)->acquire_mark();
+			for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+			{
+				if (key[i] == INVALID_INDEX || claimed->atomic_test(i) || is_boundary(m, Dart(i)))
+					continue;
+				uint32 owner = i;
+				bool owner_is_mine = false;
+				detail::flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
+					const bool mine = claimed->atomic_test_and_set(x.index);
+					if (x.index <= owner && !is_boundary(m, x))
+					{
+						owner = x.index;
+						owner_is_mine = mine;
+					}
+				});
+				if (owner_is_mine)
+					f(CELL(Dart(owner)));
+			}
+		}));
 	claimed->clear_all();
 	cgogn::detail::darts_of(m)->release_mark(claimed);
 	for (Worker& w : workers)
@@ -224,34 +226,34 @@ void union_find(const CMap3& m, const FUNC& f)
 		}
 	};
 	detail::parallel_for_chunks(end, 4096, Chunk([&](uint32 b, uint32 e) {
-		for (uint32 i = b; i < e; ++i)
-			parent[i].store(i, std::memory_order_relaxed);
-	}));
+									for (uint32 i = b; i < e; ++i)
+										parent[i].store(i, std::memory_order_relaxed);
+								}));
 	detail::parallel_for_chunks(end, 4096, Chunk([&](uint32 b, uint32 e) {
-		for (uint32 i = b; i < e; ++i)
-		{
-			if (key[i] == INVALID_INDEX)
-				continue;
-			const Dart d(i);
-			if constexpr (CELL::ORBIT == Orbit::PHI21_PHI31)
-			{
-				unite(i, phi1(m, phi2(m, d)).index);
-				unite(i, phi1(m, phi3(m, d)).index);
-			}
-			else
-			{
-				if (is_boundary(m, d)) // boundary volumes are not reported
-					continue;
-				unite(i, phi1(m, d).index);
-				unite(i, phi2(m, d).index);
-			}
-		}
-	}));
+									for (uint32 i = b; i < e; ++i)
+									{
+										if (key[i] == INVALID_INDEX)
+											continue;
+										const Dart d(i);
+										if constexpr (CELL::ORBIT == Orbit::PHI21_PHI31)
+										{
+											unite(i, phi1(m, phi2(m, d)).index);
+											unite(i, phi1(m, phi3(m, d)).index);
+										}
+										else
+										{
+											if (is_boundary(m, d)) // boundary volumes are not reported
+												continue;
+											unite(i, phi1(m, d).index);
+											unite(i, phi2(m, d).index);
+										}
+									}
+								}));
 	detail::parallel_for_chunks(end, 4096, Chunk([&](uint32 b, uint32 e) {
-		for (uint32 i = b; i < e; ++i)
-			if (key[i] != INVALID_INDEX && !is_boundary(m, Dart(i)) && find(i) == i)
-				f(CELL(Dart(i)));
-	}));
+									for (uint32 i = b; i < e; ++i)
+										if (key[i] != INVALID_INDEX && !is_boundary(m, Dart(i)) && find(i) == i)
+											f(CELL(Dart(i)));
+								}));
 }
 
 enum class Strategy
@@ -341,12 +343,7 @@ void vertices(benchmark::State& state, Strategy s)
 } // namespace
 
 #define CGOGN_FLOOD_BENCH(CELL, S)                                                                                     \
-	BENCHMARK_CAPTURE(CELL, S, Strategy::S)                                                                                 \
-		->Arg(1)                                                                                                       \
-		->Arg(2)                                                                                                       \
-		->Unit(benchmark::kMillisecond)                                                                                \
-		->UseRealTime()                                                                                                \
-		->MinTime(1.0);
+	BENCHMARK_CAPTURE(CELL, S, Strategy::S)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 CGOGN_FLOOD_BENCH(volumes, seq)
 CGOGN_FLOOD_BENCH(volumes, per_chunk)

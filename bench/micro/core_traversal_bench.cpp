@@ -81,8 +81,8 @@ void circulator(benchmark::State& state, bool indexed)
 			state.SkipWithError("circulator check failed");
 		benchmark::DoNotOptimize(c);
 	}
-	state.counters["ns_per_incidence"] = benchmark::Counter(
-		double(2 * me.nb_incidences) * state.iterations(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+	state.counters["ns_per_incidence"] = benchmark::Counter(double(2 * me.nb_incidences) * state.iterations(),
+															benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void smoothing(benchmark::State& state, bool indexed)
@@ -115,7 +115,7 @@ void smoothing(benchmark::State& state, bool indexed)
 			foreach_cell_by_darts<Vertex>(m, smooth);
 	}
 	state.counters["ns_per_incidence"] = benchmark::Counter(double(incidences) * state.iterations(),
-															 benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+															benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 } // namespace
@@ -134,23 +134,19 @@ void attribute_read(benchmark::State& state, bool by_cell)
 	{
 		reads = 0;
 		if (by_cell)
-			foreach_dart(m,
-			             [&](Dart d)
-			             {
-				             s += pos[Vertex(d)][0];
-				             ++reads;
-			             });
+			foreach_dart(m, [&](Dart d) {
+				s += pos[Vertex(d)][0];
+				++reads;
+			});
 		else
-			foreach_dart(m,
-			             [&](Dart d)
-			             {
-				             s += value<Vec3>(m, pos, Vertex(d))[0];
-				             ++reads;
-			             });
+			foreach_dart(m, [&](Dart d) {
+				s += value<Vec3>(m, pos, Vertex(d))[0];
+				++reads;
+			});
 		benchmark::DoNotOptimize(s);
 	}
 	state.counters["ns_per_read"] = benchmark::Counter(double(reads) * state.iterations(),
-	                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+													   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 BENCHMARK_CAPTURE(circulator, plain, false)->Unit(benchmark::kMillisecond)->MinTime(1.0);

@@ -5,10 +5,10 @@
 // available. The files are written once to a temporary folder.
 #include <cgogn/cgogn.h>
 
-#include <benchmark/benchmark.h>
-
 #include "file_io.h"
 #include "formats.h"
+
+#include <benchmark/benchmark.h>
 
 #ifdef CGOGN_BENCH_HAS_OPENMESH
 #include <OpenMesh/Core/IO/MeshIO.hh>

@@ -7,6 +7,8 @@
 // one worker (its sequential fallback).
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
@@ -15,8 +17,6 @@
 #include <filesystem>
 #include <sys/resource.h>
 #include <utility>
-
-#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -222,8 +222,8 @@ struct Volume3
 		// the hex mesh of the data folder; CGOGN_BENCH_GENERATED=1 (or no data
 		// folder): a generated 998,250-tet grid
 		const char* which = std::getenv("CGOGN_BENCH_VOLUME");
-		const std::string name = which != nullptr && std::string(which) == "elephant" ? "elephant_hex_110k.mesh"
-																					  : "armadillo_tet_461k.mesh";
+		const std::string name =
+			which != nullptr && std::string(which) == "elephant" ? "elephant_hex_110k.mesh" : "armadillo_tet_461k.mesh";
 		const std::string file = cgogn_test_data::path("volume/" + name);
 		if (!std::getenv("CGOGN_BENCH_GENERATED") && std::filesystem::exists(file))
 			io::load_volume(map, file);

@@ -8,15 +8,15 @@
 // input surface, `from_input_*` from the input's vertices to the result.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "modeling_peers.h"
+
 #include <benchmark/benchmark.h>
 
 #include <ctime>
 #include <filesystem>
 #include <functional>
 #include <string>
-
-#include "cgogn_test_data.h"
-#include "modeling_peers.h"
 
 using namespace cgogn;
 using cgogn_bench::TriangleSoup;

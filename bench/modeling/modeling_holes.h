@@ -3,9 +3,9 @@
 // peer registers its benchmarks from its own translation unit.
 #pragma once
 
-#include <string>
-
 #include "cgogn_test_data.h"
+
+#include <string>
 
 namespace cgogn::bench_holes
 {
@@ -13,13 +13,13 @@ namespace cgogn::bench_holes
 /// Meshes with holes, by benchmark name.
 struct HoleMesh
 {
-	const char *name;
+	const char* name;
 	const char* file; // under surface/ of the data folders
 };
 inline constexpr HoleMesh hole_meshes[] = {{"bunny", "stanford-bunny.obj"}, {"elephant", "elephant-with-holes.off"}};
-inline constexpr const char *quad_mesh = "spot_quadrangulated.obj";
+inline constexpr const char* quad_mesh = "spot_quadrangulated.obj";
 
-inline std::string data_file(const char *file)
+inline std::string data_file(const char* file)
 {
 	return cgogn_test_data::path(std::string("surface/") + file);
 }

@@ -8,11 +8,11 @@
 // timer paused. Read the CPU time column.
 #include <cgogn/cgogn.h>
 
+#include "modeling_holes.h"
+
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
-
-#include "modeling_holes.h"
 
 using namespace cgogn;
 using namespace cgogn::bench_holes;
@@ -20,7 +20,7 @@ using namespace cgogn::bench_holes;
 namespace
 {
 
-void cgogn_fill_holes(benchmark::State &state, const std::string &path, bool refine_and_fair)
+void cgogn_fill_holes(benchmark::State& state, const std::string& path, bool refine_and_fair)
 {
 	modeling::HoleFillingOptions options;
 	options.refine = refine_and_fair;
@@ -41,7 +41,7 @@ void cgogn_fill_holes(benchmark::State &state, const std::string &path, bool ref
 	state.counters["vertices_added"] = r.vertices_added;
 }
 
-void cgogn_triangulate(benchmark::State &state, const std::string &path)
+void cgogn_triangulate(benchmark::State& state, const std::string& path)
 {
 	uint32 cut = 0;
 	for (auto _ : state)
@@ -58,7 +58,7 @@ void cgogn_triangulate(benchmark::State &state, const std::string &path)
 
 /// The cost of the optimal triangulation alone (O(n^3)): the two boundary
 /// circles of an open cylinder of n edges each (2 holes, no refinement).
-void cgogn_fill_cylinder(benchmark::State &state)
+void cgogn_fill_cylinder(benchmark::State& state)
 {
 	const uint32 n = uint32(state.range(0));
 	const SurfaceSoup s = cylinder_soup(n, 4, true);
@@ -81,29 +81,29 @@ void cgogn_fill_cylinder(benchmark::State &state)
 
 } // namespace
 
-int main(int argc, char **argv)
+int main(int argc, char** argv)
 {
-	for (const HoleMesh &h : hole_meshes)
+	for (const HoleMesh& h : hole_meshes)
 	{
 		const std::string path = data_file(h.file);
 		if (!std::filesystem::exists(path))
 			continue;
 		benchmark::RegisterBenchmark((std::string("fill_holes/triangulate/cgogn/") + h.name).c_str(), cgogn_fill_holes,
-		                             path, false)
-		    ->Unit(benchmark::kMillisecond);
+									 path, false)
+			->Unit(benchmark::kMillisecond);
 		benchmark::RegisterBenchmark((std::string("fill_holes/refine_fair/cgogn/") + h.name).c_str(), cgogn_fill_holes,
-		                             path, true)
-		    ->Unit(benchmark::kMillisecond);
+									 path, true)
+			->Unit(benchmark::kMillisecond);
 	}
 	if (std::filesystem::exists(data_file(quad_mesh)))
 		benchmark::RegisterBenchmark("triangulate_quads/cgogn/spot", cgogn_triangulate, data_file(quad_mesh))
-		    ->Unit(benchmark::kMillisecond);
+			->Unit(benchmark::kMillisecond);
 	benchmark::RegisterBenchmark("fill_holes/cylinder_loops/cgogn", cgogn_fill_cylinder)
-	    ->Arg(125)
-	    ->Arg(250)
-	    ->Arg(500)
-	    ->Arg(1000)
-	    ->Unit(benchmark::kMillisecond);
+		->Arg(125)
+		->Arg(250)
+		->Arg(500)
+		->Arg(1000)
+		->Unit(benchmark::kMillisecond);
 #ifdef CGOGN_BENCH_HAS_CGAL
 	register_cgal_benchmarks();
 #endif

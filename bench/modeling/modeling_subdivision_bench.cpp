@@ -17,18 +17,17 @@
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 #endif
 
+#include "cgogn_test_data.h"
+
 #include <filesystem>
 #include <string>
-
-#include "cgogn_test_data.h"
 
 namespace cgogn::bench
 {
 
-const SubdivisionInput &subdivision_input()
+const SubdivisionInput& subdivision_input()
 {
-	static const SubdivisionInput input = []
-	{
+	static const SubdivisionInput input = [] {
 		SubdivisionInput in;
 		const std::string path = cgogn_test_data::path("surface/nefertiti.obj");
 		if (!std::filesystem::exists(path))
@@ -37,20 +36,16 @@ const SubdivisionInput &subdivision_input()
 		io::load_surface(m, path);
 		auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 		std::vector<uint32> id(pos->container()->end_index(), 0);
-		foreach_cell(m,
-		             [&](CMap2::Vertex v)
-		             {
-			             id[index_of(m, v)] = uint32(in.points.size());
-			             const Vec3 &p = (*pos)[index_of(m, v)];
-			             in.points.push_back({p.x(), p.y(), p.z()});
-		             });
-		foreach_cell(m,
-		             [&](CMap2::Face f)
-		             {
-			             std::vector<uint32> face;
-			             foreach_incident_vertex(m, f, [&](CMap2::Vertex v) { face.push_back(id[index_of(m, v)]); });
-			             in.faces.push_back(face);
-		             });
+		foreach_cell(m, [&](CMap2::Vertex v) {
+			id[index_of(m, v)] = uint32(in.points.size());
+			const Vec3& p = (*pos)[index_of(m, v)];
+			in.points.push_back({p.x(), p.y(), p.z()});
+		});
+		foreach_cell(m, [&](CMap2::Face f) {
+			std::vector<uint32> face;
+			foreach_incident_vertex(m, f, [&](CMap2::Vertex v) { face.push_back(id[index_of(m, v)]); });
+			in.faces.push_back(face);
+		});
 		return in;
 	}();
 	return input;
@@ -66,9 +61,9 @@ namespace
 
 std::shared_ptr<AttributeArray<Vec3>> build_cgogn(CMap2& m)
 {
-	const auto &in = subdivision_input();
+	const auto& in = subdivision_input();
 	std::vector<uint32> sizes, vertices;
-	for (const auto &f : in.faces)
+	for (const auto& f : in.faces)
 	{
 		sizes.push_back(uint32(f.size()));
 		vertices.insert(vertices.end(), f.begin(), f.end());
@@ -80,7 +75,7 @@ std::shared_ptr<AttributeArray<Vec3>> build_cgogn(CMap2& m)
 	return pos;
 }
 
-void cgogn_subdivision(benchmark::State &state, modeling::SurfaceScheme scheme)
+void cgogn_subdivision(benchmark::State& state, modeling::SurfaceScheme scheme)
 {
 	if (subdivision_input().faces.empty())
 	{
@@ -114,14 +109,14 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
 template <typename MESH>
-void build_openmesh(MESH &om)
+void build_openmesh(MESH& om)
 {
-	const auto &in = subdivision_input();
+	const auto& in = subdivision_input();
 	std::vector<typename MESH::VertexHandle> vh;
-	for (const auto &p : in.points)
+	for (const auto& p : in.points)
 		vh.push_back(om.add_vertex(typename MESH::Point(p[0], p[1], p[2])));
 	std::vector<typename MESH::VertexHandle> fv;
-	for (const auto &f : in.faces)
+	for (const auto& f : in.faces)
 	{
 		fv.clear();
 		for (uint32 i : f)
@@ -131,7 +126,7 @@ void build_openmesh(MESH &om)
 }
 
 template <typename SUBDIVIDER, typename MESH>
-void openmesh_subdivision(benchmark::State &state)
+void openmesh_subdivision(benchmark::State& state)
 {
 	if (subdivision_input().faces.empty())
 	{
@@ -159,20 +154,19 @@ void openmesh_subdivision(benchmark::State &state)
 }
 #endif
 
-const int registered = []
-{
+const int registered = [] {
 	const auto unit = benchmark::kMillisecond;
 	benchmark::RegisterBenchmark("loop/cgogn", cgogn_subdivision, modeling::SurfaceScheme::Loop)->Unit(unit);
 	benchmark::RegisterBenchmark("sqrt3/cgogn", cgogn_subdivision, modeling::SurfaceScheme::Sqrt3)->Unit(unit);
 	benchmark::RegisterBenchmark("catmull_clark/cgogn", cgogn_subdivision, modeling::SurfaceScheme::CatmullClark)
-	    ->Unit(unit);
+		->Unit(unit);
 #ifdef CGOGN_BENCH_HAS_OPENMESH
 	using namespace OpenMesh::Subdivider::Uniform;
 	benchmark::RegisterBenchmark("loop/openmesh", openmesh_subdivision<LoopT<TriMesh, double>, TriMesh>)->Unit(unit);
 	benchmark::RegisterBenchmark("sqrt3/openmesh", openmesh_subdivision<Sqrt3T<TriMesh, double>, TriMesh>)->Unit(unit);
 	benchmark::RegisterBenchmark("catmull_clark/openmesh",
-	                             openmesh_subdivision<CatmullClarkT<PolyMesh, double>, PolyMesh>)
-	    ->Unit(unit);
+								 openmesh_subdivision<CatmullClarkT<PolyMesh, double>, PolyMesh>)
+		->Unit(unit);
 #endif
 #ifdef CGOGN_BENCH_HAS_CGAL
 	cgogn::bench::register_cgal_subdivision_benchmarks();

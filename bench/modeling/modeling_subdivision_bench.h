@@ -18,7 +18,7 @@ struct SubdivisionInput
 };
 
 /// Loaded once; empty (and the benchmarks skip) when the file is missing.
-const SubdivisionInput &subdivision_input();
+const SubdivisionInput& subdivision_input();
 
 /// Registers the CGAL benchmarks (defined in their own translation unit).
 void register_cgal_subdivision_benchmarks();

@@ -15,7 +15,6 @@
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
 #include <CGAL/Linear_cell_complex_incremental_builder.h>
 #include <CGAL/Simple_cartesian.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -37,7 +36,7 @@ struct Items
 	struct Dart_wrapper
 	{
 		using Vertex_attribute = CGAL::Cell_attribute_with_point<LCC, Vector>; // info: the vertex normal
-		using Face_attribute = CGAL::Cell_attribute<LCC, Vector>;			   // info: the face normal
+		using Face_attribute = CGAL::Cell_attribute<LCC, Vector>;              // info: the face normal
 		using Attributes = std::tuple<Vertex_attribute, void, Face_attribute>;
 	};
 };

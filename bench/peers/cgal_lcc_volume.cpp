@@ -24,7 +24,6 @@
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
 #include <CGAL/Linear_cell_complex_incremental_builder.h>
 #include <CGAL/Simple_cartesian.h>
-
 #include <cmath>
 #include <limits>
 #include <string>
@@ -46,7 +45,7 @@ struct Items
 	struct Dart_wrapper
 	{
 		using Vertex_attribute = CGAL::Cell_attribute_with_point<LCC, uint32_t>; // info: soup index
-		using Volume_attribute = CGAL::Cell_attribute<LCC, Point>;				  // info: barycenter
+		using Volume_attribute = CGAL::Cell_attribute<LCC, Point>;               // info: barycenter
 		using Attributes = std::tuple<Vertex_attribute, void, void, Volume_attribute>;
 	};
 };
@@ -369,7 +368,8 @@ void collapse(benchmark::State& state, bool)
 					const VAH a = m.vertex_attribute(d), b = m.vertex_attribute(m.other_extremity(d));
 					if (boundary[a->info()] || boundary[b->info()])
 						continue;
-					if (shortest.offer(std::sqrt(CGAL::squared_distance(a->point(), b->point())), a->point(), b->point()))
+					if (shortest.offer(std::sqrt(CGAL::squared_distance(a->point(), b->point())), a->point(),
+									   b->point()))
 						best = d;
 				}
 				lengths.push_back(shortest.length);

@@ -16,7 +16,6 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -12,7 +12,6 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -57,7 +57,8 @@ double cgal_decimate(const TriangleSoup& in, uint32_t target_faces, TriangleSoup
 	const double t0 = modeling_thread_seconds();
 	SMS::GarlandHeckbert_plane_policies<Mesh, Kernel> policies(m);
 	SMS::Count_stop_predicate<Mesh> stop(std::size_t(target_faces) * 3 / 2);
-	SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+	SMS::edge_collapse(m, stop,
+					   CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
 	const double seconds = modeling_thread_seconds() - t0;
 	extract(m, out);
 	return seconds;

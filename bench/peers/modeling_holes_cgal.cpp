@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // CGAL's hole filling on a Surface_mesh, for bench_modeling_holes.
+#include "modeling_holes.h"
+
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -10,8 +12,6 @@
 #include <filesystem>
 #include <iterator>
 #include <vector>
-
-#include "modeling_holes.h"
 
 namespace cgogn::bench_holes
 {
@@ -29,7 +29,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 /// refine_and_fair: triangulate_refine_and_fair_hole, else triangulate_hole.
 /// delaunay: CGAL's default search space (the 3D Delaunay triangulation of
 /// the loop, falling back to all triangles), else the full O(n^3) one.
-void cgal_fill_holes(benchmark::State &state, const std::string &path, bool refine_and_fair, bool delaunay)
+void cgal_fill_holes(benchmark::State& state, const std::string& path, bool refine_and_fair, bool delaunay)
 {
 	Mesh original;
 	if (!CGAL::IO::read_polygon_mesh(path, original))
@@ -52,7 +52,7 @@ void cgal_fill_holes(benchmark::State &state, const std::string &path, bool refi
 			const auto np = PMP::parameters::use_delaunay_triangulation(delaunay);
 			if (refine_and_fair)
 				PMP::triangulate_refine_and_fair_hole(m, h, std::back_inserter(new_faces),
-				                                      std::back_inserter(new_vertices), np);
+													  std::back_inserter(new_vertices), np);
 			else
 				PMP::triangulate_hole(m, h, std::back_inserter(new_faces), np);
 		}
@@ -69,7 +69,7 @@ void cgal_fill_holes(benchmark::State &state, const std::string &path, bool refi
 
 void register_cgal_benchmarks()
 {
-	for (const HoleMesh &h : hole_meshes)
+	for (const HoleMesh& h : hole_meshes)
 	{
 		const std::string path = data_file(h.file);
 		if (!std::filesystem::exists(path))
@@ -78,11 +78,11 @@ void register_cgal_benchmarks()
 		{
 			const std::string space = delaunay ? "cgal_delaunay/" : "cgal_full/";
 			benchmark::RegisterBenchmark(("fill_holes/triangulate/" + space + h.name).c_str(), cgal_fill_holes, path,
-			                             false, delaunay)
-			    ->Unit(benchmark::kMillisecond);
+										 false, delaunay)
+				->Unit(benchmark::kMillisecond);
 			benchmark::RegisterBenchmark(("fill_holes/refine_fair/" + space + h.name).c_str(), cgal_fill_holes, path,
-			                             true, delaunay)
-			    ->Unit(benchmark::kMillisecond);
+										 true, delaunay)
+				->Unit(benchmark::kMillisecond);
 		}
 	}
 }

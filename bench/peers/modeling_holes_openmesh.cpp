@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // OpenMesh's triangulate() of a quad mesh, for bench_modeling_holes.
+#include "modeling_holes.h"
+
 #include <benchmark/benchmark.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <filesystem>
-
-#include "modeling_holes.h"
 
 namespace cgogn::bench_holes
 {
@@ -20,7 +20,7 @@ struct Traits : OpenMesh::DefaultTraits
 };
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
 
-void openmesh_triangulate(benchmark::State &state, const std::string &path)
+void openmesh_triangulate(benchmark::State& state, const std::string& path)
 {
 	PolyMesh original;
 	if (!OpenMesh::IO::read_mesh(original, path))
@@ -47,7 +47,7 @@ void register_openmesh_benchmarks()
 	const std::string path = data_file(quad_mesh);
 	if (std::filesystem::exists(path))
 		benchmark::RegisterBenchmark("triangulate_quads/openmesh/spot", openmesh_triangulate, path)
-		    ->Unit(benchmark::kMillisecond);
+			->Unit(benchmark::kMillisecond);
 }
 
 } // namespace cgogn::bench_holes

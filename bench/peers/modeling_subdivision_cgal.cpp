@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // CGAL's side of the subdivision benchmark (its own translation unit: CGAL
 // headers are slow to compile): Catmull-Clark and Loop on a Surface_mesh.
+#include "modeling_subdivision_bench.h"
+
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
-
-#include "modeling_subdivision_bench.h"
 
 namespace
 {
@@ -15,14 +15,14 @@ namespace
 using Kernel = CGAL::Simple_cartesian<double>;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 
-void build_cgal(CgalMesh &sm)
+void build_cgal(CgalMesh& sm)
 {
-	const auto &in = cgogn::bench::subdivision_input();
+	const auto& in = cgogn::bench::subdivision_input();
 	std::vector<CgalMesh::Vertex_index> vh;
-	for (const auto &p : in.points)
+	for (const auto& p : in.points)
 		vh.push_back(sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
 	std::vector<CgalMesh::Vertex_index> fv;
-	for (const auto &f : in.faces)
+	for (const auto& f : in.faces)
 	{
 		fv.clear();
 		for (std::uint32_t i : f)
@@ -32,7 +32,7 @@ void build_cgal(CgalMesh &sm)
 }
 
 template <bool CATMULL_CLARK>
-void cgal_subdivision(benchmark::State &state)
+void cgal_subdivision(benchmark::State& state)
 {
 	if (cgogn::bench::subdivision_input().faces.empty())
 	{

@@ -8,7 +8,6 @@
 #include "workload_rules.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -18,7 +18,7 @@ namespace cgogn_bench
 /// soup vertex i (whose line was vertex_offset + i before).
 template <typename MAP>
 std::vector<cgogn::uint32> reorder_by_morton(MAP& m, const cgogn::AttributeArray<cgogn::Vec3>& pos,
-                                             cgogn::uint32 vertex_offset, cgogn::uint32 nb_vertices)
+											 cgogn::uint32 vertex_offset, cgogn::uint32 nb_vertices)
 {
 	using Vertex = typename MAP::Vertex;
 	auto key = cgogn::add_attribute<cgogn::uint64, Vertex>(m, "bench_morton");
@@ -28,7 +28,8 @@ std::vector<cgogn::uint32> reorder_by_morton(MAP& m, const cgogn::AttributeArray
 	cgogn::geometry::compute_morton_keys<Vertex>(m, pos, *key);
 	cgogn::reorder(m, [&](Vertex v) { return cgogn::value<cgogn::uint64>(m, *key, v); });
 	std::vector<cgogn::uint32> line(nb_vertices, cgogn::INVALID_INDEX);
-	cgogn::foreach_cell(m, [&](Vertex v) { line[cgogn::value<cgogn::uint32>(m, *soup_id, v)] = cgogn::index_of(m, v); });
+	cgogn::foreach_cell(m,
+						[&](Vertex v) { line[cgogn::value<cgogn::uint32>(m, *soup_id, v)] = cgogn::index_of(m, v); });
 	cgogn::remove_attribute(m, key);
 	cgogn::remove_attribute(m, soup_id);
 	return line;

@@ -8,14 +8,14 @@
 // vertex -> vertices through edges (IncidenceCache), which the same local
 // traversals then read; built untimed before the runs, their build timed
 // separately (surface/cache_build/cgogn_quick).
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
 #include "cgogn_reorder.h"
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
 #include "workload_rules.h"
-
-#include <cgogn/core.h>
-#include <cgogn/geometry/types/vector_traits.h>
 
 #include <Eigen/Geometry> // cross(): vector_traits.h includes Eigen/Core only
 
@@ -60,7 +60,8 @@ struct CgognSurface
 	void reset_positions(const SurfaceSoup& s)
 	{
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
-			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] =
+				Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	}
 };
 
@@ -121,8 +122,12 @@ void circulator(benchmark::State& state, bool first, Mode mode)
 			c = 0;
 			// each reported cell is read (as flat reads each id), so that counting
 			// does not reduce to a row length
-			foreach_cell(m, [&](Located<Vertex> v) { foreach_incident_face(m, v, [&](Face f) { c += 1 + (f.dart.index >> 31); }); });
-			foreach_cell(m, [&](Located<Face> f) { foreach_incident_vertex(m, f, [&](Vertex v) { c -= 1 + (v.dart.index >> 31); }); });
+			foreach_cell(m, [&](Located<Vertex> v) {
+				foreach_incident_face(m, v, [&](Face f) { c += 1 + (f.dart.index >> 31); });
+			});
+			foreach_cell(m, [&](Located<Face> f) {
+				foreach_incident_vertex(m, f, [&](Vertex v) { c -= 1 + (v.dart.index >> 31); });
+			});
 			benchmark::DoNotOptimize(c);
 		});
 	set_check(state, "check", double(c));
@@ -160,13 +165,13 @@ void normal(benchmark::State& state, bool first, Mode mode)
 			foreach_cell(m, [&](Located<Face> f) {
 				const Dart d0 = f.dart, d1 = phi1(m, d0), d2 = phi1(m, d1);
 				const Vec3& p0 = value<Vec3>(m, pos, Vertex(d0));
-			    fn[f] = (value<Vec3>(m, pos, Vertex(d1)) - p0).cross(value<Vec3>(m, pos, Vertex(d2)) - p0).normalized();
+				fn[f] = (value<Vec3>(m, pos, Vertex(d1)) - p0).cross(value<Vec3>(m, pos, Vertex(d2)) - p0).normalized();
 			});
 			foreach_cell(m, [&](Located<Vertex> v) {
 				Vec3 n = Vec3::Zero();
 				// `auto`: the face comes with its line (LocatedCell), read without index lookup
 				foreach_incident_face(m, v, [&](auto f) { n += value<Vec3>(m, fn, f); });
-			    vn[v] = n.normalized();
+				vn[v] = n.normalized();
 			});
 		});
 	double s = 0;
@@ -193,7 +198,7 @@ void smoothing_quick(benchmark::State& state, bool first)
 					s += value<Vec3>(m, pos, w);
 					++n;
 				});
-			    pos[v] = s / double(n);
+				pos[v] = s / double(n);
 			});
 		});
 	set_check(state, "check", position_sum(me));
@@ -241,7 +246,7 @@ void smoothing(benchmark::State& state, bool first)
 					s += value<Vec3>(m, pos, w);
 					++n;
 				});
-			    pos[v] = s / double(n);
+				pos[v] = s / double(n);
 			});
 		});
 	set_check(state, "check", position_sum(me));
@@ -295,9 +300,9 @@ void subdivision(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognSurface>(surface_soup()); },
 		[&] {
 			CMap2& m = me->map;
-		    AttributeArray<Vec3>& pos = *me->position;
-		    // new positions of the original vertices, kept aside (by vertex line)
-		    std::vector<Vec3> moved(container_of<Vertex::ORBIT>(m).end_index());
+			AttributeArray<Vec3>& pos = *me->position;
+			// new positions of the original vertices, kept aside (by vertex line)
+			std::vector<Vec3> moved(container_of<Vertex::ORBIT>(m).end_index());
 			std::vector<Vertex> old_vertices;
 			old_vertices.reserve(nb_cells<Vertex>(m));
 			foreach_cell(m, [&](Vertex v) {
@@ -334,8 +339,8 @@ void subdivision(benchmark::State& state, bool)
 				value<Vec3>(m, pos, triangulate_face(m, f)) = c;
 			}
 			for (Vertex v : old_vertices)
-			    pos[v] = moved[index_of(m, v)];
-		    for (Edge e : edges)
+				pos[v] = moved[index_of(m, v)];
+			for (Edge e : edges)
 				if (can_flip_edge(m, e))
 					flip_edge(m, e);
 		});
@@ -349,9 +354,9 @@ void collapse(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognSurface>(surface_soup()); },
 		[&] {
 			CMap2& m = me->map;
-		    AttributeArray<Vec3>& pos = *me->position;
-		    std::vector<Face> faces;
-		    foreach_cell(m, [&](Face f) { faces.push_back(f); });
+			AttributeArray<Vec3>& pos = *me->position;
+			std::vector<Face> faces;
+			foreach_cell(m, [&](Face f) { faces.push_back(f); });
 			std::vector<Vertex> added;
 			added.reserve(faces.size());
 			for (Face f : faces)

@@ -7,20 +7,20 @@
 // volume -> vertices, vertex -> vertices through volumes and through edges
 // (IncidenceCache), read by the same local traversals; their build is timed
 // separately (volume/cache_build/cgogn_quick).
+#include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
 #include "cgogn_reorder.h"
 #include "cgogn_topology.h"
 #include "harness.h"
 #include "inputs.h"
 #include "workload_rules.h"
 
-#include <cgogn/core.h>
-#include <cgogn/geometry/types/vector_traits.h>
-
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <string>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace cgogn_bench
@@ -58,7 +58,8 @@ struct CgognVolume
 	void reset_positions(const VolumeSoup& s)
 	{
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
-			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+			(*position)[line_of_soup_vertex.empty() ? vertex_offset + i : line_of_soup_vertex[i]] =
+				Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	}
 };
 
@@ -132,9 +133,13 @@ void circulator(benchmark::State& state, bool first, Mode mode)
 		[&] {
 			c = 0;
 			// each reported cell is read (as flat reads each id)
-			foreach_cell(m, [&](Located<Vertex> v) { foreach_incident_volume(m, v, [&](Volume w) { c += 1 + (w.dart.index >> 31); }); });
+			foreach_cell(m, [&](Located<Vertex> v) {
+				foreach_incident_volume(m, v, [&](Volume w) { c += 1 + (w.dart.index >> 31); });
+			});
 			incidences = c;
-			foreach_cell(m, [&](Located<Volume> w) { foreach_incident_vertex(m, w, [&](Vertex v) { c -= 1 + (v.dart.index >> 31); }); });
+			foreach_cell(m, [&](Located<Volume> w) {
+				foreach_incident_vertex(m, w, [&](Vertex v) { c -= 1 + (v.dart.index >> 31); });
+			});
 			benchmark::DoNotOptimize(c);
 		});
 	set_check(state, "check", double(c));
@@ -179,7 +184,7 @@ void barycenter(benchmark::State& state, bool first, Mode mode)
 					b += value<Vec3>(m, pos, v);
 					++n;
 				});
-			    bary[w] = b / double(n);
+				bary[w] = b / double(n);
 			});
 		});
 	double s = 0;
@@ -252,9 +257,9 @@ void split(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognVolume>(volume_soup(), false); },
 		[&] {
 			CMap3& m = me->map;
-		    AttributeArray<Vec3>& pos = *me->position;
-		    std::vector<Volume> tets;
-		    foreach_cell(m, [&](Volume w) { tets.push_back(w); });
+			AttributeArray<Vec3>& pos = *me->position;
+			std::vector<Volume> tets;
+			foreach_cell(m, [&](Volume w) { tets.push_back(w); });
 			for (Volume w : tets)
 			{
 				Vec3 b = Vec3::Zero();
@@ -276,9 +281,9 @@ void collapse(benchmark::State& state, bool)
 		state, false, [&] { me = fresh_structure<CgognVolume>(volume_soup(), false); },
 		[&] {
 			CMap3& m = me->map;
-		    AttributeArray<Vec3>& pos = *me->position;
-		    lengths.clear();
-		    // the edges indexed (timed): each scan then walks the edge container
+			AttributeArray<Vec3>& pos = *me->position;
+			lengths.clear();
+			// the edges indexed (timed): each scan then walks the edge container
 			// instead of marking the darts of every edge
 			index_cells<Edge>(m);
 			// boundary status cached per vertex
@@ -299,8 +304,8 @@ void collapse(benchmark::State& state, bool)
 				});
 				lengths.push_back(shortest.length);
 				const Vertex kept = collapse_edge(m, best);
-			    pos[kept] = Vec3(shortest.midpoint[0], shortest.midpoint[1], shortest.midpoint[2]);
-			    value<uint8>(m, *boundary, kept) = is_incident_to_boundary(m, kept);
+				pos[kept] = Vec3(shortest.midpoint[0], shortest.midpoint[1], shortest.midpoint[2]);
+				value<uint8>(m, *boundary, kept) = is_incident_to_boundary(m, kept);
 			}
 			remove_attribute(m, boundary);
 		});

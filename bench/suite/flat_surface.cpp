@@ -23,10 +23,10 @@ using P3 = std::array<double, 3>;
 struct FlatSurface
 {
 	std::vector<P3> pos;
-	std::vector<uint32_t> f_off, f_v;	// face -> vertices
-	std::vector<uint32_t> vf_off, vf;	// vertex -> faces
-	std::vector<uint32_t> vv_off, vv;	// vertex -> vertices
-	std::vector<uint8_t> boundary;		// per vertex
+	std::vector<uint32_t> f_off, f_v; // face -> vertices
+	std::vector<uint32_t> vf_off, vf; // vertex -> faces
+	std::vector<uint32_t> vv_off, vv; // vertex -> vertices
+	std::vector<uint8_t> boundary;    // per vertex
 	std::vector<P3> fnormal, vnormal;
 
 	explicit FlatSurface(const cgogn::SurfaceSoup& s)

@@ -21,10 +21,10 @@ using P3 = std::array<double, 3>;
 struct FlatVolume
 {
 	std::vector<P3> pos, pos2, bary;
-	std::vector<uint32_t> t_v;		  // 4 per tet
+	std::vector<uint32_t> t_v;        // 4 per tet
 	std::vector<uint32_t> vt_off, vt; // vertex -> tets
 	std::vector<uint32_t> vv_off, vv; // vertex -> vertices (edge neighbours)
-	std::vector<uint8_t> boundary;	  // per vertex: on a face with one tet
+	std::vector<uint8_t> boundary;    // per vertex: on a face with one tet
 
 	explicit FlatVolume(const cgogn::VolumeSoup& s)
 	{

@@ -3,13 +3,12 @@
 
 #include <cgogn/core/attributes/line_storage.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <malloc.h>
 #include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
-
-#include <cstdio>
-#include <cstdlib>
 
 namespace cgogn_bench
 {

@@ -24,7 +24,7 @@ enum class Kind
 {
 	read_only, // warm-up then R repetitions
 	topology,  // fresh copy each repetition (rebuild untimed), fewer repetitions
-	single	   // one run (memory, dynamic)
+	single     // one run (memory, dynamic)
 };
 
 /// Registers a benchmark; fn(state, first) runs one repetition, `first` is true

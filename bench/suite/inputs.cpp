@@ -6,6 +6,8 @@
 #include <cgogn/io/surface.h>
 #include <cgogn/io/volume.h>
 
+#include "cgogn_test_data.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -14,8 +16,6 @@
 #include <random>
 #include <stdexcept>
 #include <unordered_map>
-
-#include "cgogn_test_data.h"
 
 namespace cgogn_bench
 {
@@ -84,7 +84,7 @@ void set_input(const std::string& k)
 		throw std::runtime_error("--input must be data, data-unrefined, generated or small");
 	if ((k == "data" || k == "data-unrefined") && !data_present())
 		throw std::runtime_error("--input=data: " + cgogn_test_data::missing_large("surface/nefertiti.obj") +
-		                         " (and volume/armadillo_tet_461k.mesh)");
+								 " (and volume/armadillo_tet_461k.mesh)");
 	input_kind = k;
 }
 
@@ -235,9 +235,10 @@ std::string input_description()
 	const auto& s = surface_soup();
 	const auto& v = volume_soup();
 	std::string d = kind() == "data-unrefined" ? "surface: nefertiti.obj; volume: armadillo_tet_461k.mesh"
-					: kind() == "data" ? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
-									 : (kind() == "small" ? "small torus and tet grid"
-														  : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
+					: kind() == "data"
+						? "surface: nefertiti.obj refined twice 1-to-4; volume: armadillo_tet_461k.mesh"
+						: (kind() == "small" ? "small torus and tet grid"
+											 : "surface: torus_soup(1000, 800); volume: tet_grid_soup(55, 55, 55)");
 	if (permutation_seed != 0)
 		d += "; vertex ids and cell order permuted with seed " + std::to_string(permutation_seed);
 	if (reorder_on)

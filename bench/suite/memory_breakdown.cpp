@@ -4,11 +4,11 @@
 // the bytes of every attribute and mark of every container, per face (tet),
 // next to the allocator's total. Reads the same inputs as bench_suite
 // (--input=data|generated|small).
-#include "harness.h"
-#include "inputs.h"
-
 #include <cgogn/core.h>
 #include <cgogn/geometry/types/vector_traits.h>
+
+#include "harness.h"
+#include "inputs.h"
 
 #include <cstdio>
 #include <cstring>

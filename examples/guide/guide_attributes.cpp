@@ -49,12 +49,10 @@ int main()
 	}
 
 	Face f1, f2;
-	foreach_cell(m,
-	             [&](Face f)
-	             {
-		             (f1.is_valid() ? f2 : f1) = f;
-		             return !f2.is_valid();
-	             });
+	foreach_cell(m, [&](Face f) {
+		(f1.is_valid() ? f2 : f1) = f;
+		return !f2.is_valid();
+	});
 	value<double>(m, area, f1) = 3.4;
 	value<double>(m, area, f2) = 1.0;
 	double sum = value<double>(m, area, f1) + value<double>(m, area, f2);

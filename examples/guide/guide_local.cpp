@@ -20,12 +20,10 @@ T average(const Mesh& map, Face f, const Attribute<T>& attribute)
 {
 	T result(0);
 	uint32 nbv = 0;
-	foreach_incident_vertex(map, f,
-	                        [&](Vertex v)
-	                        {
-		                        result += attribute[v];
-		                        ++nbv;
-	                        });
+	foreach_incident_vertex(map, f, [&](Vertex v) {
+		result += attribute[v];
+		++nbv;
+	});
 	return result / nbv;
 }
 
@@ -35,12 +33,10 @@ T average(const MESH& m, CellType c, const Attribute<T>& attribute)
 {
 	T result(0);
 	uint32 nbv = 0;
-	foreach_incident_vertex(m, c,
-	                        [&](typename MESH::Vertex v)
-	                        {
-		                        result += value(m, attribute, v);
-		                        ++nbv;
-	                        });
+	foreach_incident_vertex(m, c, [&](typename MESH::Vertex v) {
+		result += value(m, attribute, v);
+		++nbv;
+	});
 	return result / nbv;
 }
 
@@ -62,12 +58,10 @@ int main()
 
 	uint32 nb_neighbours = 0;
 	Vertex some_vertex;
-	foreach_cell(m,
-	             [&](Vertex v)
-	             {
-		             some_vertex = v;
-		             return false;
-	             });
+	foreach_cell(m, [&](Vertex v) {
+		some_vertex = v;
+		return false;
+	});
 	foreach_incident_edge(m, some_vertex, [&](Edge) { ++nb_neighbours; });
 	foreach_adjacent_vertex_through_edge(m, some_vertex, [&](Vertex) { ++nb_neighbours; });
 	foreach_incident_face(m, some_vertex, [&](Face) { ++nb_neighbours; });
@@ -92,9 +86,9 @@ int main()
 	// properties
 	const uint32 nbv = nb_cells<Vertex>(m);
 	const uint64 degrees = sum_of_degrees<Mesh, Vertex>(m) + sum_of_degrees<Mesh, Edge>(m) +
-	                       sum_of_degrees<Mesh, Face>(m) + sum_of_degrees<Mesh, Volume>(m);
+						   sum_of_degrees<Mesh, Face>(m) + sum_of_degrees<Mesh, Volume>(m);
 	bool on_boundary = is_incident_to_boundary(m, some_vertex);
 	std::cout << nbv << " vertices, sum of degrees and codegrees " << degrees << "\n";
 	return nbv == 6 && on_boundary && nb_neighbours > 0 && codegree(m3, mesh_traits<CMap3>::Edge(tet.dart)) == 2 ? 0
-	                                                                                                             : 1;
+																												 : 1;
 }

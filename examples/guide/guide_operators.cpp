@@ -17,28 +17,24 @@ int main()
 	Mesh m;
 	build_surface(m, grid_soup(3, 3, true)); // triangles
 	Edge some_edge;
-	foreach_cell(m,
-	             [&](Edge e)
-	             {
-		             if (is_incident_to_boundary(m, e))
-			             return true;
-		             some_edge = e;
-		             return false;
-	             });
+	foreach_cell(m, [&](Edge e) {
+		if (is_incident_to_boundary(m, e))
+			return true;
+		some_edge = e;
+		return false;
+	});
 	flip_edge(m, some_edge);
 	Vertex v = cut_edge(m, some_edge);
 	Edge e2(phi1(m, v.dart));
 	Vertex w = collapse_edge(m, Edge(v.dart));
 	if (!w.is_valid() || !check_integrity(m).ok())
 		return 1;
-	foreach_cell(m,
-	             [&](Edge e)
-	             {
-		             if (!can_merge_incident_faces(m, e))
-			             return true;
-		             merge_incident_faces(m, e);
-		             return false;
-	             });
+	foreach_cell(m, [&](Edge e) {
+		if (!can_merge_incident_faces(m, e))
+			return true;
+		merge_incident_faces(m, e);
+		return false;
+	});
 	(void)e2;
 
 	// creation
@@ -51,13 +47,11 @@ int main()
 	// marking
 	CellMarker<Mesh, Vertex> cm{m};
 	uint32 marked = 0;
-	foreach_incident_vertex(m, f,
-	                        [&](Vertex x)
-	                        {
-		                        if (!cm.is_marked(x))
-			                        cm.mark(x);
-		                        ++marked;
-	                        });
+	foreach_incident_vertex(m, f, [&](Vertex x) {
+		if (!cm.is_marked(x))
+			cm.mark(x);
+		++marked;
+	});
 	foreach_incident_vertex(m, f, [&](Vertex x) { cm.unmark(x); });
 	cm.unmark_all();
 	CellMarkerStore<Mesh, Vertex> cms{m};
@@ -66,7 +60,7 @@ int main()
 
 	std::cout << marked << " vertices marked, " << stored << " stored\n";
 	return marked == 5 && stored == 5 && check_integrity(m).ok() && check_integrity(m3).ok() && prism.is_valid() &&
-	               pyramid.is_valid()
-	           ? 0
-	           : 1;
+				   pyramid.is_valid()
+			   ? 0
+			   : 1;
 }

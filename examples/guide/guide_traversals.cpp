@@ -20,35 +20,29 @@ int main()
 	auto position = add_attribute<Vec3, Vertex>(m, "position");
 	auto displacement = add_attribute<Vec3, Vertex>(m, "displacement");
 	uint32 k = 0;
-	foreach_cell(m,
-	             [&](Vertex v)
-	             {
-		             value<Vec3>(m, position, v) = Vec3(double(k % 9) - 4.0, double(k / 9), 0.0);
-		             value<Vec3>(m, displacement, v) = Vec3(0.0, 0.0, 1.0);
-		             ++k;
-	             });
+	foreach_cell(m, [&](Vertex v) {
+		value<Vec3>(m, position, v) = Vec3(double(k % 9) - 4.0, double(k / 9), 0.0);
+		value<Vec3>(m, displacement, v) = Vec3(0.0, 0.0, 1.0);
+		++k;
+	});
 
 	uint32 nb_vertices = 0;
-	foreach_cell(m,
-	             [&](Vertex v)
-	             {
-		             // do something with v
-		             (void)v;
-		             ++nb_vertices;
-	             });
+	foreach_cell(m, [&](Vertex v) {
+		// do something with v
+		(void)v;
+		++nb_vertices;
+	});
 
 	// early stop: the first vertex on the negative side of the x = 0 plane
 	Vertex looked_up_v;
-	foreach_cell(m,
-	             [&](Vertex v) -> bool
-	             {
-		             if (value<Vec3>(m, position, v)[0] < 0.0)
-		             {
-			             looked_up_v = v;
-			             return false;
-		             }
-		             return true;
-	             });
+	foreach_cell(m, [&](Vertex v) -> bool {
+		if (value<Vec3>(m, position, v)[0] < 0.0)
+		{
+			looked_up_v = v;
+			return false;
+		}
+		return true;
+	});
 	if (!looked_up_v.is_valid())
 	{
 		// no such vertex was found
@@ -64,13 +58,11 @@ int main()
 	foreach_cell(m, [&](Edge e) { length[e] = 1.0; });
 	std::vector<double> sum_per_thread(thread_pool()->nb_workers(), 0.0);
 	std::vector<uint32> nb_per_thread(thread_pool()->nb_workers(), 0);
-	parallel_foreach_cell(m,
-	                      [&](Edge e)
-	                      {
-		                      uint32 thread_index = current_thread_index();
-		                      sum_per_thread[thread_index] += length[e];
-		                      nb_per_thread[thread_index]++;
-	                      });
+	parallel_foreach_cell(m, [&](Edge e) {
+		uint32 thread_index = current_thread_index();
+		sum_per_thread[thread_index] += length[e];
+		nb_per_thread[thread_index]++;
+	});
 	double sum = 0.0;
 	for (double d : sum_per_thread)
 		sum += d;

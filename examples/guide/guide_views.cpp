@@ -19,12 +19,10 @@ void print_faces(const CMap2& m, const Attribute<double>& area, double threshold
 {
 	CellFilter<CMap2> cfm(m);
 	cfm.set_filter<Face>([&](Face f) -> bool { return value<double>(cfm, area, f) > threshold; });
-	foreach_cell(cfm,
-	             [&](Face f) -> bool
-	             {
-		             out << f << std::endl;
-		             return true;
-	             });
+	foreach_cell(cfm, [&](Face f) -> bool {
+		out << f << std::endl;
+		return true;
+	});
 }
 
 int main()
@@ -45,8 +43,8 @@ int main()
 	cache.build<Vertex>([&](Vertex v) { return degree(map, v) == 4; });
 	uint32 inner = 0;
 	foreach_cell(cache, [&](Vertex v) { /* do something with v */
-		                                (void)v;
-		                                ++inner;
+										(void)v;
+										++inner;
 	});
 
 	// cut the edges that existed when the cache was built

@@ -6,37 +6,29 @@
 // operators, build, parallel; utils and detail serve them.
 #pragma once
 
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/build/generators.h>
+#include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/orbits.h>
-
-#include <cgogn/core/attributes/attributes.h>
-
 #include <cgogn/core/marking/marker.h>
-
-#include <cgogn/core/traversals/global.h>
-#include <cgogn/core/traversals/incidence_cache.h>
-#include <cgogn/core/traversals/local_cmap2.h>
-#include <cgogn/core/traversals/local_cmap3.h>
-#include <cgogn/core/traversals/local_views.h>
-#include <cgogn/core/traversals/parallel.h>
-
-#include <cgogn/core/views/cell_cache.h>
-#include <cgogn/core/views/cell_filter.h>
-
-#include <cgogn/core/properties/integrity.h>
-#include <cgogn/core/properties/properties.h>
-
 #include <cgogn/core/operators/cmap1.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/operators/creation.h>
 #include <cgogn/core/operators/dimension_guards.h>
 #include <cgogn/core/operators/maintenance.h>
-
-#include <cgogn/core/build/generators.h>
-#include <cgogn/core/build/map_builder.h>
-
 #include <cgogn/core/parallel/thread_pool.h>
+#include <cgogn/core/properties/integrity.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/incidence_cache.h>
+#include <cgogn/core/traversals/local_cmap2.h>
+#include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_views.h>
+#include <cgogn/core/traversals/parallel.h>
 #include <cgogn/core/utils/error.h>
+#include <cgogn/core/views/cell_cache.h>
+#include <cgogn/core/views/cell_filter.h>

@@ -32,7 +32,7 @@ inline bool has_repeated_vertex(std::span<const uint32> vs, std::vector<uint32>&
 /// vertex) gets a new line, recorded in the report; unused lines are released.
 template <typename VERTEX, typename MAP>
 void assign_vertex_lines(MAP& m, const std::vector<Dart>& darts, AttributeContainer& vertices,
-                         AttributeArray<uint32>& vidx, uint32 offset, uint32 nb_vertices, BuildReport& report)
+						 AttributeArray<uint32>& vidx, uint32 offset, uint32 nb_vertices, BuildReport& report)
 {
 	DartMarker<MAP> dm(m);
 	std::vector<uint8> split(nb_vertices, 0);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Holes and boundary of 2-maps: close, fill, sew and unsew faces.
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/properties/properties.h>
 
 #include "cmap2_close.h"
 #include "cmap2_unlink.h"
@@ -218,7 +218,7 @@ bool can_unsew_faces(const CMap2& m, CMap2::Edge e)
 void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices)
 {
 	assert(can_unsew_faces(m, e));
-	const Dart d = e.dart;    // a -> b
+	const Dart d = e.dart;      // a -> b
 	const Dart d2 = phi2(m, d); // b -> a
 	// the boundary darts leaving a and b, if those vertices are on the boundary
 	auto boundary_out = [&](Dart start) {

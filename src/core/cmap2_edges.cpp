@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Edge operators of 2-maps: cut, collapse, flip.
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/properties/properties.h>
 
 #include "index_lines.h"
 
@@ -142,16 +142,15 @@ bool can_collapse_edge(const CMap2& m, CMap2::Edge e)
 	}
 	// neighbours of a, marked; every neighbour of b among them must be opposite
 	DartMarkerStore<CMap2> around_a(m);
-	foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
-		around_a.mark_orbit(CMap2::Vertex(phi2(m, x)));
-	});
+	foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) { around_a.mark_orbit(CMap2::Vertex(phi2(m, x))); });
 	bool ok = true;
 	foreach_dart_of_orbit(m, CMap2::Vertex(d2), [&](Dart y) {
 		const Dart w = phi2(m, y); // a dart of a neighbour of b
 		if (w == d || !around_a.is_marked(w))
 			return true;
-		const bool opposite = (opp1.is_valid() && !is_boundary(m, d) && same_orbit(m, CMap2::Vertex(w), CMap2::Vertex(opp1))) ||
-							  (opp2.is_valid() && !is_boundary(m, d2) && same_orbit(m, CMap2::Vertex(w), CMap2::Vertex(opp2)));
+		const bool opposite =
+			(opp1.is_valid() && !is_boundary(m, d) && same_orbit(m, CMap2::Vertex(w), CMap2::Vertex(opp1))) ||
+			(opp2.is_valid() && !is_boundary(m, d2) && same_orbit(m, CMap2::Vertex(w), CMap2::Vertex(opp2)));
 		ok = opposite;
 		return ok;
 	});
@@ -207,10 +206,10 @@ void remove_two_gon(CMap2& m, Dart p, std::initializer_list<Dart*> held, bool se
 	const Dart n = phi1(m, p);
 	const Dart pp = phi2(m, p), nn = phi2(m, n);
 	const bool keep_n = std::min(n.index, nn.index) < std::min(p.index, pp.index);
-	const Dart s = keep_n ? n : p;	 // 2-gon dart of the surviving edge
+	const Dart s = keep_n ? n : p;    // 2-gon dart of the surviving edge
 	const Dart s2 = keep_n ? nn : pp; // its phi2, stays in place
 	const Dart t = keep_n ? pp : nn;  // outer dart of the other edge: s takes its place
-	const Dart r = keep_n ? p : n;	 // 2-gon dart of the other edge (t == phi2(r))
+	const Dart r = keep_n ? p : n;    // 2-gon dart of the other edge (t == phi2(r))
 	const uint32 two_gon_line = detail::index_or_invalid<F>(m, s);
 	const uint32 gone_edge_line = detail::index_or_invalid<E>(m, r);
 	take_place_in_face(m, s, t, set_indices);
@@ -244,7 +243,7 @@ void remove_two_gon(CMap2& m, Dart p, std::initializer_list<Dart*> held, bool se
 CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 {
 	assert(can_collapse_edge(m, e));
-	const Dart d = e.dart;	  // a -> b, a disappears
+	const Dart d = e.dart;      // a -> b, a disappears
 	const Dart d2 = phi2(m, d); // b -> a
 	const uint32 a_line = detail::index_or_invalid<V>(m, d);
 	const uint32 b_line = detail::index_or_invalid<V>(m, d2);
@@ -341,8 +340,8 @@ bool can_flip_back_edge(const CMap2& m, CMap2::Edge e)
 namespace
 {
 // Indices after a flip: two darts changed faces, d and d2 changed origins.
-void fix_after_flip(CMap2& m, Dart d, Dart d2, Dart moved_to_f2, Dart moved_to_f1, Dart origin_of_d,
-					Dart origin_of_d2, Dart rep_old_origin_d, Dart rep_old_origin_d2)
+void fix_after_flip(CMap2& m, Dart d, Dart d2, Dart moved_to_f2, Dart moved_to_f1, Dart origin_of_d, Dart origin_of_d2,
+					Dart rep_old_origin_d, Dart rep_old_origin_d2)
 {
 	// faces: the dart that moved takes the index of its new face
 	detail::copy_dart_index<F>(m, moved_to_f2, d2);

@@ -2,8 +2,8 @@
 // Face and vertex operators of 2-maps: cut and merge faces, merge edges,
 // split vertices, triangulate and remove faces.
 #include <cgogn/core/detail/dart_buffer.h>
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/properties/properties.h>
 
 #include "cmap2_unlink.h"
 #include "component_split.h"

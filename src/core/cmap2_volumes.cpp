@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Whole-surface operators of 2-maps: closed polyhedra, removal of a
 // component, orientation, merge of maps.
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/properties/properties.h>
 
 #include "index_lines.h"
 
@@ -179,7 +179,9 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 		if (detail::cell_index_of(m)[o] == nullptr)
 		{
 			detail::cell_index_of(m)[o] =
-				detail::darts_of(m)->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX).get();
+				detail::darts_of(m)
+					->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX)
+					.get();
 			detail::cells_of(m)[o]->set_cell_index(detail::cell_index_of(m)[o]);
 		}
 		AttributeArray<uint32>& midx = *detail::cell_index_of(m)[o];

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
+#include "cmap3_build.h"
+
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/marking/dart_marker.h>
 
-#include "cmap3_build.h"
 #include "index_lines.h"
 
 #include <map>

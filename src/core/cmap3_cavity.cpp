@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
+#include "cmap3_cavity.h"
+
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/marking/marker.h>
 
-#include "cmap3_cavity.h"
 #include "reindex.h"
 
 #include <algorithm>
@@ -120,9 +121,9 @@ std::vector<Dart> Cavity::fill(std::vector<std::array<uint32, 4>> tets, bool set
 		outer.emplace(sorted(t), std::make_pair(o, t));
 		if (phi1(m, phi1(m, o)) != phi_1(m, o)) // not a triangle: cannot be matched
 			continue;
-		if (std::find_if(faces[sorted(t)].begin(), faces[sorted(t)].end(),
-						 [&](Dart x) { return same_orbit(m, CMap3::Face2(x), CMap3::Face2(o)); }) ==
-			faces[sorted(t)].end())
+		if (std::find_if(faces[sorted(t)].begin(), faces[sorted(t)].end(), [&](Dart x) {
+				return same_orbit(m, CMap3::Face2(x), CMap3::Face2(o));
+			}) == faces[sorted(t)].end())
 			faces[sorted(t)].push_back(o);
 	}
 	// 2. orient each new tet so that its faces on the cavity boundary face the outer faces

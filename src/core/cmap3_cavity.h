@@ -43,10 +43,10 @@ private:
 	uint32 find(uint32 l) const;
 
 	CMap3& m_;
-	std::vector<Dart> darts_;                   // darts of the cavity's volumes
-	std::unordered_map<uint32, uint32> labels_; // dart index -> vertex label
-	std::vector<uint32> alias_;                 // label -> merged label
-	std::vector<uint32> line_;                  // label -> vertex line (or INVALID)
+	std::vector<Dart> darts_;                      // darts of the cavity's volumes
+	std::unordered_map<uint32, uint32> labels_;    // dart index -> vertex label
+	std::vector<uint32> alias_;                    // label -> merged label
+	std::vector<uint32> line_;                     // label -> vertex line (or INVALID)
 	std::vector<std::pair<Dart, uint32>> created_; // new darts with the label of their origin
 };
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // General operators of 3-maps: creation, closing, sewing, removal, cuts and merges.
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap3.h>
+#include <cgogn/core/properties/properties.h>
 
 #include "cmap3_build.h"
 #include "reindex.h"

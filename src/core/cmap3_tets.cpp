@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Operators of tetrahedral 3-maps: edge collapse, flips (the 1-to-4 split is
 // in cmap3_split_tetra.cpp).
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap3.h>
+#include <cgogn/core/properties/properties.h>
 
 #include "cmap3_cavity.h"
 

@@ -141,7 +141,9 @@ VolumeSoup tet_grid_soup(uint32 nx, uint32 ny, uint32 nz)
 		for (uint32 j = 0; j < ny; ++j)
 			for (uint32 i = 0; i < nx; ++i)
 			{
-				auto corner = [&](uint32 bits) { return v(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1)); };
+				auto corner = [&](uint32 bits) {
+					return v(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1));
+				};
 				for (const auto& p : perms)
 				{
 					const uint32 b1 = 1u << p[0];

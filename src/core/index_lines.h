@@ -26,8 +26,9 @@ void index_new_darts(MAP& m, const std::vector<Dart>& darts)
 					new_index(m, CELL(d));
 		}
 	};
-	[&]<typename... C>(std::tuple<C...>*) { (index_orbit(static_cast<C*>(nullptr)), ...); }(
-		static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
+	[&]<typename... C>(std::tuple<C...>*) {
+		(index_orbit(static_cast<C*>(nullptr)), ...);
+	}(static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
 }
 
 } // namespace cgogn::detail

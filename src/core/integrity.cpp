@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/properties/integrity.h>
 #include <cgogn/core/map/orbits.h>
+#include <cgogn/core/properties/integrity.h>
 
 #include <sstream>
 
@@ -52,8 +52,8 @@ void check_container_free_list(const AttributeContainer& c, Orbit o, Checker& ck
 // Lines allocated past end_index() are handed out by new_line as they are:
 // they must hold the default values (no key, no relation, no index), or new
 // cells and darts would start with a deleted one's.
-void check_unused_lines(const AttributeContainer& c, Orbit o, const std::vector<const AttributeArray<uint32>*>& attributes,
-						Checker& ck)
+void check_unused_lines(const AttributeContainer& c, Orbit o,
+						const std::vector<const AttributeArray<uint32>*>& attributes, Checker& ck)
 {
 	for (uint32 i = c.end_index(); i < c.capacity(); ++i)
 		for (const AttributeArray<uint32>* a : attributes)
@@ -72,7 +72,8 @@ void check_relations(const MAP& m, Checker& ck)
 	const AttributeContainer& darts = *detail::darts_of(m);
 	check_container_free_list(darts, Orbit::DART, ck);
 	{
-		std::vector<const AttributeArray<uint32>*> per_dart(detail::relations_of(m).begin(), detail::relations_of(m).end());
+		std::vector<const AttributeArray<uint32>*> per_dart(detail::relations_of(m).begin(),
+															detail::relations_of(m).end());
 		for (const AttributeArray<uint32>* idx : detail::cell_index_of(m))
 			if (idx != nullptr)
 				per_dart.push_back(idx);
@@ -106,8 +107,7 @@ void check_relations(const MAP& m, Checker& ck)
 					ck.add(Kind::PhiFixedPoint, Orbit::DART, d.index, INVALID_INDEX,
 						   name + " has a fixed point: the map is not closed");
 				else if (Dart((*detail::relations_of(m)[r])[e.index]) != d)
-					ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX,
-						   name + " is not an involution");
+					ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX, name + " is not an involution");
 			}
 		}
 	});
@@ -252,12 +252,13 @@ void check_incidence_tables(const CMapBase& m, Checker& ck)
 	for (const auto& t : detail::incidence_tables_of(m))
 	{
 		const AttributeContainer& from = *detail::cells_of(m)[orbit_index(t->from)];
-		const std::string what = std::string("incidence cache ") + std::string(orbit_name(t->from)) + " -> " +
-								 std::string(orbit_name(t->to)) +
-								 (t->through < NB_ORBITS
-									  ? std::string(" through ") + std::string(orbit_name(Orbit(t->through)))
-									  : std::string());
-		if (detail::cell_index_of(m)[orbit_index(t->from)] == nullptr || t->offsets.size() != std::size_t(from.end_index()) + 1)
+		const std::string what =
+			std::string("incidence cache ") + std::string(orbit_name(t->from)) + " -> " +
+			std::string(orbit_name(t->to)) +
+			(t->through < NB_ORBITS ? std::string(" through ") + std::string(orbit_name(Orbit(t->through)))
+									: std::string());
+		if (detail::cell_index_of(m)[orbit_index(t->from)] == nullptr ||
+			t->offsets.size() != std::size_t(from.end_index()) + 1)
 		{
 			ck.add(Kind::IncidenceCacheStale, t->from, INVALID_INDEX, INVALID_INDEX,
 				   what + ": the cells changed since it was built (call update)");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/traversals/global.h>
 #include <cgogn/core/operators/maintenance.h>
+#include <cgogn/core/traversals/global.h>
 
 #include <algorithm>
 #include <numeric>
@@ -65,8 +65,7 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 			vertices.emplace_back(key(Vertex(d)), d);
 		});
 	}
-	std::stable_sort(vertices.begin(), vertices.end(),
-					 [](const auto& a, const auto& b) { return a.first < b.first; });
+	std::stable_sort(vertices.begin(), vertices.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 	std::vector<uint32> dart_order;
 	dart_order.reserve(nb_darts(m));
 	for (const auto& [k, d] : vertices)

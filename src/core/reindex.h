@@ -56,8 +56,9 @@ public:
 
 	void apply(MAP& m, const std::vector<Dart>& region)
 	{
-		[&]<typename... C>(std::tuple<C...>*) { (apply_orbit<C>(m, region), ...); }(
-			static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
+		[&]<typename... C>(std::tuple<C...>*) {
+			(apply_orbit<C>(m, region), ...);
+		}(static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
 	}
 
 private:

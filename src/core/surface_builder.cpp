@@ -22,7 +22,7 @@ struct OutgoingDarts
 	std::vector<Dart> darts;
 
 	OutgoingDarts(const std::vector<Dart>& all, const AttributeArray<uint32>& vidx, uint32 offset, uint32 nb_vertices)
-	    : offsets(nb_vertices + 1, 0), darts(all.size())
+		: offsets(nb_vertices + 1, 0), darts(all.size())
 	{
 		for (Dart d : all)
 			++offsets[vidx[d.index] - offset + 1];
@@ -63,7 +63,8 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 		total += s;
 	darts.reserve(std::min(total, face_vertices.size()));
 	// room for the faces' darts only: boundary darts (none on a closed mesh) grow as needed
-	detail::darts_of(m)->reserve(uint32(std::min<std::size_t>(uint64(detail::darts_of(m)->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
+	detail::darts_of(m)->reserve(
+		uint32(std::min<std::size_t>(uint64(detail::darts_of(m)->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
 	std::size_t first = 0;
 	std::vector<uint32> sorted;
 	for (uint32 n : face_sizes)

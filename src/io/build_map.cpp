@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/io/error.h>
-
-#include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/error.h>
 
 #include "map_transfer.h"
 
@@ -81,8 +80,7 @@ std::shared_ptr<AttributeArray<T>> get_or_add(MAP& m, const std::string& name, c
 template <typename CELL, typename MAP, typename LINES>
 void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string& path)
 {
-	auto put = [&]<typename T>(std::shared_ptr<AttributeArray<T>> a)
-	{
+	auto put = [&]<typename T>(std::shared_ptr<AttributeArray<T>> a) {
 		lines([&](uint32 line, std::size_t i) {
 			const double* v = &c.values[i * c.dim];
 			if constexpr (std::is_same_v<T, double>)
@@ -105,7 +103,8 @@ void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string&
 class DartPredictor
 {
 public:
-	explicit DartPredictor(const CMapBase& m) : free_(container_of<Orbit::DART>(m).free_lines()), end_(container_of<Orbit::DART>(m).end_index())
+	explicit DartPredictor(const CMapBase& m)
+		: free_(container_of<Orbit::DART>(m).free_lines()), end_(container_of<Orbit::DART>(m).end_index())
 	{
 	}
 	Dart operator()(uint64 k) const
@@ -143,8 +142,8 @@ template <typename MAP>
 LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
-	using Top = std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face,
-								   typename mesh_traits<MAP>::Volume>;
+	using Top =
+		std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face, typename mesh_traits<MAP>::Volume>;
 	constexpr uint32 dim = MAP::dimension;
 
 	// 1. everything that can fail, before touching m

@@ -2,9 +2,8 @@
 // Bounds-checked reads of little- or big-endian binary values.
 #pragma once
 
-#include <cgogn/io/error.h>
-
 #include <cgogn/core/utils/numeric.h>
+#include <cgogn/io/error.h>
 
 #include <bit>
 #include <cstring>

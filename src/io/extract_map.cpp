@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/io/error.h>
-
 #include <cgogn/core/attributes/attributes.h>
-#include <cgogn/core/traversals/global.h>
 #include <cgogn/core/marking/marker.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/error.h>
 
 #include "map_transfer.h"
 

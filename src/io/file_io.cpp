@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/io/error.h>
-
 #include "file_io.h"
+
+#include <cgogn/io/error.h>
 
 #include <cerrno>
 #include <cstdio>

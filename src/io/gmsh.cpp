@@ -3,8 +3,8 @@
 // (tetrahedron 4, hexahedron 5, prism 6, pyramid 7, and the corner nodes of
 // second-order ones) are kept, lower-dimensional elements ignored; other
 // sections ($PhysicalNames, $Entities, $NodeData, ...) are skipped.
-#include "formats.h"
 #include "byte_reader.h"
+#include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 

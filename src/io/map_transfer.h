@@ -3,9 +3,8 @@
 // extracting what a writer needs from a map.
 #pragma once
 
-#include <cgogn/io/options.h>
-
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/io/options.h>
 
 #include "mesh_data.h"
 

@@ -21,10 +21,10 @@ namespace
 bool ignored_keyword(std::string_view k)
 {
 	static constexpr std::array<std::string_view, 33> ignored = {
-		"o",	  "g",		"s",		"usemtl",	"mtllib",	  "l",		 "p",		"vp",	   "cstype",
-		"deg",	  "bmat",	"step",		"curv",		"curv2",	  "surf",	 "parm",	"trim",	   "hole",
-		"scrv",	  "sp",		"end",		"con",		"mg",		  "bevel",	 "c_interp", "d_interp", "lod",
-		"maplib", "usemap", "shadow_obj", "trace_obj", "ctech",	  "stech"};
+		"o",      "g",      "s",          "usemtl",    "mtllib", "l",     "p",        "vp",       "cstype",
+		"deg",    "bmat",   "step",       "curv",      "curv2",  "surf",  "parm",     "trim",     "hole",
+		"scrv",   "sp",     "end",        "con",       "mg",     "bevel", "c_interp", "d_interp", "lod",
+		"maplib", "usemap", "shadow_obj", "trace_obj", "ctech",  "stech"};
 	return std::find(ignored.begin(), ignored.end(), k) != ignored.end();
 }
 
@@ -54,10 +54,9 @@ void corner_column(MeshData& d, const std::vector<uint32>& corner, const std::ve
 			return;
 		if (of_vertex[v] == NONE)
 			of_vertex[v] = corner[c];
-		else if (of_vertex[v] != corner[c] &&
-				 !std::equal(values.begin() + std::ptrdiff_t(of_vertex[v]) * dim,
-							 values.begin() + std::ptrdiff_t(of_vertex[v] + 1) * dim,
-							 values.begin() + std::ptrdiff_t(corner[c]) * dim))
+		else if (of_vertex[v] != corner[c] && !std::equal(values.begin() + std::ptrdiff_t(of_vertex[v]) * dim,
+														  values.begin() + std::ptrdiff_t(of_vertex[v] + 1) * dim,
+														  values.begin() + std::ptrdiff_t(corner[c]) * dim))
 			return;
 	}
 	Column col{name, dim, std::vector<double>(std::size_t(d.nb_vertices()) * dim, 0.0)};
@@ -129,8 +128,7 @@ MeshData read_obj(std::string_view text, const std::string& path)
 					if (i == 2)
 						r.fail("malformed face corner '" + TextReader::printable(c) + "'");
 				}
-				d.cell_vertices.push_back(
-					resolve(r, r.to_int(parts[0], "a vertex index"), d.nb_vertices(), "vertex"));
+				d.cell_vertices.push_back(resolve(r, r.to_int(parts[0], "a vertex index"), d.nb_vertices(), "vertex"));
 				uint32 t = NONE, nn = NONE;
 				if (!parts[1].empty())
 				{

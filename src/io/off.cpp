@@ -49,8 +49,8 @@ MeshData read_off(std::string_view text, const std::string& path)
 	const uint32 nv = r.read_uint("number of vertices");
 	const uint32 nf = r.read_uint("number of faces");
 	r.read_uint("number of edges");
-	r.check_count(nv, 6, "vertices");   // "x y z\n" at least
-	r.check_count(nf, 2, "faces");      // "0\n" at least
+	r.check_count(nv, 6, "vertices"); // "x y z\n" at least
+	r.check_count(nf, 2, "faces");    // "0\n" at least
 	d.positions.reserve(3 * std::size_t(nv));
 
 	d.vertex_columns.reserve(3); // the pointers below stay valid

@@ -6,8 +6,8 @@
 // texture_u texture_v) -> `tex_coord`, name_x name_y [name_z] -> Vec2/Vec3
 // `name`, anything else -> a scalar column of its name. Other elements and
 // list properties are read and dropped.
-#include "formats.h"
 #include "byte_reader.h"
+#include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 
@@ -190,8 +190,8 @@ void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex, const
 		if (p.is_list || p.column != -1)
 			continue;
 		if (std::string why = data_name_conflict(names, p.name, is_vertex); !why.empty())
-			throw Error(path, Error::Where::Line, p.header_line, "property '" + p.name + "' of element '" + e.name +
-																	 "': " + why);
+			throw Error(path, Error::Where::Line, p.header_line,
+						"property '" + p.name + "' of element '" + e.name + "': " + why);
 		names.push_back(p.name);
 		cols.push_back(Column{p.name, 1, {}});
 		p.column = int(cols.size() - 1);
@@ -275,7 +275,7 @@ MeshData read_ply(std::string_view data, const std::string& path)
 			for (const auto& q : elements.back().props)
 				if (q.name == p.name)
 					h.fail("element '" + TextReader::printable(elements.back().name) + "' has two properties named '" +
-							   TextReader::printable(p.name) + "'");
+						   TextReader::printable(p.name) + "'");
 			p.header_line = h.line();
 			elements.back().props.push_back(std::move(p));
 		}
@@ -332,7 +332,9 @@ MeshData read_ply(std::string_view data, const std::string& path)
 	};
 	auto prepare = [&](Element& e, auto& reader, uint64 min_bytes) {
 		reader.check_count(e.count, std::max<uint64>(min_bytes, 1), (e.name + " elements").c_str());
-		std::vector<Column>* cols = e.name == "vertex" ? &d.vertex_columns : e.name == "face" ? &d.cell_columns : nullptr;
+		std::vector<Column>* cols = e.name == "vertex" ? &d.vertex_columns
+									: e.name == "face" ? &d.cell_columns
+													   : nullptr;
 		if (cols)
 			for (auto& c : *cols)
 				c.values.reserve(e.count * c.dim);
@@ -371,8 +373,8 @@ MeshData read_ply(std::string_view data, const std::string& path)
 								r.read_double("a list value");
 						continue;
 					}
-					const double v = is_integer(p.type) ? double(r.read_int("an integer value"))
-														: r.read_double("a property value");
+					const double v =
+						is_integer(p.type) ? double(r.read_int("an integer value")) : r.read_double("a property value");
 					if (p.column == -2 && is_vertex)
 						d.positions[3 * i + p.component] = v;
 					else if (p.column >= 0 && cols)

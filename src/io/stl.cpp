@@ -3,8 +3,8 @@
 // for the n of its header, ascii when it starts with "solid" otherwise.
 // Vertices with bitwise-equal coordinates (after -0 -> +0) are welded into one;
 // facet normals become the face column `normal`.
-#include "formats.h"
 #include "byte_reader.h"
+#include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 

@@ -58,8 +58,8 @@ MeshData read_tetgen(std::string_view node, const std::string& node_path, std::s
 		{
 			const int64 id = e.read_int("a node id");
 			if (id < first_id || id >= first_id + int64(n))
-				e.fail("node id " + std::to_string(id) + " out of range (nodes are " + std::to_string(first_id) +
-					   ".." + std::to_string(first_id + int64(n) - 1) + ")");
+				e.fail("node id " + std::to_string(id) + " out of range (nodes are " + std::to_string(first_id) + ".." +
+					   std::to_string(first_id + int64(n) - 1) + ")");
 			if (k < 4)
 				d.cell_vertices.push_back(uint32(id - first_id));
 		}

@@ -3,9 +3,8 @@
 // parsed with std::from_chars (no locale, no iostream).
 #pragma once
 
-#include <cgogn/io/error.h>
-
 #include <cgogn/core/utils/numeric.h>
+#include <cgogn/io/error.h>
 
 #include <charconv>
 #include <cmath>

@@ -86,8 +86,7 @@ void save_volume(const CMap3& m, const std::string& path, const SaveOptions& opt
 	case Format::Gmsh:
 		detail::write_file(path, detail::write_gmsh(d, options.binary));
 		break;
-	default:
-	{
+	default: {
 		for (uint32 n : d.cell_sizes)
 			if (n != 4)
 				throw Error(path, "TetGen files hold tetrahedra only; the map has other volumes");

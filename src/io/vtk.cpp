@@ -5,11 +5,11 @@
 // nodes of quadratic tetra 24 / hexahedron 25) are kept; lower-dimensional
 // cells are ignored. POINT_DATA and CELL_DATA arrays of 1 to 3 components
 // (SCALARS, VECTORS, NORMALS, FIELD) become columns.
-#include "formats.h"
-#include "vtk_cells.h"
 #include "byte_reader.h"
+#include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
+#include "vtk_cells.h"
 
 #include <array>
 #include <cmath>
@@ -263,8 +263,8 @@ private:
 	// Reads an array of POINT_DATA or CELL_DATA; `names` holds the names read
 	// before in the same kind of section, of every size (conflicts are checked
 	// on all of them, though only arrays of 1 to 3 components are kept).
-	void add_data(std::vector<Column>& target, std::vector<std::string>& names, bool of_points,
-				  const std::string& name, uint32 dim, uint64 count, std::string_view type)
+	void add_data(std::vector<Column>& target, std::vector<std::string>& names, bool of_points, const std::string& name,
+				  uint32 dim, uint64 count, std::string_view type)
 	{
 		if (dim == 0)
 			t_.fail("array '" + name + "' with 0 components");

@@ -2,8 +2,8 @@
 // VTK XML unstructured grids (.vtu): DataArrays in ascii, inline binary
 // (base64) or appended data (raw or base64), UInt32 or UInt64 headers, little
 // or big endian, zlib-compressed blocks when zlib is available. One Piece.
-#include "formats.h"
 #include "byte_reader.h"
+#include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 #include "vtk_cells.h"
@@ -311,8 +311,8 @@ private:
 				fail_at(at, "compressed block runs past the end of the data");
 			std::string u(usize, '\0');
 			uLongf len = uLongf(usize);
-			if (uncompress(reinterpret_cast<Bytef*>(u.data()), &len,
-						   reinterpret_cast<const Bytef*>(raw.data() + pos), uLong(sizes[k])) != Z_OK ||
+			if (uncompress(reinterpret_cast<Bytef*>(u.data()), &len, reinterpret_cast<const Bytef*>(raw.data() + pos),
+						   uLong(sizes[k])) != Z_OK ||
 				len != usize)
 				fail_at(at, "corrupt zlib block");
 			out += u;
@@ -428,8 +428,8 @@ std::string write_vtu(const MeshData& d, bool binary)
 	std::string appended;
 	auto array = [&](const std::string& type, const std::string& name, uint32 dim, const auto& fill_text,
 					 const auto& fill_raw) {
-		head += "<DataArray type=\"" + type + "\" Name=\"" + name + "\" NumberOfComponents=\"" +
-				std::to_string(dim) + "\" format=\"" + (binary ? "appended" : "ascii") + "\"";
+		head += "<DataArray type=\"" + type + "\" Name=\"" + name + "\" NumberOfComponents=\"" + std::to_string(dim) +
+				"\" format=\"" + (binary ? "appended" : "ascii") + "\"";
 		if (binary)
 		{
 			head += " offset=\"" + std::to_string(appended.size()) + "\"/>\n";

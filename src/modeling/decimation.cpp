@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/modeling/decimation.h>
-
+#include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/core/traversals/local_cmap2.h>
-#include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/utils/error.h>
+#include <cgogn/modeling/decimation.h>
 #include <cgogn/modeling/quadric.h>
 
 #include <Eigen/Geometry>
@@ -41,7 +40,7 @@ class Decimator
 {
 public:
 	Decimator(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& o, const ProgressCallback& progress)
-	    : m_(m), pos_(pos), o_(o), progress_(progress)
+		: m_(m), pos_(pos), o_(o), progress_(progress)
 	{
 	}
 
@@ -251,16 +250,16 @@ private:
 	const DecimationOptions& o_;
 	ProgressReporter progress_;
 	uint32 nb_faces_ = 0;
-	std::vector<Quadric> quadric_;	  // per vertex line
-	std::vector<uint8> boundary_;	  // per vertex line: on the boundary of the input
-	std::vector<uint32> stamp_;		  // per dart
+	std::vector<Quadric> quadric_; // per vertex line
+	std::vector<uint8> boundary_;  // per vertex line: on the boundary of the input
+	std::vector<uint32> stamp_;    // per dart
 	std::vector<Candidate> heap_;
 };
 
 } // namespace
 
 DecimationResult decimate(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
-                          const ProgressCallback& progress)
+						  const ProgressCallback& progress)
 {
 	return Decimator(m, pos, options, progress).run();
 }

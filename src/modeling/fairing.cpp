@@ -36,7 +36,7 @@ double opposite_cotan(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	if (is_boundary(m, d) || phi1(m, phi1(m, phi1(m, d))) != d)
 		return 0.0;
-	const Vec3 &o = origin(m, pos, phi_1(m, d));
+	const Vec3& o = origin(m, pos, phi_1(m, d));
 	const Vec3 u = origin(m, pos, d) - o, v = origin(m, pos, phi1(m, d)) - o;
 	const double s = u.cross(v).norm();
 	return s > 0.0 ? u.dot(v) / s : 0.0;
@@ -49,7 +49,7 @@ struct LocalNumbering
 	std::unordered_map<uint32, uint32> id;
 	std::vector<Vertex> vertices;
 
-	uint32 get(const CMap2 &m, Vertex v)
+	uint32 get(const CMap2& m, Vertex v)
 	{
 		const auto [it, inserted] = id.emplace(index_of(m, v), uint32(vertices.size()));
 		if (inserted)
@@ -61,7 +61,7 @@ struct LocalNumbering
 } // namespace
 
 bool fair_vertices(const CMap2& m, AttributeArray<Vec3>& pos, std::span<const CMap2::Vertex> free, FairingWeights w,
-                   uint32 continuity)
+				   uint32 continuity)
 {
 	assert(continuity <= 2);
 	if (free.empty())
@@ -85,20 +85,17 @@ bool fair_vertices(const CMap2& m, AttributeArray<Vec3>& pos, std::span<const CM
 			const Vertex v = num.vertices[row];
 			std::vector<std::pair<uint32, double>> weights;
 			double total = 0.0;
-			foreach_dart_of_orbit(m, v,
-			                      [&](Dart d)
-			                      {
-				                      const uint32 j = num.get(m, Vertex(phi1(m, d)));
-				                      double wj = 1.0;
-				                      if (w == FairingWeights::Cotangent)
-					                      wj = std::max(
-					                          0.5 * (opposite_cotan(m, pos, d) + opposite_cotan(m, pos, phi2(m, d))),
-					                          MIN_COTAN_WEIGHT);
-				                      weights.emplace_back(j, wj);
-				                      total += wj;
-			                      });
+			foreach_dart_of_orbit(m, v, [&](Dart d) {
+				const uint32 j = num.get(m, Vertex(phi1(m, d)));
+				double wj = 1.0;
+				if (w == FairingWeights::Cotangent)
+					wj = std::max(0.5 * (opposite_cotan(m, pos, d) + opposite_cotan(m, pos, phi2(m, d))),
+								  MIN_COTAN_WEIGHT);
+				weights.emplace_back(j, wj);
+				total += wj;
+			});
 			triplets.emplace_back(row, row, -1.0);
-			for (const auto &[j, wj] : weights)
+			for (const auto& [j, wj] : weights)
 				triplets.emplace_back(row, j, wj / total);
 		}
 		rows_end = uint32(num.vertices.size());

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/utils/error.h>
 #include <cgogn/modeling/hole_filling.h>
 #include <cgogn/modeling/triangulation.h>
 
-#include <string>
-
 #include "hole_filling_steps.h"
+
+#include <string>
 
 namespace cgogn::modeling
 {
@@ -17,7 +17,7 @@ namespace
 
 using Vertex = CMap2::Vertex;
 
-std::vector<Dart> boundary_loop(const CMap2 &m, Dart d)
+std::vector<Dart> boundary_loop(const CMap2& m, Dart d)
 {
 	std::vector<Dart> loop;
 	foreach_dart_of_orbit(m, CMap2::Face(d), [&](Dart x) { loop.push_back(x); });
@@ -27,21 +27,19 @@ std::vector<Dart> boundary_loop(const CMap2 &m, Dart d)
 /// Mean length of the edges at v: the target edge length of the patch there.
 double mean_incident_length(const CMap2& m, const AttributeArray<Vec3>& pos, Vertex v)
 {
-	const Vec3 &p = pos[index_of(m, v)];
+	const Vec3& p = pos[index_of(m, v)];
 	double sum = 0.0;
 	uint32 count = 0;
-	foreach_dart_of_orbit(m, v,
-	                      [&](Dart d)
-	                      {
-		                      sum += (pos[index_of(m, Vertex(phi2(m, d)))] - p).norm();
-		                      ++count;
-	                      });
+	foreach_dart_of_orbit(m, v, [&](Dart d) {
+		sum += (pos[index_of(m, Vertex(phi2(m, d)))] - p).norm();
+		++count;
+	});
 	return count == 0 ? 0.0 : sum / double(count);
 }
 
 /// Fills the hole of boundary loop `loop`, reporting progress in [from, to].
 void fill_loop(CMap2& m, AttributeArray<Vec3>& pos, const std::vector<Dart>& loop, const HoleFillingOptions& options,
-               ProgressReporter& reporter, double from, double to, HoleFillingResult& result)
+			   ProgressReporter& reporter, double from, double to, HoleFillingResult& result)
 {
 	const uint32 n = uint32(loop.size());
 	if (n < 3 || n > options.max_hole_size)
@@ -85,18 +83,18 @@ void fill_loop(CMap2& m, AttributeArray<Vec3>& pos, const std::vector<Dart>& loo
 		return;
 	}
 	if (options.fair && nb_new > 0 &&
-	    !fair_vertices(m, pos, patch.new_vertices(m), options.fairing_weights, options.fairing_continuity))
+		!fair_vertices(m, pos, patch.new_vertices(m), options.fairing_weights, options.fairing_continuity))
 		++result.fairing_failures;
 }
 
 } // namespace
 
 HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options,
-                            const ProgressCallback& progress)
+							const ProgressCallback& progress)
 {
 	if (!is_dart_valid(m, d) || !is_boundary(m, d))
 		throw TopologyError("modeling::fill_hole: dart " + std::to_string(d.index) +
-		                    " is not on a hole (boundary face)");
+							" is not on a hole (boundary face)");
 	HoleFillingResult result;
 	result.holes_found = 1;
 	ProgressReporter reporter(progress);
@@ -107,21 +105,19 @@ HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const H
 }
 
 HoleFillingResult fill_holes(CMap2& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options,
-                             const ProgressCallback& progress)
+							 const ProgressCallback& progress)
 {
 	// the loops first: filling one hole does not touch the darts of the others
 	std::vector<Dart> holes;
 	{
 		DartMarker<CMap2> seen(m);
-		foreach_dart(m,
-		             [&](Dart d)
-		             {
-			             if (is_boundary(m, d) && !seen.is_marked(d))
-			             {
-				             seen.mark_orbit(CMap2::Face(d));
-				             holes.push_back(d);
-			             }
-		             });
+		foreach_dart(m, [&](Dart d) {
+			if (is_boundary(m, d) && !seen.is_marked(d))
+			{
+				seen.mark_orbit(CMap2::Face(d));
+				holes.push_back(d);
+			}
+		});
 	}
 	HoleFillingResult result;
 	result.holes_found = uint32(holes.size());

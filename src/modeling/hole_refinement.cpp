@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Refinement of a hole's patch to the density of the surface around it
 // (Liepa 2003): centroid splits and Delaunay flips.
-#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
+
+#include "hole_filling_steps.h"
 
 #include <Eigen/Geometry>
 
 #include <cmath>
 #include <numbers>
-
-#include "hole_filling_steps.h"
 
 namespace cgogn::modeling::detail
 {
@@ -28,7 +28,7 @@ const Vec3& origin(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 	return pos[index_of(m, CMap2::Vertex(d))];
 }
 
-double angle_at(const Vec3 &apex, const Vec3 &a, const Vec3 &b)
+double angle_at(const Vec3& apex, const Vec3& a, const Vec3& b)
 {
 	const Vec3 u = a - apex, v = b - apex;
 	return std::atan2(u.cross(v).norm(), u.dot(v));
@@ -40,8 +40,8 @@ bool should_flip(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	const Dart e = phi2(m, d);
 	const Vec3 &a = origin(m, pos, d), &b = origin(m, pos, e);
-	const Vec3 &c = origin(m, pos, phi_1(m, d));
-	const Vec3 &o = origin(m, pos, phi_1(m, e));
+	const Vec3& c = origin(m, pos, phi_1(m, d));
+	const Vec3& o = origin(m, pos, phi_1(m, e));
 	if (angle_at(c, a, b) + angle_at(o, a, b) <= std::numbers::pi + 1e-10)
 		return false;
 	// the new edge (c, o) must lie inside the quad (a, o, b, c): both new
@@ -50,7 +50,7 @@ bool should_flip(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 	return (o - a).cross(c - a).dot(before) > 0.0 && (b - o).cross(c - o).dot(before) > 0.0;
 }
 
-bool is_inner_edge(const CMap2 &m, const Patch &patch, Dart d)
+bool is_inner_edge(const CMap2& m, const Patch& patch, Dart d)
 {
 	return patch.marker.is_marked(d) && patch.marker.is_marked(phi2(m, d));
 }
@@ -78,20 +78,18 @@ void relax_all(CMap2& m, const AttributeArray<Vec3>& pos, const Patch& patch)
 
 } // namespace
 
-void Patch::add_face(const CMap2 &m, Dart d)
+void Patch::add_face(const CMap2& m, Dart d)
 {
-	foreach_dart_of_orbit(m, CMap2::Face(d),
-	                      [&](Dart x)
-	                      {
-		                      if (!marker.is_marked(x))
-		                      {
-			                      marker.mark(x);
-			                      darts.push_back(x);
-		                      }
-	                      });
+	foreach_dart_of_orbit(m, CMap2::Face(d), [&](Dart x) {
+		if (!marker.is_marked(x))
+		{
+			marker.mark(x);
+			darts.push_back(x);
+		}
+	});
 }
 
-void Patch::collect(const CMap2 &m, const std::vector<Dart> &loop)
+void Patch::collect(const CMap2& m, const std::vector<Dart>& loop)
 {
 	DartMarkerStore<CMap2> on_loop(m);
 	for (Dart d : loop)
@@ -105,7 +103,7 @@ void Patch::collect(const CMap2 &m, const std::vector<Dart> &loop)
 	}
 }
 
-std::vector<Dart> Patch::faces(const CMap2 &m) const
+std::vector<Dart> Patch::faces(const CMap2& m) const
 {
 	DartMarkerStore<CMap2> seen(m);
 	std::vector<Dart> result;
@@ -118,7 +116,7 @@ std::vector<Dart> Patch::faces(const CMap2 &m) const
 	return result;
 }
 
-std::vector<CMap2::Vertex> Patch::new_vertices(const CMap2 &m) const
+std::vector<CMap2::Vertex> Patch::new_vertices(const CMap2& m) const
 {
 	std::unordered_set<uint32> pending(new_vertex_lines.begin(), new_vertex_lines.end());
 	std::vector<CMap2::Vertex> result;
@@ -129,7 +127,7 @@ std::vector<CMap2::Vertex> Patch::new_vertices(const CMap2 &m) const
 }
 
 bool refine_patch(CMap2& m, AttributeArray<Vec3>& pos, Patch& patch, double density, ProgressReporter& reporter,
-                  double from, double to)
+				  double from, double to)
 {
 	for (uint32 pass = 0; pass < MAX_REFINEMENT_PASSES; ++pass)
 	{

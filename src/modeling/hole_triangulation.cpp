@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Minimal-weight triangulation of a hole's boundary loop (Liepa 2003).
-#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/geometry/algos/normal.h>
+
+#include "hole_filling_steps.h"
 
 #include <Eigen/Geometry>
 
@@ -10,8 +12,6 @@
 #include <limits>
 #include <unordered_map>
 #include <utility>
-
-#include "hole_filling_steps.h"
 
 namespace cgogn::modeling::detail
 {
@@ -30,14 +30,14 @@ constexpr float ANGLE_TOLERANCE = 1e-6f;
 /// than any fold (a hole filled on the back of a flat disk is folded 180
 /// degrees everywhere along its boundary, and degenerate triangles would win
 /// there on area).
-float dihedral_term(const Eigen::Vector3f &a, const Eigen::Vector3f &b)
+float dihedral_term(const Eigen::Vector3f& a, const Eigen::Vector3f& b)
 {
 	if (a.isZero(0.0f) || b.isZero(0.0f))
 		return 4.0f;
 	return 1.0f - a.dot(b);
 }
 
-Vec3 unit_or_zero(const Vec3 &v)
+Vec3 unit_or_zero(const Vec3& v)
 {
 	const double l = v.norm();
 	return l > 0.0 ? Vec3(v / l) : Vec3::Zero();
@@ -46,15 +46,14 @@ Vec3 unit_or_zero(const Vec3 &v)
 /// Pairs of non-consecutive corners that must not be joined: already adjacent
 /// in the mesh (the new edge would double an edge) or the same vertex (a loop
 /// through a pinched vertex).
-std::vector<char> forbidden_diagonals(const CMap2 &m, const std::vector<Dart> &loop)
+std::vector<char> forbidden_diagonals(const CMap2& m, const std::vector<Dart>& loop)
 {
 	const uint32 n = uint32(loop.size());
 	std::unordered_multimap<uint32, uint32> corners_of_vertex;
 	for (uint32 i = 0; i < n; ++i)
 		corners_of_vertex.emplace(index_of(m, CMap2::Vertex(loop[i])), i);
 	std::vector<char> forbidden(std::size_t(n) * n, 0);
-	const auto forbid = [&](uint32 i, uint32 k)
-	{
+	const auto forbid = [&](uint32 i, uint32 k) {
 		forbidden[std::size_t(i) * n + k] = 1;
 		forbidden[std::size_t(k) * n + i] = 1;
 	};
@@ -65,13 +64,11 @@ std::vector<char> forbidden_diagonals(const CMap2 &m, const std::vector<Dart> &l
 		for (auto it = same.first; it != same.second; ++it)
 			if (it->second != i)
 				forbid(i, it->second);
-		foreach_dart_of_orbit(m, CMap2::Vertex(loop[i]),
-		                      [&](Dart d)
-		                      {
-			                      auto range = corners_of_vertex.equal_range(index_of(m, CMap2::Vertex(phi1(m, d))));
-			                      for (auto it = range.first; it != range.second; ++it)
-				                      forbid(i, it->second);
-		                      });
+		foreach_dart_of_orbit(m, CMap2::Vertex(loop[i]), [&](Dart d) {
+			auto range = corners_of_vertex.equal_range(index_of(m, CMap2::Vertex(phi1(m, d))));
+			for (auto it = range.first; it != range.second; ++it)
+				forbid(i, it->second);
+		});
 	}
 	return forbidden;
 }
@@ -79,7 +76,7 @@ std::vector<char> forbidden_diagonals(const CMap2 &m, const std::vector<Dart> &l
 } // namespace
 
 bool optimal_hole_triangulation(const CMap2& m, const AttributeArray<Vec3>& pos, const std::vector<Dart>& loop,
-                                ProgressReporter& reporter, double from, double to, HoleTriangulation& out)
+								ProgressReporter& reporter, double from, double to, HoleTriangulation& out)
 {
 	const uint32 n = uint32(loop.size());
 	// single precision, relative to the loop's centroid: the table below is
@@ -128,8 +125,8 @@ bool optimal_hole_triangulation(const CMap2& m, const AttributeArray<Vec3>& pos,
 				const bool closing = i == 0 && j == n - 1;
 				if (avoid && !closing && forbidden[at(i, j)])
 					continue;
-				const Sub *row_i = &sub[at(i, 0)];
-				const Sub *row_j = &sub[at(j, 0)];
+				const Sub* row_i = &sub[at(i, 0)];
+				const Sub* row_j = &sub[at(j, 0)];
 				const Eigen::Vector3f pi = p[i], ij = p[j] - p[i];
 				Sub best{INFINITE_ANGLE, INFINITE_ANGLE, Eigen::Vector3f::Zero()};
 				uint32 best_k = NO_APEX;
@@ -143,7 +140,7 @@ bool optimal_hole_triangulation(const CMap2& m, const AttributeArray<Vec3>& pos,
 					const Eigen::Vector3f twice_area = (p[k] - pi).cross(ij);
 					const float norm = twice_area.norm();
 					const Eigen::Vector3f nt =
-					    norm > 0.0f ? Eigen::Vector3f(twice_area / norm) : Eigen::Vector3f::Zero();
+						norm > 0.0f ? Eigen::Vector3f(twice_area / norm) : Eigen::Vector3f::Zero();
 					float a = std::max({inherited, dihedral_term(nt, left.normal), dihedral_term(nt, right.normal)});
 					if (closing)
 						a = std::max(a, dihedral_term(nt, outside[n - 1]));
@@ -164,7 +161,7 @@ bool optimal_hole_triangulation(const CMap2& m, const AttributeArray<Vec3>& pos,
 	return true;
 }
 
-void cut_hole(CMap2 &m, const std::vector<Dart> &loop, const HoleTriangulation &t)
+void cut_hole(CMap2& m, const std::vector<Dart>& loop, const HoleTriangulation& t)
 {
 	// each entry is a sub-polygon i..j, the face of loop[i], closed by phi_1(loop[i])
 	std::vector<std::pair<uint32, uint32>> pending = {{0u, t.n - 1}};

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/modeling/remeshing.h>
-
+#include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/core/traversals/local_cmap2.h>
-#include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/algos/angle.h>
 #include <cgogn/geometry/algos/length.h>
+#include <cgogn/modeling/remeshing.h>
 #include <cgogn/modeling/triangle_tree.h>
 
 #include <Eigen/Geometry>
@@ -31,7 +30,7 @@ class Remesher
 {
 public:
 	Remesher(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& o, const ProgressCallback& progress)
-	    : m_(m), pos_(pos), o_(o), progress_(progress)
+		: m_(m), pos_(pos), o_(o), progress_(progress)
 	{
 	}
 
@@ -393,7 +392,7 @@ private:
 	RemeshingResult r_;
 	double high2_ = 0.0, low2_ = 0.0;
 	std::vector<uint8> feature_; // per dart
-	std::vector<uint8> vflags_;	 // per vertex line: ON_BOUNDARY | ON_FEATURE
+	std::vector<uint8> vflags_;  // per vertex line: ON_BOUNDARY | ON_FEATURE
 	std::unique_ptr<TriangleTree> reference_;
 	std::vector<std::pair<uint32, Vec3>> moves_; // vertex line, new position
 };
@@ -401,7 +400,7 @@ private:
 } // namespace
 
 RemeshingResult isotropic_remeshing(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options,
-                                    const ProgressCallback& progress)
+									const ProgressCallback& progress)
 {
 	return Remesher(m, pos, options, progress).run();
 }

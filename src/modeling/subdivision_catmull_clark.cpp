@@ -17,19 +17,17 @@ Vec3 face_point(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	Vec3 sum = Vec3::Zero();
 	uint32 n = 0;
-	foreach_dart_of_orbit(m, Face(d),
-	                      [&](Dart x)
-	                      {
-		                      sum += position(m, pos, x);
-		                      ++n;
-	                      });
+	foreach_dart_of_orbit(m, Face(d), [&](Dart x) {
+		sum += position(m, pos, x);
+		++n;
+	});
 	return sum / double(n);
 }
 
 /// Cuts the face of d0 (a 2k-gon after the cut of its k edges; d0 starts at
 /// an old vertex) into k quads around a new vertex, which is returned.
 /// `midpoints` is scratch space.
-Vertex cut_into_quads(CMap2 &m, Dart d0, std::vector<Dart> &midpoints)
+Vertex cut_into_quads(CMap2& m, Dart d0, std::vector<Dart>& midpoints)
 {
 	midpoints.clear();
 	Dart d = phi1(m, d0);
@@ -60,7 +58,7 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos,
 	const FaceSnapshot snapshot(m);
 	if (!snapshot.darts.empty() && snapshot.min_degree < 3)
 		throw SubdivisionError("Catmull-Clark subdivision: a face has fewer than 3 edges");
-	const std::vector<Dart> &faces = snapshot.darts;
+	const std::vector<Dart>& faces = snapshot.darts;
 	const std::size_t total = vertices.vertices.size() + edges.size() + faces.size();
 
 	// 1. the face points, and for each dart the slot of its face's point
@@ -82,16 +80,14 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos,
 		const Vertex v(vertices.vertices[i]);
 		if (boundary_vertex_rule(m, pos, v, vertices.positions[i]))
 			continue;
-		const Vec3 &p = position(m, pos, v.dart);
+		const Vec3& p = position(m, pos, v.dart);
 		Vec3 q = Vec3::Zero(), r = Vec3::Zero();
 		uint32 n = 0;
-		foreach_dart_of_orbit(m, v,
-		                      [&](Dart d)
-		                      {
-			                      q += face_points[face_of_dart[d.index]];
-			                      r += position(m, pos, phi2(m, d));
-			                      ++n;
-		                      });
+		foreach_dart_of_orbit(m, v, [&](Dart d) {
+			q += face_points[face_of_dart[d.index]];
+			r += position(m, pos, phi2(m, d));
+			++n;
+		});
 		// R, the mean of the edge midpoints, is (p + mean of the neighbours) / 2
 		const double dn = double(n);
 		vertices.positions[i] = (q / dn + (p + r / dn) + (dn - 3.0) * p) / dn;

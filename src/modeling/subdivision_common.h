@@ -27,7 +27,7 @@ inline const Vec3& position(const CMap2& m, const AttributeArray<Vec3>& pos, Dar
 }
 
 /// True when the edge of d has a boundary face on one side.
-inline bool is_boundary_edge(const CMap2 &m, Dart d)
+inline bool is_boundary_edge(const CMap2& m, Dart d)
 {
 	return is_boundary(m, d) || is_boundary(m, phi2(m, d));
 }
@@ -42,19 +42,17 @@ inline bool boundary_vertex_rule(const CMap2& m, const AttributeArray<Vec3>& pos
 	Vec3 sum = Vec3::Zero();
 	uint32 n = 0;
 	bool boundary = false;
-	foreach_dart_of_orbit(m, v,
-	                      [&](Dart d)
-	                      {
-		                      if (is_boundary_edge(m, d))
-		                      {
-			                      boundary = true;
-			                      sum += position(m, pos, phi2(m, d));
-			                      ++n;
-		                      }
-	                      });
+	foreach_dart_of_orbit(m, v, [&](Dart d) {
+		if (is_boundary_edge(m, d))
+		{
+			boundary = true;
+			sum += position(m, pos, phi2(m, d));
+			++n;
+		}
+	});
 	if (!boundary)
 		return false;
-	const Vec3 &p = position(m, pos, v.dart);
+	const Vec3& p = position(m, pos, v.dart);
 	out = n == 2 ? Vec3(0.75 * p + 0.125 * sum) : p;
 	return true;
 }
@@ -62,7 +60,7 @@ inline bool boundary_vertex_rule(const CMap2& m, const AttributeArray<Vec3>& pos
 /// One dart per vertex, as the map is before a step (the operators create
 /// cells while the snapshot is walked). Vertices are indexed (positions):
 /// the container is walked. O(vertices).
-inline std::vector<Dart> vertex_snapshot(const CMap2 &m)
+inline std::vector<Dart> vertex_snapshot(const CMap2& m)
 {
 	std::vector<Dart> darts;
 	darts.reserve(nb_cells<Vertex>(m));
@@ -73,16 +71,14 @@ inline std::vector<Dart> vertex_snapshot(const CMap2 &m)
 /// One dart per edge: the one of smaller index (phi2 never joins two boundary
 /// darts, so every edge is real). No marker, whether edges are indexed or
 /// not. O(darts).
-inline std::vector<Dart> edge_snapshot(const CMap2 &m)
+inline std::vector<Dart> edge_snapshot(const CMap2& m)
 {
 	std::vector<Dart> darts;
 	darts.reserve(nb_darts(m) / 2);
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             if (d.index < phi2(m, d).index)
-			             darts.push_back(d);
-	             });
+	foreach_dart(m, [&](Dart d) {
+		if (d.index < phi2(m, d).index)
+			darts.push_back(d);
+	});
 	return darts;
 }
 
@@ -95,23 +91,21 @@ struct FaceSnapshot
 	std::vector<Dart> darts;
 	uint32 min_degree = 0, max_degree = 0;
 
-	explicit FaceSnapshot(const CMap2 &m)
+	explicit FaceSnapshot(const CMap2& m)
 	{
 		darts.reserve(nb_darts(m) / 3);
 		min_degree = ~0u;
-		foreach_dart(m,
-		             [&](Dart d)
-		             {
-			             if (is_boundary(m, d))
-				             return;
-			             uint32 degree = 1;
-			             for (Dart x = phi1(m, d); x != d; x = phi1(m, x), ++degree)
-				             if (x.index < d.index)
-					             return;
-			             darts.push_back(d);
-			             min_degree = std::min(min_degree, degree);
-			             max_degree = std::max(max_degree, degree);
-		             });
+		foreach_dart(m, [&](Dart d) {
+			if (is_boundary(m, d))
+				return;
+			uint32 degree = 1;
+			for (Dart x = phi1(m, d); x != d; x = phi1(m, x), ++degree)
+				if (x.index < d.index)
+					return;
+			darts.push_back(d);
+			min_degree = std::min(min_degree, degree);
+			max_degree = std::max(max_degree, degree);
+		});
 		if (darts.empty())
 			min_degree = 0;
 	}
@@ -123,7 +117,7 @@ struct FaceSnapshot
 class StepProgress
 {
 public:
-	explicit StepProgress(const ProgressCallback &callback) : reporter_(callback)
+	explicit StepProgress(const ProgressCallback& callback) : reporter_(callback)
 	{
 	}
 	/// False when the caller asked to stop.
@@ -158,7 +152,7 @@ struct VertexPositions
 	std::vector<Dart> vertices;
 	std::vector<Vec3> positions;
 
-	explicit VertexPositions(const CMap2 &m) : vertices(vertex_snapshot(m)), positions(vertices.size())
+	explicit VertexPositions(const CMap2& m) : vertices(vertex_snapshot(m)), positions(vertices.size())
 	{
 	}
 	void commit(const CMap2& m, AttributeArray<Vec3>& pos) const

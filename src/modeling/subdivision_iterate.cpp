@@ -6,7 +6,7 @@ namespace cgogn::modeling
 {
 
 SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
-                            const ProgressCallback& progress)
+							const ProgressCallback& progress)
 {
 	SubdivisionResult result;
 	for (uint32 i = 0; i < iterations; ++i)

@@ -2,26 +2,24 @@
 // Loop subdivision of triangle meshes.
 #include <cgogn/core/operators/cmap2.h>
 
+#include "subdivision_common.h"
+
 #include <array>
 #include <cmath>
 #include <numbers>
-
-#include "subdivision_common.h"
 
 namespace cgogn::modeling
 {
 
 using namespace detail;
 
-bool is_triangle_mesh(const CMap2 &m)
+bool is_triangle_mesh(const CMap2& m)
 {
 	bool ok = true;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             ok = is_boundary(m, d) || (phi<1, 1, 1>(m, d) == d && phi1(m, d) != d);
-		             return ok;
-	             });
+	foreach_dart(m, [&](Dart d) {
+		ok = is_boundary(m, d) || (phi<1, 1, 1>(m, d) == d && phi1(m, d) != d);
+		return ok;
+	});
 	return ok;
 }
 
@@ -40,7 +38,7 @@ double loop_beta(uint32 n)
 /// Cuts the hexagon (h0 .. h5) left by cutting the three edges of a triangle
 /// (h0 starts at an old vertex) into four triangles; the middle one keeps the
 /// face's line.
-void cut_hexagon(CMap2 &m, Dart h0)
+void cut_hexagon(CMap2& m, Dart h0)
 {
 	const Dart h1 = phi1(m, h0), h3 = phi<1, 1>(m, h1), h5 = phi<1, 1>(m, h3);
 	// the corner at the end of h1, then at the end of h3, then at the end of h5
@@ -54,7 +52,7 @@ void cut_hexagon(CMap2 &m, Dart h0)
 SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	const FaceSnapshot snapshot(m);
-	const std::vector<Dart> &faces = snapshot.darts; // darts starting at old vertices
+	const std::vector<Dart>& faces = snapshot.darts; // darts starting at old vertices
 	if (!faces.empty() && (snapshot.min_degree != 3 || snapshot.max_degree != 3))
 		throw SubdivisionError("Loop subdivision: every face must be a triangle");
 	StepProgress step(progress);
@@ -75,12 +73,10 @@ SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const Pr
 			continue;
 		Vec3 sum = Vec3::Zero();
 		uint32 n = 0;
-		foreach_dart_of_orbit(m, v,
-		                      [&](Dart d)
-		                      {
-			                      sum += position(m, pos, phi2(m, d));
-			                      ++n;
-		                      });
+		foreach_dart_of_orbit(m, v, [&](Dart d) {
+			sum += position(m, pos, phi2(m, d));
+			++n;
+		});
 		const double beta = n < betas.size() ? betas[n] : loop_beta(n);
 		vertices.positions[i] = (1.0 - double(n) * beta) * position(m, pos, v.dart) + beta * sum;
 	}
@@ -96,7 +92,7 @@ SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const Pr
 			edge_points[i] = 0.5 * ends;
 		else
 			edge_points[i] =
-			    0.375 * ends + 0.125 * (position(m, pos, phi<1, 1>(m, d)) + position(m, pos, phi<1, 1>(m, d2)));
+				0.375 * ends + 0.125 * (position(m, pos, phi<1, 1>(m, d)) + position(m, pos, phi<1, 1>(m, d2)));
 	}
 
 	// 3. the connectivity (cut_edge keeps the origins of the existing darts,

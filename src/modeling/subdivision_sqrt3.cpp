@@ -2,10 +2,10 @@
 // sqrt3 subdivision of triangle meshes (Kobbelt 2000).
 #include <cgogn/core/operators/cmap2.h>
 
+#include "subdivision_common.h"
+
 #include <cmath>
 #include <numbers>
-
-#include "subdivision_common.h"
 
 namespace cgogn::modeling
 {
@@ -16,7 +16,7 @@ namespace
 {
 
 /// True when the vertex of d has at least k edges. O(k).
-bool has_degree_at_least(const CMap2 &m, Dart d, uint32 k)
+bool has_degree_at_least(const CMap2& m, Dart d, uint32 k)
 {
 	Dart x = d;
 	for (uint32 i = 1; i < k; ++i)
@@ -33,7 +33,7 @@ bool has_degree_at_least(const CMap2 &m, Dart d, uint32 k)
 /// the two triangles, which fails only when they are already joined (two
 /// triangles sharing two edges: the first flip joined them) or when an end
 /// of d would be left with fewer than 2 edges.
-bool can_flip_old_edge(const CMap2 &m, Dart d)
+bool can_flip_old_edge(const CMap2& m, Dart d)
 {
 	const Dart d2 = phi2(m, d);
 	if (!has_degree_at_least(m, d, 3) || !has_degree_at_least(m, d2, 3))
@@ -47,7 +47,7 @@ bool can_flip_old_edge(const CMap2 &m, Dart d)
 
 /// True when the triangles on both sides of d share another edge than d's.
 /// O(1).
-bool shares_another_edge(const CMap2 &m, Dart d)
+bool shares_another_edge(const CMap2& m, Dart d)
 {
 	const Dart d2 = phi2(m, d);
 	const Dart e1 = phi1(m, d2), e2 = phi1(m, e1);
@@ -65,7 +65,7 @@ bool shares_another_edge(const CMap2 &m, Dart d)
 SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
 	const FaceSnapshot snapshot(m);
-	const std::vector<Dart> &faces = snapshot.darts;
+	const std::vector<Dart>& faces = snapshot.darts;
 	if (!faces.empty() && (snapshot.min_degree != 3 || snapshot.max_degree != 3))
 		throw SubdivisionError("sqrt3 subdivision: every face must be a triangle");
 	StepProgress step(progress);
@@ -78,17 +78,15 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const P
 		if (!step.computing(i, total))
 			return step.cancelled_before_change();
 		const Vertex v(vertices.vertices[i]);
-		const Vec3 &p = position(m, pos, v.dart);
+		const Vec3& p = position(m, pos, v.dart);
 		Vec3 sum = Vec3::Zero();
 		uint32 n = 0;
 		bool boundary = false;
-		foreach_dart_of_orbit(m, v,
-		                      [&](Dart d)
-		                      {
-			                      boundary = boundary || is_boundary(m, d);
-			                      sum += position(m, pos, phi2(m, d));
-			                      ++n;
-		                      });
+		foreach_dart_of_orbit(m, v, [&](Dart d) {
+			boundary = boundary || is_boundary(m, d);
+			sum += position(m, pos, phi2(m, d));
+			++n;
+		});
 		if (boundary)
 		{
 			vertices.positions[i] = p;
@@ -112,14 +110,12 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const P
 	std::vector<Dart> interior_edges = edge_snapshot(m);
 	std::erase_if(interior_edges, [&](Dart d) { return is_boundary_edge(m, d); });
 	std::vector<Dart> guarded_edges;
-	std::erase_if(interior_edges,
-	              [&](Dart d)
-	              {
-		              if (!shares_another_edge(m, d))
-			              return false;
-		              guarded_edges.push_back(d);
-		              return true;
-	              });
+	std::erase_if(interior_edges, [&](Dart d) {
+		if (!shares_another_edge(m, d))
+			return false;
+		guarded_edges.push_back(d);
+		return true;
+	});
 
 	// 3. the connectivity
 	vertices.commit(m, pos);

@@ -4,12 +4,12 @@
 // cell as the scheme needs), then the map is rebuilt with build_volume: far
 // simpler and faster than cutting every cell with cut_edge / cut_face /
 // cut_volume, which would re-sew the same faces many times.
-#include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/orbits.h>
-#include <cgogn/core/traversals/global.h>
 #include <cgogn/core/operators/maintenance.h>
+#include <cgogn/core/traversals/global.h>
 #include <cgogn/modeling/subdivision.h>
 
 #include <Eigen/Geometry>
@@ -29,30 +29,26 @@ using Face = CMap3::Face;
 using Volume = CMap3::Volume;
 
 /// True when every volume has nb_faces faces of `degree` edges.
-bool every_volume_is(const CMap3 &m, uint32 nb_faces, uint32 degree)
+bool every_volume_is(const CMap3& m, uint32 nb_faces, uint32 degree)
 {
 	bool ok = true;
-	foreach_cell(m,
-	             [&](Volume w)
-	             {
-		             uint32 darts = 0;
-		             foreach_dart_of_orbit(m, w,
-		                                   [&](Dart d)
-		                                   {
-			                                   ++darts;
-			                                   Dart x = d;
-			                                   for (uint32 i = 0; i < degree; ++i)
-			                                   {
-				                                   x = phi1(m, x);
-				                                   if (x == d && i + 1 < degree)
-					                                   ok = false;
-			                                   }
-			                                   ok = ok && x == d;
-			                                   return ok;
-		                                   });
-		             ok = ok && darts == nb_faces * degree;
-		             return ok;
-	             });
+	foreach_cell(m, [&](Volume w) {
+		uint32 darts = 0;
+		foreach_dart_of_orbit(m, w, [&](Dart d) {
+			++darts;
+			Dart x = d;
+			for (uint32 i = 0; i < degree; ++i)
+			{
+				x = phi1(m, x);
+				if (x == d && i + 1 < degree)
+					ok = false;
+			}
+			ok = ok && x == d;
+			return ok;
+		});
+		ok = ok && darts == nb_faces * degree;
+		return ok;
+	});
 	return ok;
 }
 
@@ -65,7 +61,7 @@ struct Refinement
 	/// ids by dart of the old map (edges and faces) and by vertex line
 	std::vector<uint32> vertex_id, edge_id, face_id;
 
-	uint32 add(const Vec3 &p)
+	uint32 add(const Vec3& p)
 	{
 		positions.push_back(p);
 		return uint32(positions.size() - 1);
@@ -84,30 +80,26 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 	r.vertex_id.assign(pos.container()->end_index(), INVALID_INDEX);
 	foreach_cell(m, [&](Vertex v) { r.vertex_id[index_of(m, v)] = r.add(position(m, pos, v.dart)); });
 	r.edge_id.assign(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
-	foreach_cell(m,
-	             [&](Edge e)
-	             {
-		             const uint32 id = r.add(0.5 * (position(m, pos, e.dart) + position(m, pos, phi1(m, e.dart))));
-		             foreach_dart_of_orbit(m, e, [&](Dart d) { r.edge_id[d.index] = id; });
-	             });
+	foreach_cell(m, [&](Edge e) {
+		const uint32 id = r.add(0.5 * (position(m, pos, e.dart) + position(m, pos, phi1(m, e.dart))));
+		foreach_dart_of_orbit(m, e, [&](Dart d) { r.edge_id[d.index] = id; });
+	});
 	if (!faces)
 		return;
 	r.face_id.assign(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
-	foreach_cell(m,
-	             [&](Face f)
-	             {
-		             Vec3 sum = Vec3::Zero();
-		             uint32 n = 0;
-		             Dart d = f.dart;
-		             do
-		             {
-			             sum += position(m, pos, d);
-			             ++n;
-			             d = phi1(m, d);
-		             } while (d != f.dart);
-		             const uint32 id = r.add(sum / double(n));
-		             foreach_dart_of_orbit(m, f, [&](Dart x) { r.face_id[x.index] = id; });
-	             });
+	foreach_cell(m, [&](Face f) {
+		Vec3 sum = Vec3::Zero();
+		uint32 n = 0;
+		Dart d = f.dart;
+		do
+		{
+			sum += position(m, pos, d);
+			++n;
+			d = phi1(m, d);
+		} while (d != f.dart);
+		const uint32 id = r.add(sum / double(n));
+		foreach_dart_of_orbit(m, f, [&](Dart x) { r.face_id[x.index] = id; });
+	});
 }
 
 /// Removes every dart and cell of m, keeping its attributes (and whether each
@@ -145,8 +137,7 @@ std::array<TetList, 3> make_tet_patterns()
 	const std::array<std::array<uint32, 2>, 6> edges = {{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 	for (uint32 i = 0; i < 6; ++i)
 		p[4 + i] = 0.5 * (p[edges[i][0]] + p[edges[i][1]]);
-	auto oriented = [&](std::array<uint32, 4> t)
-	{
+	auto oriented = [&](std::array<uint32, 4> t) {
 		if ((p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).dot(p[t[3]] - p[t[0]]) < 0.0)
 			std::swap(t[2], t[3]);
 		return t;
@@ -164,12 +155,12 @@ std::array<TetList, 3> make_tet_patterns()
 
 } // namespace
 
-bool is_hex_mesh(const CMap3 &m)
+bool is_hex_mesh(const CMap3& m)
 {
 	return every_volume_is(m, 6, 4);
 }
 
-bool is_tet_mesh(const CMap3 &m)
+bool is_tet_mesh(const CMap3& m)
 {
 	return every_volume_is(m, 4, 3);
 }
@@ -185,44 +176,41 @@ SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 	const uint32 nb_volumes = nb_cells<Volume>(m);
 	r.cell_vertices.reserve(std::size_t(nb_volumes) * 32);
 	uint32 done = 0;
-	foreach_cell(m,
-	             [&](Volume w)
-	             {
-		             if ((done & 1023u) == 0 && !reporter.report(0.9 * double(done) / double(nb_volumes)))
-			             return false;
-		             ++done;
-		             // outward face (c0, c1, c2) and the apex: VTK order (c0, c2, c1, apex)
-		             const Dart d0 = w.dart, d1 = phi1(m, d0), d2 = phi1(m, d1);
-		             const auto vid = [&](Dart d) { return r.vertex_id[index_of(m, Vertex(d))]; };
-		             const auto eid = [&](Dart d) { return r.edge_id[d.index]; };
-		             const std::array<uint32, 10> local = {vid(d0),
-		                                                   vid(d2),
-		                                                   vid(d1),
-		                                                   vid(phi<2, 1, 1>(m, d0)),
-		                                                   eid(d2),
-		                                                   eid(d0),
-		                                                   eid(phi<2, 1>(m, d0)),
-		                                                   eid(d1),
-		                                                   eid(phi<2, 1>(m, d2)),
-		                                                   eid(phi<2, 1>(m, d1))};
-		             // the shortest diagonal of the octahedron
-		             uint32 best = 0;
-		             double best_length = 0.0;
-		             for (uint32 k = 0; k < 3; ++k)
-		             {
-			             const double l =
-			                 (r.positions[local[diagonals[k][0]]] - r.positions[local[diagonals[k][1]]]).squaredNorm();
-			             if (k == 0 || l < best_length)
-			             {
-				             best = k;
-				             best_length = l;
-			             }
-		             }
-		             for (const auto &t : patterns[best])
-			             for (uint32 i : t)
-				             r.cell_vertices.push_back(local[i]);
-		             return true;
-	             });
+	foreach_cell(m, [&](Volume w) {
+		if ((done & 1023u) == 0 && !reporter.report(0.9 * double(done) / double(nb_volumes)))
+			return false;
+		++done;
+		// outward face (c0, c1, c2) and the apex: VTK order (c0, c2, c1, apex)
+		const Dart d0 = w.dart, d1 = phi1(m, d0), d2 = phi1(m, d1);
+		const auto vid = [&](Dart d) { return r.vertex_id[index_of(m, Vertex(d))]; };
+		const auto eid = [&](Dart d) { return r.edge_id[d.index]; };
+		const std::array<uint32, 10> local = {vid(d0),
+											  vid(d2),
+											  vid(d1),
+											  vid(phi<2, 1, 1>(m, d0)),
+											  eid(d2),
+											  eid(d0),
+											  eid(phi<2, 1>(m, d0)),
+											  eid(d1),
+											  eid(phi<2, 1>(m, d2)),
+											  eid(phi<2, 1>(m, d1))};
+		// the shortest diagonal of the octahedron
+		uint32 best = 0;
+		double best_length = 0.0;
+		for (uint32 k = 0; k < 3; ++k)
+		{
+			const double l = (r.positions[local[diagonals[k][0]]] - r.positions[local[diagonals[k][1]]]).squaredNorm();
+			if (k == 0 || l < best_length)
+			{
+				best = k;
+				best_length = l;
+			}
+		}
+		for (const auto& t : patterns[best])
+			for (uint32 i : t)
+				r.cell_vertices.push_back(local[i]);
+		return true;
+	});
 	if (reporter.cancelled())
 		return {true, 0};
 	rebuild(m, pos, r, 4);
@@ -244,46 +232,43 @@ SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 	constexpr std::array<std::array<uint32, 2>, 4> xy = {{{0, 0}, {2, 0}, {2, 2}, {0, 2}}};
 	constexpr std::array<std::array<uint32, 2>, 4> mid = {{{1, 0}, {2, 1}, {1, 2}, {0, 1}}};
 	uint32 done = 0;
-	foreach_cell(
-	    m,
-	    [&](Volume w)
-	    {
-		    if ((done & 1023u) == 0 && !reporter.report(0.9 * double(done) / double(nb_volumes)))
-			    return false;
-		    ++done;
-		    uint32 grid[3][3][3];
-		    const auto vid = [&](Dart d) { return r.vertex_id[index_of(m, Vertex(d))]; };
-		    Dart d = w.dart;
-		    for (uint32 i = 0; i < 4; ++i, d = phi1(m, d))
-		    {
-			    // side face of d: (end of d, origin of d, top of origin, top of end)
-			    const Dart vertical = phi<2, 1>(m, d), top = phi1(m, vertical);
-			    grid[xy[i][0]][xy[i][1]][0] = vid(d);
-			    grid[xy[i][0]][xy[i][1]][1] = r.edge_id[vertical.index];
-			    grid[xy[i][0]][xy[i][1]][2] = vid(top);
-			    grid[mid[i][0]][mid[i][1]][0] = r.edge_id[d.index];
-			    grid[mid[i][0]][mid[i][1]][1] = r.face_id[phi2(m, d).index];
-			    grid[mid[i][0]][mid[i][1]][2] = r.edge_id[top.index];
-			    if (i == 0)
-				    grid[1][1][2] = r.face_id[phi2(m, top).index];
-		    }
-		    grid[1][1][0] = r.face_id[w.dart.index];
-		    Vec3 centre = Vec3::Zero();
-		    for (uint32 x : {0u, 2u})
-			    for (uint32 y : {0u, 2u})
-				    for (uint32 z : {0u, 2u})
-					    centre += r.positions[grid[x][y][z]];
-		    grid[1][1][1] = r.add(centre / 8.0);
-		    // the outward cycle runs opposite to VTK's bottom quad: each child
-		    // is listed as the parent would be, (q0, q3, q2, q1, then above)
-		    for (uint32 a = 0; a < 2; ++a)
-			    for (uint32 b = 0; b < 2; ++b)
-				    for (uint32 c = 0; c < 2; ++c)
-					    for (uint32 z : {c, c + 1})
-						    for (const auto &q : {std::array<uint32, 2>{a, b}, {a, b + 1}, {a + 1, b + 1}, {a + 1, b}})
-							    r.cell_vertices.push_back(grid[q[0]][q[1]][z]);
-		    return true;
-	    });
+	foreach_cell(m, [&](Volume w) {
+		if ((done & 1023u) == 0 && !reporter.report(0.9 * double(done) / double(nb_volumes)))
+			return false;
+		++done;
+		uint32 grid[3][3][3];
+		const auto vid = [&](Dart d) { return r.vertex_id[index_of(m, Vertex(d))]; };
+		Dart d = w.dart;
+		for (uint32 i = 0; i < 4; ++i, d = phi1(m, d))
+		{
+			// side face of d: (end of d, origin of d, top of origin, top of end)
+			const Dart vertical = phi<2, 1>(m, d), top = phi1(m, vertical);
+			grid[xy[i][0]][xy[i][1]][0] = vid(d);
+			grid[xy[i][0]][xy[i][1]][1] = r.edge_id[vertical.index];
+			grid[xy[i][0]][xy[i][1]][2] = vid(top);
+			grid[mid[i][0]][mid[i][1]][0] = r.edge_id[d.index];
+			grid[mid[i][0]][mid[i][1]][1] = r.face_id[phi2(m, d).index];
+			grid[mid[i][0]][mid[i][1]][2] = r.edge_id[top.index];
+			if (i == 0)
+				grid[1][1][2] = r.face_id[phi2(m, top).index];
+		}
+		grid[1][1][0] = r.face_id[w.dart.index];
+		Vec3 centre = Vec3::Zero();
+		for (uint32 x : {0u, 2u})
+			for (uint32 y : {0u, 2u})
+				for (uint32 z : {0u, 2u})
+					centre += r.positions[grid[x][y][z]];
+		grid[1][1][1] = r.add(centre / 8.0);
+		// the outward cycle runs opposite to VTK's bottom quad: each child
+		// is listed as the parent would be, (q0, q3, q2, q1, then above)
+		for (uint32 a = 0; a < 2; ++a)
+			for (uint32 b = 0; b < 2; ++b)
+				for (uint32 c = 0; c < 2; ++c)
+					for (uint32 z : {c, c + 1})
+						for (const auto& q : {std::array<uint32, 2>{a, b}, {a, b + 1}, {a + 1, b + 1}, {a + 1, b}})
+							r.cell_vertices.push_back(grid[q[0]][q[1]][z]);
+		return true;
+	});
 	if (reporter.cancelled())
 		return {true, 0};
 	rebuild(m, pos, r, 8);

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/modeling/triangle_tree.h>
-
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/modeling/triangle_tree.h>
 
 #include <algorithm>
 #include <cassert>
@@ -172,7 +171,7 @@ TriangleTree::Hit TriangleTree::closest_point(const Vec3& p) const
 }
 
 SurfaceDistance vertex_distance_to_surface(const CMap2& m, const AttributeArray<Vec3>& pos,
-                                           const TriangleTree& reference)
+										   const TriangleTree& reference)
 {
 	SurfaceDistance r;
 	uint64 n = 0;

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/modeling/triangulation.h>
-
+#include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
-#include <cgogn/core/operators/cmap2.h>
 #include <cgogn/geometry/algos/normal.h>
+#include <cgogn/modeling/triangulation.h>
 
 #include <Eigen/Geometry>
 

@@ -28,9 +28,9 @@ namespace cgogn_test_data
 inline bool is_large(std::string_view rel)
 {
 	constexpr std::string_view large[] = {"surface/nefertiti.obj",         "surface/refined_elephant.off",
-	                                      "surface/stanford-bunny.obj",    "volume/armadillo_tet_461k.mesh",
-	                                      "volume/heart_tet_205k.mesh",    "volume/elephant_tet_27k.mesh",
-	                                      "volume/elephant_hex_110k.mesh", "volume/elephant_poly_4k.ovm"};
+										  "surface/stanford-bunny.obj",    "volume/armadillo_tet_461k.mesh",
+										  "volume/heart_tet_205k.mesh",    "volume/elephant_tet_27k.mesh",
+										  "volume/elephant_hex_110k.mesh", "volume/elephant_poly_4k.ovm"};
 	for (std::string_view l : large)
 		if (l == rel)
 			return true;

@@ -105,17 +105,17 @@ Counts counts(const MAP& m)
 } // namespace cgogn::test
 
 /// check_integrity(m) is clean, or the test fails with the report.
-#define EXPECT_INTEGRITY(m)                                                                                          \
+#define EXPECT_INTEGRITY(m)                                                                                            \
 	do                                                                                                                 \
 	{                                                                                                                  \
-		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                              \
+		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                               \
 		EXPECT_TRUE(r_.ok()) << r_.to_string();                                                                        \
 	} while (0)
 
 /// check_integrity(m) is clean, or the test stops with the report.
-#define ASSERT_INTEGRITY(m)                                                                                          \
+#define ASSERT_INTEGRITY(m)                                                                                            \
 	do                                                                                                                 \
 	{                                                                                                                  \
-		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                              \
+		const ::cgogn::IntegrityReport r_ = ::cgogn::check_integrity(m);                                               \
 		ASSERT_TRUE(r_.ok()) << r_.to_string();                                                                        \
 	} while (0)

@@ -24,7 +24,10 @@ CMap2 make_grid()
 }
 
 template <typename A, typename C>
-concept IndexableBy = requires(A& a, C c) { a[c]; };
+concept IndexableBy = requires(A& a, C c)
+{
+	a[c];
+};
 
 } // namespace
 

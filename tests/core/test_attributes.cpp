@@ -24,7 +24,7 @@ TEST(Attributes, AddGetRemove)
 	auto attr = add_attribute<uint32, Vertex>(m, "attr");
 	ASSERT_NE(attr, nullptr);
 	EXPECT_EQ((add_attribute<uint32, Vertex>(m, "attr")), nullptr); // the name is taken on this orbit
-	EXPECT_NE((add_attribute<uint32, Face>(m, "attr")), nullptr);  // but free on another
+	EXPECT_NE((add_attribute<uint32, Face>(m, "attr")), nullptr);   // but free on another
 	EXPECT_EQ((get_attribute<uint32, Vertex>(m, "attr")), attr);
 	EXPECT_EQ((get_attribute<double, Vertex>(m, "attr")), nullptr); // another type
 	EXPECT_EQ((get_attribute<double, Face>(m, "area")), nullptr);   // absent
@@ -74,7 +74,8 @@ TEST(Attributes, ValueIndexAndRangeFor)
 	});
 	// value() through any dart of the face
 	foreach_cell(m, [&](Face f) {
-		foreach_dart_of_orbit(m, f, [&](Dart d) { EXPECT_EQ(value<double>(m, area, Face(d)), value<double>(m, area, f)); });
+		foreach_dart_of_orbit(m, f,
+							  [&](Dart d) { EXPECT_EQ(value<double>(m, area, Face(d)), value<double>(m, area, f)); });
 	});
 }
 

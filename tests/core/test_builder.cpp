@@ -48,10 +48,10 @@ struct GeneratedSurface
 TEST(SurfaceBuilder, GeneratedSurfacesHaveTheirTopology)
 {
 	const std::vector<GeneratedSurface> cases = {
-		{"grid quads", grid_soup(5, 4), 1, 1},        {"grid triangles", grid_soup(5, 4, true), 1, 1},
-		{"cylinder", cylinder_soup(8, 3), 0, 2},      {"cylinder triangles", cylinder_soup(8, 3, true), 0, 2},
-		{"sphere", sphere_soup(8, 5), 2, 0},          {"sphere triangles", sphere_soup(8, 5, true), 2, 0},
-		{"torus", torus_soup(7, 5), 0, 0},            {"torus triangles", torus_soup(7, 5, true), 0, 0},
+		{"grid quads", grid_soup(5, 4), 1, 1},   {"grid triangles", grid_soup(5, 4, true), 1, 1},
+		{"cylinder", cylinder_soup(8, 3), 0, 2}, {"cylinder triangles", cylinder_soup(8, 3, true), 0, 2},
+		{"sphere", sphere_soup(8, 5), 2, 0},     {"sphere triangles", sphere_soup(8, 5, true), 2, 0},
+		{"torus", torus_soup(7, 5), 0, 0},       {"torus triangles", torus_soup(7, 5, true), 0, 0},
 	};
 	for (const auto& c : cases)
 	{
@@ -170,8 +170,7 @@ TEST(VolumeBuilder, MixedCellsShareFaces)
 	CMap3 m;
 	// a hex, a pyramid on its top quad, a prism on its front quad, a tet on a
 	// triangle of the pyramid
-	BuildReport r = build(m, 12,
-						  {{0, 1, 2, 3, 4, 5, 6, 7}, {4, 5, 6, 7, 8}, {1, 0, 9, 5, 4, 10}, {5, 4, 11, 8}});
+	BuildReport r = build(m, 12, {{0, 1, 2, 3, 4, 5, 6, 7}, {4, 5, 6, 7, 8}, {1, 0, 9, 5, 4, 10}, {5, 4, 11, 8}});
 	EXPECT_EQ(r.nb_cells_built, 4u);
 	EXPECT_EQ(r.nb_nonmanifold_vertices, 0u);
 	EXPECT_EQ(nb_cells<CMap3::Volume>(m), 4u);
@@ -263,7 +262,8 @@ TEST(Builder, LeavesNoIdleMarkAllocated)
 	CMap2 m;
 	build_surface(m, torus_soup(40, 30, true));
 	std::size_t expected = 0;
-	for (const AttributeContainer* c : {cgogn::detail::darts_of(m).get(), cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)].get()})
+	for (const AttributeContainer* c :
+		 {cgogn::detail::darts_of(m).get(), cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)].get()})
 	{
 		std::size_t attributes = 0;
 		for (const auto& a : c->attributes())
@@ -272,10 +272,12 @@ TEST(Builder, LeavesNoIdleMarkAllocated)
 	}
 	// the darts' boundary mark: one bit per dart line, in whole chunks, in
 	// whole pages
-	const std::size_t mark_bytes = (cgogn::detail::darts_of(m)->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
+	const std::size_t mark_bytes =
+		(cgogn::detail::darts_of(m)->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
 	const std::size_t page = detail::page_size();
 	expected += (mark_bytes + page - 1) / page * page;
-	std::size_t held = cgogn::detail::darts_of(m)->memory_bytes() + cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)]->memory_bytes();
+	std::size_t held = cgogn::detail::darts_of(m)->memory_bytes() +
+					   cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)]->memory_bytes();
 	held -= cgogn::detail::darts_of(m)->free_lines().capacity() * sizeof(uint32);
 	held -= cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)]->free_lines().capacity() * sizeof(uint32);
 	EXPECT_EQ(held, expected);

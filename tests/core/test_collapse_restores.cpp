@@ -4,14 +4,14 @@
 // repeated split/collapse editing from scattering a mesh over its containers.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <random>
-
-#include "cgogn_test_data.h"
-#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
@@ -181,7 +181,9 @@ TEST(CollapseRestores, TheLowerEdgeOfAVanishingTriangleSurvivesWhole)
 	collapse_edge(m, e);
 	EXPECT_INTEGRITY(m);
 	std::vector<uint32> expected = live_before, live_after;
-	std::erase_if(expected, [&](uint32 d) { return std::find(expected_gone.begin(), expected_gone.end(), d) != expected_gone.end(); });
+	std::erase_if(expected, [&](uint32 d) {
+		return std::find(expected_gone.begin(), expected_gone.end(), d) != expected_gone.end();
+	});
 	foreach_dart(m, [&](Dart d) { live_after.push_back(d.index); });
 	EXPECT_EQ(live_after, expected);
 }

@@ -96,8 +96,8 @@ TEST_P(AttributeContainerLayout, RangeForVisitsLiveLinesAcrossChunksInLineOrder)
 	for (uint32 i = 0; i < n; ++i)
 		ASSERT_EQ(lines[i], i);
 	// holes: the first line, both sides of a chunk border, a run, the last lines
-	const std::set<uint32> released = {0, CHUNK_SIZE - 1, CHUNK_SIZE, 2 * CHUNK_SIZE + 3, 2 * CHUNK_SIZE + 4,
-									   2 * CHUNK_SIZE + 5, n - 2, n - 1};
+	const std::set<uint32> released = {
+		0, CHUNK_SIZE - 1, CHUNK_SIZE, 2 * CHUNK_SIZE + 3, 2 * CHUNK_SIZE + 4, 2 * CHUNK_SIZE + 5, n - 2, n - 1};
 	for (uint32 i : released)
 		c.release_line(i);
 	lines = visited();
@@ -157,7 +157,7 @@ TEST(AttributeContainer, AttributesByNameAndType)
 	EXPECT_TRUE(c.remove_attribute(a.get()));
 	EXPECT_EQ(c.get_attribute<float>("weight"), nullptr);
 	EXPECT_EQ(a->container(), nullptr);
-	EXPECT_FLOAT_EQ((*a)[0], 2.0f); // the handle keeps its values
+	EXPECT_FLOAT_EQ((*a)[0], 2.0f);  // the handle keeps its values
 	EXPECT_EQ(a->begin(), a->end()); // but iterates over nothing
 	EXPECT_FALSE(c.remove_attribute(a.get()));
 	EXPECT_FALSE(c.remove_attribute(&c.key())); // the key stays

@@ -12,23 +12,50 @@ using namespace cgogn;
 namespace
 {
 template <typename M>
-concept CanAddFace = requires(M& m) { add_face(m, 3u); };
+concept CanAddFace = requires(M& m)
+{
+	add_face(m, 3u);
+};
 template <typename M, typename E>
-concept CanCutEdge = requires(M& m, E e) { cut_edge(m, e); };
+concept CanCutEdge = requires(M& m, E e)
+{
+	cut_edge(m, e);
+};
 template <typename M, typename E>
-concept CanCollapseEdge = requires(M& m, E e) { collapse_edge(m, e); };
+concept CanCollapseEdge = requires(M& m, E e)
+{
+	collapse_edge(m, e);
+};
 template <typename M, typename E>
-concept CanFlipEdge = requires(M& m, E e) { flip_edge(m, e); };
+concept CanFlipEdge = requires(M& m, E e)
+{
+	flip_edge(m, e);
+};
 template <typename M, typename V>
-concept CanCutFace = requires(M& m, V v) { cut_face(m, v, v); };
+concept CanCutFace = requires(M& m, V v)
+{
+	cut_face(m, v, v);
+};
 template <typename M>
-concept CanMerge = requires(M& m, const M& o) { merge(m, o); };
+concept CanMerge = requires(M& m, const M& o)
+{
+	merge(m, o);
+};
 template <typename M>
-concept CanTriangulate = requires(M& m, AttributeArray<Vec3>& p) { modeling::triangulate_faces(m, p); };
+concept CanTriangulate = requires(M& m, AttributeArray<Vec3>& p)
+{
+	modeling::triangulate_faces(m, p);
+};
 template <typename M>
-concept CanDecimate = requires(M& m, AttributeArray<Vec3>& p) { modeling::decimate(m, p, {}); };
+concept CanDecimate = requires(M& m, AttributeArray<Vec3>& p)
+{
+	modeling::decimate(m, p, {});
+};
 template <typename M>
-concept CanLoop = requires(M& m, AttributeArray<Vec3>& p) { modeling::loop_subdivision(m, p); };
+concept CanLoop = requires(M& m, AttributeArray<Vec3>& p)
+{
+	modeling::loop_subdivision(m, p);
+};
 } // namespace
 
 // creation

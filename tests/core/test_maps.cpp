@@ -62,7 +62,7 @@ TEST(CMap2, AddFaceCreatesItsBoundaryFace)
 	EXPECT_EQ(nb_darts(m), 8u);
 	EXPECT_FALSE(is_boundary(m, f.dart));
 	EXPECT_TRUE(is_boundary(m, phi2(m, f.dart)));
-	EXPECT_EQ(nb_cells<CMap2::Face>(m), 1u);   // the boundary face is not counted
+	EXPECT_EQ(nb_cells<CMap2::Face>(m), 1u); // the boundary face is not counted
 	EXPECT_EQ(nb_cells<CMap2::Vertex>(m), 4u);
 	EXPECT_EQ(nb_cells<CMap2::Edge>(m), 4u);
 	EXPECT_EQ(nb_cells<CMap2::Volume>(m), 1u);

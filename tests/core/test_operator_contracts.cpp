@@ -74,7 +74,7 @@ TEST(OperatorContracts, FlipBackHasItsOwnPredicate)
 	CMap2 m = surface(5, {{0, 1, 2}, {1, 0, 3, 4}, {2, 1, 4}});
 	const Edge e(dart_from(m, 0, 1));
 	ASSERT_TRUE(e.dart.is_valid());
-	EXPECT_TRUE(can_flip_edge(m, e));		// joins 2 and 3
+	EXPECT_TRUE(can_flip_edge(m, e));       // joins 2 and 3
 	EXPECT_FALSE(can_flip_back_edge(m, e)); // would join 2 and 4, already joined
 	// the forward flip is fine, and so is flipping it back
 	flip_edge(m, e);

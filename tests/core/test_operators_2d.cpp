@@ -76,8 +76,8 @@ TEST(Operators2, LinkConditionRefusals)
 		// an interior edge between two boundary vertices would pinch the disk
 		uint32 refused = 0, allowed = 0;
 		foreach_cell(m, [&](Edge e) {
-			const bool both_on_boundary = is_incident_to_boundary(m, Vertex(e.dart)) &&
-										  is_incident_to_boundary(m, Vertex(phi2(m, e.dart)));
+			const bool both_on_boundary =
+				is_incident_to_boundary(m, Vertex(e.dart)) && is_incident_to_boundary(m, Vertex(phi2(m, e.dart)));
 			if (both_on_boundary && !is_incident_to_boundary(m, e))
 			{
 				EXPECT_FALSE(can_collapse_edge(m, e));
@@ -443,7 +443,8 @@ void random_editing(CMap2& m, uint32 steps, uint32 seed)
 		}
 		case 4: {
 			Edge e = pick(edges);
-			if ((done = can_merge_incident_faces(m, e)) && codegree(m, Face(e.dart)) + codegree(m, Face(phi2(m, e.dart))) < 12)
+			if ((done = can_merge_incident_faces(m, e)) &&
+				codegree(m, Face(e.dart)) + codegree(m, Face(phi2(m, e.dart))) < 12)
 				merge_incident_faces(m, e);
 			break;
 		}

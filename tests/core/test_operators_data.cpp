@@ -2,13 +2,13 @@
 // characteristic unchanged, untouched vertices keep their positions.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <random>
-
-#include "cgogn_test_data.h"
-#include "map_test_utils.h"
 
 using namespace cgogn;
 
@@ -17,7 +17,8 @@ namespace
 template <typename MAP>
 int64 euler(const MAP& m)
 {
-	int64 chi = int64(nb_cells<typename MAP::Vertex>(m)) - nb_cells<typename MAP::Edge>(m) + nb_cells<typename MAP::Face>(m);
+	int64 chi =
+		int64(nb_cells<typename MAP::Vertex>(m)) - nb_cells<typename MAP::Edge>(m) + nb_cells<typename MAP::Face>(m);
 	if constexpr (MAP::dimension == 3)
 		chi -= nb_cells<typename MAP::Volume>(m);
 	return chi;

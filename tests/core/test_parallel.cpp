@@ -114,7 +114,7 @@ TEST_P(Parallel, ClosedSurfaceAllCellTypes)
 {
 	CMap2 m;
 	build_surface(m, torus_soup(30, 20)); // quads
-	build_surface(m, sphere_soup(12, 6));  // a second connected component
+	build_surface(m, sphere_soup(12, 6)); // a second connected component
 	check_all_cell_types(m);
 	index_all_cell_types(m);
 	check_all_cell_types(m);

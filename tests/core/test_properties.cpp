@@ -41,8 +41,8 @@ TEST(Properties, SameCell)
 	build_surface(m, torus_soup(4, 3));
 	foreach_dart(m, [&](Dart d) {
 		const Dart around = phi1(m, phi2(m, d));
-		EXPECT_TRUE(same_cell(m, CMap2::Vertex(d), CMap2::Vertex(around)));   // indexed orbit
-		EXPECT_TRUE(same_cell(m, CMap2::Face(d), CMap2::Face(phi1(m, d))));  // not indexed
+		EXPECT_TRUE(same_cell(m, CMap2::Vertex(d), CMap2::Vertex(around))); // indexed orbit
+		EXPECT_TRUE(same_cell(m, CMap2::Face(d), CMap2::Face(phi1(m, d)))); // not indexed
 		EXPECT_FALSE(same_cell(m, CMap2::Face(d), CMap2::Face(phi2(m, d))));
 		EXPECT_TRUE(same_cell(m, CMap2::Edge(d), CMap2::Edge(phi2(m, d))));
 		EXPECT_FALSE(same_cell(m, CMap2::Vertex(d), CMap2::Vertex(phi1(m, d))));
@@ -82,12 +82,10 @@ template <typename CELL, typename MAP>
 std::pair<uint64, uint64> degree_sums(const MAP& m)
 {
 	uint64 d = 0, c = 0;
-	foreach_cell(m,
-	             [&](CELL x)
-	             {
-		             d += degree(m, x);
-		             c += codegree(m, x);
-	             });
+	foreach_cell(m, [&](CELL x) {
+		d += degree(m, x);
+		c += codegree(m, x);
+	});
 	return {d, c};
 }
 } // namespace

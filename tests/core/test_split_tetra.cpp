@@ -3,16 +3,16 @@
 // the generic cavity re-tetrahedralization it replaced.
 #include <cgogn/cgogn.h>
 
+#include "../../src/core/cmap3_cavity.h"
+#include "cgogn_test_data.h"
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
 #include <random>
-
-#include "../../src/core/cmap3_cavity.h"
-#include "cgogn_test_data.h"
-#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;

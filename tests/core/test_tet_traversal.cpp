@@ -3,13 +3,13 @@
 // edited meshes, boundary volumes included.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
-
-#include "cgogn_test_data.h"
-#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;

@@ -112,9 +112,8 @@ TEST_F(Grid, AroundAnInteriorVertex)
 	for (std::size_t k = 0; k < 4; ++k)
 	{
 		bool shared = false;
-		foreach_adjacent_face_through_edge(m, faces[k], [&](Face g) {
-			shared = shared || same_cell(m, g, faces[(k + 1) % 4]);
-		});
+		foreach_adjacent_face_through_edge(m, faces[k],
+										   [&](Face g) { shared = shared || same_cell(m, g, faces[(k + 1) % 4]); });
 		EXPECT_TRUE(shared);
 	}
 	uint32 edges = 0;

@@ -1,5 +1,8 @@
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,9 +11,6 @@
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
-
-#include "cgogn_test_data.h"
-#include "map_test_utils.h"
 
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
@@ -267,9 +267,8 @@ TEST(Traversals3D, AdjacentVerticesThroughEdgesByLineAndWithoutLines)
 	foreach_adjacent_vertex_through_edge(m, mid, [&](Vertex w) { ends.insert(index_of(m, w)); });
 	EXPECT_EQ(ends, (std::multiset<uint32>{a, b}));
 	uint32 unindexed_seen = 0;
-	foreach_adjacent_vertex_through_edge(m, Vertex(e.dart), [&](Vertex w) {
-		unindexed_seen += index_of(m, w) == INVALID_INDEX;
-	});
+	foreach_adjacent_vertex_through_edge(m, Vertex(e.dart),
+										 [&](Vertex w) { unindexed_seen += index_of(m, w) == INVALID_INDEX; });
 	EXPECT_EQ(unindexed_seen, 1u);
 }
 
@@ -349,16 +348,18 @@ TEST(Traversals3D, ThrowingCallableLeavesNoMark)
 	for (int round = 0; round < 100; ++round)
 	{
 		uint32 calls = 0;
-		EXPECT_THROW(foreach_dart_of_orbit(m, centre, [&](Dart) {
-			if (++calls == most / 2)
-				throw std::runtime_error("stop");
-		}),
+		EXPECT_THROW(foreach_dart_of_orbit(m, centre,
+										   [&](Dart) {
+											   if (++calls == most / 2)
+												   throw std::runtime_error("stop");
+										   }),
 					 std::runtime_error);
 		calls = 0;
-		EXPECT_THROW(foreach_dart_of_orbit(m, Volume(centre.dart), [&](Dart) {
-			if (++calls == volume_darts / 2)
-				throw std::runtime_error("stop");
-		}),
+		EXPECT_THROW(foreach_dart_of_orbit(m, Volume(centre.dart),
+										   [&](Dart) {
+											   if (++calls == volume_darts / 2)
+												   throw std::runtime_error("stop");
+										   }),
 					 std::runtime_error);
 	}
 	// every mark given back (the same first free one) and cleared

@@ -83,9 +83,8 @@ TEST_F(ViewGrid, FilterRestrictsLocalTraversals)
 	cf2.set_filter<Vertex>([&](Vertex v) { return degree(m, v) == 2; }); // corners
 	EXPECT_EQ(nb_cells<Vertex>(cf2), 4u);
 	uint32 corner_neighbours = 0;
-	foreach_cell(m, [&](Vertex v) {
-		foreach_adjacent_vertex_through_edge(cf2, v, [&](Vertex) { ++corner_neighbours; });
-	});
+	foreach_cell(m,
+				 [&](Vertex v) { foreach_adjacent_vertex_through_edge(cf2, v, [&](Vertex) { ++corner_neighbours; }); });
 	EXPECT_EQ(corner_neighbours, 8u);
 	// markers on a view mark the map's cells
 	CellMarker<CellFilter<CMap2>, Vertex> cm(cf);
@@ -110,7 +109,7 @@ TEST_F(ViewGrid, FilterAppliesToLocatedNeighbours)
 		EXPECT_EQ(as_vertex, as_auto);
 		return as_vertex;
 	};
-	EXPECT_EQ(count(), 14u * 2 + 10); // as in FilterRestrictsLocalTraversals
+	EXPECT_EQ(count(), 14u * 2 + 10);              // as in FilterRestrictsLocalTraversals
 	add_attribute<uint32, Vertex>(m, "vertex_id"); // neighbours come with their lines
 	EXPECT_EQ(count(), 14u * 2 + 10);
 	IncidenceCache<CMap2, Vertex, Vertex, Edge>::build(m);
@@ -152,8 +151,8 @@ TEST_F(ViewGrid, CacheIsASnapshot)
 	uint32 visited = 0;
 	foreach_cell(cache, [&](Face f) {
 		EXPECT_LT(value<uint32>(m, face_id, f), 12u);
-		add_face(m, 3);  // a new face of the map: not visited
-		cache.add(f);    // added to the cache during the traversal: not visited
+		add_face(m, 3); // a new face of the map: not visited
+		cache.add(f);   // added to the cache during the traversal: not visited
 		++visited;
 	});
 	EXPECT_EQ(visited, 12u);

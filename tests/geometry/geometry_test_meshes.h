@@ -53,8 +53,9 @@ inline SurfaceSoup polygon_soup(const std::vector<Vec3>& points, const std::vect
 /// The axis-aligned box [0, sx] x [0, sy] x [0, sz] as 6 quads oriented outwards.
 inline SurfaceSoup box_soup(double sx = 1.0, double sy = 1.0, double sz = 1.0)
 {
-	return polygon_soup({{0, 0, 0}, {sx, 0, 0}, {sx, sy, 0}, {0, sy, 0}, {0, 0, sz}, {sx, 0, sz}, {sx, sy, sz}, {0, sy, sz}},
-						{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+	return polygon_soup(
+		{{0, 0, 0}, {sx, 0, 0}, {sx, sy, 0}, {0, sy, 0}, {0, 0, sz}, {sx, 0, sz}, {sx, sy, sz}, {0, sy, sz}},
+		{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
 }
 
 /// A deterministic pseudo-random value in [-1, 1] for integer i (an integer

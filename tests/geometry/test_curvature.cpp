@@ -36,10 +36,10 @@ TEST(Curvature, GaussBonnetOnClosedAndOpenMeshes)
 		SurfaceSoup soup;
 	};
 	const std::vector<Case> cases = {
-		{"sphere quads", sphere_soup(12, 7)},      {"sphere triangles", sphere_soup(12, 7, true)},
-		{"torus quads", torus_soup(9, 6)},         {"torus triangles", torus_soup(9, 6, true)},
-		{"grid quads", grid_soup(4, 5)},           {"grid triangles", grid_soup(4, 5, true)},
-		{"cylinder quads", cylinder_soup(10, 3)},  {"cylinder triangles", cylinder_soup(10, 3, true)},
+		{"sphere quads", sphere_soup(12, 7)},     {"sphere triangles", sphere_soup(12, 7, true)},
+		{"torus quads", torus_soup(9, 6)},        {"torus triangles", torus_soup(9, 6, true)},
+		{"grid quads", grid_soup(4, 5)},          {"grid triangles", grid_soup(4, 5, true)},
+		{"cylinder quads", cylinder_soup(10, 3)}, {"cylinder triangles", cylinder_soup(10, 3, true)},
 		{"box", test::box_soup(1, 2, 3)},
 	};
 	for (const auto& c : cases)
@@ -86,8 +86,8 @@ TEST(Curvature, FlatGridHasNone)
 
 TEST(Curvature, VoronoiAreasPartitionTheSurface)
 {
-	for (const SurfaceSoup& s : {sphere_soup(16, 9, true), sphere_soup(16, 9), grid_soup(5, 3, true),
-								 torus_soup(10, 5, true)})
+	for (const SurfaceSoup& s :
+		 {sphere_soup(16, 9, true), sphere_soup(16, 9), grid_soup(5, 3, true), torus_soup(10, 5, true)})
 	{
 		CMap2 m;
 		auto pos = build_with_positions(m, s);
@@ -144,7 +144,7 @@ TEST(Curvature, CylinderPrincipalDirections)
 			const PrincipalCurvatures c = principal_curvatures(m, v, *pos);
 			EXPECT_NEAR(c.kmax, 1.0, 0.01);
 			EXPECT_NEAR(c.kmin, 0.0, 0.01);
-			EXPECT_NEAR(std::abs(c.dmin.z()), 1.0, 1e-2);                             // along the axis
+			EXPECT_NEAR(std::abs(c.dmin.z()), 1.0, 1e-2);                         // along the axis
 			EXPECT_NEAR(std::abs(c.dmax.dot(Vec3(-p.y(), p.x(), 0))), 1.0, 1e-2); // around it
 			EXPECT_NEAR(mean_curvature(m, v, *pos), 0.5, 0.01);
 			EXPECT_NEAR(gaussian_curvature(m, v, *pos), 0.0, 1e-10);

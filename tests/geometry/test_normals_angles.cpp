@@ -23,7 +23,8 @@ TEST(Normals, GridPointsUp)
 		auto pos = build_with_positions(m, grid_soup(4, 3, triangles));
 		foreach_cell(m, [&](Face f) { EXPECT_EQ(face_normal(m, f, *pos), Vec3(0, 0, 1)); });
 		for (NormalWeighting w : all_weightings)
-			foreach_cell(m, [&](Vertex v) { EXPECT_NEAR((vertex_normal(m, v, *pos, w) - Vec3(0, 0, 1)).norm(), 0.0, 1e-15); });
+			foreach_cell(
+				m, [&](Vertex v) { EXPECT_NEAR((vertex_normal(m, v, *pos, w) - Vec3(0, 0, 1)).norm(), 0.0, 1e-15); });
 		auto fn = add_attribute<Vec3, Face>(m, "fn");
 		compute_face_normals(m, *pos, *fn);
 		for (const Vec3& n : *fn)
@@ -44,8 +45,8 @@ TEST(Normals, BoxCornersUnderEachWeighting)
 	CMap2 flat;
 	auto fpos = build_with_positions(flat, test::box_soup(4, 4, 1));
 	const Vertex corner = test::closest_vertex(flat, *fpos, Vec3(4, 4, 1));
-	EXPECT_NEAR((vertex_normal(flat, corner, *fpos, NormalWeighting::Uniform) - Vec3(1, 1, 1).normalized()).norm(),
-				0.0, 1e-15);
+	EXPECT_NEAR((vertex_normal(flat, corner, *fpos, NormalWeighting::Uniform) - Vec3(1, 1, 1).normalized()).norm(), 0.0,
+				1e-15);
 	EXPECT_NEAR((vertex_normal(flat, corner, *fpos, NormalWeighting::Angle) - Vec3(1, 1, 1).normalized()).norm(), 0.0,
 				1e-15);
 	EXPECT_NEAR((vertex_normal(flat, corner, *fpos, NormalWeighting::Area) - Vec3(4, 4, 16).normalized()).norm(), 0.0,

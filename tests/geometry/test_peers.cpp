@@ -147,8 +147,9 @@ TEST(PeerOpenMesh, FacesEdgesAnglesAndNormalsAgree)
 		// area weighting on triangles
 		foreach_cell(m, [&](Vertex v) {
 			const OMesh::VertexHandle vh(int(index_of(m, v)));
-			EXPECT_NEAR((vertex_normal(m, v, *pos, NormalWeighting::Uniform) - to_vec(om.calc_vertex_normal(vh))).norm(),
-						0.0, 1e-12);
+			EXPECT_NEAR(
+				(vertex_normal(m, v, *pos, NormalWeighting::Uniform) - to_vec(om.calc_vertex_normal(vh))).norm(), 0.0,
+				1e-12);
 			if (triangles)
 			{
 				EXPECT_NEAR((vertex_normal(m, v, *pos, NormalWeighting::Area) - to_vec(om.calc_normal(vh))).norm(), 0.0,

@@ -57,11 +57,11 @@ using Filter = std::function<void(CMap2&, AttributeArray<Vec3>&)>;
 TEST(Smoothing, EveryFilterDenoisesAndKeepsTheBoundary)
 {
 	const std::vector<std::pair<const char*, Filter>> filters = {
-	    {"laplacian", [](CMap2& m, AttributeArray<Vec3>& p) { laplacian_smoothing(m, p, 10); }},
-	    {"taubin", [](CMap2& m, AttributeArray<Vec3>& p) { taubin_smoothing(m, p, 10); }},
-	    {"implicit cotan", [](CMap2& m, AttributeArray<Vec3>& p) { implicit_smoothing(m, p, 1.0); }},
-	    {"implicit uniform", [](CMap2& m, AttributeArray<Vec3>& p) { implicit_smoothing(m, p, 5.0, 2, true); }},
-	    {"bilateral", [](CMap2& m, AttributeArray<Vec3>& p) { bilateral_normal_filtering(m, p); }},
+		{"laplacian", [](CMap2& m, AttributeArray<Vec3>& p) { laplacian_smoothing(m, p, 10); }},
+		{"taubin", [](CMap2& m, AttributeArray<Vec3>& p) { taubin_smoothing(m, p, 10); }},
+		{"implicit cotan", [](CMap2& m, AttributeArray<Vec3>& p) { implicit_smoothing(m, p, 1.0); }},
+		{"implicit uniform", [](CMap2& m, AttributeArray<Vec3>& p) { implicit_smoothing(m, p, 5.0, 2, true); }},
+		{"bilateral", [](CMap2& m, AttributeArray<Vec3>& p) { bilateral_normal_filtering(m, p); }},
 	};
 	for (bool triangles : {true, false})
 		for (const auto& [name, filter] : filters)
@@ -166,9 +166,9 @@ TEST(Smoothing, BilateralKeepsASharpEdge)
 			{
 				auto at = [&](double u, double w) { return c[0] + u * (c[1] - c[0]) + w * (c[3] - c[0]); };
 				s.face_sizes.push_back(4);
-				s.face_vertices.insert(s.face_vertices.end(), {vid(at(i / 6.0, j / 6.0)), vid(at((i + 1) / 6.0, j / 6.0)),
-															   vid(at((i + 1) / 6.0, (j + 1) / 6.0)),
-															   vid(at(i / 6.0, (j + 1) / 6.0))});
+				s.face_vertices.insert(s.face_vertices.end(),
+									   {vid(at(i / 6.0, j / 6.0)), vid(at((i + 1) / 6.0, j / 6.0)),
+										vid(at((i + 1) / 6.0, (j + 1) / 6.0)), vid(at(i / 6.0, (j + 1) / 6.0))});
 			}
 	});
 	auto fpos = build_with_positions(fine, s);

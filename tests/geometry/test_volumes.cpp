@@ -129,7 +129,7 @@ TEST(Volumes, PyramidAndPrismCells)
 	VolumeSoup s;
 	s.nb_vertices = 11;
 	s.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.3, 0.4, 3}, {5, 0, 0},
-				   {6, 0, 0}, {5, 1, 0},  {5, 0, 2}, {6, 0, 2}, {5, 1, 2}};
+				   {6, 0, 0}, {5, 1, 0}, {5, 0, 2}, {6, 0, 2}, {5, 1, 2}};
 	s.cell_sizes = {5, 6};
 	s.cell_vertices = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
 	auto pos = build_with_positions(m, s);

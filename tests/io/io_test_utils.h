@@ -6,13 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <vector>
-#include <cstdlib>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace cgogn::io_test
 {
@@ -83,8 +83,8 @@ template <typename MAP>
 struct MapSnapshot
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
-	using Top = std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face,
-								   typename mesh_traits<MAP>::Volume>;
+	using Top =
+		std::conditional_t<MAP::dimension == 2, typename mesh_traits<MAP>::Face, typename mesh_traits<MAP>::Volume>;
 	uint32 darts, vertices, top_cells;
 	std::vector<std::string> vertex_attributes, top_attributes;
 	std::vector<Vec3> positions;

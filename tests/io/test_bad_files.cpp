@@ -5,9 +5,9 @@
 // ones are made here.
 #include <cgogn/cgogn.h>
 
-#include <gtest/gtest.h>
-
 #include "io_test_utils.h"
+
+#include <gtest/gtest.h>
 
 #include <cstring>
 
@@ -66,10 +66,10 @@ std::string garbage(std::size_t n, uint32 seed)
 struct BadCase
 {
 	const char* name;
-	const char* file;                  // under tests/io/bad, or the name of the made file
-	std::string (*make)();             // nullptr: committed file
-	Where where;                       // where the error is located
-	const char* cause;                 // a part of the message
+	const char* file;      // under tests/io/bad, or the name of the made file
+	std::string (*make)(); // nullptr: committed file
+	Where where;           // where the error is located
+	const char* cause;     // a part of the message
 };
 
 std::string case_name(const testing::TestParamInfo<BadCase>& i)
@@ -187,16 +187,25 @@ INSTANTIATE_TEST_SUITE_P(
 				"collides with the vertex attribute 'position'"},
 		BadCase{"ply_vertex_element_twice", "ply_vertex_element_twice.ply", nullptr, Where::Line,
 				"element 'vertex' declared twice"},
-		BadCase{"ply_binary_truncated", "t.ply", [] { return ply_binary_header + bytes_of({0, 0, 0, 1, 0}); },
+		BadCase{"ply_binary_truncated", "t.ply",
+				[] {
+					return ply_binary_header + bytes_of({0, 0, 0, 1, 0});
+				},
 				Where::Byte, "declared 3 vertex elements"},
 		BadCase{"ply_binary_size_mismatch", "x.ply",
-				[] { return ply_binary_header + bytes_of({0, 0, 0, 1, 0, 0, 0, 1, 0}) + ply_binary_face() + "junk"; },
+				[] {
+					return ply_binary_header + bytes_of({0, 0, 0, 1, 0, 0, 0, 1, 0}) + ply_binary_face() + "junk";
+				},
 				Where::Byte, "unexpected 4 bytes"},
 		BadCase{"ply_binary_nan", "n.ply",
-				[] { return ply_binary_header + bytes_of({0, 0, 0, 1, NAN, 0, 0, 1, 0}) + ply_binary_face(); },
+				[] {
+					return ply_binary_header + bytes_of({0, 0, 0, 1, NAN, 0, 0, 1, 0}) + ply_binary_face();
+				},
 				Where::Byte, "not finite"},
 		BadCase{"ply_binary_huge_list", "l.ply",
-				[] { return ply_binary_header + bytes_of({0, 0, 0, 1, 0, 0, 0, 1, 0}) + std::string(1, char(200)); },
+				[] {
+					return ply_binary_header + bytes_of({0, 0, 0, 1, 0, 0, 0, 1, 0}) + std::string(1, char(200));
+				},
 				Where::Byte, "bad list count 200"},
 		BadCase{"ply_garbage", "garbage.ply", [] { return garbage(4096, 3); }, Where::Line, "not a PLY file"},
 		// STL

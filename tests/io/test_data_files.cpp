@@ -3,14 +3,14 @@
 // the data folders' READMEs. Only a large mesh that is not available skips.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+#include "mesh_info.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <optional>
 #include <set>
-
-#include "cgogn_test_data.h"
-#include "mesh_info.h"
 
 using namespace cgogn;
 
@@ -133,8 +133,7 @@ INSTANTIATE_TEST_SUITE_P(
 					SurfaceFile{"geomview_hypercube_2skeleton.off", 16, 24, -1, -1, 0, false, -1},
 					SurfaceFile{"tetrahedron.off", 4, 4, 0, 1, 0, true, 0},
 					SurfaceFile{"cube_quad.off", 8, 6, 0, 1, 0, true, 0},
-					SurfaceFile{"triangle.off", 3, 1, 1, 1, 0, true, -1},
-					SurfaceFile{"L.off", 6, 1, 1, 1, 0, true, -1},
+					SurfaceFile{"triangle.off", 3, 1, 1, 1, 0, true, -1}, SurfaceFile{"L.off", 6, 1, 1, 1, 0, true, -1},
 					SurfaceFile{"vertex_onering.off", 7, 6, 1, 1, 0, true, -1},
 					SurfaceFile{"edge_onering.off", 10, 10, 1, 1, 0, true, -1}),
 	surface_name);
@@ -143,8 +142,8 @@ TEST(DataSurfaceDetails, BoundaryEdgeCountsMatchTheReadme)
 {
 	// the large mesh last: when it is not available, the others are checked before the skip
 	const std::pair<const char*, int64> files[] = {{"hemisphere.off", 120}, {"elephant-with-holes.off", 1353},
-	                                               {"suzanne.obj", 42},     {"polygon_mesh.off", 489},
-	                                               {"Wuson.off", 2338},     {"stanford-bunny.obj", 223}};
+												   {"suzanne.obj", 42},     {"polygon_mesh.off", 489},
+												   {"Wuson.off", 2338},     {"stanford-bunny.obj", 223}};
 	for (const auto& [file, boundary_edges] : files)
 	{
 		CGOGN_DATA_PATH_OR_SKIP(path, std::string("surface/") + file);
@@ -235,15 +234,32 @@ TEST(DataVolumeDetails, MixedMeshCellKinds)
 TEST(DataFolder, EveryMeshFileIsCoveredAboveOrNamedHere)
 {
 	const std::string dir = CGOGN_DATA_DIR;
-	const std::set<std::string> known_surface = {
-		"nefertiti.obj", "refined_elephant.off", "stanford-bunny.obj", "hemisphere.off", "elephant-with-holes.off",
-		"spot_quadrangulated.obj", "spot_control_mesh.obj", "fandisk_quads.off", "suzanne.obj", "torus_quad.off",
-		"polygon_mesh.off", "Wuson.off", "geomview_cam.off", "geomview_simplex_2skeleton.off",
-		"geomview_orthoplex_2skeleton.off", "geomview_tetraplex_2skeleton.off", "geomview_hypercube_2skeleton.off",
-		"tetrahedron.off", "cube_quad.off", "triangle.off", "L.off", "vertex_onering.off", "edge_onering.off"};
+	const std::set<std::string> known_surface = {"nefertiti.obj",
+												 "refined_elephant.off",
+												 "stanford-bunny.obj",
+												 "hemisphere.off",
+												 "elephant-with-holes.off",
+												 "spot_quadrangulated.obj",
+												 "spot_control_mesh.obj",
+												 "fandisk_quads.off",
+												 "suzanne.obj",
+												 "torus_quad.off",
+												 "polygon_mesh.off",
+												 "Wuson.off",
+												 "geomview_cam.off",
+												 "geomview_simplex_2skeleton.off",
+												 "geomview_orthoplex_2skeleton.off",
+												 "geomview_tetraplex_2skeleton.off",
+												 "geomview_hypercube_2skeleton.off",
+												 "tetrahedron.off",
+												 "cube_quad.off",
+												 "triangle.off",
+												 "L.off",
+												 "vertex_onering.off",
+												 "edge_onering.off"};
 	const std::set<std::string> known_volume = {
 		"armadillo_tet_461k.mesh", "heart_tet_205k.mesh", "elephant_tet_27k.mesh", "elephant_tet_8k.mesh",
-		"armadillo_tet_4k.mesh",   "elephant_hex_110k.mesh", "liver_hex_624.mesh",  "hex_dominant_11k.mesh",
+		"armadillo_tet_4k.mesh", "elephant_hex_110k.mesh", "liver_hex_624.mesh", "hex_dominant_11k.mesh",
 		// OpenVolumeMesh polyhedra: no reader for .ovm, and the builder takes
 		// tetrahedra, pyramids, prisms and hexahedra only
 		"elephant_poly_4k.ovm"};

@@ -3,9 +3,9 @@
 // endianness), and how loads append to maps and repair non-manifold input.
 #include <cgogn/cgogn.h>
 
-#include <gtest/gtest.h>
-
 #include "io_test_utils.h"
+
+#include <gtest/gtest.h>
 
 #include <cstring>
 
@@ -175,10 +175,11 @@ TEST(PlyVariants, BigEndianBinaryWithExtraPropertiesAndElements)
 TEST(StlVariants, AsciiVerticesAreWeldedExactly)
 {
 	TempDir dir;
-	write_text(dir.file("w.stl"), "solid w\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-								  "vertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 1 0 0\n"
-								  "vertex 1 1 0\nvertex 0 1 -0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\n"
-								  "vertex 5 5 5\nvertex 6 5 5.000000001\nvertex 5 6 5\nendloop\nendfacet\nendsolid w\n");
+	write_text(dir.file("w.stl"),
+			   "solid w\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+			   "vertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 1 0 0\n"
+			   "vertex 1 1 0\nvertex 0 1 -0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\n"
+			   "vertex 5 5 5\nvertex 6 5 5.000000001\nvertex 5 6 5\nendloop\nendfacet\nendsolid w\n");
 	CMap2 m;
 	io::load_surface(m, dir.file("w.stl"));
 	EXPECT_EQ(nb_cells<Vertex>(m), 7u) << "0 1 -0 is 0 1 0; nearly equal points stay apart";
@@ -255,14 +256,15 @@ TEST(VtkVariants, Version5OffsetsConnectivityWedgesAndVoxels)
 {
 	TempDir dir;
 	// a VTK wedge (base normal pointing away from the top) and a voxel
-	write_text(dir.file("w.vtk"), "# vtk DataFile Version 5.1\nw\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 14 double\n"
-								  "0 0 0 1 0 0 0 1 0 0 0 1 1 0 1 0 1 1\n"
-								  "5 0 0 6 0 0 5 1 0 6 1 0 5 0 1 6 0 1 5 1 1 6 1 1\n"
-								  "CELLS 3 14\nOFFSETS vtktypeint64\n0 6 14\nCONNECTIVITY vtktypeint64\n"
-								  "0 2 1 3 5 4 6 7 8 9 10 11 12 13\nCELL_TYPES 2\n13\n11\n"
-								  "CELL_DATA 2\nSCALARS id int 1\nLOOKUP_TABLE default\n4 5\n"
-								  "POINT_DATA 14\nVECTORS v float\n"
-								  "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n");
+	write_text(dir.file("w.vtk"),
+			   "# vtk DataFile Version 5.1\nw\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 14 double\n"
+			   "0 0 0 1 0 0 0 1 0 0 0 1 1 0 1 0 1 1\n"
+			   "5 0 0 6 0 0 5 1 0 6 1 0 5 0 1 6 0 1 5 1 1 6 1 1\n"
+			   "CELLS 3 14\nOFFSETS vtktypeint64\n0 6 14\nCONNECTIVITY vtktypeint64\n"
+			   "0 2 1 3 5 4 6 7 8 9 10 11 12 13\nCELL_TYPES 2\n13\n11\n"
+			   "CELL_DATA 2\nSCALARS id int 1\nLOOKUP_TABLE default\n4 5\n"
+			   "POINT_DATA 14\nVECTORS v float\n"
+			   "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n");
 	CMap3 m;
 	const io::LoadReport r = io::load_volume(m, dir.file("w.vtk"));
 	EXPECT_EQ(r.nb_cells_built, 2u);
@@ -303,14 +305,13 @@ TEST(VtuVariants, InlineBase64AndCompressedBlocks)
 			   extra +
 			   ">\n<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<Points><DataArray "
 			   "type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">" +
-			   p +
-			   "</DataArray></Points>\n<Cells><DataArray type=\"Int32\" Name=\"connectivity\" format=\"binary\">" +
+			   p + "</DataArray></Points>\n<Cells><DataArray type=\"Int32\" Name=\"connectivity\" format=\"binary\">" +
 			   c + "</DataArray><DataArray type=\"Int32\" Name=\"offsets\" format=\"binary\">" + o +
 			   "</DataArray><DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">" + t +
 			   "</DataArray></Cells></Piece></UnstructuredGrid></VTKFile>\n";
 	};
-	write_text(dir.file("b.vtu"), file(array(pts, false), array(conn, false), array(offs, false),
-									   array(types, false), ""));
+	write_text(dir.file("b.vtu"),
+			   file(array(pts, false), array(conn, false), array(offs, false), array(types, false), ""));
 	CMap3 m;
 	io::load_volume(m, dir.file("b.vtu"));
 	EXPECT_EQ(nb_cells<CMap3::Volume>(m), 1u);
@@ -319,8 +320,7 @@ TEST(VtuVariants, InlineBase64AndCompressedBlocks)
 	auto compressed = [](const std::string& raw) {
 		uLongf n = compressBound(uLong(raw.size()));
 		std::string z(n, '\0');
-		compress(reinterpret_cast<Bytef*>(z.data()), &n, reinterpret_cast<const Bytef*>(raw.data()),
-				 uLong(raw.size()));
+		compress(reinterpret_cast<Bytef*>(z.data()), &n, reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size()));
 		z.resize(n);
 		std::string h;
 		for (uint64 v : {uint64(1), uint64(raw.size()), uint64(raw.size()), uint64(z.size())})
@@ -397,7 +397,7 @@ TEST(TetgenVariants, ZeroBasedWithAttributesMarkersAndComments)
 {
 	TempDir dir;
 	write_text(dir.file("t.node"), std::string("# nodes\n4 3 1 1\n0 ") + "0 0 0 7 1\n1 1 0 0 7 1\n2 0 1 0 7 1\n"
-																	   "3 0 0 1 7 0\n");
+																		 "3 0 0 1 7 0\n");
 	write_text(dir.file("t.ele"), "1 4 1\n0 0 1 2 3 -1 # region\n");
 	CMap3 m;
 	io::load_volume(m, dir.file("t.node"));

@@ -6,9 +6,9 @@
 // the malformed corpus, test_bad_files.cpp.)
 #include <cgogn/cgogn.h>
 
-#include <gtest/gtest.h>
-
 #include "io_test_utils.h"
+
+#include <gtest/gtest.h>
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -35,18 +35,18 @@ class NameCollision : public testing::TestWithParam<Collision>
 };
 
 constexpr const char* tet_vtk = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
-                                "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n"
-                                "POINT_DATA 4\nSCALARS q double 1\nLOOKUP_TABLE default\n0 1 2 3\n";
+								"0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n"
+								"POINT_DATA 4\nSCALARS q double 1\nLOOKUP_TABLE default\n0 1 2 3\n";
 
 constexpr const char* tet_vtu =
-    "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-    "<UnstructuredGrid>\n<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<Points>\n"
-    "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1</DataArray>\n"
-    "</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>\n"
-    "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
-    "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray>\n</Cells>\n"
-    "<CellData>\n<DataArray type=\"Float64\" Name=\"q\" NumberOfComponents=\"2\" format=\"ascii\">7 8</DataArray>\n"
-    "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+	"<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+	"<UnstructuredGrid>\n<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<Points>\n"
+	"<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1</DataArray>\n"
+	"</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>\n"
+	"<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+	"<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray>\n</Cells>\n"
+	"<CellData>\n<DataArray type=\"Float64\" Name=\"q\" NumberOfComponents=\"2\" format=\"ascii\">7 8</DataArray>\n"
+	"</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 
 // two triangles that share only vertex 0: the builder splits it and records
 // the file's ids in `original_vertex`
@@ -66,8 +66,7 @@ TEST_P(NameCollision, ThrowsNamingTheDataAndLeavesTheMapUntouched)
 	build_with_positions(volume, tet_grid_soup(1, 1, 1));
 	c.prepare(surface, volume);
 
-	auto check = [&](auto& m, auto load)
-	{
+	auto check = [&](auto& m, auto load) {
 		using MAP = std::decay_t<decltype(m)>;
 		const MapSnapshot<MAP> before(m);
 		try
@@ -92,38 +91,38 @@ TEST_P(NameCollision, ThrowsNamingTheDataAndLeavesTheMapUntouched)
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    EveryFormatWithNamedData, NameCollision,
-    testing::Values(
-        Collision{"off_vertex_normal", "n.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n",
-                  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Vertex>(m, "normal"); }, "normal"},
-        Collision{"off_face_color", "c.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
-                  [](CMap2& m, CMap3&) { add_attribute<Vec2, CMap2::Face>(m, "color"); }, "color"},
-        Collision{"off_original_vertex", "bowtie.off", bowtie_off,
-                  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Vertex>(m, "original_vertex"); },
-                  "original_vertex"},
-        Collision{"obj_normal", "n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n",
-                  [](CMap2& m, CMap3&) { add_attribute<Vec2, CMap2::Vertex>(m, "normal"); }, "normal"},
-        Collision{"obj_tex_coord", "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n",
-                  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Vertex>(m, "tex_coord"); }, "tex_coord"},
-        Collision{"ply_vertex_scalar", "q.ply",
-                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                  "property float q\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                  "0 0 0 1\n1 0 0 2\n0 1 0 3\n3 0 1 2\n",
-                  [](CMap2& m, CMap3&) { add_attribute<Vec3, CMap2::Vertex>(m, "q"); }, "q"},
-        Collision{"ply_face_vector", "f.ply",
-                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                  "element face 1\nproperty list uchar int vertex_indices\nproperty float w_x\nproperty float w_y\n"
-                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 5 6\n",
-                  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Face>(m, "w"); }, "w"},
-        Collision{"stl_face_normal", "n.stl",
-                  "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
-                  "endfacet\nendsolid t\n",
-                  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Face>(m, "normal"); }, "normal"},
-        Collision{"vtk_point_scalar", "q.vtk", tet_vtk,
-                  [](CMap2&, CMap3& m) { add_attribute<Vec3, CMap3::Vertex>(m, "q"); }, "q"},
-        Collision{"vtu_cell_vector", "q.vtu", tet_vtu,
-                  [](CMap2&, CMap3& m) { add_attribute<double, CMap3::Volume>(m, "q"); }, "q"}),
-    case_name);
+	EveryFormatWithNamedData, NameCollision,
+	testing::Values(
+		Collision{"off_vertex_normal", "n.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n",
+				  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Vertex>(m, "normal"); }, "normal"},
+		Collision{"off_face_color", "c.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
+				  [](CMap2& m, CMap3&) { add_attribute<Vec2, CMap2::Face>(m, "color"); }, "color"},
+		Collision{"off_original_vertex", "bowtie.off", bowtie_off,
+				  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Vertex>(m, "original_vertex"); },
+				  "original_vertex"},
+		Collision{"obj_normal", "n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n",
+				  [](CMap2& m, CMap3&) { add_attribute<Vec2, CMap2::Vertex>(m, "normal"); }, "normal"},
+		Collision{"obj_tex_coord", "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n",
+				  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Vertex>(m, "tex_coord"); }, "tex_coord"},
+		Collision{"ply_vertex_scalar", "q.ply",
+				  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+				  "property float q\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+				  "0 0 0 1\n1 0 0 2\n0 1 0 3\n3 0 1 2\n",
+				  [](CMap2& m, CMap3&) { add_attribute<Vec3, CMap2::Vertex>(m, "q"); }, "q"},
+		Collision{"ply_face_vector", "f.ply",
+				  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+				  "element face 1\nproperty list uchar int vertex_indices\nproperty float w_x\nproperty float w_y\n"
+				  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 5 6\n",
+				  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Face>(m, "w"); }, "w"},
+		Collision{"stl_face_normal", "n.stl",
+				  "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+				  "endfacet\nendsolid t\n",
+				  [](CMap2& m, CMap3&) { add_attribute<double, CMap2::Face>(m, "normal"); }, "normal"},
+		Collision{"vtk_point_scalar", "q.vtk", tet_vtk,
+				  [](CMap2&, CMap3& m) { add_attribute<Vec3, CMap3::Vertex>(m, "q"); }, "q"},
+		Collision{"vtu_cell_vector", "q.vtu", tet_vtu,
+				  [](CMap2&, CMap3& m) { add_attribute<double, CMap3::Volume>(m, "q"); }, "q"}),
+	case_name);
 
 TEST(NameCollision, SameTypeAppends)
 {
@@ -148,8 +147,7 @@ TEST(NameCollision, PlyWriterRefusesAttributesThatShareAProperty)
 	TempDir dir;
 	CMap2 m;
 	build_with_positions(m, grid_soup(2, 2, true));
-	auto check = [&](const char* attribute, const char* property)
-	{
+	auto check = [&](const char* attribute, const char* property) {
 		const std::string path = dir.file("out.ply");
 		try
 		{

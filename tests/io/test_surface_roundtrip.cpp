@@ -3,9 +3,9 @@
 // (within the format's precision) and attribute values.
 #include <cgogn/cgogn.h>
 
-#include <gtest/gtest.h>
-
 #include "io_test_utils.h"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 
@@ -22,9 +22,9 @@ struct SurfaceCase
 	const char* name;
 	const char* file;
 	bool binary;
-	double tolerance;  // on positions
-	bool attributes;   // the format keeps our test attributes
-	bool same_order;   // vertices come back in the same order
+	double tolerance; // on positions
+	bool attributes;  // the format keeps our test attributes
+	bool same_order;  // vertices come back in the same order
 };
 
 std::string case_name(const testing::TestParamInfo<SurfaceCase>& i)

@@ -3,10 +3,10 @@
 // stderr, no progress output when not on a terminal.
 #include <cgogn/cgogn.h>
 
+#include "io_test_utils.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include "io_test_utils.h"
 
 #include <array>
 #include <cstdio>

@@ -3,9 +3,9 @@
 // attribute values and cell orientations.
 #include <cgogn/cgogn.h>
 
-#include <gtest/gtest.h>
-
 #include "io_test_utils.h"
+
+#include <gtest/gtest.h>
 
 using namespace cgogn;
 using namespace cgogn::io_test;

@@ -6,13 +6,13 @@
 
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
-
-#include "cgogn_test_data.h"
 
 namespace cgogn::peer_test
 {
@@ -28,19 +28,15 @@ inline Soup soup_of(const CMap2& m, const AttributeArray<Vec3>& pos)
 {
 	Soup s;
 	std::vector<uint32> id(pos.container()->end_index(), 0);
-	foreach_cell(m,
-	             [&](CMap2::Vertex v)
-	             {
-		             id[index_of(m, v)] = uint32(s.points.size());
-		             s.points.push_back(pos[index_of(m, v)]);
-	             });
-	foreach_cell(m,
-	             [&](CMap2::Face f)
-	             {
-		             std::vector<uint32> face;
-		             foreach_incident_vertex(m, f, [&](CMap2::Vertex v) { face.push_back(id[index_of(m, v)]); });
-		             s.faces.push_back(face);
-	             });
+	foreach_cell(m, [&](CMap2::Vertex v) {
+		id[index_of(m, v)] = uint32(s.points.size());
+		s.points.push_back(pos[index_of(m, v)]);
+	});
+	foreach_cell(m, [&](CMap2::Face f) {
+		std::vector<uint32> face;
+		foreach_incident_vertex(m, f, [&](CMap2::Vertex v) { face.push_back(id[index_of(m, v)]); });
+		s.faces.push_back(face);
+	});
 	return s;
 }
 
@@ -59,16 +55,15 @@ inline double max_mismatch(std::vector<Vec3> a, std::vector<Vec3> b, double wind
 {
 	if (a.size() != b.size())
 		return std::numeric_limits<double>::infinity();
-	const auto by_x = [](const Vec3 &p, const Vec3 &q) { return p.x() < q.x(); };
-	auto one_way = [&](const std::vector<Vec3> &from, std::vector<Vec3> &to)
-	{
+	const auto by_x = [](const Vec3& p, const Vec3& q) { return p.x() < q.x(); };
+	auto one_way = [&](const std::vector<Vec3>& from, std::vector<Vec3>& to) {
 		std::sort(to.begin(), to.end(), by_x);
 		double worst = 0.0;
-		for (const Vec3 &p : from)
+		for (const Vec3& p : from)
 		{
 			double best = std::numeric_limits<double>::infinity();
 			for (auto it = std::lower_bound(to.begin(), to.end(), Vec3(p.x() - window, 0, 0), by_x);
-			     it != to.end() && it->x() <= p.x() + window; ++it)
+				 it != to.end() && it->x() <= p.x() + window; ++it)
 				best = std::min(best, (*it - p).norm());
 			worst = std::max(worst, best);
 		}
@@ -79,7 +74,7 @@ inline double max_mismatch(std::vector<Vec3> a, std::vector<Vec3> b, double wind
 
 /// Loads a data surface with its positions; false only when it is a large
 /// mesh that is not available.
-inline bool load(CMap2 &m, const std::string &name)
+inline bool load(CMap2& m, const std::string& name)
 {
 	const std::string path = cgogn_test_data::path("surface/" + name);
 	if (path.empty())

@@ -5,13 +5,13 @@
 // all three by vertex_distance_to_surface, is at most 1.5x the peer's.
 #include <cgogn/cgogn.h>
 
+#include "../../bench/modeling/modeling_peers.h"
+#include "cgogn_test_data.h"
+
 #include <gtest/gtest.h>
 
 #include <ctime>
 #include <filesystem>
-
-#include "../../bench/modeling/modeling_peers.h"
-#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using cgogn_bench::TriangleSoup;
@@ -32,7 +32,7 @@ struct Errors
 {
 	uint32 faces = 0;
 	modeling::SurfaceDistance from_input; // input vertices to the result
-	modeling::SurfaceDistance to_input;	  // result vertices to the input
+	modeling::SurfaceDistance to_input;   // result vertices to the input
 };
 
 class DecimationPeers : public ::testing::Test

@@ -11,10 +11,10 @@ namespace
 struct Counts
 {
 	uint32 v, e, f;
-	bool operator==(const Counts &) const = default;
+	bool operator==(const Counts&) const = default;
 };
 
-Counts counts(const CMap2 &m)
+Counts counts(const CMap2& m)
 {
 	return {nb_cells<CMap2::Vertex>(m), nb_cells<CMap2::Edge>(m), nb_cells<CMap2::Face>(m)};
 }
@@ -30,15 +30,13 @@ TEST(Dual, CubeAndOctahedron)
 	EXPECT_TRUE(check_integrity(octa).ok());
 	EXPECT_EQ(counts(octa), (Counts{6, 12, 8}));
 	foreach_cell(octa, [&](CMap2::Face f) { EXPECT_EQ(codegree(octa, f), 3u); });
-	foreach_cell(octa,
-	             [&](CMap2::Vertex v)
-	             {
-		             EXPECT_EQ(degree(octa, v), 4u);
-		             // a face centre of the cube [0, 2]^3: one coordinate 0 or 2, the others 1
-		             const Vec3 p = (*opos)[index_of(octa, v)] - Vec3(1, 1, 1);
-		             EXPECT_NEAR(p.cwiseAbs().sum(), 1.0, 1e-15);
-		             EXPECT_NEAR(p.cwiseAbs().maxCoeff(), 1.0, 1e-15);
-	             });
+	foreach_cell(octa, [&](CMap2::Vertex v) {
+		EXPECT_EQ(degree(octa, v), 4u);
+		// a face centre of the cube [0, 2]^3: one coordinate 0 or 2, the others 1
+		const Vec3 p = (*opos)[index_of(octa, v)] - Vec3(1, 1, 1);
+		EXPECT_NEAR(p.cwiseAbs().sum(), 1.0, 1e-15);
+		EXPECT_NEAR(p.cwiseAbs().maxCoeff(), 1.0, 1e-15);
+	});
 	// the octahedron |x| + |y| + |z| <= 1: volume 4/3, faces outwards
 	EXPECT_NEAR(geometry::signed_volume(octa, *opos), 4.0 / 3.0, 1e-12);
 

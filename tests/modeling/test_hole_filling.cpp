@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include <set>
-
 #include "../geometry/geometry_test_meshes.h"
 #include "modeling_test_utils.h"
+
+#include <set>
 
 using namespace cgogn;
 using namespace cgogn::modeling_test;
@@ -10,7 +10,7 @@ using namespace cgogn::modeling_test;
 namespace
 {
 
-std::set<uint32> vertex_lines(const CMap2 &m)
+std::set<uint32> vertex_lines(const CMap2& m)
 {
 	std::set<uint32> lines;
 	foreach_cell(m, [&](CMap2::Vertex v) { lines.insert(index_of(m, v)); });
@@ -18,7 +18,7 @@ std::set<uint32> vertex_lines(const CMap2 &m)
 }
 
 /// Counts, closedness, Euler characteristic and integrity after fill_holes.
-void expect_consistent_fill(const CMap2 &m, uint32 nv, uint32 nf, int64_t chi, const modeling::HoleFillingResult &r)
+void expect_consistent_fill(const CMap2& m, uint32 nv, uint32 nf, int64_t chi, const modeling::HoleFillingResult& r)
 {
 	EXPECT_TRUE(check_integrity(m).ok());
 	EXPECT_EQ(nb_cells<CMap2::Vertex>(m), nv + r.vertices_added);
@@ -47,7 +47,7 @@ TEST(HoleFilling, HemisphereBecomesASphere)
 		double max_deviation; // from the unit sphere, over the new vertices
 	};
 	for (const Case c :
-	     {Case{false, 1, 0.11, 0.09, 0.9}, Case{true, 1, -0.3, -0.4, 0.7}, Case{true, 2, -0.55, -0.7, 0.45}})
+		 {Case{false, 1, 0.11, 0.09, 0.9}, Case{true, 1, -0.3, -0.4, 0.7}, Case{true, 2, -0.55, -0.7, 0.45}})
 	{
 		CMap2 m;
 		if (!load_data(m, "hemisphere.off"))
@@ -75,16 +75,14 @@ TEST(HoleFilling, HemisphereBecomesASphere)
 		EXPECT_GT(geometry::signed_volume(m, *pos), 0.0) << "new faces oriented like the surface";
 
 		double deviation = 0.0, lowest = 1.0;
-		foreach_cell(m,
-		             [&](CMap2::Vertex v)
-		             {
-			             if (old.count(index_of(m, v)))
-				             return;
-			             const Vec3 &p = (*pos)[index_of(m, v)];
-			             deviation = std::max(deviation, std::abs(p.norm() - 1.0));
-			             lowest = std::min(lowest, p.z());
-			             EXPECT_LT(p.norm(), 1.001) << "no bulge out of the sphere";
-		             });
+		foreach_cell(m, [&](CMap2::Vertex v) {
+			if (old.count(index_of(m, v)))
+				return;
+			const Vec3& p = (*pos)[index_of(m, v)];
+			deviation = std::max(deviation, std::abs(p.norm() - 1.0));
+			lowest = std::min(lowest, p.z());
+			EXPECT_LT(p.norm(), 1.001) << "no bulge out of the sphere";
+		});
 		EXPECT_LT(lowest, c.max_lowest_z);
 		EXPECT_GT(lowest, c.min_lowest_z);
 		EXPECT_LT(deviation, c.max_deviation);
@@ -119,12 +117,10 @@ TEST(HoleFilling, ElephantAllHoles)
 	const int64_t chi = euler_characteristic(m);
 	const uint32 multiple = nb_multiple_edges(m);
 	std::vector<double> progress;
-	const auto r = modeling::fill_holes(m, *pos, {},
-	                                    [&](double f)
-	                                    {
-		                                    progress.push_back(f);
-		                                    return true;
-	                                    });
+	const auto r = modeling::fill_holes(m, *pos, {}, [&](double f) {
+		progress.push_back(f);
+		return true;
+	});
 	EXPECT_EQ(r.holes_found, 106u);
 	EXPECT_EQ(r.holes_filled, uint32(std::count_if(sizes.begin(), sizes.end(), [](uint32 n) { return n >= 3; })));
 	EXPECT_FALSE(r.cancelled);
@@ -214,16 +210,14 @@ TEST(HoleFilling, LShapeGetsAFlatBackFace)
 		}
 		// the back of the hexagon (area 3, facing +z) is covered exactly once, facing -z
 		double back_area = 0.0;
-		foreach_cell(m,
-		             [&](CMap2::Face f)
-		             {
-			             const Vec3 n = geometry::newell_vector(m, *pos, f.dart);
-			             if (codegree(m, f) == 3)
-			             {
-				             EXPECT_LT(n.z(), 0.0);
-				             back_area += 0.5 * n.norm();
-			             }
-		             });
+		foreach_cell(m, [&](CMap2::Face f) {
+			const Vec3 n = geometry::newell_vector(m, *pos, f.dart);
+			if (codegree(m, f) == 3)
+			{
+				EXPECT_LT(n.z(), 0.0);
+				back_area += 0.5 * n.norm();
+			}
+		});
 		EXPECT_NEAR(back_area, 3.0, 1e-12);
 	}
 }
@@ -251,12 +245,10 @@ TEST(HoleFilling, OneHoleByDart)
 		GTEST_SKIP() << cgogn_test_data::missing_large("surface/stanford-bunny.obj");
 	auto pos = positions(m);
 	Dart boundary;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             boundary = d;
-		             return !is_boundary(m, d);
-	             });
+	foreach_dart(m, [&](Dart d) {
+		boundary = d;
+		return !is_boundary(m, d);
+	});
 	const auto r = modeling::fill_hole(m, *pos, boundary);
 	EXPECT_EQ(r.holes_found, 1u);
 	EXPECT_EQ(r.holes_filled, 1u);
@@ -264,12 +256,10 @@ TEST(HoleFilling, OneHoleByDart)
 	EXPECT_TRUE(check_integrity(m).ok());
 	// a dart of a real face is not a hole
 	Dart inner;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             inner = d;
-		             return is_boundary(m, d);
-	             });
+	foreach_dart(m, [&](Dart d) {
+		inner = d;
+		return is_boundary(m, d);
+	});
 	EXPECT_THROW(modeling::fill_hole(m, *pos, inner), TopologyError);
 }
 
@@ -304,7 +294,7 @@ TEST(HoleFilling, AvoidsDiagonalsThatExistOutside)
 	{
 		CMap2 m;
 		auto pos = test::build_with_positions(
-		    m, test::polygon_soup({{0, 0, 0}, {1, 0, lift}, {1, 1, 0}, {0, 1, lift}}, {{0, 1, 2}, {0, 2, 3}}));
+			m, test::polygon_soup({{0, 0, 0}, {1, 0, lift}, {1, 1, 0}, {0, 1, lift}}, {{0, 1, 2}, {0, 2, 3}}));
 		modeling::HoleFillingOptions o;
 		o.refine = false;
 		const auto r = modeling::fill_holes(m, *pos, o);

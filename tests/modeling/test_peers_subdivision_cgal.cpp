@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Catmull-Clark and Loop against CGAL's Subdivision_method_3 on the same
 // closed meshes: same counts, same positions (matched by position) to 1e-9.
+#include "peer_compare.h"
+
 #include <gtest/gtest.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
-
-#include "peer_compare.h"
 
 using namespace cgogn;
 using namespace cgogn::peer_test;
@@ -18,13 +18,13 @@ namespace
 using Kernel = CGAL::Simple_cartesian<double>;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 
-CgalMesh cgal_of(const Soup &s)
+CgalMesh cgal_of(const Soup& s)
 {
 	CgalMesh sm;
 	std::vector<CgalMesh::Vertex_index> vh;
-	for (const Vec3 &p : s.points)
+	for (const Vec3& p : s.points)
 		vh.push_back(sm.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
-	for (const auto &f : s.faces)
+	for (const auto& f : s.faces)
 	{
 		std::vector<CgalMesh::Vertex_index> fv;
 		for (uint32 i : f)
@@ -34,7 +34,7 @@ CgalMesh cgal_of(const Soup &s)
 	return sm;
 }
 
-std::vector<Vec3> positions_of(const CgalMesh &sm)
+std::vector<Vec3> positions_of(const CgalMesh& sm)
 {
 	std::vector<Vec3> p;
 	for (auto v : sm.vertices())
@@ -55,7 +55,7 @@ void expect_same_counts_and_positions(const CMap2& m, const AttributeArray<Vec3>
 
 TEST(CgalPeer, CatmullClarkOnClosedMeshes)
 {
-	for (const char *name : {"spot_quadrangulated.obj", "spot_control_mesh.obj", "cube_quad.off"})
+	for (const char* name : {"spot_quadrangulated.obj", "spot_control_mesh.obj", "cube_quad.off"})
 	{
 		CMap2 m;
 		if (!load(m, name))

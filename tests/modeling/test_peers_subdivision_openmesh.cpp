@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Loop, sqrt3 and Catmull-Clark against OpenMesh's uniform subdividers on the
 // same meshes: same counts, same positions (matched by position) to 1e-9.
+#include "../geometry/geometry_test_meshes.h"
+#include "peer_compare.h"
+
 #include <gtest/gtest.h>
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
@@ -8,9 +11,6 @@
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
-
-#include "../geometry/geometry_test_meshes.h"
-#include "peer_compare.h"
 
 using namespace cgogn;
 using namespace cgogn::peer_test;
@@ -27,13 +27,13 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
 template <typename MESH>
-MESH openmesh_of(const Soup &s)
+MESH openmesh_of(const Soup& s)
 {
 	MESH om;
 	std::vector<typename MESH::VertexHandle> vh;
-	for (const Vec3 &p : s.points)
+	for (const Vec3& p : s.points)
 		vh.push_back(om.add_vertex(typename MESH::Point(p.x(), p.y(), p.z())));
-	for (const auto &f : s.faces)
+	for (const auto& f : s.faces)
 	{
 		std::vector<typename MESH::VertexHandle> fv;
 		for (uint32 i : f)
@@ -44,7 +44,7 @@ MESH openmesh_of(const Soup &s)
 }
 
 template <typename MESH>
-std::vector<Vec3> positions_of(const MESH &om)
+std::vector<Vec3> positions_of(const MESH& om)
 {
 	std::vector<Vec3> p;
 	for (auto v : om.vertices())
@@ -81,13 +81,13 @@ TEST(OpenMeshPeer, LoopOnTetrahedronSphereAndNefertiti)
 		auto pos = test::build_with_positions(m, sphere_soup(20, 12, true));
 		expect_same_as_openmesh<Loop, TriMesh>(m, *pos, modeling::SurfaceScheme::Loop, 2);
 	}
-	for (const char *name : {"tetrahedron.off", "nefertiti.obj"})
+	for (const char* name : {"tetrahedron.off", "nefertiti.obj"})
 	{
 		CMap2 m;
 		if (!load(m, name))
 			GTEST_SKIP() << cgogn_test_data::missing_large(std::string("surface/") + name);
 		expect_same_as_openmesh<Loop, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
-		                                       modeling::SurfaceScheme::Loop, 1);
+											   modeling::SurfaceScheme::Loop, 1);
 	}
 }
 
@@ -97,7 +97,7 @@ TEST(OpenMeshPeer, LoopBoundaryRulesAgreeOnHemisphere)
 	if (!load(m, "hemisphere.off"))
 		GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 	expect_same_as_openmesh<Loop, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
-	                                       modeling::SurfaceScheme::Loop, 2);
+										   modeling::SurfaceScheme::Loop, 2);
 }
 
 TEST(OpenMeshPeer, Sqrt3OnClosedMeshes)
@@ -111,7 +111,7 @@ TEST(OpenMeshPeer, Sqrt3OnClosedMeshes)
 	if (!load(m, "nefertiti.obj"))
 		GTEST_SKIP() << cgogn_test_data::missing_large("surface/nefertiti.obj");
 	expect_same_as_openmesh<Sqrt3, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
-	                                        modeling::SurfaceScheme::Sqrt3, 1);
+											modeling::SurfaceScheme::Sqrt3, 1);
 }
 
 TEST(OpenMeshPeer, Sqrt3FirstStepWithBoundaryAgrees)
@@ -121,17 +121,17 @@ TEST(OpenMeshPeer, Sqrt3FirstStepWithBoundaryAgrees)
 	if (!load(m, "hemisphere.off"))
 		GTEST_SKIP() << cgogn_test_data::missing_large("surface/hemisphere.off");
 	expect_same_as_openmesh<Sqrt3, TriMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
-	                                        modeling::SurfaceScheme::Sqrt3, 1);
+											modeling::SurfaceScheme::Sqrt3, 1);
 }
 
 TEST(OpenMeshPeer, CatmullClarkOnClosedPolygonMeshes)
 {
-	for (const char *name : {"spot_control_mesh.obj", "spot_quadrangulated.obj"})
+	for (const char* name : {"spot_control_mesh.obj", "spot_quadrangulated.obj"})
 	{
 		CMap2 m;
 		if (!load(m, name))
 			GTEST_SKIP() << cgogn_test_data::missing_large(std::string("surface/") + name);
 		expect_same_as_openmesh<CatmullClark, PolyMesh>(m, *get_attribute<Vec3, CMap2::Vertex>(m, "position"),
-		                                                modeling::SurfaceScheme::CatmullClark, 2);
+														modeling::SurfaceScheme::CatmullClark, 2);
 	}
 }

@@ -2,10 +2,9 @@
 #include <cgogn/cgogn.h>
 
 #include "../geometry/geometry_test_meshes.h"
+#include "modeling_test_utils.h"
 
 #include <gtest/gtest.h>
-
-#include "modeling_test_utils.h"
 
 #include <filesystem>
 #include <set>

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/cgogn.h>
 
-#include <gtest/gtest.h>
-
+#include "../geometry/geometry_test_meshes.h"
 #include "modeling_test_utils.h"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <vector>
-
-#include "../geometry/geometry_test_meshes.h"
 
 using namespace cgogn;
 using namespace cgogn::modeling_test;
@@ -22,11 +21,11 @@ namespace
 
 using Vertex = CMap2::Vertex;
 
-void load(CMap2 &m, const std::string &path)
+void load(CMap2& m, const std::string& path)
 {
 	io::load_surface(m, path);
 }
-void load(CMap3 &m, const std::string &path)
+void load(CMap3& m, const std::string& path)
 {
 	io::load_volume(m, path);
 }
@@ -52,7 +51,7 @@ SurfaceSoup tetrahedron_soup()
 void expect_positions(const CMap2& m, const AttributeArray<Vec3>& pos, const std::vector<Vec3>& expected)
 {
 	EXPECT_EQ(nb_cells<Vertex>(m), expected.size());
-	for (const Vec3 &p : expected)
+	for (const Vec3& p : expected)
 	{
 		uint32 close = 0;
 		foreach_cell(m, [&](Vertex v) { close += (value<Vec3>(m, pos, v) - p).norm() < 1e-14 ? 1 : 0; });
@@ -60,7 +59,7 @@ void expect_positions(const CMap2& m, const AttributeArray<Vec3>& pos, const std
 	}
 }
 
-bool all_faces_of_degree(const CMap2 &m, uint32 k)
+bool all_faces_of_degree(const CMap2& m, uint32 k)
 {
 	bool ok = true;
 	foreach_cell(m, [&](CMap2::Face f) { ok = ok && codegree(m, f) == k; });
@@ -80,29 +79,27 @@ std::vector<Vec3> boundary_loop(const CMap2& m, const AttributeArray<Vec3>& pos,
 	return loop;
 }
 
-Dart some_boundary_dart(const CMap2 &m)
+Dart some_boundary_dart(const CMap2& m)
 {
 	Dart found;
-	foreach_dart(m,
-	             [&](Dart d)
-	             {
-		             if (is_boundary(m, d))
-			             found = d;
-		             return !found.is_valid();
-	             });
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			found = d;
+		return !found.is_valid();
+	});
 	return found;
 }
 
 /// The boundary after Loop or Catmull-Clark: old boundary vertices at
 /// 1/8 q0 + 3/4 p + 1/8 q1, boundary edges cut at their midpoints.
-void expect_crease_rule(const std::vector<Vec3> &before, const std::vector<Vec3> &after)
+void expect_crease_rule(const std::vector<Vec3>& before, const std::vector<Vec3>& after)
 {
 	const std::size_t k = before.size();
 	ASSERT_EQ(after.size(), 2 * k);
 	for (std::size_t i = 0; i < k; ++i)
 	{
-		const Vec3 &prev = before[(i + k - 1) % k];
-		const Vec3 &next = before[(i + 1) % k];
+		const Vec3& prev = before[(i + k - 1) % k];
+		const Vec3& next = before[(i + 1) % k];
 		EXPECT_LT((after[2 * i] - (0.125 * prev + 0.75 * before[i] + 0.125 * next)).norm(), 1e-14);
 		EXPECT_LT((after[2 * i + 1] - 0.5 * (before[i] + next)).norm(), 1e-14);
 	}
@@ -112,7 +109,7 @@ struct Counts
 {
 	uint32 v, e, f;
 };
-Counts counts(const CMap2 &m)
+Counts counts(const CMap2& m)
 {
 	return {nb_cells<Vertex>(m), nb_cells<CMap2::Edge>(m), nb_cells<CMap2::Face>(m)};
 }
@@ -137,7 +134,7 @@ TEST(LoopSubdivision, TetrahedronCountsAndMasks)
 	const std::vector<Vec3> p = tetrahedron_points();
 	const Vec3 sum = p[0] + p[1] + p[2] + p[3];
 	std::vector<Vec3> expected;
-	for (const Vec3 &q : p)
+	for (const Vec3& q : p)
 		expected.push_back(7.0 / 16.0 * q + 3.0 / 16.0 * (sum - q));
 	for (uint32 i = 0; i < 4; ++i)
 		for (uint32 j = i + 1; j < 4; ++j)
@@ -292,22 +289,20 @@ TEST(Sqrt3Subdivision, TetrahedronCountsPositionsAndFlips)
 	EXPECT_TRUE(check_integrity(m).ok());
 	// every old edge was flipped: old vertices keep valence 3, now joined to centroids only
 	uint32 valence3 = 0, valence6 = 0;
-	foreach_cell(m,
-	             [&](Vertex v)
-	             {
-		             const uint32 d = degree(m, v);
-		             valence3 += d == 3 ? 1 : 0;
-		             valence6 += d == 6 ? 1 : 0;
-	             });
+	foreach_cell(m, [&](Vertex v) {
+		const uint32 d = degree(m, v);
+		valence3 += d == 3 ? 1 : 0;
+		valence6 += d == 6 ? 1 : 0;
+	});
 	EXPECT_EQ(valence3, 4u);
 	EXPECT_EQ(valence6, 4u);
 	// alpha_3 = (4 - 2 cos(2pi/3)) / 9 = 5/9
 	const std::vector<Vec3> p = tetrahedron_points();
 	const Vec3 sum = p[0] + p[1] + p[2] + p[3];
 	std::vector<Vec3> expected;
-	for (const Vec3 &q : p)
+	for (const Vec3& q : p)
 		expected.push_back(4.0 / 9.0 * q + 5.0 / 27.0 * (sum - q));
-	for (const Vec3 &q : p)
+	for (const Vec3& q : p)
 		expected.push_back((sum - q) / 3.0);
 	expect_positions(m, *pos, expected);
 }
@@ -346,7 +341,7 @@ TEST(Sqrt3Subdivision, HemisphereBoundaryStaysFixed)
 TEST(Subdivision, ElephantWithHolesEveryScheme)
 {
 	for (auto scheme :
-	     {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
+		 {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
 	{
 		CMap2 m;
 		LOAD_OR_SKIP(m, "surface/elephant-with-holes.off");
@@ -389,7 +384,7 @@ TEST(Subdivision, CancelWhileComputingLeavesTheMapUntouched)
 	const Vertex v = test::closest_vertex(m, *pos, Vec3(0, 0, 1));
 	const Vec3 p = value<Vec3>(m, *pos, v);
 	for (auto scheme :
-	     {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
+		 {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
 	{
 		const auto r = modeling::subdivide(m, *pos, scheme, 3, [](double) { return false; });
 		EXPECT_TRUE(r.cancelled);
@@ -406,12 +401,10 @@ TEST(Subdivision, CancelWhileRefiningCompletesTheStep)
 	CMap2 m;
 	auto pos = test::build_with_positions(m, tetrahedron_soup());
 	std::vector<double> seen;
-	const auto r = modeling::subdivide(m, *pos, modeling::SurfaceScheme::Loop, 3,
-	                                   [&](double f)
-	                                   {
-		                                   seen.push_back(f);
-		                                   return f <= 0.34; // the second step's refinement starts at 1/2
-	                                   });
+	const auto r = modeling::subdivide(m, *pos, modeling::SurfaceScheme::Loop, 3, [&](double f) {
+		seen.push_back(f);
+		return f <= 0.34; // the second step's refinement starts at 1/2
+	});
 	EXPECT_TRUE(r.cancelled);
 	EXPECT_EQ(r.steps, 2u);
 	EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
@@ -438,12 +431,10 @@ TEST(HexSubdivision, GridBecomesTheFinerGrid)
 	foreach_cell(m, [&](CMap3::Volume w) { EXPECT_NEAR(geometry::volume(m, w, *pos), 0.125, 1e-14); });
 	EXPECT_NEAR(geometry::solid_volume(m, *pos), 8.0, 1e-12);
 	// every vertex on the grid of step 1/2
-	foreach_cell(m,
-	             [&](CMap3::Vertex v)
-	             {
-		             const Vec3 p = 2.0 * value<Vec3>(m, *pos, v);
-		             EXPECT_LT((p - p.array().round().matrix()).norm(), 1e-14);
-	             });
+	foreach_cell(m, [&](CMap3::Vertex v) {
+		const Vec3 p = 2.0 * value<Vec3>(m, *pos, v);
+		EXPECT_LT((p - p.array().round().matrix()).norm(), 1e-14);
+	});
 }
 
 TEST(HexSubdivision, LiverCountsAndIntegrity)
@@ -452,7 +443,7 @@ TEST(HexSubdivision, LiverCountsAndIntegrity)
 	LOAD_OR_SKIP(m, "volume/liver_hex_624.mesh");
 	auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
 	const uint32 v = nb_cells<CMap3::Vertex>(m), e = nb_cells<CMap3::Edge>(m), f = nb_cells<CMap3::Face>(m),
-	             w = nb_cells<CMap3::Volume>(m);
+				 w = nb_cells<CMap3::Volume>(m);
 	modeling::hex_subdivision(m, *pos);
 	EXPECT_EQ(nb_cells<CMap3::Volume>(m), 8 * w);
 	EXPECT_EQ(nb_cells<CMap3::Vertex>(m), v + e + f + w);
@@ -477,13 +468,11 @@ TEST(TetSubdivision, ElephantVolumesTimesEightVolumePreserved)
 	EXPECT_TRUE(modeling::is_tet_mesh(m));
 	EXPECT_TRUE(check_integrity(m).ok());
 	double after = 0.0, smallest = 1e300;
-	foreach_cell(m,
-	             [&](CMap3::Volume x)
-	             {
-		             const double vol = geometry::volume(m, x, *pos);
-		             after += vol;
-		             smallest = std::min(smallest, vol);
-	             });
+	foreach_cell(m, [&](CMap3::Volume x) {
+		const double vol = geometry::volume(m, x, *pos);
+		after += vol;
+		smallest = std::min(smallest, vol);
+	});
 	EXPECT_NEAR(after, before, 1e-12 * before);
 	EXPECT_GT(smallest, 0.0);
 }
@@ -513,11 +502,11 @@ TEST(Subdivision, PillowOfTwoTriangles)
 	// two triangles glued along their three edges: sqrt3 joins the two
 	// centroids by the first flip and must not double that edge
 	for (auto scheme :
-	     {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
+		 {modeling::SurfaceScheme::Loop, modeling::SurfaceScheme::CatmullClark, modeling::SurfaceScheme::Sqrt3})
 	{
 		CMap2 m;
 		auto pos =
-		    test::build_with_positions(m, polygon_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}}));
+			test::build_with_positions(m, polygon_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}}));
 		ASSERT_EQ(nb_cells<CMap2::Face>(m), 2u);
 		modeling::subdivide(m, *pos, scheme, 2);
 		EXPECT_TRUE(check_integrity(m).ok());

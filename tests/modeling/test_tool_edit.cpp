@@ -2,11 +2,11 @@
 // The modeling subcommands of the `cgogn` program (smooth, triangulate,
 // fill-holes, dual), run as a user would: exit codes, the output file's
 // counts, errors on stderr, no progress output when not on a terminal.
-#include <cstdlib>
-#include <sys/wait.h>
-
 #include "../io/io_test_utils.h"
 #include "modeling_test_utils.h"
+
+#include <cstdlib>
+#include <sys/wait.h>
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -24,7 +24,7 @@ struct Loaded
 {
 	CMap2 m;
 	uint32 v = 0, e = 0, f = 0;
-	explicit Loaded(const std::string &path)
+	explicit Loaded(const std::string& path)
 	{
 		io::load_surface(m, path);
 		v = nb_cells<CMap2::Vertex>(m);
@@ -34,13 +34,13 @@ struct Loaded
 };
 
 /// An L-shaped hexagon (area 3) with its boundary: one hole of 6 edges.
-std::string write_l_shape(const TempDir &dir)
+std::string write_l_shape(const TempDir& dir)
 {
 	write_text(dir.file("L.off"), "OFF\n6 1 0\n0 0 0\n2 0 0\n2 2 0\n1 2 0\n1 1 0\n0 1 0\n6 0 1 2 3 4 5\n");
 	return dir.file("L.off");
 }
 
-std::string write_volume(const TempDir &dir)
+std::string write_volume(const TempDir& dir)
 {
 	CMap3 m;
 	build_with_positions(m, tet_grid_soup(2, 2, 2));
@@ -55,13 +55,13 @@ TEST(ToolModeling, SmoothEveryMethodKeepsTheConnectivity)
 	TempDir dir;
 	const Loaded in(std::string(CGOGN_EXAMPLE_DATA_DIR) + "/spot_control_mesh.obj");
 	const auto in_pos = positions(in.m);
-	for (const char *method : {"laplacian", "taubin", "bilateral", "implicit"})
+	for (const char* method : {"laplacian", "taubin", "bilateral", "implicit"})
 	{
 		// each method's default number of passes (10 implicit steps at the
 		// default time step would collapse this coarse cage until (M - t L)
 		// is singular: a clean exit 2, hence 1 implicit step by default)
 		const ToolRun r =
-		    run_tool(std::string("smooth ") + spot() + " " + quoted(dir.file("s.off")) + " --method " + method, dir);
+			run_tool(std::string("smooth ") + spot() + " " + quoted(dir.file("s.off")) + " --method " + method, dir);
 		ASSERT_EQ(r.status, 0) << method << ": " << r.err;
 		EXPECT_EQ(r.err, "") << "no progress output when stderr is not a terminal";
 		const Loaded out(dir.file("s.off"));
@@ -156,7 +156,7 @@ TEST(ToolModeling, FillHolesOnTheHemisphere)
 	EXPECT_EQ(euler_characteristic(faired.m), 2);
 	EXPECT_GT(faired.v, 1861u);
 	EXPECT_EQ(r.out, "holes: 1 found, 1 filled, 0 skipped; added " + std::to_string(faired.v - 1861) + " vertices, " +
-	                     std::to_string(faired.f - 3600) + " faces\n");
+						 std::to_string(faired.f - 3600) + " faces\n");
 
 	r = run_tool("fill-holes --no-fair " + in + " " + quoted(dir.file("b.off")), dir);
 	ASSERT_EQ(r.status, 0) << r.err;
@@ -165,7 +165,7 @@ TEST(ToolModeling, FillHolesOnTheHemisphere)
 	EXPECT_EQ(flat.f, faired.f);
 	const auto fp = positions(flat.m), ap = positions(faired.m);
 	EXPECT_GT(geometry::bounding_box(flat.m, *fp).min().z(), geometry::bounding_box(faired.m, *ap).min().z() + 0.2)
-	    << "the faired patch bulges below the flat one";
+		<< "the faired patch bulges below the flat one";
 
 	r = run_tool("fill-holes --no-refine " + in + " " + quoted(dir.file("c.off")), dir);
 	ASSERT_EQ(r.status, 0) << r.err;

@@ -2,12 +2,12 @@
 // The modeling subcommands of the `cgogn` program, run as a user would.
 #include <cgogn/cgogn.h>
 
+#include "../io/io_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <sys/wait.h>
-
-#include "../io/io_test_utils.h"
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -23,8 +23,8 @@ TEST(ToolSubdivide, CatmullClarkTwiceOnSpot)
 {
 	TempDir dir;
 	const ToolRun r = run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("out.off")) +
-	                               " --scheme catmull-clark --iterations 2",
-	                           dir);
+								   " --scheme catmull-clark --iterations 2",
+							   dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	EXPECT_EQ(r.err, "") << "no progress output when stderr is not a terminal";
 	CMap2 m;
@@ -44,7 +44,7 @@ TEST(ToolSubdivide, LoopOnPolygonsIsAClearError)
 	EXPECT_NE(r.err.find("triangle"), std::string::npos) << r.err;
 	EXPECT_FALSE(std::filesystem::exists(dir.file("out.off")));
 	const ToolRun s =
-	    run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("out.off")) + " --scheme sqrt3", dir);
+		run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("out.off")) + " --scheme sqrt3", dir);
 	EXPECT_EQ(s.status, 2);
 	EXPECT_NE(s.err.find("triangle"), std::string::npos) << s.err;
 }
@@ -63,15 +63,15 @@ TEST(ToolSubdivide, LoopAndSqrt3OnTriangles)
 	}
 	const uint32 v = nb_cells<CMap2::Vertex>(t), e = nb_cells<CMap2::Edge>(t), f = nb_cells<CMap2::Face>(t);
 	ToolRun r = run_tool(
-	    "subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("loop.obj")) + " --scheme loop", dir);
+		"subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("loop.obj")) + " --scheme loop", dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	CMap2 l;
 	io::load_surface(l, dir.file("loop.obj"));
 	EXPECT_EQ(nb_cells<CMap2::Vertex>(l), v + e);
 	EXPECT_EQ(nb_cells<CMap2::Face>(l), 4 * f);
 	r = run_tool("subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("s3.ply")) +
-	                 " --scheme sqrt3 -n 2 --binary",
-	             dir);
+					 " --scheme sqrt3 -n 2 --binary",
+				 dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	CMap2 s3;
 	io::load_surface(s3, dir.file("s3.ply"));
@@ -92,7 +92,7 @@ TEST(ToolSubdivide, TetMeshAndWrongKinds)
 		io::save_volume(g, dir.file("grid.mesh"));
 	}
 	ToolRun r = run_tool(
-	    "subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("fine.vtu")) + " --scheme tet", dir);
+		"subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("fine.vtu")) + " --scheme tet", dir);
 	ASSERT_EQ(r.status, 0) << r.err;
 	CMap3 fine;
 	io::load_volume(fine, dir.file("fine.vtu"));
@@ -100,11 +100,11 @@ TEST(ToolSubdivide, TetMeshAndWrongKinds)
 	EXPECT_TRUE(check_integrity(fine).ok());
 	// hexahedral refinement of tetrahedra, a surface scheme on a volume file
 	r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("x.mesh")) + " --scheme hex",
-	             dir);
+				 dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("hexahedron"), std::string::npos) << r.err;
 	r = run_tool("subdivide " + quoted(dir.file("grid.mesh")) + " " + quoted(dir.file("x.off")) + " --scheme loop",
-	             dir);
+				 dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("volume"), std::string::npos) << r.err;
 }

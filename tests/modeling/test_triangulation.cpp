@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/cgogn.h>
 
+#include "../geometry/geometry_test_meshes.h"
+#include "cgogn_test_data.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
-
-#include "../geometry/geometry_test_meshes.h"
-#include "cgogn_test_data.h"
 
 using namespace cgogn;
 using test::polygon_soup;
@@ -86,7 +86,8 @@ TEST(EarClipping, SpiralPolygonFacingDown)
 
 TEST(EarClipping, PolygonalDataMeshes)
 {
-	for (const char* name : {"surface/polygon_mesh.off", "surface/fandisk_quads.off", "surface/spot_quadrangulated.obj"})
+	for (const char* name :
+		 {"surface/polygon_mesh.off", "surface/fandisk_quads.off", "surface/spot_quadrangulated.obj"})
 	{
 		const std::string path = cgogn_test_data::path(name);
 		CMap2 m;

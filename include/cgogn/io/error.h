@@ -30,7 +30,10 @@ public:
 	}
 	/// A problem at a line (Where::Line) or byte offset (Where::Byte).
 	Error(const std::string& path, Where where, std::uint64_t position, const std::string& cause)
-		: cgogn::Error(path + (where == Where::Line ? ":" : where == Where::Byte ? ": byte " : "") +
+		: cgogn::Error(path +
+					   (where == Where::Line   ? ":"
+						: where == Where::Byte ? ": byte "
+											   : "") +
 					   (where == Where::File ? std::string() : std::to_string(position)) + ": " + cause),
 		  path_(path), cause_(cause), where_(where), position_(position)
 	{

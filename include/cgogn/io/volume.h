@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/map/cmap3.h>
 #include <cgogn/io/error.h>
 #include <cgogn/io/options.h>
-
-#include <cgogn/core/map/cmap3.h>
 
 #include <string>
 

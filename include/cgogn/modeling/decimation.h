@@ -52,10 +52,10 @@ struct DecimationOptions
 
 struct DecimationResult
 {
-	uint32 faces = 0;		 ///< faces left
-	uint32 collapses = 0;	 ///< collapses done
-	double max_error = 0.0;	 ///< largest quadric error among them
-	bool cancelled = false;	 ///< the progress callback asked to stop
+	uint32 faces = 0;       ///< faces left
+	uint32 collapses = 0;   ///< collapses done
+	double max_error = 0.0; ///< largest quadric error among them
+	bool cancelled = false; ///< the progress callback asked to stop
 };
 
 /// Garland-Heckbert decimation: collapses edges by increasing quadric error
@@ -73,9 +73,9 @@ struct DecimationResult
 /// `progress` (optional, as for every modeling function) receives the
 /// fraction done and may return false to stop.
 DecimationResult decimate(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
-                          const ProgressCallback& progress = {});
+						  const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 DecimationResult decimate(CMap3& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
-                          const ProgressCallback& progress = {}) = delete;
+						  const ProgressCallback& progress = {}) = delete;
 
 } // namespace cgogn::modeling

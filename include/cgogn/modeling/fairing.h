@@ -28,9 +28,9 @@ enum class FairingWeights
 /// e.g. when a free component touches no fixed vertex.
 /// Preconditions: continuity <= 2; the free vertices are distinct.
 bool fair_vertices(const CMap2& m, AttributeArray<Vec3>& pos, std::span<const CMap2::Vertex> free,
-                   FairingWeights w = FairingWeights::Cotangent, uint32 continuity = 1);
+				   FairingWeights w = FairingWeights::Cotangent, uint32 continuity = 1);
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 bool fair_vertices(const CMap3& m, AttributeArray<Vec3>& pos, std::span<const CMap2::Vertex> free,
-                   FairingWeights w = FairingWeights::Cotangent, uint32 continuity = 1) = delete;
+				   FairingWeights w = FairingWeights::Cotangent, uint32 continuity = 1) = delete;
 
 } // namespace cgogn::modeling

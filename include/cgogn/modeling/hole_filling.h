@@ -69,18 +69,18 @@ struct HoleFillingResult
 /// solve on the patch. Core's cgogn::fill_hole_with_face(m, d) is the purely
 /// topological counterpart: it turns the hole into one polygon.
 HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options = {},
-                            const ProgressCallback& progress = {});
+							const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 HoleFillingResult fill_hole(CMap3& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options = {},
-                            const ProgressCallback& progress = {}) = delete;
+							const ProgressCallback& progress = {}) = delete;
 
 /// fill_hole on every boundary loop of m (skipping those larger than
 /// options.max_hole_size). Progress counts holes; cancelling leaves the
 /// remaining holes open. O(sum of the costs of the holes).
 HoleFillingResult fill_holes(CMap2& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options = {},
-                             const ProgressCallback& progress = {});
+							 const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 HoleFillingResult fill_holes(CMap3& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options = {},
-                             const ProgressCallback& progress = {}) = delete;
+							 const ProgressCallback& progress = {}) = delete;
 
 } // namespace cgogn::modeling

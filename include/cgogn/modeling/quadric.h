@@ -26,7 +26,7 @@ public:
 		const double d = -n.dot(p);
 		Quadric q;
 		q.c_ = {w * n.x() * n.x(), w * n.x() * n.y(), w * n.x() * n.z(), w * n.x() * d, w * n.y() * n.y(),
-				w * n.y() * n.z(), w * n.y() * d,	   w * n.z() * n.z(), w * n.z() * d, w * d * d};
+				w * n.y() * n.z(), w * n.y() * d,     w * n.z() * n.z(), w * n.z() * d, w * d * d};
 		return q;
 	}
 

@@ -29,7 +29,7 @@ struct RemeshingResult
 	uint64 collapses = 0;
 	uint64 flips = 0;
 	double target_edge_length = 0.0; ///< the L used
-	bool cancelled = false;			 ///< the progress callback asked to stop
+	bool cancelled = false;          ///< the progress callback asked to stop
 };
 
 /// Botsch-Kobbelt isotropic remeshing towards edge length L. Each iteration:
@@ -51,9 +51,9 @@ struct RemeshingResult
 /// when a face is not a triangle or L is not a positive finite number.
 /// O(iterations n log n).
 RemeshingResult isotropic_remeshing(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options = {},
-                                    const ProgressCallback& progress = {});
+									const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 RemeshingResult isotropic_remeshing(CMap3& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options = {},
-                                    const ProgressCallback& progress = {}) = delete;
+									const ProgressCallback& progress = {}) = delete;
 
 } // namespace cgogn::modeling

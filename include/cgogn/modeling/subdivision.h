@@ -3,9 +3,9 @@
 // refinement of hexahedral and tetrahedral volume meshes.
 #pragma once
 
-#include <cgogn/core/utils/error.h>
 #include <cgogn/core/map/cmap2.h>
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
 
@@ -44,7 +44,7 @@ struct SubdivisionResult
 // like the others. Each function does one step in O(size of the map).
 
 /// True when every non-boundary face of m is a triangle. O(darts).
-bool is_triangle_mesh(const CMap2 &m);
+bool is_triangle_mesh(const CMap2& m);
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 bool is_triangle_mesh(const CMap3& m) = delete;
 
@@ -74,7 +74,7 @@ SubdivisionResult loop_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pr
 SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
-                                            const ProgressCallback& progress = {}) = delete;
+											const ProgressCallback& progress = {}) = delete;
 
 /// One step of sqrt3 subdivision (Kobbelt 2000, as OpenMesh's Sqrt3T): each
 /// triangle gets its centroid and is split in 3, each old interior vertex of
@@ -90,7 +90,7 @@ SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult sqrt3_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
-                                    const ProgressCallback& progress = {}) = delete;
+									const ProgressCallback& progress = {}) = delete;
 
 enum class SurfaceScheme
 {
@@ -102,10 +102,10 @@ enum class SurfaceScheme
 /// `iterations` steps of a scheme; progress goes from 0 to 1 over all steps.
 /// Stops after the step during which the callback asked to stop.
 SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
-                            const ProgressCallback& progress = {});
+							const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult subdivide(CMap3& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
-                            const ProgressCallback& progress = {}) = delete;
+							const ProgressCallback& progress = {}) = delete;
 
 // Volume refinements. The map is rebuilt from the refined cell list with
 // build_volume (every cell of the result is a new cell): positions are
@@ -116,9 +116,9 @@ SubdivisionResult subdivide(CMap3& m, AttributeArray<Vec3>& pos, SurfaceScheme s
 // Cancelling is possible while the new cells are computed (map untouched).
 
 /// True when every volume of m is a hexahedron (6 quads). O(darts).
-bool is_hex_mesh(const CMap3 &m);
+bool is_hex_mesh(const CMap3& m);
 /// True when every volume of m is a tetrahedron. O(darts).
-bool is_tet_mesh(const CMap3 &m);
+bool is_tet_mesh(const CMap3& m);
 
 /// Cuts every hexahedron into 8 through its edge midpoints, face centroids
 /// and vertex centroid. V + E + F + W vertices, 8W volumes. O(n).

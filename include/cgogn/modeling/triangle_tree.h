@@ -29,9 +29,9 @@ public:
 
 	struct Hit
 	{
-		Vec3 point = Vec3::Zero();				  ///< the closest point
-		double squared_distance;  ///< to the query point
-		uint32 triangle;		  ///< index of the triangle it lies on
+		Vec3 point = Vec3::Zero(); ///< the closest point
+		double squared_distance;   ///< to the query point
+		uint32 triangle;           ///< index of the triangle it lies on
 	};
 
 	/// The point of the triangles nearest to p. Precondition: size() > 0.
@@ -51,8 +51,8 @@ private:
 	struct Node
 	{
 		Vec3 lo = Vec3::Zero(), hi = Vec3::Zero(); // the box of the node's triangles
-		uint32 begin = 0, end = 0; // triangles_[begin, end) for a leaf
-		uint32 right = 0;	   // second child (the first is the next node); 0 for a leaf
+		uint32 begin = 0, end = 0;                 // triangles_[begin, end) for a leaf
+		uint32 right = 0;                          // second child (the first is the next node); 0 for a leaf
 	};
 
 	void build();
@@ -76,9 +76,9 @@ struct SurfaceDistance
 /// Hausdorff-like bound from m to the reference, sampled at the vertices).
 /// O(V log n).
 SurfaceDistance vertex_distance_to_surface(const CMap2& m, const AttributeArray<Vec3>& pos,
-                                           const TriangleTree& reference);
+										   const TriangleTree& reference);
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SurfaceDistance vertex_distance_to_surface(const CMap3& m, const AttributeArray<Vec3>& pos,
-                                           const TriangleTree& reference) = delete;
+										   const TriangleTree& reference) = delete;
 
 } // namespace cgogn::modeling

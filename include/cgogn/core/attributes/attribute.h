@@ -82,8 +82,8 @@ public:
 
 	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
 	AttributeArray(AttributeContainer* container, std::string name, T default_value = T(),
-	               uint64 contiguous_lines = LineStorage<T, CHUNK_SHIFT>::default_contiguous())
-	    : AttributeBase(container, std::move(name)), values_(contiguous_lines), default_value_(std::move(default_value))
+				   uint64 contiguous_lines = LineStorage<T, CHUNK_SHIFT>::default_contiguous())
+		: AttributeBase(container, std::move(name)), values_(contiguous_lines), default_value_(std::move(default_value))
 	{
 	}
 

@@ -51,8 +51,8 @@ public:
 		if (find(name) != nullptr)
 			return nullptr;
 		auto a =
-		    std::make_shared<A>(this, name, std::move(default_value),
-		                        std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
+			std::make_shared<A>(this, name, std::move(default_value),
+								std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
 		a->set_nb_chunks(nb_chunks_);
 		static_cast<AttributeBase&>(*a).cell_index_ = cell_index_;
 		attributes_.push_back(a);
@@ -71,7 +71,8 @@ public:
 
 	std::shared_ptr<AttributeBase> find(const std::string& name) const
 	{
-		auto it = std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a->name() == name; });
+		auto it =
+			std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a->name() == name; });
 		return it == attributes_.end() ? nullptr : *it;
 	}
 
@@ -396,7 +397,8 @@ public:
 private:
 	std::unique_ptr<MarkAttribute> new_mark() const
 	{
-		return std::make_unique<MarkAttribute>(std::min(max_contiguous_lines_, MarkAttribute::default_contiguous_lines()));
+		return std::make_unique<MarkAttribute>(
+			std::min(max_contiguous_lines_, MarkAttribute::default_contiguous_lines()));
 	}
 
 	void set_nb_chunks(uint32 n)

@@ -23,7 +23,9 @@ template <typename T>
 T default_attribute_value()
 {
 	if constexpr (requires {
-					  { T::Zero() } -> std::convertible_to<T>;
+					  {
+						  T::Zero()
+						  } -> std::convertible_to<T>;
 				  })
 		return T::Zero();
 	else
@@ -49,7 +51,7 @@ std::shared_ptr<CellAttribute<T, CELL::ORBIT>> add_attribute(MESH& m, const std:
 	if (!is_indexed<CELL>(map))
 		index_cells<CELL>(map);
 	return container_of<CELL::ORBIT>(map).template add_attribute<T, CellAttribute<T, CELL::ORBIT>>(
-	    name, detail::default_attribute_value<T>());
+		name, detail::default_attribute_value<T>());
 }
 
 /// The attribute of type T on CELL named `name`; nullptr when there is none or

@@ -59,7 +59,8 @@ public:
 
 	/// `contiguous`: how many elements live in the reserved range (rounded down
 	/// to whole blocks); 0 puts every element in blocks.
-	explicit LineStorage(uint64 contiguous = default_contiguous()) : contiguous_target_(contiguous / BLOCK_SIZE * BLOCK_SIZE)
+	explicit LineStorage(uint64 contiguous = default_contiguous())
+		: contiguous_target_(contiguous / BLOCK_SIZE * BLOCK_SIZE)
 	{
 	}
 	~LineStorage()

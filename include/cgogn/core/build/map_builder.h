@@ -16,7 +16,7 @@ struct BuildReport
 {
 	/// Soup vertex i is the vertex of line `vertex_offset + i` (0 in an empty map).
 	uint32 vertex_offset = 0;
-	uint32 nb_cells_read = 0;  // faces (surface) or volumes (volume)
+	uint32 nb_cells_read = 0; // faces (surface) or volumes (volume)
 	uint32 nb_cells_built = 0;
 	/// Cells with fewer than 3 vertices (surface) or a repeated vertex.
 	uint32 nb_cells_degenerate = 0;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/utils/function_traits.h>
 #include <cgogn/core/map/mesh_traits.h>
+#include <cgogn/core/utils/function_traits.h>
 
 #include <cassert>
 

@@ -118,7 +118,7 @@ void set_representative(CMapBase& m, Dart d)
 /// cell only, so the cell's previous line is released; line i must be live and
 /// not owned by another cell (or be the cell's own line). O(size of the orbit).
 template <typename MAP, Orbit O>
-	requires std::derived_from<MAP, CMapBase>
+requires std::derived_from<MAP, CMapBase>
 void set_index(MAP& m, Cell<O> c, uint32 i)
 {
 	static_assert(O != Orbit::DART, "darts are their own index");
@@ -138,7 +138,7 @@ void set_index(MAP& m, Cell<O> c, uint32 i)
 /// orbit's index attribute if needed. Called by add_attribute; call it after
 /// operators used with set_indices = false. O(number of darts).
 template <typename CELL, typename MAP>
-	requires std::derived_from<MAP, CMapBase>
+requires std::derived_from<MAP, CMapBase>
 void index_cells(MAP& m)
 {
 	constexpr Orbit O = CELL::ORBIT;
@@ -148,8 +148,9 @@ void index_cells(MAP& m)
 	{
 		AttributeArray<uint32>*& idx = detail::cell_index_of(m)[orbit_index(O)];
 		if (idx == nullptr)
-			idx = detail::darts_of(m)->template add_attribute<uint32>(std::string("__index_") + std::string(orbit_name(O)),
-														   INVALID_INDEX)
+			idx = detail::darts_of(m)
+					  ->template add_attribute<uint32>(std::string("__index_") + std::string(orbit_name(O)),
+													   INVALID_INDEX)
 					  .get();
 		container_of<O>(m).set_cell_index(idx);
 		foreach_dart(m, [&](Dart d) {

@@ -68,7 +68,9 @@ struct mesh_traits<CMap3>
 template <typename M>
 concept MeshType = requires
 {
-	{ mesh_traits<M>::dimension } -> std::convertible_to<uint32>;
+	{
+		mesh_traits<M>::dimension
+		} -> std::convertible_to<uint32>;
 	typename mesh_traits<M>::Vertex;
 	typename mesh_traits<M>::MapType;
 };

@@ -15,21 +15,21 @@ namespace cgogn
 /// that both kinds of maps share one attribute-container layout.
 enum class Orbit : uint32
 {
-	DART = 0,      // 1d vertex, any dimension's half-edge
-	PHI1,          // 1d cycle, 2d face, 3d face of one volume
-	PHI2,          // 2d edge, 3d edge of one volume
-	PHI21,         // 2d vertex, 3d vertex of one volume
-	PHI1_PHI2,     // 2d connected component, 3d volume
-	PHI1_PHI3,     // 3d face
-	PHI2_PHI3,     // 3d edge
-	PHI21_PHI31,   // 3d vertex
+	DART = 0,       // 1d vertex, any dimension's half-edge
+	PHI1,           // 1d cycle, 2d face, 3d face of one volume
+	PHI2,           // 2d edge, 3d edge of one volume
+	PHI21,          // 2d vertex, 3d vertex of one volume
+	PHI1_PHI2,      // 2d connected component, 3d volume
+	PHI1_PHI3,      // 3d face
+	PHI2_PHI3,      // 3d edge
+	PHI21_PHI31,    // 3d vertex
 	PHI1_PHI2_PHI3, // 3d connected component
 	// generalized maps
-	BETA0,       // 1d g-vertex pair / edge half
-	BETA1,       // 1d vertex of a g-cycle
-	BETA0_BETA1, // 1d cycle, 2d face
-	BETA0_BETA2, // 2d edge
-	BETA1_BETA2, // 2d vertex
+	BETA0,             // 1d g-vertex pair / edge half
+	BETA1,             // 1d vertex of a g-cycle
+	BETA0_BETA1,       // 1d cycle, 2d face
+	BETA0_BETA2,       // 2d edge
+	BETA1_BETA2,       // 2d vertex
 	BETA0_BETA1_BETA2, // 2d connected component
 	NB_ORBITS
 };
@@ -44,8 +44,9 @@ constexpr uint32 orbit_index(Orbit o)
 constexpr std::string_view orbit_name(Orbit o)
 {
 	constexpr std::array<std::string_view, NB_ORBITS> names = {
-		"DART",  "PHI1",  "PHI2",  "PHI21",       "PHI1_PHI2",   "PHI1_PHI3",   "PHI2_PHI3",        "PHI21_PHI31",
-		"PHI1_PHI2_PHI3", "BETA0", "BETA1", "BETA0_BETA1", "BETA0_BETA2", "BETA1_BETA2", "BETA0_BETA1_BETA2"};
+		"DART",      "PHI1",        "PHI2",        "PHI21",          "PHI1_PHI2",
+		"PHI1_PHI3", "PHI2_PHI3",   "PHI21_PHI31", "PHI1_PHI2_PHI3", "BETA0",
+		"BETA1",     "BETA0_BETA1", "BETA0_BETA2", "BETA1_BETA2",    "BETA0_BETA1_BETA2"};
 	return names[orbit_index(o)];
 }
 

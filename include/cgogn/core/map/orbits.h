@@ -120,7 +120,7 @@ void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vect
 /// detail::LineReport); around a 3-D vertex, of each dart found in the next
 /// volume, which it receives later (see detail::foreach_dart_of_vertex3).
 template <typename MAP, Orbit O, typename FUNC>
-	requires std::derived_from<MAP, CMapBase>
+requires std::derived_from<MAP, CMapBase>
 bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 {
 	const Dart d = c.dart;
@@ -239,7 +239,7 @@ inline constexpr bool orbit_inside_top_cell_v = !orbit_uses_phi(O, MAP::dimensio
 
 /// True when c is a boundary cell (not part of the mesh; skipped by traversals). O(1).
 template <typename MAP, Orbit O>
-	requires std::derived_from<MAP, CMapBase>
+requires std::derived_from<MAP, CMapBase>
 bool is_boundary_cell(const MAP& m, Cell<O> c)
 {
 	if constexpr (MAP::dimension >= 2 && orbit_inside_top_cell_v<MAP, O>)
@@ -252,7 +252,7 @@ bool is_boundary_cell(const MAP& m, Cell<O> c)
 /// not look at indices: operators use it while indices are being rewritten).
 /// O(size of the orbit).
 template <typename MAP, Orbit O>
-	requires std::derived_from<MAP, CMapBase>
+requires std::derived_from<MAP, CMapBase>
 bool same_orbit(const MAP& m, Cell<O> c1, Cell<O> c2)
 {
 	bool found = false;
@@ -266,7 +266,7 @@ bool same_orbit(const MAP& m, Cell<O> c1, Cell<O> c2)
 /// True when c1 and c2 are the same cell. O(1) when the orbit is indexed,
 /// O(size of the orbit) otherwise.
 template <typename MAP, Orbit O>
-	requires std::derived_from<MAP, CMapBase>
+requires std::derived_from<MAP, CMapBase>
 bool same_cell(const MAP& m, Cell<O> c1, Cell<O> c2)
 {
 	if constexpr (O != Orbit::DART)

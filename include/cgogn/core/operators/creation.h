@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/operators/dimension_guards.h>
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/operators/dimension_guards.h>
 
 namespace cgogn
 {

@@ -14,25 +14,25 @@ struct IntegrityError
 {
 	enum class Kind
 	{
-		DeadRelation,          // a relation points to a dart that is not live
-		Phi1NotPermutation,    // two darts have the same phi1
-		PhiNotInvolution,      // phi_i(phi_i(d)) != d for i >= 2
-		PhiFixedPoint,         // phi_i(d) == d for i >= 2: the map is not closed
-		Phi1Phi3NotInvolution, // phi3 o phi1 is not an involution (3-maps)
-		BoundaryLinked,        // phi_n links two boundary darts
+		DeadRelation,            // a relation points to a dart that is not live
+		Phi1NotPermutation,      // two darts have the same phi1
+		PhiNotInvolution,        // phi_i(phi_i(d)) != d for i >= 2
+		PhiFixedPoint,           // phi_i(d) == d for i >= 2: the map is not closed
+		Phi1Phi3NotInvolution,   // phi3 o phi1 is not an involution (3-maps)
+		BoundaryLinked,          // phi_n links two boundary darts
 		BoundaryMarkNotConstant, // a boundary cell is only partly marked
-		BoundaryCountWrong,    // the map's count of boundary darts is not the number of marked darts
-		IndexNotConstant,      // two darts of one orbit have different indices
-		MissingIndex,          // a cell of an indexed orbit has no index
-		BoundaryCellIndexed,   // a boundary cell has an index
-		DeadIndex,             // a dart refers to a free line
-		BadRepresentative,     // a line's representative dart is not a dart of its cell
-		IndexShared,           // two cells use the same line
-		FreeLineLive,          // the free list holds a live line
-		FreeLineDuplicate,     // the free list holds a line twice (it would be handed out twice)
-		StaleUnusedLine,       // a line never handed out since the last compaction holds an old index
-		ShortFace,             // a non-boundary face of a 2- or 3-map has 1 or 2 edges
-		IncidenceCacheStale,   // a quick incidence cache disagrees with the map (see IncidenceCache)
+		BoundaryCountWrong,      // the map's count of boundary darts is not the number of marked darts
+		IndexNotConstant,        // two darts of one orbit have different indices
+		MissingIndex,            // a cell of an indexed orbit has no index
+		BoundaryCellIndexed,     // a boundary cell has an index
+		DeadIndex,               // a dart refers to a free line
+		BadRepresentative,       // a line's representative dart is not a dart of its cell
+		IndexShared,             // two cells use the same line
+		FreeLineLive,            // the free list holds a live line
+		FreeLineDuplicate,       // the free list holds a line twice (it would be handed out twice)
+		StaleUnusedLine,         // a line never handed out since the last compaction holds an old index
+		ShortFace,               // a non-boundary face of a 2- or 3-map has 1 or 2 edges
+		IncidenceCacheStale,     // a quick incidence cache disagrees with the map (see IncidenceCache)
 	};
 	Kind kind;
 	Orbit orbit = Orbit::DART; // for indexing errors

@@ -180,8 +180,7 @@ inline uint32 nb_connected_components(const CMap3& m)
 /// Number of boundary components (boundary faces of a 2-map, boundary volumes
 /// of a 3-map). O(number of darts).
 template <typename MAP>
-	requires std::derived_from<MAP, CMapBase>
-uint32 nb_boundary_components(const MAP& m)
+requires std::derived_from<MAP, CMapBase> uint32 nb_boundary_components(const MAP& m)
 {
 	using Top = std::conditional_t<MAP::dimension == 3, Cell<Orbit::PHI1_PHI2>, Cell<Orbit::PHI1>>;
 	DartMarker<MAP> dm(m);

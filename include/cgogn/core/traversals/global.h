@@ -88,7 +88,8 @@ void foreach_cell_of_map(const MAP& m, const FUNC& func)
 	if constexpr (O == Orbit::DART)
 	{
 		// a dart's line is its index
-		foreach_dart(m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, reported_cell<CELL>(d, d.index)); });
+		foreach_dart(
+			m, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, reported_cell<CELL>(d, d.index)); });
 	}
 	else
 	{

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/traversals/global.h>
 #include <cgogn/core/detail/incidence_lookup.h>
+#include <cgogn/core/traversals/global.h>
 
 namespace cgogn
 {
@@ -34,7 +34,9 @@ CGOGN_INLINE void foreach_incident_face(const CMap2& m, CellParam<CMap2::Vertex>
 	else
 		detail::report_with_lines<CMap2::Face>(
 			m,
-			[&](const auto& report) { foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || report(d); }); },
+			[&](const auto& report) {
+				foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || report(d); });
+			},
 			f);
 }
 
@@ -53,7 +55,10 @@ CGOGN_INLINE void foreach_adjacent_vertex_through_edge(const CMap2& m, CellParam
 		return;
 	const auto phi2_of = detail::phi2_of(m)->view(); // see LineStorage::View
 	detail::report_with_lines<CMap2::Vertex>(
-		m, [&](const auto& report) { foreach_dart_of_orbit(m, v, [&](Dart d) { return report(Dart(phi2_of[d.index])); }); },
+		m,
+		[&](const auto& report) {
+			foreach_dart_of_orbit(m, v, [&](Dart d) { return report(Dart(phi2_of[d.index])); });
+		},
 		f);
 }
 
@@ -140,7 +145,8 @@ CGOGN_INLINE void foreach_incident_vertex(const CMap2& m, CellParam<CMap2::Face>
 {
 	if (detail::foreach_cached<CMap2::Vertex, void>(m, f, fn))
 		return;
-	detail::report_with_lines<CMap2::Vertex>(m, [&](const auto& report) { foreach_dart_of_orbit(m, f, report); }, fn);
+	detail::report_with_lines<CMap2::Vertex>(
+		m, [&](const auto& report) { foreach_dart_of_orbit(m, f, report); }, fn);
 }
 
 /// Edges of face f in phi1 order.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/traversals/global.h>
 #include <cgogn/core/parallel/thread_pool.h>
+#include <cgogn/core/traversals/global.h>
 
 #include <algorithm>
 #include <vector>
@@ -23,8 +23,7 @@ inline constexpr uint32 PARALLEL_DART_BLOCKS_GRAIN = 16; // blocks of 64 darts
 /// (volumes, 3-D vertices, connected components) are flooded with a mark.
 constexpr bool orbit_is_cyclic(Orbit o)
 {
-	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 ||
-		   o == Orbit::PHI2_PHI3;
+	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 || o == Orbit::PHI2_PHI3;
 }
 
 /// What one worker of a flooded traversal keeps from chunk to chunk: a mark
@@ -74,17 +73,17 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	if constexpr (orbit_is_cyclic(CELL::ORBIT))
 	{
 		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-			held_callable_t<FUNC> fc = f; // see held_callable_t
-			for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
-			{
-				if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
-					continue;
-				const bool owner = foreach_dart_of_orbit(
-					m, CELL(Dart(i)), [&](Dart x) { return x.index >= i || is_boundary(m, x); });
-				if (owner)
-					fc(CELL(Dart(i)));
-			}
-		}));
+								held_callable_t<FUNC> fc = f; // see held_callable_t
+								for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+								{
+									if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
+										continue;
+									const bool owner = foreach_dart_of_orbit(
+										m, CELL(Dart(i)), [&](Dart x) { return x.index >= i || is_boundary(m, x); });
+									if (owner)
+										fc(CELL(Dart(i)));
+								}
+							}));
 		return;
 	}
 	else
@@ -92,7 +91,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 		static_assert(orbit_is_flooded(CELL::ORBIT));
 		std::vector<FloodWorker> workers(thread_pool()->nb_workers());
 		std::vector<MarkAttribute*> marks{detail::darts_of(m)->acquire_mark(), detail::darts_of(m)->acquire_mark()};
-		MarkAttribute& seen = *marks[0];	 // darts flooded by a worker other than their scanner (hints)
+		MarkAttribute& seen = *marks[0];     // darts flooded by a worker other than their scanner (hints)
 		MarkAttribute& reported = *marks[1]; // owners of the reported cells
 		auto clear_and_release = [&](bool in_parallel) {
 			for (FloodWorker& w : workers)
@@ -112,34 +111,35 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 		try
 		{
 			parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-				held_callable_t<FUNC> fc = f; // see held_callable_t
-				FloodWorker& w = workers[current_thread_index()];
-				if (w.flooded == nullptr)
-					w.flooded = detail::darts_of(m)->acquire_mark();
-				const uint32 b = bb * 64, e = std::min(be * 64, end);
-				for (uint32 i = b; i < e; ++i)
-				{
-					if (key[i] == INVALID_INDEX || w.flooded->test(i) || seen.atomic_test(i) ||
-						is_boundary(m, Dart(i)))
-						continue;
-					uint32 owner = i;
-					bool inside = true; // all the cell's darts in [b, e)
-					flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
-						// the darts of [b, e) are scanned by this worker only:
-						// its own mark is enough to skip them
-						if (x.index < b || x.index >= e)
-						{
-							seen.atomic_set_lossy(x.index);
-							inside = false;
-						}
-						if (x.index < owner && !is_boundary(m, x))
-							owner = x.index;
-					});
-					// a cell inside [b, e) is flooded by no other worker: no race
-					if (inside || reported.atomic_test_and_set(owner))
-						fc(CELL(Dart(owner)));
-				}
-			}));
+									held_callable_t<FUNC> fc = f; // see held_callable_t
+									FloodWorker& w = workers[current_thread_index()];
+									if (w.flooded == nullptr)
+										w.flooded = detail::darts_of(m)->acquire_mark();
+									const uint32 b = bb * 64, e = std::min(be * 64, end);
+									for (uint32 i = b; i < e; ++i)
+									{
+										if (key[i] == INVALID_INDEX || w.flooded->test(i) || seen.atomic_test(i) ||
+											is_boundary(m, Dart(i)))
+											continue;
+										uint32 owner = i;
+										bool inside = true; // all the cell's darts in [b, e)
+										flood_orbit_keep_marks<CELL::ORBIT>(
+											m, Dart(i), *w.flooded, w.work, [&](Dart x) {
+												// the darts of [b, e) are scanned by this worker only:
+												// its own mark is enough to skip them
+												if (x.index < b || x.index >= e)
+												{
+													seen.atomic_set_lossy(x.index);
+													inside = false;
+												}
+												if (x.index < owner && !is_boundary(m, x))
+													owner = x.index;
+											});
+										// a cell inside [b, e) is flooded by no other worker: no race
+										if (inside || reported.atomic_test_and_set(owner))
+											fc(CELL(Dart(owner)));
+									}
+								}));
 		}
 		catch (...)
 		{
@@ -160,11 +160,11 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 		const uint32 end = detail::darts_of(m)->end_index();
 		const AttributeArray<uint32>& key = detail::darts_of(m)->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
-			held_callable_t<FUNC> fc = f; // see held_callable_t
-			for (uint32 i = b; i < e; ++i)
-				if (key[i] != INVALID_INDEX && !is_boundary(m, Dart(i)))
-					fc(CELL(Dart(i)));
-		}));
+								held_callable_t<FUNC> fc = f; // see held_callable_t
+								for (uint32 i = b; i < e; ++i)
+									if (key[i] != INVALID_INDEX && !is_boundary(m, Dart(i)))
+										fc(CELL(Dart(i)));
+							}));
 	}
 	else if (is_indexed<CELL>(m))
 	{
@@ -172,14 +172,14 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 		const AttributeContainer& c = *detail::cells_of(m)[orbit_index(O)];
 		const AttributeArray<uint32>& rep = c.key();
 		parallel_for_chunks(c.end_index(), PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
-			held_callable_t<FUNC> fc = f; // see held_callable_t
-			for (uint32 i = b; i < e; ++i)
-			{
-				const uint32 d = rep[i];
-				if (d != INVALID_INDEX)
-					fc(CELL(Dart(d)));
-			}
-		}));
+								held_callable_t<FUNC> fc = f; // see held_callable_t
+								for (uint32 i = b; i < e; ++i)
+								{
+									const uint32 d = rep[i];
+									if (d != INVALID_INDEX)
+										fc(CELL(Dart(d)));
+								}
+							}));
 	}
 	else if constexpr (O == Orbit::PHI2)
 	{
@@ -187,13 +187,13 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 		const uint32 end = detail::darts_of(m)->end_index();
 		const AttributeArray<uint32>& key = detail::darts_of(m)->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
-			held_callable_t<FUNC> fc = f; // see held_callable_t
-			for (uint32 i = b; i < e; ++i)
-			{
-				if (key[i] != INVALID_INDEX && represents_unindexed_edge(m, Dart(i)))
-					fc(CELL(Dart(i)));
-			}
-		}));
+								held_callable_t<FUNC> fc = f; // see held_callable_t
+								for (uint32 i = b; i < e; ++i)
+								{
+									if (key[i] != INVALID_INDEX && represents_unindexed_edge(m, Dart(i)))
+										fc(CELL(Dart(i)));
+								}
+							}));
 	}
 	else
 		parallel_foreach_cell_by_darts<CELL>(m, f);

@@ -17,7 +17,8 @@ namespace cgogn
 /// A view declares `using MeshViewTag = void;`, `mesh()` (the viewed mesh)
 /// and `accepts(c)` (whether a cell of any type belongs to the view).
 template <typename V>
-concept MeshView = requires(const V& v) {
+concept MeshView = requires(const V& v)
+{
 	typename V::MeshViewTag;
 	v.mesh();
 };

@@ -16,7 +16,7 @@ namespace cgogn::geometry
 
 /// A 2-map or a 3-map: the meshes whose faces the geometry layer measures.
 template <typename MESH>
-concept GeometricMesh = MapType<MESH> && (mesh_traits<MESH>::dimension == 2 || mesh_traits<MESH>::dimension == 3);
+concept GeometricMesh = MapType<MESH> &&(mesh_traits<MESH>::dimension == 2 || mesh_traits<MESH>::dimension == 3);
 
 /// Position of the origin of dart d (its vertex). O(1). Precondition: pos is a
 /// vertex attribute of m.

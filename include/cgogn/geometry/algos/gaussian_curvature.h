@@ -36,7 +36,7 @@ double gaussian_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, c
 /// every vertex into the vertex attribute `k`. O(number of darts).
 template <SurfaceMesh MESH>
 void compute_gaussian_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& k,
-                                 bool integrated = false)
+								 bool integrated = false)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	foreach_cell(m, [&](Vertex v) { k[v] = integrated ? angle_defect(m, v, pos) : gaussian_curvature(m, v, pos); });

@@ -27,7 +27,7 @@ namespace cgogn::geometry
 /// from a mesh collapsed to a point).
 template <SurfaceMesh MESH>
 void implicit_smoothing(const MESH& m, AttributeArray<Vec3>& pos, double t, uint32 iterations = 1,
-                        bool use_uniform_laplacian = false, bool fix_boundary = true)
+						bool use_uniform_laplacian = false, bool fix_boundary = true)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	assert(t > 0.0 && "implicit_smoothing: the time step must be positive");

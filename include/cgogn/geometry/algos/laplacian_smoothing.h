@@ -21,8 +21,7 @@ struct UniformSmoother
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 
-	UniformSmoother(const MESH& m, bool fix_boundary)
-		: m_(m), delta_(end_index()), moves_(end_index(), 0)
+	UniformSmoother(const MESH& m, bool fix_boundary) : m_(m), delta_(end_index()), moves_(end_index(), 0)
 	{
 		foreach_cell(m, [&](Vertex v) { moves_[index_of(m, v)] = !(fix_boundary && is_incident_to_boundary(m, v)); });
 	}
@@ -70,7 +69,7 @@ private:
 /// Precondition: 0 < lambda <= 1.
 template <GeometricMesh MESH>
 void laplacian_smoothing(const MESH& m, AttributeArray<Vec3>& pos, uint32 iterations, double lambda = 0.5,
-                         bool fix_boundary = true)
+						 bool fix_boundary = true)
 {
 	assert(lambda > 0.0 && lambda <= 1.0);
 	detail::UniformSmoother<MESH> s(m, fix_boundary);
@@ -86,7 +85,7 @@ void laplacian_smoothing(const MESH& m, AttributeArray<Vec3>& pos, uint32 iterat
 /// lambda > 0, mu < -lambda.
 template <GeometricMesh MESH>
 void taubin_smoothing(const MESH& m, AttributeArray<Vec3>& pos, uint32 iterations, double lambda = 0.5,
-                      double mu = -0.53, bool fix_boundary = true)
+					  double mu = -0.53, bool fix_boundary = true)
 {
 	assert(lambda > 0.0 && mu < -lambda);
 	detail::UniformSmoother<MESH> s(m, fix_boundary);

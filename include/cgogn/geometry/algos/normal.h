@@ -58,7 +58,7 @@ Vec3 face_normal(const MESH& m, typename mesh_traits<MESH>::Face f, const Attrib
 /// incident face is degenerate. O(sum of the degrees of the incident faces).
 template <SurfaceMesh MESH>
 Vec3 vertex_normal(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos,
-                   NormalWeighting w = NormalWeighting::Angle)
+				   NormalWeighting w = NormalWeighting::Angle)
 {
 	const Vec3& p = origin_position(m, pos, v.dart);
 	Vec3 n = Vec3::Zero();
@@ -111,7 +111,7 @@ void compute_face_normals(const MESH& m, const AttributeArray<Vec3>& pos, Attrib
 /// temporary array of the vertex container's size.
 template <SurfaceMesh MESH>
 void compute_vertex_normals(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& normal,
-                            NormalWeighting w = NormalWeighting::Angle)
+							NormalWeighting w = NormalWeighting::Angle)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	using Face = typename mesh_traits<MESH>::Face;
@@ -141,20 +141,17 @@ void compute_vertex_normals(const MESH& m, const AttributeArray<Vec3>& pos, Attr
 		{
 			const Dart next = phi1(m, cur);
 			const Vec3& p = origin_position(m, pos, cur);
-			const double a =
-				angle_between(origin_position(m, pos, next) - p, origin_position(m, pos, prev) - p);
+			const double a = angle_between(origin_position(m, pos, next) - p, origin_position(m, pos, prev) - p);
 			normal[Vertex(cur)] += a * u;
 			prev = cur;
 			cur = next;
 		} while (cur != f.dart);
 	});
-	foreach_cell(m,
-	             [&](Vertex v)
-	             {
-		             Vec3& n = normal[v];
-		             const double l = n.norm();
-		             n = l > 0.0 ? Vec3(n / l) : Vec3::Zero();
-	             });
+	foreach_cell(m, [&](Vertex v) {
+		Vec3& n = normal[v];
+		const double l = n.norm();
+		n = l > 0.0 ? Vec3(n / l) : Vec3::Zero();
+	});
 }
 
 } // namespace cgogn::geometry

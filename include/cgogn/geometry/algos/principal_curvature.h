@@ -35,7 +35,7 @@ struct PrincipalCurvatures
 /// O(sum of the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
 PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MESH>::Vertex v,
-                                         const AttributeArray<Vec3>& pos)
+										 const AttributeArray<Vec3>& pos)
 {
 	using Edge = typename mesh_traits<MESH>::Edge;
 	Mat3 t = Mat3::Zero();
@@ -84,7 +84,7 @@ PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MES
 /// kmin, kmax, dmin, dmax. O(number of darts times the face degree).
 template <SurfaceMesh MESH>
 void compute_principal_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& kmin,
-                                  AttributeArray<double>& kmax, AttributeArray<Vec3>& dmin, AttributeArray<Vec3>& dmax)
+								  AttributeArray<double>& kmax, AttributeArray<Vec3>& dmin, AttributeArray<Vec3>& dmax)
 {
 	using Vertex = typename mesh_traits<MESH>::Vertex;
 	foreach_cell(m, [&](Vertex v) {
