@@ -5,7 +5,7 @@
 # Does nothing when everything is there already.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(cmake ninja-build g++ clang libclang-rt-14-dev python3
+packages=(cmake ninja-build g++ clang libclang-rt-14-dev clang-format doxygen pkgconf python3
           libgtest-dev libgmock-dev libbenchmark-dev
           libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libpng-dev
           libopenmesh-dev libcgal-dev
