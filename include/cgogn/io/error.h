@@ -16,11 +16,12 @@ namespace cgogn::io
 class Error : public cgogn::Error
 {
 public:
+	/// Where in the file the problem is.
 	enum class Where
 	{
-		File,
-		Line,
-		Byte
+		File, ///< the whole file (no position)
+		Line, ///< a line of a text format
+		Byte  ///< a byte offset of a binary format
 	};
 
 	/// A problem of the whole file (cannot open it, unknown format, ...).
@@ -39,14 +40,17 @@ public:
 	{
 	}
 
+	/// The file's path, as given to the load or save function.
 	const std::string& path() const
 	{
 		return path_;
 	}
+	/// The problem alone, without path and position.
 	const std::string& cause() const
 	{
 		return cause_;
 	}
+	/// Whether position() is a line, a byte offset or meaningless (File).
 	Where where() const
 	{
 		return where_;

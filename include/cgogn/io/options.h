@@ -33,15 +33,17 @@ Format format_from_extension(const std::string& path);
 /// The usual name of a format ("OFF", "PLY", ...).
 const char* format_name(Format f);
 
+/// How load_surface and load_volume read a file.
 struct LoadOptions
 {
 	/// Format::Auto: by the extension of the path.
 	Format format = Format::Auto;
 };
 
+/// How save_surface and save_volume write a file.
 struct SaveOptions
 {
-	Format format = Format::Auto;
+	Format format = Format::Auto; ///< Format::Auto: by the extension of the path.
 	/// PLY, STL, VTK legacy, VTU and gmsh: write binary instead of ASCII.
 	bool binary = false;
 	/// Write the map's other vertex (and face/volume) attributes of type
@@ -54,10 +56,11 @@ struct SaveOptions
 /// report of the map builder.
 struct LoadReport
 {
-	Format format = Format::Auto;
-	uint32 nb_vertices_read = 0;
+	Format format = Format::Auto; ///< The format the file was read as (never Auto after a load).
+	uint32 nb_vertices_read = 0;  ///< Vertices found in the file.
 	/// Faces (surfaces) or volumes (volume meshes) found in the file.
 	uint32 nb_cells_read = 0;
+	/// Faces or volumes added to the map: those read that were not skipped.
 	uint32 nb_cells_built = 0;
 	/// Degenerate cells (fewer than 3 vertices, a repeated vertex) skipped.
 	uint32 nb_cells_skipped = 0;
@@ -69,15 +72,17 @@ struct LoadReport
 	uint32 nb_nonmanifold_vertices = 0;
 	/// Vertices created by those splits.
 	uint32 nb_vertices_split = 0;
-	/// Edges (surfaces) or faces (volumes) with too many incident cells: the
-	/// extra cells were detached there.
+	/// Edges (surfaces) shared by more faces than a manifold allows, or by
+	/// faces of incompatible orientation: the extra faces were detached there.
 	uint32 nb_nonmanifold_edges = 0;
+	/// Faces (volume meshes) shared by more volumes than a manifold allows:
+	/// the extra volumes were detached there.
 	uint32 nb_nonmanifold_faces = 0;
 	/// Holes closed by a boundary face (surfaces) or boundary volumes (volumes).
 	uint32 nb_holes_closed = 0;
 	/// Volume cells given in negative orientation and turned over.
 	uint32 nb_cells_reoriented = 0;
-	BuildReport build;
+	BuildReport build; ///< The map builder's own report.
 
 	/// True when the input needed no repair: no non-manifold vertex, edge or
 	/// face, and no degenerate cell (a face with a repeated vertex is not

@@ -24,6 +24,7 @@ enum class CollapsePlacement
 	Midpoint
 };
 
+/// When decimate stops and how it places and accepts collapses.
 struct DecimationOptions
 {
 	/// Stop when the number of faces is at most this. A collapse removes the
@@ -34,7 +35,7 @@ struct DecimationOptions
 	/// Stop before the first collapse whose quadric error (sum of squared
 	/// distances to the planes of the merged neighbourhoods) exceeds this.
 	double max_error = std::numeric_limits<double>::infinity();
-	CollapsePlacement placement = CollapsePlacement::Optimal;
+	CollapsePlacement placement = CollapsePlacement::Optimal; ///< Where the vertex left by a collapse goes.
 	/// true: boundary vertices neither move nor disappear (boundary edges are
 	/// not collapsed; an edge from an interior vertex to a boundary one
 	/// collapses onto the boundary vertex, which keeps its position), so the
@@ -43,6 +44,9 @@ struct DecimationOptions
 	/// each boundary edge perpendicular to its face, weight
 	/// `boundary_weight`).
 	bool keep_boundary = false;
+	/// Weight of the boundary quadrics against the face quadrics (weight 1),
+	/// when keep_boundary is false: larger keeps the boundary closer to its
+	/// place.
 	double boundary_weight = 10.0;
 	/// A collapse is rejected when a surviving face's normal turns by more
 	/// than the angle whose cosine this is (0: rejects fold-overs, normals
@@ -50,6 +54,7 @@ struct DecimationOptions
 	double min_normal_cosine = 0.0;
 };
 
+/// What decimate did.
 struct DecimationResult
 {
 	uint32 faces = 0;       ///< faces left

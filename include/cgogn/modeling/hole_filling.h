@@ -13,6 +13,7 @@
 namespace cgogn::modeling
 {
 
+/// How fill_hole and fill_holes triangulate, refine and fair a hole.
 struct HoleFillingOptions
 {
 	/// Insert vertices so that the patch's edge lengths match those around
@@ -29,21 +30,22 @@ struct HoleFillingOptions
 	/// Liepa's density factor: a triangle is split when its centroid is
 	/// farther than (target length / density) from each of its corners.
 	double density = 1.4142135623730951;
-	FairingWeights fairing_weights = FairingWeights::Cotangent;
+	FairingWeights fairing_weights = FairingWeights::Cotangent; ///< The Laplacian weights of the fairing.
 	/// 1: bi-harmonic (tangent continuity with the surface around the hole).
 	uint32 fairing_continuity = 1;
 };
 
+/// What fill_hole or fill_holes did.
 struct HoleFillingResult
 {
-	uint32 holes_found = 0;
-	uint32 holes_filled = 0;
+	uint32 holes_found = 0;  ///< Boundary loops found (1 for fill_hole).
+	uint32 holes_filled = 0; ///< Holes triangulated (refined and faired or not).
 	/// Larger than max_hole_size, or of fewer than 3 edges.
 	uint32 holes_skipped = 0;
 	/// Holes triangulated by ear clipping (larger than max_optimal_size).
 	uint32 holes_ear_clipped = 0;
-	uint32 faces_added = 0;
-	uint32 vertices_added = 0;
+	uint32 faces_added = 0;    ///< Triangles created, by the triangulation and the refinement.
+	uint32 vertices_added = 0; ///< Vertices inserted by the refinement.
 	/// Fairing systems that were singular (those patches keep the refined positions).
 	uint32 fairing_failures = 0;
 	/// The callback asked to stop: holes not yet started are left open; a

@@ -21,6 +21,8 @@ using ProgressCallback = std::function<bool(double fraction)>;
 class ProgressReporter
 {
 public:
+	/// A reporter to callback (possibly empty), which must outlive it: it is
+	/// held by reference.
 	explicit ProgressReporter(const ProgressCallback& callback) : callback_(callback)
 	{
 	}
@@ -43,6 +45,7 @@ public:
 		return !cancelled_;
 	}
 
+	/// Whether the callback asked to stop (then every report returns false).
 	bool cancelled() const
 	{
 		return cancelled_;

@@ -30,12 +30,14 @@ public:
 		return q;
 	}
 
+	/// Adds the planes of o: Q(x) becomes Q(x) + o(x). O(1).
 	Quadric& operator+=(const Quadric& o)
 	{
 		for (std::size_t i = 0; i < c_.size(); ++i)
 			c_[i] += o.c_[i];
 		return *this;
 	}
+	/// The quadric of the planes of a and b: (a + b)(x) = a(x) + b(x). O(1).
 	friend Quadric operator+(Quadric a, const Quadric& b)
 	{
 		return a += b;

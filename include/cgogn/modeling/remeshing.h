@@ -9,11 +9,12 @@
 namespace cgogn::modeling
 {
 
+/// What isotropic_remeshing aims at and how long it works.
 struct RemeshingOptions
 {
 	/// Target edge length L; 0 (the default) means the mean edge length of the input.
 	double target_edge_length = 0.0;
-	uint32 iterations = 10;
+	uint32 iterations = 10; ///< Iterations of split, collapse, flip, relax (and project).
 	/// Feature edges: interior edges whose dihedral angle exceeds this many
 	/// degrees are kept like the boundary (0, the default: no feature edges).
 	double feature_angle = 0.0;
@@ -22,12 +23,13 @@ struct RemeshingOptions
 	bool project = true;
 };
 
+/// What isotropic_remeshing did.
 struct RemeshingResult
 {
-	uint32 iterations = 0; ///< iterations completed
-	uint64 splits = 0;
-	uint64 collapses = 0;
-	uint64 flips = 0;
+	uint32 iterations = 0;           ///< iterations completed
+	uint64 splits = 0;               ///< edge splits, over all iterations
+	uint64 collapses = 0;            ///< edge collapses, over all iterations
+	uint64 flips = 0;                ///< edge flips, over all iterations
 	double target_edge_length = 0.0; ///< the L used
 	bool cancelled = false;          ///< the progress callback asked to stop
 };

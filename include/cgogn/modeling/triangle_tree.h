@@ -19,7 +19,7 @@ namespace cgogn::modeling
 class TriangleTree
 {
 public:
-	using Triangle = std::array<Vec3, 3>;
+	using Triangle = std::array<Vec3, 3>; ///< A triangle by its three corners.
 
 	/// The triangles of m's faces (polygons as fans from their first corner).
 	/// O(n log n).
@@ -27,6 +27,7 @@ public:
 	/// The given triangles. O(n log n).
 	explicit TriangleTree(std::vector<Triangle> triangles);
 
+	/// The answer of closest_point().
 	struct Hit
 	{
 		Vec3 point = Vec3::Zero(); ///< the closest point
@@ -38,10 +39,13 @@ public:
 	/// O(log n) on well-spread triangles.
 	Hit closest_point(const Vec3& p) const;
 
+	/// Number of triangles. O(1).
 	std::size_t size() const
 	{
 		return triangles_.size();
 	}
+	/// Triangle i, i < size() (not checked), as Hit::triangle numbers them:
+	/// the tree's own order, not the order the triangles were given in. O(1).
 	const Triangle& triangle(uint32 i) const
 	{
 		return triangles_[i];
@@ -65,6 +69,8 @@ private:
 /// The closest point to p on triangle (a, b, c) (Ericson's region test). O(1).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Statistics of the distances of a mesh's vertices to a reference surface,
+/// in the unit of the positions.
 struct SurfaceDistance
 {
 	double max = 0.0;  ///< largest vertex distance

@@ -40,18 +40,27 @@ public:
 	using std::runtime_error::runtime_error;
 };
 
+/// A colour, 8 bits per channel.
 struct Rgb
 {
+	/// \var r
+	/// Red, 0..255.
+	/// \var g
+	/// Green, 0..255.
+	/// \var b
+	/// Blue, 0..255.
 	uint8_t r = 0, g = 0, b = 0;
+	/// Same three channels.
 	friend bool operator==(Rgb, Rgb) = default;
 };
 
+/// The base view of the camera, before RenderOptions::azimuth and elevation.
 enum class View
 {
-	X,
-	Y,
-	Z,
-	Iso
+	X,  ///< looks down -x, +z up, +y to the right
+	Y,  ///< looks down -y, +z up, -x to the right
+	Z,  ///< looks down -z, +y up, +x to the right
+	Iso ///< the Z view turned by azimuth 45 and elevation 35.26 degrees: looks down -(1, 1, 1), +y up
 };
 
 enum class Shading
@@ -75,12 +84,20 @@ enum class ColorSource
 	Attribute          ///< RenderOptions::attribute: a double or float vertex, face or volume attribute
 };
 
+/// How render_surface and render_volume_boundary draw a mesh. The camera is
+/// orthographic, looks at the centre of the bounding box of the rendered
+/// vertices and is scaled so that the box fills 90% of the drawing area (the
+/// image minus the legend strip) in width or height.
 struct RenderOptions
 {
-	uint32_t width = 800, height = 600;
-	View view = View::Iso;
-	double azimuth = 0.0, elevation = 0.0; ///< degrees, on top of `view`
-	Shading shading = Shading::Smooth;
+	/// Width of the image in pixels, 1..32768; width x height x supersampling^2
+	/// is at most 2^26 (RenderError otherwise).
+	uint32_t width = 800, height = 600; ///< Height of the image in pixels, 1..32768.
+	View view = View::Iso;              ///< The base view of the camera.
+	/// Degrees the camera turns about the view's up axis, from its back towards
+	/// its right, on top of `view`.
+	double azimuth = 0.0, elevation = 0.0; ///< Degrees the camera rises towards the up axis, on top of `view`.
+	Shading shading = Shading::Smooth;     ///< Flat or smooth shading.
 	/// Each pixel is the mean of ssaa x ssaa samples (1: no anti-aliasing).
 	uint32_t supersampling = 2;
 	/// Wireframe of the mesh edges, depth-tested with a small bias.
@@ -90,28 +107,31 @@ struct RenderOptions
 	/// colour, the hidden ones blended at 25% over what hides them, so that
 	/// they show without covering the object.
 	bool show_defects = false;
-	ColorSource color = ColorSource::Uniform;
-	std::string attribute; ///< the attribute's name, for ColorSource::Attribute
-	/// The ends of the colour range of a scalar; unset: the 2nd and 98th
-	/// percentiles of the rendered values. Set both or neither, with
-	/// range_min < range_max (RenderError otherwise).
-	std::optional<double> range_min, range_max;
+	ColorSource color = ColorSource::Uniform; ///< What sets the colour of the surface.
+	std::string attribute;                    ///< the attribute's name, for ColorSource::Attribute
+	/// The low end of the colour range of a scalar; unset: the 2nd percentile
+	/// of the rendered values. Set both ends or neither, with range_min <
+	/// range_max (RenderError otherwise).
+	std::optional<double> range_min, range_max; ///< The high end (unset: the 98th percentile).
 	/// Colour bar on the right when a scalar is shown, with the ends of the
 	/// range used; an end that clamps some values gets a triangle beyond it.
 	bool legend = true;
 	/// false: colours as they are, without the light (0.2 + 0.8 |n.l| otherwise).
 	bool lighting = true;
-	Rgb background{255, 255, 255};
-	Rgb surface_color{190, 198, 214};
-	Rgb edge_color{35, 35, 40};
+	Rgb background{255, 255, 255};    ///< Colour of the pixels no face covers (the legend's text contrasts with it).
+	Rgb surface_color{190, 198, 214}; ///< Colour of the faces for ColorSource::Uniform.
+	Rgb edge_color{35, 35, 40};       ///< Colour of the wireframe (see `edges`).
 };
 
 /// An 8-bit RGB picture, rows from the top, 3 bytes per pixel.
 struct Image
 {
-	uint32_t width = 0, height = 0;
-	std::vector<uint8_t> rgb;
+	/// Width in pixels.
+	uint32_t width = 0, height = 0; ///< Height in pixels.
+	std::vector<uint8_t> rgb;       ///< width x height pixels, row by row from the top: r, g, b of each.
 
+	/// The pixel of column x (from the left) and row y (from the top);
+	/// x < width and y < height (not checked). O(1).
 	Rgb at(uint32_t x, uint32_t y) const
 	{
 		const std::size_t i = (std::size_t(y) * width + x) * 3;
@@ -144,6 +164,9 @@ struct ViewerOptions
 	/// The colouring selected when the page opens (ColorSource::Attribute:
 	/// the attribute named `attribute`).
 	ColorSource color = ColorSource::Uniform;
+	/// The attribute's name, for ColorSource::Attribute: a double or float
+	/// vertex, face or volume attribute (RenderError when there is none of
+	/// that name).
 	std::string attribute;
 	/// Every colour quantity the mesh has (true), or only `color` (smaller
 	/// page: each quantity costs 1.33 bytes per vertex or per triangle).
@@ -204,8 +227,10 @@ void write_png(const Image& img, const std::string& path);
 /// whether some values lie beyond each end.
 struct ScalarRange
 {
-	double lo = 0.0, hi = 0.0;
-	bool below = false, above = false;
+	/// The value mapped to 0.
+	double lo = 0.0, hi = 0.0; ///< The value mapped to 1.
+	/// Whether some values are below lo.
+	bool below = false, above = false; ///< Whether some values are above hi.
 	/// v in [0, 1] (0.5 when lo == hi); NaN for a non-finite v.
 	double normalized(double v) const;
 };

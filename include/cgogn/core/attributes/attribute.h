@@ -30,6 +30,8 @@ class AttributeArray;
 class AttributeBase
 {
 public:
+	/// An attribute of `container` named `name`, with no line yet: the container
+	/// allocates its lines (set_nb_chunks) when it adds it.
 	AttributeBase(AttributeContainer* container, std::string name) : container_(container), name_(std::move(name))
 	{
 	}
@@ -37,6 +39,7 @@ public:
 	AttributeBase(const AttributeBase&) = delete;
 	AttributeBase& operator=(const AttributeBase&) = delete;
 
+	/// The name, unique among the attributes of the container.
 	const std::string& name() const
 	{
 		return name_;
@@ -48,12 +51,25 @@ public:
 		return container_;
 	}
 
+	/// The type of the values (typeid(T)); get_attribute compares it.
 	virtual std::type_index type() const = 0;
+	/// Resizes to nb_chunks * CHUNK_SIZE lines: new lines get the default
+	/// value, lines past the new size are destroyed and their memory given back.
+	/// Called by the container, which keeps all its attributes at the same
+	/// size. O(lines added or removed). Throws std::bad_alloc when memory runs
+	/// out.
 	virtual void set_nb_chunks(uint32 nb_chunks) = 0;
+	/// Sets line i back to the default value. O(1).
 	virtual void reset_line(uint32 i) = 0;
+	/// Copies the value of line src to line dst. O(1).
 	virtual void copy_line(uint32 dst, uint32 src) = 0;
+	/// Copies the value of line src of `other`, an attribute of the same type
+	/// (asserted) possibly in another container, to line dst. O(1).
 	virtual void copy_line_from(uint32 dst, const AttributeBase& other, uint32 src) = 0;
+	/// Exchanges the values of lines a and b. O(1).
 	virtual void swap_lines(uint32 a, uint32 b) = 0;
+	/// Bytes of memory the values hold (see LineStorage::memory_bytes): all
+	/// allocated lines, live or not.
 	virtual std::size_t memory_bytes() const = 0;
 	/// A new attribute of the same type, name and default value in container
 	/// `to` (nullptr when the name is taken there).
@@ -61,8 +77,8 @@ public:
 
 protected:
 	friend class AttributeContainer;
-	AttributeContainer* container_;
-	std::string name_;
+	AttributeContainer* container_; ///< See container().
+	std::string name_;              ///< See name().
 	/// The container's cell index (see AttributeContainer::cell_index), kept
 	/// here so that `attr[c]` costs the loads value() costs.
 	const AttributeArray<uint32>* cell_index_ = nullptr;
@@ -78,7 +94,7 @@ template <typename T>
 class AttributeArray : public AttributeBase
 {
 public:
-	using value_type = T;
+	using value_type = T; ///< The type of the values.
 
 	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
 	AttributeArray(AttributeContainer* container, std::string name, T default_value = T(),
@@ -87,11 +103,15 @@ public:
 	{
 	}
 
+	/// The value of line i, live or not; i must be below the container's
+	/// capacity() (asserted). O(1): a compare and an add (one more load for a
+	/// line beyond the reserved range, see LineStorage).
 	CGOGN_INLINE T& operator[](uint32 i)
 	{
 		assert(i < values_.size());
 		return values_[i];
 	}
+	/// The value of line i, read-only; as the overload above.
 	CGOGN_INLINE const T& operator[](uint32 i) const
 	{
 		assert(i < values_.size());
@@ -110,6 +130,7 @@ public:
 	{
 		return (*this)[line_of(c)];
 	}
+	/// The value of cell c, read-only; as the overload above.
 	template <Orbit O>
 	CGOGN_INLINE const T& operator[](Cell<O> c) const
 	{
@@ -123,6 +144,7 @@ public:
 		assert(c.line == line_of(Cell<O>(c)) && "stale cell line");
 		return (*this)[c.line];
 	}
+	/// The value of a located cell, read-only; as the overload above.
 	template <Orbit O>
 	CGOGN_INLINE const T& operator[](LocatedCell<O> c) const
 	{
@@ -199,11 +221,16 @@ public:
 
 	template <bool IS_CONST>
 	class basic_iterator;
-	using iterator = basic_iterator<false>;
-	using const_iterator = basic_iterator<true>;
+	using iterator = basic_iterator<false>;      ///< Iterates the values of the live lines.
+	using const_iterator = basic_iterator<true>; ///< Iterates the values of the live lines, read-only.
+	/// The value of the first live line. O(number of free lines before it).
+	/// A removed attribute (no container) iterates over nothing.
 	iterator begin();
+	/// One past the value of the last line below the container's end_index(). O(1).
 	iterator end();
+	/// The value of the first live line, read-only; as the overload above.
 	const_iterator begin() const;
+	/// One past the value of the last line, read-only; as the overload above.
 	const_iterator end() const;
 
 protected:
@@ -225,30 +252,37 @@ template <typename T, Orbit O>
 class CellAttribute : public AttributeArray<T>
 {
 public:
-	static constexpr Orbit ORBIT = O;
+	static constexpr Orbit ORBIT = O; ///< The orbit of the cells that own the lines.
 
 	using AttributeArray<T>::AttributeArray;
 
+	/// The value of line i (see AttributeArray::operator[](uint32)). O(1).
 	CGOGN_INLINE T& operator[](uint32 i)
 	{
 		return AttributeArray<T>::operator[](i);
 	}
+	/// The value of line i, read-only. O(1).
 	CGOGN_INLINE const T& operator[](uint32 i) const
 	{
 		return AttributeArray<T>::operator[](i);
 	}
+	/// The value of cell c, a cell of the attribute's orbit (see
+	/// AttributeArray::operator[](Cell<O>)). O(1).
 	CGOGN_INLINE T& operator[](Cell<O> c)
 	{
 		return AttributeArray<T>::operator[](c);
 	}
+	/// The value of cell c, read-only. O(1).
 	CGOGN_INLINE const T& operator[](Cell<O> c) const
 	{
 		return AttributeArray<T>::operator[](c);
 	}
+	/// The value of a cell reported with its line: no index lookup. O(1).
 	CGOGN_INLINE T& operator[](LocatedCell<O> c)
 	{
 		return AttributeArray<T>::operator[](c);
 	}
+	/// The value of a cell reported with its line, read-only. O(1).
 	CGOGN_INLINE const T& operator[](LocatedCell<O> c) const
 	{
 		return AttributeArray<T>::operator[](c);
@@ -269,25 +303,30 @@ public:
 class MarkAttribute
 {
 public:
-	static constexpr uint32 WORDS_PER_CHUNK = CHUNK_SIZE / 64;
+	static constexpr uint32 WORDS_PER_CHUNK = CHUNK_SIZE / 64; ///< 64-bit words holding the bits of a chunk.
 
 	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
 	explicit MarkAttribute(uint64 contiguous_lines = default_contiguous_lines()) : words_(contiguous_lines / 64)
 	{
 	}
+	/// Lines whose bits live in the reserved range by default: 2^28, as for a
+	/// uint32 attribute (32 MiB of address space, committed only as used).
 	static constexpr uint64 default_contiguous_lines()
 	{
 		return uint64(1) << 28;
 	}
 
+	/// Whether the bit of line i is set. O(1); not atomic.
 	CGOGN_INLINE bool test(uint32 i) const
 	{
 		return (words_[i >> 6] >> (i & 63u)) & 1u;
 	}
+	/// Sets the bit of line i. O(1); not atomic.
 	CGOGN_INLINE void set(uint32 i)
 	{
 		words_[i >> 6] |= (uint64(1) << (i & 63u));
 	}
+	/// Clears the bit of line i. O(1); not atomic.
 	CGOGN_INLINE void reset(uint32 i)
 	{
 		words_[i >> 6] &= ~(uint64(1) << (i & 63u));
@@ -313,6 +352,7 @@ public:
 		std::atomic_ref<uint64> w = word_ref(i);
 		w.store(w.load(std::memory_order_relaxed) | (uint64(1) << (i & 63u)), std::memory_order_relaxed);
 	}
+	/// Sets the bit of line i to b. O(1); not atomic.
 	void set_value(uint32 i, bool b)
 	{
 		if (b)
@@ -320,11 +360,13 @@ public:
 		else
 			reset(i);
 	}
+	/// Clears every bit, live lines or not. O(capacity / 64).
 	void clear_all()
 	{
 		for (uint32 w = 0; w < words_.size(); ++w)
 			words_[w] = 0;
 	}
+	/// Whether no bit is set. O(capacity / 64).
 	bool all_clear() const
 	{
 		for (uint32 w = 0; w < words_.size(); ++w)
@@ -332,16 +374,21 @@ public:
 				return false;
 		return true;
 	}
+	/// Resizes to nb_chunks * CHUNK_SIZE lines; the bits of new lines are
+	/// clear. Called by the container, with the size of its attributes.
+	/// O(words added or removed).
 	void set_nb_chunks(uint32 nb_chunks)
 	{
 		words_.resize(nb_chunks * WORDS_PER_CHUNK, 0);
 	}
+	/// Exchanges the bits of lines a and b. O(1); not atomic.
 	void swap_lines(uint32 a, uint32 b)
 	{
 		bool ta = test(a), tb = test(b);
 		set_value(a, tb);
 		set_value(b, ta);
 	}
+	/// Bytes of memory held by the bits (see LineStorage::memory_bytes).
 	std::size_t memory_bytes() const
 	{
 		return words_.memory_bytes();

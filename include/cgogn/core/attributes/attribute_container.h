@@ -41,9 +41,9 @@ public:
 	AttributeContainer(const AttributeContainer&) = delete;
 	AttributeContainer& operator=(const AttributeContainer&) = delete;
 
-	/// Adds an attribute; nullptr when one with this name exists already.
-	/// Adds an attribute; nullptr when one with this name exists already. A
-	/// is the attribute's class (a CellAttribute<T, O> for add_attribute<T, CELL>).
+	/// Adds an attribute whose lines all hold `default_value`; nullptr when one
+	/// with this name exists already. A is the attribute's class (a
+	/// CellAttribute<T, O> for add_attribute<T, CELL>). O(attributes + capacity()).
 	template <typename T, typename A = AttributeArray<T>>
 	std::shared_ptr<A> add_attribute(const std::string& name, T default_value = T())
 	{
@@ -69,6 +69,8 @@ public:
 		return std::static_pointer_cast<AttributeArray<T>>(a);
 	}
 
+	/// The attribute of this name, whatever its type; nullptr when absent.
+	/// O(number of attributes).
 	std::shared_ptr<AttributeBase> find(const std::string& name) const
 	{
 		auto it =
@@ -90,11 +92,15 @@ public:
 		return true;
 	}
 
+	/// Every attribute of the container, the key included, in the order they
+	/// were added.
 	const std::vector<std::shared_ptr<AttributeBase>>& attributes() const
 	{
 		return attributes_;
 	}
 
+	/// The key: INVALID_INDEX on free lines (see the class). Writing it does
+	/// not update the free list; new_line and release_line do.
 	AttributeArray<uint32>& key()
 	{
 		return *key_;
@@ -106,6 +112,7 @@ public:
 	{
 		return orbit_;
 	}
+	/// Sets the orbit (see orbit()); the map calls it when it creates the container.
 	void set_orbit(Orbit o)
 	{
 		orbit_ = o;
@@ -117,12 +124,15 @@ public:
 	{
 		return cell_index_;
 	}
+	/// Sets the cell index (see cell_index()) and hands it to every attribute.
+	/// O(number of attributes).
 	void set_cell_index(const AttributeArray<uint32>* index)
 	{
 		cell_index_ = index;
 		for (auto& a : attributes_)
 			a->cell_index_ = index;
 	}
+	/// The key, read-only: INVALID_INDEX on free lines.
 	const AttributeArray<uint32>& key() const
 	{
 		return *key_;
@@ -177,6 +187,7 @@ public:
 		free_lines_.push_back(i);
 	}
 
+	/// Whether line i is in use: below end_index() with a valid key. O(1).
 	bool is_live(uint32 i) const
 	{
 		return i < size_ && (*key_)[i] != INVALID_INDEX;
@@ -198,6 +209,8 @@ public:
 	{
 		return size_;
 	}
+	/// The first live line, or end_index() when there is none. O(number of
+	/// free lines before it).
 	uint32 first_index() const
 	{
 		uint32 i = 0;
@@ -205,6 +218,8 @@ public:
 			++i;
 		return i;
 	}
+	/// The first live line after i, or end_index() when there is none.
+	/// O(number of free lines skipped).
 	uint32 next_index(uint32 i) const
 	{
 		do
@@ -212,6 +227,7 @@ public:
 		while (i < size_ && (*key_)[i] == INVALID_INDEX);
 		return i;
 	}
+	/// The free lines below end_index(); new_line reuses the last one first.
 	const std::vector<uint32>& free_lines() const
 	{
 		return free_lines_;
@@ -438,6 +454,7 @@ private:
 class ReservedMark
 {
 public:
+	/// Reserves a cleared mark of container c (see AttributeContainer::acquire_mark).
 	explicit ReservedMark(AttributeContainer& c) : container_(c), mark_(c.acquire_mark())
 	{
 	}
@@ -448,10 +465,12 @@ public:
 	ReservedMark(const ReservedMark&) = delete;
 	ReservedMark& operator=(const ReservedMark&) = delete;
 
+	/// The reserved mark.
 	MarkAttribute& operator*() const
 	{
 		return *mark_;
 	}
+	/// The reserved mark's members.
 	MarkAttribute* operator->() const
 	{
 		return mark_;
@@ -537,10 +556,10 @@ class AttributeArray<T>::basic_iterator
 	using Value = std::conditional_t<IS_CONST, const T, T>;
 
 public:
-	using value_type = T;
-	using difference_type = std::ptrdiff_t;
-	using reference = Value&;
-	using iterator_category = std::forward_iterator_tag;
+	using value_type = T;                                ///< The attribute's value type.
+	using difference_type = std::ptrdiff_t;              ///< As required of a forward iterator.
+	using reference = Value&;                            ///< A reference to a value, const for a const_iterator.
+	using iterator_category = std::forward_iterator_tag; ///< A forward iterator.
 
 	basic_iterator() = default;
 	/// Positioned at line i (live, or end) of an attribute iterated up to line end.
@@ -564,14 +583,18 @@ public:
 			run_first_value_ = value_ = run_end_ = &(*a)[end - 1] + 1;
 		}
 	}
+	/// The value of the current line.
 	CGOGN_INLINE Value& operator*() const
 	{
 		return *value_;
 	}
+	/// The value of the current line, for member access.
 	CGOGN_INLINE Value* operator->() const
 	{
 		return value_;
 	}
+	/// Moves to the next live line. O(1) when the container has no free line,
+	/// else O(free lines skipped).
 	CGOGN_INLINE basic_iterator& operator++()
 	{
 		step();
@@ -579,12 +602,14 @@ public:
 			skip_free_lines();
 		return *this;
 	}
+	/// Moves to the next live line; returns the iterator as it was before.
 	basic_iterator operator++(int)
 	{
 		basic_iterator t = *this;
 		++*this;
 		return t;
 	}
+	/// Whether both point to the same value (of the same attribute).
 	CGOGN_INLINE bool operator==(const basic_iterator& o) const
 	{
 		return value_ == o.value_;

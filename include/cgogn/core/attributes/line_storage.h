@@ -55,7 +55,7 @@ template <typename T, uint32 BLOCK_SHIFT>
 class LineStorage
 {
 public:
-	static constexpr uint32 BLOCK_SIZE = 1u << BLOCK_SHIFT;
+	static constexpr uint32 BLOCK_SIZE = 1u << BLOCK_SHIFT; ///< Elements per block; the size is a multiple of it.
 
 	/// `contiguous`: how many elements live in the reserved range (rounded down
 	/// to whole blocks); 0 puts every element in blocks.
@@ -84,7 +84,10 @@ public:
 	// base_ is read before the test, on both paths: read only after it, the
 	// load is conditional and GCC does not hoist it out of a loop, so a walk
 	// that reads an attribute through value() loaded base_ again at every
-	// step (surface smoothing 8% and normal 6% slower, bench/README.md).
+	// step (surface smoothing 8% and normal 6% slower, docs/performance.md).
+	/// Element i, i < size() (asserted for an element in a block). O(1): a
+	/// compare and an add for the elements of the reserved range, one more
+	/// load for an element in a block.
 	CGOGN_INLINE T& operator[](uint32 i)
 	{
 		T* const base = base_;
@@ -92,6 +95,7 @@ public:
 			return base[i];
 		return in_block(i);
 	}
+	/// Element i, read-only; as the overload above.
 	CGOGN_INLINE const T& operator[](uint32 i) const
 	{
 		const T* const base = base_;
@@ -108,6 +112,7 @@ public:
 	class View
 	{
 	public:
+		/// Element i of the storage, as LineStorage::operator[]. O(1).
 		CGOGN_INLINE const T& operator[](uint32 i) const
 		{
 			if (i < contiguous_) [[likely]]
@@ -125,6 +130,7 @@ public:
 		uint32 contiguous_;
 		const LineStorage* storage_;
 	};
+	/// A view of the elements, valid while the storage does not grow or shrink.
 	CGOGN_INLINE View view() const
 	{
 		return View(base_, contiguous_, this);

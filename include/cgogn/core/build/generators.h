@@ -12,19 +12,19 @@ namespace cgogn
 /// (the core has no vector type: positions are plain arrays).
 struct SurfaceSoup
 {
-	uint32 nb_vertices = 0;
-	std::vector<uint32> face_sizes;
-	std::vector<uint32> face_vertices;
-	std::vector<std::array<double, 3>> positions;
+	uint32 nb_vertices = 0;                       ///< Number of vertices; their ids are [0, nb_vertices).
+	std::vector<uint32> face_sizes;               ///< Number of vertices of each face.
+	std::vector<uint32> face_vertices;            ///< The vertex ids of the faces, face after face.
+	std::vector<std::array<double, 3>> positions; ///< x, y, z of each vertex, by id.
 };
 
 /// A cell soup (tetrahedra, pyramids, prisms, hexahedra) with positions.
 struct VolumeSoup
 {
-	uint32 nb_vertices = 0;
-	std::vector<uint32> cell_sizes;
-	std::vector<uint32> cell_vertices;
-	std::vector<std::array<double, 3>> positions;
+	uint32 nb_vertices = 0;                       ///< Number of vertices; their ids are [0, nb_vertices).
+	std::vector<uint32> cell_sizes;               ///< Number of vertices of each cell (4, 5, 6 or 8).
+	std::vector<uint32> cell_vertices;            ///< The vertex ids of the cells, in build_volume's order.
+	std::vector<std::array<double, 3>> positions; ///< x, y, z of each vertex, by id.
 };
 
 /// A flat nx x ny grid of unit squares in the z = 0 plane, (nx+1)(ny+1)

@@ -16,18 +16,20 @@ struct BuildReport
 {
 	/// Soup vertex i is the vertex of line `vertex_offset + i` (0 in an empty map).
 	uint32 vertex_offset = 0;
-	uint32 nb_cells_read = 0; // faces (surface) or volumes (volume)
-	uint32 nb_cells_built = 0;
+	uint32 nb_cells_read = 0;  ///< Faces (surface) or volumes (volume) in the input.
+	uint32 nb_cells_built = 0; ///< Of those, the cells added to the map (not degenerate nor invalid).
 	/// Cells with fewer than 3 vertices (surface) or a repeated vertex.
 	uint32 nb_cells_degenerate = 0;
 	/// Cells referring to a vertex id >= nb_vertices, or of an unknown kind.
 	uint32 nb_cells_invalid = 0;
 	/// Soup vertices used by no cell: their lines are released.
 	uint32 nb_isolated_vertices = 0;
-	/// Edges (surface) or faces (volume) shared by more cells than a manifold
-	/// allows, or by cells of incompatible orientation: the extra cells were
-	/// detached along them (the map stays valid, with boundary there).
+	/// Edges (surface) shared by more faces than a manifold allows, or by faces
+	/// of incompatible orientation: the extra faces were detached along them
+	/// (the map stays valid, with boundary there).
 	uint32 nb_nonmanifold_edges = 0;
+	/// Faces (volume) shared by more volumes than a manifold allows: the extra
+	/// volumes were detached along them, as for edges.
 	uint32 nb_nonmanifold_faces = 0;
 	/// Boundary cells created to close the map (holes, outside of volumes).
 	uint32 nb_boundary_cells = 0;

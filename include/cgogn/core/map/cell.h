@@ -16,15 +16,18 @@ namespace cgogn
 template <Orbit O>
 struct Cell
 {
-	static constexpr Orbit ORBIT = O;
+	static constexpr Orbit ORBIT = O; ///< The orbit of the cell type.
 
-	Dart dart;
+	Dart dart; ///< A dart of the orbit, representing the cell; invalid by default.
 
 	constexpr Cell() = default;
+	/// The cell of orbit O that contains d.
 	constexpr explicit Cell(Dart d) : dart(d)
 	{
 	}
 
+	/// Whether the representative dart is valid (not whether it is a live dart
+	/// of some map: see is_dart_valid()). O(1).
 	constexpr bool is_valid() const
 	{
 		return dart.is_valid();
@@ -33,6 +36,7 @@ struct Cell
 	/// Same representative dart (not the same cell: see same_cell()).
 	friend constexpr bool operator==(Cell a, Cell b) = default;
 
+	/// Prints the orbit and the dart index, e.g. `Cell<PHI21>(12)`.
 	friend std::ostream& operator<<(std::ostream& out, Cell c)
 	{
 		return out << "Cell<" << orbit_name(O) << ">(" << c.dart.index << ")";
@@ -49,9 +53,10 @@ struct Cell
 template <Orbit O>
 struct LocatedCell : Cell<O>
 {
-	uint32 line = INVALID_INDEX;
+	uint32 line = INVALID_INDEX; ///< The cell's line in the container of orbit O.
 
 	constexpr LocatedCell() = default;
+	/// The cell of orbit O that contains d, at line l of the orbit's container.
 	constexpr LocatedCell(Dart d, uint32 l) : Cell<O>(d), line(l)
 	{
 	}
@@ -71,9 +76,11 @@ struct CellParam : CELL
 {
 	uint32 line = INVALID_INDEX; ///< INVALID_INDEX: unknown, looked up when needed
 
+	/// A cell whose line is unknown.
 	constexpr CellParam(CELL c) : CELL(c)
 	{
 	}
+	/// A cell with its line.
 	constexpr CellParam(LocatedCell<CELL::ORBIT> c) : CELL(c), line(c.line)
 	{
 	}
@@ -96,9 +103,12 @@ concept CellType = is_cell<std::remove_cvref_t<T>>::value;
 
 } // namespace cgogn
 
+/// Hashes a cell by its representative dart, as operator== compares them: two
+/// darts of the same cell are two different keys.
 template <cgogn::Orbit O>
 struct std::hash<cgogn::Cell<O>>
 {
+	/// The hash of c's dart.
 	std::size_t operator()(cgogn::Cell<O> c) const noexcept
 	{
 		return std::hash<cgogn::Dart>{}(c.dart);

@@ -12,12 +12,12 @@ namespace cgogn
 class CMap2 : public CMap1
 {
 public:
-	static constexpr uint32 dimension = 2;
+	static constexpr uint32 dimension = 2; ///< The dimension of the map.
 
-	using HalfEdge = Cell<Orbit::DART>;
-	using Vertex = Cell<Orbit::PHI21>;
-	using Edge = Cell<Orbit::PHI2>;
-	using Face = Cell<Orbit::PHI1>;
+	using HalfEdge = Cell<Orbit::DART>; ///< A dart: the side of an edge in one face.
+	using Vertex = Cell<Orbit::PHI21>;  ///< A vertex: the darts leaving it (phi2 followed by phi1).
+	using Edge = Cell<Orbit::PHI2>;     ///< An edge: its two darts, exchanged by phi2.
+	using Face = Cell<Orbit::PHI1>;     ///< A face: a phi1 cycle of darts.
 	/// A connected component: the surface seen as one volume.
 	using Volume = Cell<Orbit::PHI1_PHI2>;
 

@@ -48,12 +48,20 @@ public:
 		}
 		cell_index_.fill(nullptr);
 	}
+	/// Takes the darts, cells and attributes of another map. Attribute handles
+	/// and marks stay valid (their containers do not move); the moved-from map
+	/// may only be destroyed or assigned to. O(1).
 	CMapBase(CMapBase&&) = default;
+	/// Replaces this map by another one, as the move constructor; the
+	/// attributes of the replaced map are removed (their handles stay usable
+	/// but see no map). O(size of the replaced map).
 	CMapBase& operator=(CMapBase&&) = default;
 	CMapBase(const CMapBase&) = delete;
 	CMapBase& operator=(const CMapBase&) = delete;
 
 protected:
+	/// Adds the dart attribute of the next relation (phi2, then phi3), invalid
+	/// on every dart until sewn; called by the constructors of CMap2 and CMap3.
 	AttributeArray<uint32>* add_relation(const std::string& name)
 	{
 		auto a = darts_->add_attribute<uint32>(name, INVALID_INDEX);

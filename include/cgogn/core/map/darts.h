@@ -15,7 +15,7 @@ CGOGN_INLINE Dart phi1(const CMap1& m, Dart d)
 	return Dart((*detail::phi1_of(m))[d.index]);
 }
 
-/// Previous dart in the face cycle. phi_1 is not stored (see bench/README.md:
+/// Previous dart in the face cycle. phi_1 is not stored (see docs/performance.md:
 /// it would cost 4 bytes per dart): O(degree of the face).
 inline Dart phi_1(const CMap1& m, Dart d)
 {

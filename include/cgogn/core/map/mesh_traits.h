@@ -14,54 +14,61 @@ namespace cgogn
 template <typename MESH>
 struct mesh_traits;
 
+/// The traits of a 1-map.
 template <>
 struct mesh_traits<CMap1>
 {
-	static constexpr uint32 dimension = 1;
-	using MapType = CMap1;
-	using Vertex = CMap1::Vertex;
-	using Edge = CMap1::Edge;
-	using Face = CMap1::Face;
+	static constexpr uint32 dimension = 1; ///< The dimension of the map.
+	using MapType = CMap1;                 ///< The map type (for a view: the type of the map under it).
+	using Vertex = CMap1::Vertex;          ///< See CMap1::Vertex.
+	using Edge = CMap1::Edge;              ///< See CMap1::Edge.
+	using Face = CMap1::Face;              ///< See CMap1::Face.
+	/// The distinct cell types (Edge is Vertex): views keep one predicate or
+	/// cell set per entry.
 	using Cells = std::tuple<Vertex, Face>;
 	template <typename T>
-	using Attribute = cgogn::AttributeArray<T>;
-	using AttributeGen = AttributeBase;
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
 };
 
+/// The traits of a 2-map.
 template <>
 struct mesh_traits<CMap2>
 {
-	static constexpr uint32 dimension = 2;
-	using MapType = CMap2;
-	using HalfEdge = CMap2::HalfEdge;
-	using Vertex = CMap2::Vertex;
-	using Edge = CMap2::Edge;
-	using Face = CMap2::Face;
-	using Volume = CMap2::Volume;
+	static constexpr uint32 dimension = 2; ///< The dimension of the map.
+	using MapType = CMap2;                 ///< The map type (for a view: the type of the map under it).
+	using HalfEdge = CMap2::HalfEdge;      ///< See CMap2::HalfEdge.
+	using Vertex = CMap2::Vertex;          ///< See CMap2::Vertex.
+	using Edge = CMap2::Edge;              ///< See CMap2::Edge.
+	using Face = CMap2::Face;              ///< See CMap2::Face.
+	using Volume = CMap2::Volume;          ///< See CMap2::Volume.
+	/// The cell types: views keep one predicate or cell set per entry.
 	using Cells = std::tuple<HalfEdge, Vertex, Edge, Face, Volume>;
 	template <typename T>
-	using Attribute = cgogn::AttributeArray<T>;
-	using AttributeGen = AttributeBase;
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
 };
 
+/// The traits of a 3-map.
 template <>
 struct mesh_traits<CMap3>
 {
-	static constexpr uint32 dimension = 3;
-	using MapType = CMap3;
-	using HalfEdge = CMap3::HalfEdge;
-	using Vertex = CMap3::Vertex;
-	using Vertex2 = CMap3::Vertex2;
-	using Edge = CMap3::Edge;
-	using Edge2 = CMap3::Edge2;
-	using Face = CMap3::Face;
-	using Face2 = CMap3::Face2;
-	using Volume = CMap3::Volume;
-	using CC = CMap3::CC;
+	static constexpr uint32 dimension = 3; ///< The dimension of the map.
+	using MapType = CMap3;                 ///< The map type (for a view: the type of the map under it).
+	using HalfEdge = CMap3::HalfEdge;      ///< See CMap3::HalfEdge.
+	using Vertex = CMap3::Vertex;          ///< See CMap3::Vertex.
+	using Vertex2 = CMap3::Vertex2;        ///< See CMap3::Vertex2.
+	using Edge = CMap3::Edge;              ///< See CMap3::Edge.
+	using Edge2 = CMap3::Edge2;            ///< See CMap3::Edge2.
+	using Face = CMap3::Face;              ///< See CMap3::Face.
+	using Face2 = CMap3::Face2;            ///< See CMap3::Face2.
+	using Volume = CMap3::Volume;          ///< See CMap3::Volume.
+	using CC = CMap3::CC;                  ///< See CMap3::CC.
+	/// The cell types: views keep one predicate or cell set per entry.
 	using Cells = std::tuple<HalfEdge, Vertex, Vertex2, Edge, Edge2, Face, Face2, Volume, CC>;
 	template <typename T>
-	using Attribute = cgogn::AttributeArray<T>;
-	using AttributeGen = AttributeBase;
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
 };
 
 /// A type usable as a mesh by generic algorithms: a map or a view on one.

@@ -55,42 +55,51 @@ template <typename MESH>
 class DartMarker
 {
 public:
-	using MapType = typename mesh_traits<MESH>::MapType;
+	using MapType = typename mesh_traits<MESH>::MapType; ///< The map under MESH (MESH itself for a map).
 
+	/// A marker of the darts of m (a map or a view: the darts of the map under
+	/// it), with no dart marked. O(1) once the pool is warm; the first use of a
+	/// pool slot allocates its bits, O(darts / 64).
 	explicit DartMarker(const MESH& m) : map_(map_of(m)), mark_(map_)
 	{
 	}
 
+	/// Marks d. O(1).
 	void mark(Dart d)
 	{
 		mark_->set(d.index);
 	}
+	/// Unmarks d. O(1).
 	void unmark(Dart d)
 	{
 		mark_->reset(d.index);
 	}
+	/// Whether d is marked. O(1).
 	bool is_marked(Dart d) const
 	{
 		return mark_->test(d.index);
 	}
+	/// Marks every dart of cell c. O(size of the orbit).
 	template <Orbit O>
 	void mark_orbit(Cell<O> c)
 	{
 		foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set(d.index); });
 	}
+	/// Unmarks every dart of cell c. O(size of the orbit).
 	template <Orbit O>
 	void unmark_orbit(Cell<O> c)
 	{
 		foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->reset(d.index); });
 	}
+	/// Unmarks every dart. O(darts / 64).
 	void unmark_all()
 	{
 		mark_->clear_all();
 	}
 
 protected:
-	const MapType& map_;
-	detail::ScopedDartMark mark_; // cleared and given back with the marker; not copyable
+	const MapType& map_;          ///< The map whose darts are marked.
+	detail::ScopedDartMark mark_; ///< The reserved bits: cleared and given back with the marker; not copyable.
 };
 
 /// A DartMarker that also records the marked darts, so that clearing is
@@ -99,8 +108,10 @@ template <typename MESH>
 class DartMarkerStore
 {
 public:
-	using MapType = typename mesh_traits<MESH>::MapType;
+	using MapType = typename mesh_traits<MESH>::MapType; ///< The map under MESH (MESH itself for a map).
 
+	/// A marker of the darts of m (a map or a view: the darts of the map under
+	/// it), with no dart marked. O(1) once the pools are warm.
 	explicit DartMarkerStore(const MESH& m) : map_(map_of(m)), mark_(*detail::darts_of(map_))
 	{
 	}
@@ -109,6 +120,7 @@ public:
 		unmark_all();
 	}
 
+	/// Marks d and records it, unless it is marked already. O(1) amortized.
 	void mark(Dart d)
 	{
 		if (!mark_->test(d.index))
@@ -117,6 +129,8 @@ public:
 			mark_->set(d.index);
 		}
 	}
+	/// Unmarks d and removes it from the record. O(number of marked darts)
+	/// when d is marked, O(1) otherwise.
 	void unmark(Dart d)
 	{
 		if (mark_->test(d.index))
@@ -125,26 +139,33 @@ public:
 			marked_->erase(std::find(marked_->begin(), marked_->end(), d));
 		}
 	}
+	/// Whether d is marked. O(1).
 	bool is_marked(Dart d) const
 	{
 		return mark_->test(d.index);
 	}
+	/// Marks every dart of cell c. O(size of the orbit).
 	template <Orbit O>
 	void mark_orbit(Cell<O> c)
 	{
 		foreach_dart_of_orbit(map_, c, [&](Dart d) { mark(d); });
 	}
+	/// Unmarks every dart of cell c. O(size of the orbit x number of marked
+	/// darts): each unmark searches the record.
 	template <Orbit O>
 	void unmark_orbit(Cell<O> c)
 	{
 		foreach_dart_of_orbit(map_, c, [&](Dart d) { unmark(d); });
 	}
+	/// Unmarks every marked dart. O(number of marked darts).
 	void unmark_all()
 	{
 		for (Dart d : *marked_)
 			mark_->reset(d.index);
 		marked_->clear();
 	}
+	/// The marked darts, in the order they were first marked (an unmark
+	/// removes its dart and keeps the order of the others).
 	const std::vector<Dart>& marked_darts() const
 	{
 		return *marked_;

@@ -21,8 +21,12 @@ class CellMarker
 	static_assert(CellType<CELL>);
 
 public:
-	using MapType = typename mesh_traits<MESH>::MapType;
+	using MapType = typename mesh_traits<MESH>::MapType; ///< The map under MESH (MESH itself for a map).
 
+	/// A marker of the cells of m (a map or a view: the cells of the map under
+	/// it), with no cell marked. Whether the orbit is indexed is read here, and
+	/// the marker keeps the bits it chose then (cell bits or dart bits) for its
+	/// whole life. O(1) once the pool is warm.
 	explicit CellMarker(const MESH& m)
 		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
 		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *detail::darts_of(map_))
@@ -33,6 +37,7 @@ public:
 		mark_->clear_all();
 	}
 
+	/// Marks c. O(1) when the orbit is indexed, else O(size of the orbit).
 	void mark(CELL c)
 	{
 		if (indexed_)
@@ -40,6 +45,7 @@ public:
 		else
 			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set(d.index); });
 	}
+	/// Unmarks c. O(1) when the orbit is indexed, else O(size of the orbit).
 	void unmark(CELL c)
 	{
 		if (indexed_)
@@ -47,19 +53,24 @@ public:
 		else
 			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->reset(d.index); });
 	}
+	/// Whether c is marked, through any of its darts. O(1).
 	bool is_marked(CELL c) const
 	{
 		return mark_->test(indexed_ ? index_of(map_, c) : c.dart.index);
 	}
+	/// Unmarks every cell. O(cells / 64) when the orbit is indexed, else
+	/// O(darts / 64).
 	void unmark_all()
 	{
 		mark_->clear_all();
 	}
 
 protected:
-	const MapType& map_;
+	const MapType& map_; ///< The map whose cells are marked.
+	/// Whether the marks are bits of the cell container (one per cell) rather
+	/// than of the dart container (one per dart of each marked cell).
 	bool indexed_;
-	ReservedMark mark_; // not copyable: neither is the marker
+	ReservedMark mark_; ///< The reserved bits; not copyable: neither is the marker.
 };
 
 /// A CellMarker that records the marked cells: unmark_all is O(number of
@@ -71,8 +82,9 @@ class CellMarkerStore
 	static_assert(CellType<CELL>);
 
 public:
-	using MapType = typename mesh_traits<MESH>::MapType;
+	using MapType = typename mesh_traits<MESH>::MapType; ///< The map under MESH (MESH itself for a map).
 
+	/// A marker of the cells of m, with no cell marked; as CellMarker's.
 	explicit CellMarkerStore(const MESH& m)
 		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
 		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *detail::darts_of(map_))
@@ -83,6 +95,8 @@ public:
 		unmark_all();
 	}
 
+	/// Marks c and records it, unless it is marked already. O(1) amortized when
+	/// the orbit is indexed, else O(size of the orbit).
 	void mark(CELL c)
 	{
 		if (is_marked(c))
@@ -90,6 +104,10 @@ public:
 		set(c, true);
 		marked_.push_back(c);
 	}
+	/// Unmarks c and removes it from the record: O(number of marked cells)
+	/// when the orbit is indexed; else each recorded cell is compared with
+	/// same_cell(), O(marked cells x size of the orbit). O(1) when c is not
+	/// marked.
 	void unmark(CELL c)
 	{
 		if (!is_marked(c))
@@ -99,16 +117,21 @@ public:
 		if (it != marked_.end())
 			marked_.erase(it);
 	}
+	/// Whether c is marked, through any of its darts. O(1).
 	bool is_marked(CELL c) const
 	{
 		return mark_->test(indexed_ ? index_of(map_, c) : c.dart.index);
 	}
+	/// Unmarks every marked cell. O(number of marked cells) when the orbit is
+	/// indexed, else O(their darts).
 	void unmark_all()
 	{
 		for (CELL c : marked_)
 			set(c, false);
 		marked_.clear();
 	}
+	/// The marked cells, each once, in the order they were first marked (with
+	/// the dart they were marked through).
 	const std::vector<CELL>& marked_cells() const
 	{
 		return marked_;

@@ -15,7 +15,9 @@ namespace cgogn
 /// index (INVALID_INDEX for lines that were free).
 struct CompactMaps
 {
-	std::vector<uint32> darts;
+	std::vector<uint32> darts; ///< Old dart index -> new dart index.
+	/// For each orbit (by orbit_index()), old line -> new line in its
+	/// container; empty for an orbit whose container never had a line.
 	std::array<std::vector<uint32>, NB_ORBITS> cells;
 };
 

@@ -12,46 +12,52 @@ namespace cgogn
 /// One violated invariant found by check_integrity.
 struct IntegrityError
 {
+	/// Which invariant is violated.
 	enum class Kind
 	{
-		DeadRelation,            // a relation points to a dart that is not live
-		Phi1NotPermutation,      // two darts have the same phi1
-		PhiNotInvolution,        // phi_i(phi_i(d)) != d for i >= 2
-		PhiFixedPoint,           // phi_i(d) == d for i >= 2: the map is not closed
-		Phi1Phi3NotInvolution,   // phi3 o phi1 is not an involution (3-maps)
-		BoundaryLinked,          // phi_n links two boundary darts
-		BoundaryMarkNotConstant, // a boundary cell is only partly marked
-		BoundaryCountWrong,      // the map's count of boundary darts is not the number of marked darts
-		IndexNotConstant,        // two darts of one orbit have different indices
-		MissingIndex,            // a cell of an indexed orbit has no index
-		BoundaryCellIndexed,     // a boundary cell has an index
-		DeadIndex,               // a dart refers to a free line
-		BadRepresentative,       // a line's representative dart is not a dart of its cell
-		IndexShared,             // two cells use the same line
-		FreeLineLive,            // the free list holds a live line
-		FreeLineDuplicate,       // the free list holds a line twice (it would be handed out twice)
-		StaleUnusedLine,         // a line never handed out since the last compaction holds an old index
-		ShortFace,               // a non-boundary face of a 2- or 3-map has 1 or 2 edges
-		IncidenceCacheStale,     // a quick incidence cache disagrees with the map (see IncidenceCache)
+		DeadRelation,            ///< a relation points to a dart that is not live
+		Phi1NotPermutation,      ///< two darts have the same phi1
+		PhiNotInvolution,        ///< phi_i(phi_i(d)) != d for i >= 2
+		PhiFixedPoint,           ///< phi_i(d) == d for i >= 2: the map is not closed
+		Phi1Phi3NotInvolution,   ///< phi3 o phi1 is not an involution (3-maps)
+		BoundaryLinked,          ///< phi_n links two boundary darts
+		BoundaryMarkNotConstant, ///< a boundary cell is only partly marked
+		BoundaryCountWrong,      ///< the map's count of boundary darts is not the number of marked darts
+		IndexNotConstant,        ///< two darts of one orbit have different indices
+		MissingIndex,            ///< a cell of an indexed orbit has no index
+		BoundaryCellIndexed,     ///< a boundary cell has an index
+		DeadIndex,               ///< a dart refers to a free line
+		BadRepresentative,       ///< a line's representative dart is not a dart of its cell
+		IndexShared,             ///< two cells use the same line
+		FreeLineLive,            ///< the free list holds a live line
+		FreeLineDuplicate,       ///< the free list holds a line twice (it would be handed out twice)
+		StaleUnusedLine,         ///< a line never handed out since the last compaction holds an old index
+		ShortFace,               ///< a non-boundary face of a 2- or 3-map has 1 or 2 edges
+		IncidenceCacheStale,     ///< a quick incidence cache disagrees with the map (see IncidenceCache)
 	};
-	Kind kind;
-	Orbit orbit = Orbit::DART; // for indexing errors
-	uint32 dart = INVALID_INDEX;
+	Kind kind;                   ///< The violated invariant.
+	Orbit orbit = Orbit::DART;   ///< The orbit of the cell or line at fault; DART for errors of the relations.
+	uint32 dart = INVALID_INDEX; ///< The index of a dart at fault; INVALID_INDEX when none is singled out.
+	/// The line at fault in the container of `orbit` (for a stale incidence
+	/// cache, its row); INVALID_INDEX when none is singled out.
 	uint32 index = INVALID_INDEX;
-	std::string message;
+	std::string message; ///< The description, with the dart and line when known.
 };
 
 /// The result of check_integrity: every violated invariant (the first 1000
 /// are described; `nb_errors` counts them all).
 struct IntegrityReport
 {
-	std::vector<IntegrityError> errors;
-	std::size_t nb_errors = 0;
+	std::vector<IntegrityError> errors; ///< The first 1000 errors found.
+	std::size_t nb_errors = 0;          ///< The number of errors found, described or not.
 
+	/// True when no invariant is violated.
 	bool ok() const
 	{
 		return nb_errors == 0;
 	}
+	/// Whether one of the described errors (the first 1000) is of kind k.
+	/// O(number of described errors).
 	bool has(IntegrityError::Kind k) const
 	{
 		for (const auto& e : errors)

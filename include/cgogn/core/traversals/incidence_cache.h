@@ -131,6 +131,8 @@ class IncidenceCache
 				  "IncidenceCache: this relation has no cached traversal (see the list in the class comment)");
 
 public:
+	/// The key of the relation (FROM, TO, THROUGH): its table in the map's
+	/// IncidenceTables.
 	static constexpr uint32 key = detail::incidence_key<FROM, TO, THROUGH>();
 
 	/// Builds (or rebuilds) the table from the current connectivity, in

@@ -22,8 +22,8 @@ struct IncidenceTable
 {
 	/// Identifies the relation (from, to, through): see detail::incidence_key.
 	uint32 key = 0;
-	Orbit from = Orbit::DART;
-	Orbit to = Orbit::DART;
+	Orbit from = Orbit::DART; ///< The orbit of the cells whose neighbours are stored (one row per line).
+	Orbit to = Orbit::DART;   ///< The orbit of the neighbour cells stored in the rows.
 	/// The orbit of the shared cell of an adjacency; NB_ORBITS for an incidence.
 	uint32 through = NB_ORBITS;
 	/// Number of rows: the FROM container's end index at build time
@@ -32,8 +32,8 @@ struct IncidenceTable
 	/// vector's bounds made the quick surface circulator 3-5% slower
 	/// (8.25 -> 8.67 ms, minima of 20 alternated runs).
 	uint32 nb_rows = 0;
-	std::vector<uint32> offsets;
-	std::vector<Dart> targets;
+	std::vector<uint32> offsets; ///< nb_rows + 1 entries: row r is targets[offsets[r], offsets[r + 1]).
+	std::vector<Dart> targets;   ///< A dart of each neighbour cell, row after row.
 	/// The line of each target cell in the TO container (same layout as
 	/// targets), so that a cached traversal reports LocatedCell values whose
 	/// attributes are read without a dart -> index lookup. Empty when the TO
@@ -63,7 +63,7 @@ inline constexpr uint32 NB_INCIDENCE_KEYS = NB_ORBITS * (NB_ORBITS + 1) * (NB_OR
 class IncidenceTables
 {
 public:
-	using Tables = std::vector<std::unique_ptr<IncidenceTable>>;
+	using Tables = std::vector<std::unique_ptr<IncidenceTable>>; ///< The tables, in the order they were built.
 
 	/// The table of relation key, nullptr when not built. O(1).
 	const IncidenceTable* find(uint32 key) const
@@ -76,6 +76,7 @@ public:
 	{
 		return by_key_ == nullptr;
 	}
+	/// Number of tables built. O(1).
 	std::size_t size() const
 	{
 		return tables_.size();
@@ -112,6 +113,7 @@ public:
 	{
 		return tables_.begin();
 	}
+	/// One past the last table.
 	Tables::const_iterator end() const
 	{
 		return tables_.end();

@@ -63,7 +63,7 @@ struct alignas(64) FloodWorker
 ///   cell reservation made the cores fight over the pool's cache line). Cost:
 ///   one flood per cell, one atomic read-modify-write per cell that straddles
 ///   chunks; the marks are cleared at the end by the workers, O(darts / 64)
-///   each. Measured in bench/README.md ("Parallel").
+///   each. Measured in docs/performance.md ("Parallel traversals of flooded orbits").
 template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {

@@ -24,8 +24,8 @@ class CellCache
 	static_assert(MeshType<MESH>, "CellCache<MESH>: MESH must be a map or a view");
 
 public:
-	using MeshViewTag = void;
-	using ViewedMesh = MESH;
+	using MeshViewTag = void; ///< Marks the class as a view (see MeshView).
+	using ViewedMesh = MESH;  ///< The type of the cached mesh: a map or another view.
 
 	/// An empty cache of m (build or add cells). O(1).
 	explicit CellCache(const MESH& m) : mesh_(m)

@@ -22,8 +22,8 @@ class CellFilter
 	static_assert(MeshType<MESH>, "CellFilter<MESH>: MESH must be a map or a view");
 
 public:
-	using MeshViewTag = void;
-	using ViewedMesh = MESH;
+	using MeshViewTag = void; ///< Marks the class as a view (see MeshView).
+	using ViewedMesh = MESH;  ///< The type of the filtered mesh: a map or another view.
 
 	/// A filter of m without any predicate (every cell passes). O(1).
 	explicit CellFilter(const MESH& m) : mesh_(m)

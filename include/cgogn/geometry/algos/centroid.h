@@ -56,7 +56,7 @@ inline void add_in_four_sums(Vec3 (&sums)[4], const Vec3* p, uint32 k)
 /// The values of the live lines are read as plain arrays
 /// (Attribute::foreach_live_run) into four partial sums taken in turn: with
 /// one running sum every add waits for the previous one, and that chain, not
-/// the reads, bounds the loop (bench/README.md, barycenter).
+/// the reads, bounds the loop (docs/performance.md, "Read attributes the simple way").
 template <GeometricMesh MESH>
 Vec3 mean_position([[maybe_unused]] const MESH& m, const AttributeArray<Vec3>& pos)
 {

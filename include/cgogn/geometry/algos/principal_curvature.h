@@ -12,13 +12,14 @@
 namespace cgogn::geometry
 {
 
-/// Principal curvatures (kmin <= kmax) and their unit tangent directions.
+/// Principal curvatures (kmin <= kmax) and their unit tangent directions; all
+/// zero where they cannot be estimated (no area or no normal at the vertex).
 struct PrincipalCurvatures
 {
-	double kmin = 0.0;
-	double kmax = 0.0;
-	Vec3 dmin = Vec3::Zero();
-	Vec3 dmax = Vec3::Zero();
+	double kmin = 0.0;        ///< The smaller principal curvature (1 / length unit).
+	double kmax = 0.0;        ///< The larger principal curvature (1 / length unit).
+	Vec3 dmin = Vec3::Zero(); ///< The unit direction of kmin, in the tangent plane.
+	Vec3 dmax = Vec3::Zero(); ///< The unit direction of kmax, orthogonal to dmin.
 };
 
 /// Principal curvatures and directions at vertex v of a surface, by the
