@@ -10,9 +10,9 @@
 # process so that its peak RSS is that library's.
 set -eu
 cd "$(dirname "$0")/.."
-# the large meshes (nefertiti, armadillo_tet_461k, ...) are not in the repository
-CGOGN_LARGE_DATA_DIR=${CGOGN_LARGE_DATA_DIR:-$(pwd)/../shared/data}
-export CGOGN_LARGE_DATA_DIR
+# the large meshes (nefertiti, armadillo_tet_461k, ...) are not in the
+# repository: --input=data needs CGOGN_LARGE_DATA_DIR (it names a missing
+# mesh), --input=generated and --input=small need nothing
 BUILD=${BUILD:-build/release}
 OUT=${OUT:-bench/results}
 BIN="$BUILD/bench/bench_suite"

@@ -32,7 +32,7 @@
 //                one dependent load per step around a vertex (phi1 of d ^ 1)
 //                instead of two (phi2, then phi1), as a half-edge structure
 // Same input as bench_suite (--input=data|generated|small); the numbers are
-// in bench/README.md.
+// in docs/performance.md.
 #include <cgogn/core.h>
 #include <cgogn/geometry/types/vector_traits.h>
 

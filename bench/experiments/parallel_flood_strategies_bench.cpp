@@ -1,6 +1,6 @@
 // Strategies for traversing the cells of a flooded, non-indexed orbit (3-D
 // vertices, volumes) in parallel, side by side on one map, to justify the one
-// parallel_foreach_cell uses (bench/README.md, "Parallel"). Each variant
+// parallel_foreach_cell uses (docs/performance.md, "Parallel traversals of flooded orbits"). Each variant
 // reports every cell once (checked against foreach_cell before timing) with a
 // trivial callable, so the traversal itself is measured.
 // - seq:        foreach_cell (one mark for the traversal and its floods)

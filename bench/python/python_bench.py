@@ -19,7 +19,7 @@ import time
 
 import numpy as np
 
-root = pathlib.Path(__file__).resolve().parents[1]
+root = pathlib.Path(__file__).resolve().parents[2]
 build = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else root / "build" / "release"
 sys.path.insert(0, str(build / "python"))
 import cgogn  # noqa: E402
