@@ -5,7 +5,10 @@
 
 #include "py_map.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <pybind11/stl.h>
 
 namespace cgogn::python
@@ -239,29 +242,120 @@ py::tuple faces_csr(MAP& m)
 	return csr(std::move(offsets), std::move(indices));
 }
 
+// Writes to `out` the rows of the triangles whose smallest dart lies in
+// [begin, end), in dart order: each triangle once, found at its smallest dart
+// without marks (the order foreach_cell uses when faces are not indexed).
+// Returns the number of values written, INVALID_INDEX when a face of that
+// range is not a triangle. `out` holds room for 3 values per dart of the range.
+uint32 triangle_rows(const CMap2& m, uint32 begin, uint32 end, uint32* out)
+{
+	using Vertex = CMap2::Vertex;
+	const AttributeContainer& darts = container_of<Orbit::DART>(m);
+	uint32* o = out;
+	for (uint32 i = begin; i < end; ++i)
+	{
+		if (!darts.is_live(i))
+			continue;
+		const Dart d(i);
+		if (is_boundary(m, d))
+			continue;
+		const Dart e = phi1(m, d);
+		if (e.index < i)
+			continue;
+		const Dart g = phi1(m, e);
+		if (g.index < i)
+			continue;
+		if (e == d || phi1(m, g) != d) // a face of 1, 2 or more than 3 edges
+			return INVALID_INDEX;
+		o[0] = index_of(m, Vertex(d));
+		o[1] = index_of(m, Vertex(e));
+		o[2] = index_of(m, Vertex(g));
+		o += 3;
+	}
+	return uint32(o - out);
+}
+
+// The triangle rows of a surface whose faces are not indexed, or nothing when
+// a face is not a triangle. The dart lines are cut into one range per worker
+// of the pool, each scanned into its own uninitialized buffer (the first one
+// is the result); the others' rows are then appended in range order.
+std::optional<std::vector<uint32>> unindexed_triangles(const CMap2& m)
+{
+	const uint32 end = container_of<Orbit::DART>(m).end_index();
+	const uint32 parts = end < (1u << 16) || detail::run_sequentially() ? 1u : thread_pool()->nb_workers();
+	std::vector<uint32> first;
+	std::vector<std::unique_ptr<uint32[]>> others(parts);
+	std::vector<uint32> written(parts, 0);
+	const auto range = [&](uint32 k) {
+		return std::pair(uint32(uint64(end) * k / parts), uint32(uint64(end) * (k + 1) / parts));
+	};
+	// 3 values per triangle at most, each triangle counted at one dart
+	first.resize(std::size_t(end)); // all the triangles fit: 3 values per 3 darts
+	for (uint32 k = 1; k < parts; ++k)
+	{
+		const auto [b, e] = range(k);
+		others[k].reset(new uint32[std::min<uint64>(3 * uint64(e - b), end)]);
+	}
+	const auto scan = [&](uint32 kb, uint32 ke) {
+		for (uint32 k = kb; k < ke; ++k)
+		{
+			const auto [b, e] = range(k);
+			written[k] = triangle_rows(m, b, e, k == 0 ? first.data() : others[k].get());
+		}
+	};
+	if (parts == 1)
+		scan(0, 1);
+	else
+		detail::parallel_for_chunks(parts, 1, detail::ChunkBody(scan));
+	if (std::find(written.begin(), written.end(), INVALID_INDEX) != written.end())
+		return std::nullopt;
+	std::size_t size = written[0];
+	for (uint32 k = 1; k < parts; ++k)
+	{
+		std::copy(others[k].get(), others[k].get() + written[k], first.begin() + std::ptrdiff_t(size));
+		size += written[k];
+	}
+	first.resize(size);
+	return first;
+}
+
 // (F, 3) array when every face is a triangle.
 template <typename MAP>
 py::array_t<uint32> triangles(MAP& m)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Face = typename mesh_traits<MAP>::Face;
 	std::vector<uint32> out;
-	out.reserve(nb_darts(m));
 	bool polygons = false;
-	foreach_face_dart(m, [&](const Dart d) {
-		const Dart e = phi1(m, d), g = phi1(m, e);
-		if (phi1(m, g) != d)
+	if constexpr (MAP::dimension == 2)
+	{
+		if (!is_indexed<Face>(m))
 		{
-			polygons = true;
-			return false;
+			auto rows = unindexed_triangles(m);
+			polygons = !rows;
+			if (rows)
+				out = std::move(*rows);
 		}
-		if constexpr (MAP::dimension == 3)
-			if (!is_boundary(m, phi3(m, d)))
-				return true;
-		out.push_back(index_of(m, Vertex(d)));
-		out.push_back(index_of(m, Vertex(e)));
-		out.push_back(index_of(m, Vertex(g)));
-		return true;
-	});
+	}
+	if (out.empty() && !polygons)
+	{
+		out.reserve(nb_darts(m));
+		foreach_face_dart(m, [&](const Dart d) {
+			const Dart e = phi1(m, d), g = phi1(m, e);
+			if (e == d || phi1(m, g) != d)
+			{
+				polygons = true;
+				return false;
+			}
+			if constexpr (MAP::dimension == 3)
+				if (!is_boundary(m, phi3(m, d)))
+					return true;
+			out.push_back(index_of(m, Vertex(d)));
+			out.push_back(index_of(m, Vertex(e)));
+			out.push_back(index_of(m, Vertex(g)));
+			return true;
+		});
+	}
 	if (polygons)
 		throw py::value_error("the mesh has faces that are not triangles: use faces_csr()");
 	const py::ssize_t rows = py::ssize_t(out.size() / 3);
