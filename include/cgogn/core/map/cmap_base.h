@@ -84,8 +84,9 @@ private:
 	MarkAttribute* boundary_ = nullptr;
 	/// Number of live darts carrying the boundary mark (kept by
 	/// detail::set_boundary and remove_dart): a map without boundary answers
-	/// is_incident_to_boundary in O(1).
-	uint32 nb_boundary_darts_ = 0;
+	/// is_incident_to_boundary in O(1). Only the friend detail::MapMembers
+	/// reaches it, a use clang's -Wunused-private-field does not see.
+	[[maybe_unused]] uint32 nb_boundary_darts_ = 0;
 	/// Quick incidence caches (see IncidenceCache); empty unless enabled.
 	IncidenceTables incidence_tables_;
 };
