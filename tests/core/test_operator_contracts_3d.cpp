@@ -94,6 +94,7 @@ TEST(OperatorContracts3, EveryOperatorDropsIncidenceCaches)
 			 const Dart d = all<Face>(m)[0].dart;
 			 cut_edge(m, Edge(d));
 			 VW::build(m);
+			 ASSERT_TRUE(can_cut_face(m, d, phi<1, 1>(m, d)));
 			 cut_face(m, d, phi<1, 1>(m, d));
 		 }},
 		{"cut_volume",
@@ -106,6 +107,8 @@ TEST(OperatorContracts3, EveryOperatorDropsIncidenceCaches)
 		{"merge_incident_faces",
 		 [](CMap3& m) {
 			 const Dart d = all<Face>(m)[0].dart;
+			 cut_edge(m, Edge(d)); // a quad: d and phi<1, 1>(d) are opposite corners
+			 ASSERT_TRUE(can_cut_face(m, d, phi<1, 1>(m, d)));
 			 const Edge e = cut_face(m, d, phi<1, 1>(m, d));
 			 VW::build(m);
 			 merge_incident_faces(m, e);
