@@ -107,7 +107,7 @@ struct State
 		using Vertex = typename mesh_traits<MAP>::Vertex;
 		darts = nb_darts(m);
 		vertices = nb_cells<Vertex>(m);
-		for (const auto& c : cgogn::detail::cells_of(m)) // every orbit's container
+		for (const auto& c : cgogn::detail::state_of(m).cells) // every orbit's container
 			if (c != nullptr)
 				for (const auto& a : c->attributes())
 					attributes.push_back(a->name() + ":" + a->type().name());

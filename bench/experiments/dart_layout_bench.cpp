@@ -101,9 +101,9 @@ struct Layouts
 		add_attribute<Vec3, Face>(map, "normal"); // indexes faces, as the suite's map
 		for (uint32 i = 0; i < s.nb_vertices; ++i)
 			(*position)[offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
-		const uint32 nd = cgogn::detail::darts_of(map)->end_index();
-		const AttributeArray<uint32>& vidx = *cgogn::detail::cell_index_of(map)[orbit_index(Orbit::PHI21)];
-		const AttributeArray<uint32>& fidx = *cgogn::detail::cell_index_of(map)[orbit_index(Orbit::PHI1)];
+		const uint32 nd = cgogn::detail::state_of(map).darts->end_index();
+		const AttributeArray<uint32>& vidx = *cgogn::detail::state_of(map).cell_index[orbit_index(Orbit::PHI21)];
+		const AttributeArray<uint32>& fidx = *cgogn::detail::state_of(map).cell_index[orbit_index(Orbit::PHI1)];
 		auto& [phi1, phi2, vertex, boundary_bits] = plain;
 		phi1.resize(nd);
 		phi2.resize(nd);
@@ -113,15 +113,15 @@ struct Layouts
 		links.resize(nd);
 		for (uint32 d = 0; d < nd; ++d)
 		{
-			phi1[d] = (*cgogn::detail::phi1_of(map))[d];
-			phi2[d] = (*cgogn::detail::phi2_of(map))[d];
+			phi1[d] = (*cgogn::detail::state_of(map).phi1)[d];
+			phi2[d] = (*cgogn::detail::state_of(map).phi2)[d];
 			vertex[d] = vidx[d];
 			if (is_boundary(map, Dart(d)))
 				boundary_bits[d >> 6] |= uint64(1) << (d & 63u);
 			records[d] = {phi1[d], phi2[d], vertex[d], fidx[d]};
 			links[d] = {phi1[d], phi2[d]};
 		}
-		const AttributeContainer& vertices = *cgogn::detail::cells_of(map)[orbit_index(Orbit::PHI21)];
+		const AttributeContainer& vertices = *cgogn::detail::state_of(map).cells[orbit_index(Orbit::PHI21)];
 		nb_vertices = vertices.end_index();
 		vertex_dart.resize(nb_vertices);
 		initial.resize(nb_vertices);
@@ -523,7 +523,7 @@ void lib_access(benchmark::State& state)
 	run(
 		state, l,
 		[&] {
-			l.smooth(LibAccess{m, *l.position, *cgogn::detail::cell_index_of(m)[orbit_index(Orbit::PHI21)]});
+			l.smooth(LibAccess{m, *l.position, *cgogn::detail::state_of(m).cell_index[orbit_index(Orbit::PHI21)]});
 		},
 		*l.position);
 }
@@ -535,9 +535,9 @@ void lib_memory(benchmark::State& state)
 	run(
 		state, l,
 		[&] {
-			l.smooth(RangeCheck{{&(*cgogn::detail::phi1_of(m))[0], lim},
-								{&(*cgogn::detail::phi2_of(m))[0], lim},
-								{&(*cgogn::detail::cell_index_of(m)[orbit_index(Orbit::PHI21)])[0], lim},
+			l.smooth(RangeCheck{{&(*cgogn::detail::state_of(m).phi1)[0], lim},
+								{&(*cgogn::detail::state_of(m).phi2)[0], lim},
+								{&(*cgogn::detail::state_of(m).cell_index[orbit_index(Orbit::PHI21)])[0], lim},
 								{l.plain.boundary_bits.data(), lim},
 								{&(*l.position)[0], lim}});
 		},

@@ -62,8 +62,8 @@ CMap3& volume_map()
 				map, cgogn_test_data::path(std::string("volume/") + (which == "elephant" ? "elephant_hex_110k.mesh"
 																						 : "armadillo_tet_461k.mesh")));
 		// the non-indexed path for vertices: drop the index the reader made
-		AttributeArray<uint32>*& idx = cgogn::detail::cell_index_of(map)[orbit_index(Orbit::PHI21_PHI31)];
-		cgogn::detail::darts_of(map)->remove_attribute(idx);
+		AttributeArray<uint32>*& idx = cgogn::detail::state_of(map).cell_index[orbit_index(Orbit::PHI21_PHI31)];
+		cgogn::detail::state_of(map).darts->remove_attribute(idx);
 		idx = nullptr;
 		return map;
 	}();
@@ -76,9 +76,9 @@ constexpr uint32 GRAIN = detail::PARALLEL_DART_BLOCKS_GRAIN;
 template <typename CELL, typename FUNC>
 void per_chunk(const CMap3& m, const FUNC& f)
 {
-	const uint32 end = cgogn::detail::darts_of(m)->end_index();
-	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
-	MarkAttribute* seen = cgogn::detail::darts_of(m)->acquire_mark();
+	const uint32 end = cgogn::detail::state_of(m).darts->end_index();
+	const AttributeArray<uint32>& key = cgogn::detail::state_of(m).darts->key();
+	MarkAttribute* seen = cgogn::detail::state_of(m).darts->acquire_mark();
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
 									const uint32 b = bb * 64, e = std::min(be * 64, end);
 									for (uint32 i = b; i < e; ++i)
@@ -98,7 +98,7 @@ void per_chunk(const CMap3& m, const FUNC& f)
 									for (uint32 i = b; i < e; ++i)
 										seen->reset(i);
 								}));
-	cgogn::detail::darts_of(m)->release_mark(seen);
+	cgogn::detail::state_of(m).darts->release_mark(seen);
 }
 
 struct alignas(64) Worker
@@ -111,15 +111,15 @@ struct alignas(64) Worker
 template <typename CELL, typename FUNC>
 void per_worker(const CMap3& m, const FUNC& f)
 {
-	const uint32 end = cgogn::detail::darts_of(m)->end_index();
-	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
+	const uint32 end = cgogn::detail::state_of(m).darts->end_index();
+	const AttributeArray<uint32>& key = cgogn::detail::state_of(m).darts->key();
 	std::vector<Worker> workers(thread_pool()->nb_workers());
 	detail::parallel_for_chunks((end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
 									Worker& w = workers[current_thread_index()];
 									if (w.flooded == nullptr)
 									{
-										w.flooded = cgogn::detail::darts_of(m)->acquire_mark();
-										w.owner = cgogn::detail::darts_of(m)->acquire_mark();
+										w.flooded = cgogn::detail::state_of(m).darts->acquire_mark();
+										w.owner = cgogn::detail::state_of(m).darts->acquire_mark();
 									}
 									for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
 									{
@@ -148,22 +148,22 @@ void per_worker(const CMap3& m, const FUNC& f)
 			if (mark != nullptr)
 			{
 				mark->clear_all();
-				cgogn::detail::darts_of(m)->release_mark(mark);
+				cgogn::detail::state_of(m).darts->release_mark(mark);
 			}
 }
 
 template <typename CELL, typename FUNC>
 void claim_all(const CMap3& m, const FUNC& f)
 {
-	const uint32 end = cgogn::detail::darts_of(m)->end_index();
-	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
+	const uint32 end = cgogn::detail::state_of(m).darts->end_index();
+	const AttributeArray<uint32>& key = cgogn::detail::state_of(m).darts->key();
 	std::vector<Worker> workers(thread_pool()->nb_workers());
-	MarkAttribute* claimed = cgogn::detail::darts_of(m)->acquire_mark();
+	MarkAttribute* claimed = cgogn::detail::state_of(m).darts->acquire_mark();
 	detail::parallel_for_chunks(
 		(end + 63) / 64, GRAIN, Chunk([&](uint32 bb, uint32 be) {
 			Worker& w = workers[current_thread_index()];
 			if (w.flooded == nullptr)
-				w.flooded = cgogn::detail::darts_of(m)->acquire_mark();
+				w.flooded = cgogn::detail::state_of(m).darts->acquire_mark();
 			for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
 			{
 				if (key[i] == INVALID_INDEX || claimed->atomic_test(i) || is_boundary(m, Dart(i)))
@@ -183,20 +183,20 @@ void claim_all(const CMap3& m, const FUNC& f)
 			}
 		}));
 	claimed->clear_all();
-	cgogn::detail::darts_of(m)->release_mark(claimed);
+	cgogn::detail::state_of(m).darts->release_mark(claimed);
 	for (Worker& w : workers)
 		if (w.flooded != nullptr)
 		{
 			w.flooded->clear_all();
-			cgogn::detail::darts_of(m)->release_mark(w.flooded);
+			cgogn::detail::state_of(m).darts->release_mark(w.flooded);
 		}
 }
 
 template <typename CELL, typename FUNC>
 void union_find(const CMap3& m, const FUNC& f)
 {
-	const uint32 end = cgogn::detail::darts_of(m)->end_index();
-	const AttributeArray<uint32>& key = cgogn::detail::darts_of(m)->key();
+	const uint32 end = cgogn::detail::state_of(m).darts->end_index();
+	const AttributeArray<uint32>& key = cgogn::detail::state_of(m).darts->key();
 	// a dart's rank: non-boundary darts first, then by index
 	auto rank = [&](uint32 d) { return is_boundary(m, Dart(d)) ? d + 0x80000000u : d; };
 	std::unique_ptr<std::atomic<uint32>[]> parent(new std::atomic<uint32>[end]);

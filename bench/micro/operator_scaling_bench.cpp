@@ -73,16 +73,16 @@ constexpr uint32 WINDOW = 20'000;
 template <typename MAP, typename P>
 Dart random_dart_where(const MAP& m, std::mt19937& rng, const P& wanted)
 {
-	uint32 window = std::min(WINDOW, cgogn::detail::darts_of(m)->end_index());
+	uint32 window = std::min(WINDOW, cgogn::detail::state_of(m).darts->end_index());
 	for (uint32 misses = 0;; ++misses)
 	{
 		if (misses == 1000)
 		{
-			window = std::min(2 * window, cgogn::detail::darts_of(m)->end_index());
+			window = std::min(2 * window, cgogn::detail::state_of(m).darts->end_index());
 			misses = 0;
 		}
 		const uint32 i = uint32(rng() % window);
-		if (cgogn::detail::darts_of(m)->is_live(i) && wanted(Dart(i)))
+		if (cgogn::detail::state_of(m).darts->is_live(i) && wanted(Dart(i)))
 			return Dart(i);
 	}
 }

@@ -297,12 +297,12 @@ void volume_sizes_unindexed(benchmark::State& state, Mode mode)
 struct HideVertexIndex
 {
 	explicit HideVertexIndex(CMap3& m)
-		: m_(m), idx_(std::exchange(cgogn::detail::cell_index_of(m)[orbit_index(CMap3::Vertex::ORBIT)], nullptr))
+		: m_(m), idx_(std::exchange(cgogn::detail::state_of(m).cell_index[orbit_index(CMap3::Vertex::ORBIT)], nullptr))
 	{
 	}
 	~HideVertexIndex()
 	{
-		cgogn::detail::cell_index_of(m_)[orbit_index(CMap3::Vertex::ORBIT)] = idx_;
+		cgogn::detail::state_of(m_).cell_index[orbit_index(CMap3::Vertex::ORBIT)] = idx_;
 	}
 	HideVertexIndex(const HideVertexIndex&) = delete;
 	HideVertexIndex& operator=(const HideVertexIndex&) = delete;

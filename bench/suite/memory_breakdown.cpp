@@ -29,9 +29,9 @@ void print_map(const CMapBase& m, double per)
 		std::printf("    %-24s %8.2f B/unit (attributes + persistent marks + free list)\n", "container total",
 					double(c.memory_bytes()) / per);
 	};
-	print_container("darts", *cgogn::detail::darts_of(m));
+	print_container("darts", *cgogn::detail::state_of(m).darts);
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
-		print_container(orbit_name(Orbit(o)).data(), *cgogn::detail::cells_of(m)[o]);
+		print_container(orbit_name(Orbit(o)).data(), *cgogn::detail::state_of(m).cells[o]);
 }
 
 } // namespace

@@ -289,12 +289,11 @@ std::optional<std::vector<uint32>> unindexed_triangles(const CMap2& m)
 	const auto range = [&](uint32 k) {
 		return std::pair(uint32(uint64(end) * k / parts), uint32(uint64(end) * (k + 1) / parts));
 	};
-	// 3 values per triangle at most, each triangle counted at one dart
 	first.resize(std::size_t(end)); // all the triangles fit: 3 values per 3 darts
 	for (uint32 k = 1; k < parts; ++k)
 	{
 		const auto [b, e] = range(k);
-		others[k].reset(new uint32[std::min<uint64>(3 * uint64(e - b), end)]);
+		others[k].reset(new uint32[std::min<uint64>(3 * uint64(e - b), end)]); // 3 values per dart at most
 	}
 	const auto scan = [&](uint32 kb, uint32 ke) {
 		for (uint32 k = kb; k < ke; ++k)
@@ -319,50 +318,50 @@ std::optional<std::vector<uint32>> unindexed_triangles(const CMap2& m)
 	return first;
 }
 
+// The triangle rows of the faces foreach_face_dart visits (surfaces), or of
+// the boundary faces (volumes), or nothing when one of them is not a triangle.
+template <typename MAP>
+std::optional<std::vector<uint32>> walked_triangles(const MAP& m)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	std::vector<uint32> out;
+	out.reserve(nb_darts(m));
+	bool polygons = false;
+	foreach_face_dart(m, [&](const Dart d) {
+		const Dart e = phi1(m, d), g = phi1(m, e);
+		if (e == d || phi1(m, g) != d)
+		{
+			polygons = true;
+			return false;
+		}
+		if constexpr (MAP::dimension == 3)
+			if (!is_boundary(m, phi3(m, d)))
+				return true;
+		out.insert(out.end(), {index_of(m, Vertex(d)), index_of(m, Vertex(e)), index_of(m, Vertex(g))});
+		return true;
+	});
+	if (polygons)
+		return std::nullopt;
+	return out;
+}
+
 // (F, 3) array when every face is a triangle.
 template <typename MAP>
 py::array_t<uint32> triangles(MAP& m)
 {
-	using Vertex = typename mesh_traits<MAP>::Vertex;
 	using Face = typename mesh_traits<MAP>::Face;
-	std::vector<uint32> out;
-	bool polygons = false;
+	std::optional<std::vector<uint32>> rows;
 	if constexpr (MAP::dimension == 2)
-	{
-		if (!is_indexed<Face>(m))
-		{
-			auto rows = unindexed_triangles(m);
-			polygons = !rows;
-			if (rows)
-				out = std::move(*rows);
-		}
-	}
-	if (out.empty() && !polygons)
-	{
-		out.reserve(nb_darts(m));
-		foreach_face_dart(m, [&](const Dart d) {
-			const Dart e = phi1(m, d), g = phi1(m, e);
-			if (e == d || phi1(m, g) != d)
-			{
-				polygons = true;
-				return false;
-			}
-			if constexpr (MAP::dimension == 3)
-				if (!is_boundary(m, phi3(m, d)))
-					return true;
-			out.push_back(index_of(m, Vertex(d)));
-			out.push_back(index_of(m, Vertex(e)));
-			out.push_back(index_of(m, Vertex(g)));
-			return true;
-		});
-	}
-	if (polygons)
+		rows = is_indexed<Face>(m) ? walked_triangles(m) : unindexed_triangles(m);
+	else
+		rows = walked_triangles(m);
+	if (!rows)
 		throw py::value_error("the mesh has faces that are not triangles: use faces_csr()");
-	const py::ssize_t rows = py::ssize_t(out.size() / 3);
-	auto* heap = new std::vector<uint32>(std::move(out));
+	const py::ssize_t nb_rows = py::ssize_t(rows->size() / 3);
+	auto* heap = new std::vector<uint32>(std::move(*rows));
 	py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<uint32>*>(p); });
-	return py::array_t<uint32>({rows, py::ssize_t(3)}, {py::ssize_t(3 * sizeof(uint32)), py::ssize_t(sizeof(uint32))},
-							   heap->data(), owner);
+	return py::array_t<uint32>({nb_rows, py::ssize_t(3)},
+							   {py::ssize_t(3 * sizeof(uint32)), py::ssize_t(sizeof(uint32))}, heap->data(), owner);
 }
 
 py::dict integrity_report(const IntegrityReport& r)

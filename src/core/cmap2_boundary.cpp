@@ -28,8 +28,8 @@ constexpr Orbit W = Orbit::PHI1_PHI2;
 void reassign_vertex_lines(CMap2& m, const std::vector<Dart>& darts, Dart d1, std::initializer_list<uint32> lines_d1,
 						   Dart d2, std::initializer_list<uint32> lines_d2)
 {
-	const AttributeArray<uint32>& idx = *detail::cell_index_of(m)[orbit_index(V)];
-	AttributeContainer& vc = *detail::cells_of(m)[orbit_index(V)];
+	const AttributeArray<uint32>& idx = *detail::state_of(m).cell_index[orbit_index(V)];
+	AttributeContainer& vc = *detail::state_of(m).cells[orbit_index(V)];
 	std::vector<uint32> olds;
 	for (Dart x : darts)
 		if (idx[x.index] != INVALID_INDEX)
@@ -163,7 +163,7 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 	const uint32 w1 = detail::index_or_invalid<W>(m, d1), w2 = detail::index_or_invalid<W>(m, d2);
 	// the darts of the four end vertices: at a pinched vertex, the sew can
 	// split a vertex as well as merge two
-	const bool vertices_indexed = set_indices && detail::cell_index_of(m)[orbit_index(V)] != nullptr;
+	const bool vertices_indexed = set_indices && detail::state_of(m).cell_index[orbit_index(V)] != nullptr;
 	std::vector<Dart> around;
 	if (vertices_indexed)
 		for (Dart d : {d1, d2, b1, b2})
@@ -191,7 +191,7 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 		detail::set_representative<E>(m, d1);
 		if (vertices_indexed)
 			reassign_vertex_lines(m, around, d1, {a1, a2}, d2, {c1, c2});
-		if (detail::cell_index_of(m)[orbit_index(W)] != nullptr)
+		if (detail::state_of(m).cell_index[orbit_index(W)] != nullptr)
 		{
 			if (w2 != w1)
 			{
@@ -200,7 +200,7 @@ void sew_faces(CMap2& m, CMap2::Edge e1, CMap2::Edge e2, bool set_indices)
 				for (Dart s : {d2, next1, next2})
 					if (detail::index_or_invalid<W>(m, s) == w2)
 						detail::relabel_part<CMap2::Volume>(m, s, w2, w1);
-				detail::cells_of(m)[orbit_index(W)]->release_line(w2);
+				detail::state_of(m).cells[orbit_index(W)]->release_line(w2);
 			}
 			detail::split_component_lines<CMap2::Volume>(m, w1, {d1, next1, next2});
 		}
@@ -269,7 +269,7 @@ void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices)
 	detail::index_new_cell(m, CMap2::Edge(d2));
 	// an end vertex already on the boundary is now two vertices: the part
 	// without d (resp. d2) gets a new line
-	if (detail::cell_index_of(m)[orbit_index(V)] != nullptr)
+	if (detail::state_of(m).cell_index[orbit_index(V)] != nullptr)
 	{
 		if (out_a.is_valid() && !same_orbit(m, CMap2::Vertex(d), CMap2::Vertex(b2)))
 		{
@@ -283,7 +283,7 @@ void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices)
 			detail::new_index(m, CMap2::Vertex(b1));
 		}
 	}
-	if (detail::cell_index_of(m)[orbit_index(W)] != nullptr)
+	if (detail::state_of(m).cell_index[orbit_index(W)] != nullptr)
 		detail::split_component_lines<CMap2::Volume>(m, detail::index_or_invalid<W>(m, d), {d, d2});
 }
 

@@ -55,7 +55,7 @@ bool adjacent_or_same_by_topology(const CMap2& m, CMap2::Vertex c, CMap2::Vertex
 // are wrong (changed behind the library's back) are caught in debug builds.
 bool adjacent_or_same(const CMap2& m, CMap2::Vertex c, CMap2::Vertex y)
 {
-	const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(V)];
+	const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(V)];
 	const uint32 iy = idx ? (*idx)[y.dart.index] : INVALID_INDEX;
 	if (iy == INVALID_INDEX)
 		return adjacent_or_same_by_topology(m, c, y);
@@ -167,7 +167,7 @@ void hand_over_representative(CMap2& m, Dart from, Dart to)
 	const uint32 line = detail::index_or_invalid<O>(m, from);
 	if (line != INVALID_INDEX)
 	{
-		uint32& key = detail::cells_of(m)[orbit_index(O)]->key()[line];
+		uint32& key = detail::state_of(m).cells[orbit_index(O)]->key()[line];
 		if (key == from.index)
 			key = to.index;
 	}
@@ -292,7 +292,7 @@ CMap2::Vertex collapse_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 		detail::set_representative<V>(m, keep);
 		detail::release_index<V>(m, a_line);
 	}
-	else if (set_indices && detail::cell_index_of(m)[orbit_index(V)] != nullptr)
+	else if (set_indices && detail::state_of(m).cell_index[orbit_index(V)] != nullptr)
 		detail::merge_cell_indices(m, CMap2::Vertex(keep), b_line, a_line);
 	return CMap2::Vertex(keep);
 }

@@ -93,7 +93,7 @@ CMap2::Edge cut_face(CMap2& m, CMap2::Vertex v1, CMap2::Vertex v2, bool set_indi
 		detail::index_new_cell(m, CMap2::Edge(x));
 		detail::copy_dart_index<F>(m, x, d);
 		detail::set_representative<F>(m, d);
-		if (detail::cell_index_of(m)[orbit_index(F)] != nullptr)
+		if (detail::state_of(m).cell_index[orbit_index(F)] != nullptr)
 			detail::new_index(m, CMap2::Face(y));
 	}
 	return CMap2::Edge(y);
@@ -255,7 +255,7 @@ CMap2::Edge split_vertex(CMap2& m, Dart d1, Dart d2, bool set_indices)
 		const uint32 old = detail::index_or_invalid<V>(m, d2);
 		detail::set_dart_index<V>(m, x, old);
 		detail::set_representative<V>(m, d2);
-		if (detail::cell_index_of(m)[orbit_index(V)] != nullptr)
+		if (detail::state_of(m).cell_index[orbit_index(V)] != nullptr)
 			detail::new_index(m, CMap2::Vertex(d1));
 	}
 	return CMap2::Edge(x);
@@ -298,10 +298,10 @@ CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices)
 		detail::copy_dart_index<F>(m, to_centre(0), side(0));
 		detail::copy_dart_index<F>(m, from_centre(0), side(0));
 		detail::set_representative<F>(m, side(0));
-		if (detail::cell_index_of(m)[orbit_index(F)] != nullptr)
+		if (detail::state_of(m).cell_index[orbit_index(F)] != nullptr)
 			for (std::size_t i = 1; i < k; ++i)
 			{
-				const uint32 line = detail::cells_of(m)[orbit_index(F)]->new_line(side(i).index);
+				const uint32 line = detail::state_of(m).cells[orbit_index(F)]->new_line(side(i).index);
 				detail::set_dart_index<F>(m, side(i), line);
 				detail::set_dart_index<F>(m, to_centre(i), line);
 				detail::set_dart_index<F>(m, from_centre(i), line);
@@ -374,7 +374,7 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 				vertices.push_back(x);
 			}
 	}
-	if (set_indices && detail::cell_index_of(m)[orbit_index(V)] != nullptr)
+	if (set_indices && detail::state_of(m).cell_index[orbit_index(V)] != nullptr)
 	{
 		// each vertex claims the line its darts carry, a second part of the
 		// same line gets a new one; lines of vertices left without darts are
@@ -419,7 +419,7 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 			boundary_only.push_back(x);
 		}
 	}
-	if (set_indices && detail::cell_index_of(m)[orbit_index(W)] != nullptr && w != INVALID_INDEX)
+	if (set_indices && detail::state_of(m).cell_index[orbit_index(W)] != nullptr && w != INVALID_INDEX)
 	{
 		if (seeds.empty())
 			detail::release_index<W>(m, w);

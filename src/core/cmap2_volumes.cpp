@@ -92,10 +92,10 @@ void remove_volume(CMap2& m, CMap2::Volume w)
 	foreach_dart_of_orbit(m, w, [&](Dart d) { darts.push_back(d); });
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		const AttributeArray<uint32>* idx = detail::cell_index_of(m)[o];
+		const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[o];
 		if (idx == nullptr)
 			continue;
-		AttributeContainer& c = *detail::cells_of(m)[o];
+		AttributeContainer& c = *detail::state_of(m).cells[o];
 		for (Dart d : darts)
 		{
 			const uint32 i = (*idx)[d.index];
@@ -110,13 +110,13 @@ void remove_volume(CMap2& m, CMap2::Volume w)
 void reverse_orientation(CMap2& m)
 {
 	// phi1 becomes phi_1; a dart now starts where its old phi1 started
-	std::vector<uint32> prev(detail::darts_of(m)->end_index(), INVALID_INDEX);
+	std::vector<uint32> prev(detail::state_of(m).darts->end_index(), INVALID_INDEX);
 	foreach_dart(m, [&](Dart d) { prev[phi1(m, d).index] = d.index; });
-	AttributeArray<uint32>* vidx = detail::cell_index_of(m)[orbit_index(V)];
+	AttributeArray<uint32>* vidx = detail::state_of(m).cell_index[orbit_index(V)];
 	std::vector<uint32> new_vertex;
 	if (vidx)
 	{
-		new_vertex.resize(detail::darts_of(m)->end_index());
+		new_vertex.resize(detail::state_of(m).darts->end_index());
 		foreach_dart(m, [&](Dart d) { new_vertex[d.index] = (*vidx)[phi1(m, d).index]; });
 	}
 	foreach_dart(m, [&](Dart d) { detail::set_phi1(m, d, Dart(prev[d.index])); });
@@ -124,7 +124,7 @@ void reverse_orientation(CMap2& m)
 	{
 		foreach_dart(m, [&](Dart d) { (*vidx)[d.index] = new_vertex[d.index]; });
 		// a representative now starts at its old end: its old predecessor starts at the vertex
-		AttributeContainer& vc = *detail::cells_of(m)[orbit_index(V)];
+		AttributeContainer& vc = *detail::state_of(m).cells[orbit_index(V)];
 		for (uint32 i = 0; i < vc.end_index(); ++i)
 			if (vc.is_live(i))
 				vc.key()[i] = phi1(m, Dart(vc.key()[i])).index;
@@ -139,13 +139,13 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 		(
 			[&] {
 				if constexpr (C::ORBIT != Orbit::DART)
-					if (detail::cell_index_of(other)[orbit_index(C::ORBIT)] != nullptr &&
-						detail::cell_index_of(m)[orbit_index(C::ORBIT)] == nullptr)
+					if (detail::state_of(other).cell_index[orbit_index(C::ORBIT)] != nullptr &&
+						detail::state_of(m).cell_index[orbit_index(C::ORBIT)] == nullptr)
 						index_cells<C>(m);
 			}(),
 			...);
 	}(static_cast<mesh_traits<CMap2>::Cells*>(nullptr));
-	std::vector<Dart> copy(detail::darts_of(other)->end_index());
+	std::vector<Dart> copy(detail::state_of(other).darts->end_index());
 	foreach_dart(other, [&](Dart d) { copy[d.index] = detail::add_dart(m); });
 	foreach_dart(other, [&](Dart d) {
 		const Dart c = copy[d.index];
@@ -169,24 +169,25 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 					target->copy_line_from(line_of(i), *a, i);
 		}
 	};
-	copy_attributes(*detail::darts_of(other), *detail::darts_of(m), [&](uint32 i) { return copy[i].index; });
+	copy_attributes(*detail::state_of(other).darts, *detail::state_of(m).darts,
+					[&](uint32 i) { return copy[i].index; });
 	// indexed orbits of other: one new line per line, written on the copied darts
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		const AttributeArray<uint32>* oidx = detail::cell_index_of(other)[o];
+		const AttributeArray<uint32>* oidx = detail::state_of(other).cell_index[o];
 		if (oidx == nullptr)
 			continue;
-		if (detail::cell_index_of(m)[o] == nullptr)
+		if (detail::state_of(m).cell_index[o] == nullptr)
 		{
-			detail::cell_index_of(m)[o] =
-				detail::darts_of(m)
-					->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX)
+			detail::state_of(m).cell_index[o] =
+				detail::state_of(m)
+					.darts->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX)
 					.get();
-			detail::cells_of(m)[o]->set_cell_index(detail::cell_index_of(m)[o]);
+			detail::state_of(m).cells[o]->set_cell_index(detail::state_of(m).cell_index[o]);
 		}
-		AttributeArray<uint32>& midx = *detail::cell_index_of(m)[o];
-		const AttributeContainer& oc = *detail::cells_of(other)[o];
-		AttributeContainer& mc = *detail::cells_of(m)[o];
+		AttributeArray<uint32>& midx = *detail::state_of(m).cell_index[o];
+		const AttributeContainer& oc = *detail::state_of(other).cells[o];
+		AttributeContainer& mc = *detail::state_of(m).cells[o];
 		std::vector<uint32> line(oc.end_index(), INVALID_INDEX);
 		for (uint32 i = 0; i < oc.end_index(); ++i)
 			if (oc.is_live(i))

@@ -47,7 +47,7 @@ Cavity::Cavity(CMap3& m, const std::vector<Dart>& volumes) : m_(m)
 				in.mark(d);
 				darts_.push_back(d);
 			});
-	const AttributeArray<uint32>* vidx = detail::cell_index_of(m)[orbit_index(Orbit::PHI21_PHI31)];
+	const AttributeArray<uint32>* vidx = detail::state_of(m).cell_index[orbit_index(Orbit::PHI21_PHI31)];
 	for (Dart d : darts_)
 	{
 		if (labels_.count(d.index))
@@ -242,7 +242,7 @@ std::vector<Dart> Cavity::fill(std::vector<std::array<uint32, 4>> tets, bool set
 	{
 		std::vector<Dart> region = created;
 		region.insert(region.end(), outer_darts.begin(), outer_darts.end());
-		if (AttributeArray<uint32>* vidx = detail::cell_index_of(m)[orbit_index(Orbit::PHI21_PHI31)])
+		if (AttributeArray<uint32>* vidx = detail::state_of(m).cell_index[orbit_index(Orbit::PHI21_PHI31)])
 		{
 			for (Dart d : created)
 				(*vidx)[d.index] = line_[find(origin[d.index])];

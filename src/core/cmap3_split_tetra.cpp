@@ -86,11 +86,11 @@ public:
 private:
 	AttributeArray<uint32>* index(Orbit o)
 	{
-		return detail::cell_index_of(m_)[orbit_index(o)];
+		return detail::state_of(m_).cell_index[orbit_index(o)];
 	}
 	uint32 new_line(Orbit o, Dart key)
 	{
-		return detail::cells_of(m_)[orbit_index(o)]->new_line(key.index);
+		return detail::state_of(m_).cells[orbit_index(o)]->new_line(key.index);
 	}
 	template <typename FUNC>
 	void for_new_darts(const FUNC& f)
@@ -166,7 +166,7 @@ private:
 		AttributeArray<uint32>* idx = index(Orbit::PHI1_PHI2);
 		if (idx == nullptr)
 			return;
-		AttributeContainer& cells = *detail::cells_of(m_)[orbit_index(Orbit::PHI1_PHI2)];
+		AttributeContainer& cells = *detail::state_of(m_).cells[orbit_index(Orbit::PHI1_PHI2)];
 		for (uint32 f = 0; f < 4; ++f)
 		{
 			uint32 l = f == 0 ? (*idx)[old_[0][0].index] : INVALID_INDEX;
@@ -187,7 +187,7 @@ private:
 	// keeps own's line when own is its representative, else gets a new one
 	uint32 keep_or_new(Orbit o, AttributeArray<uint32>& idx, Dart own)
 	{
-		AttributeContainer& cells = *detail::cells_of(m_)[orbit_index(o)];
+		AttributeContainer& cells = *detail::state_of(m_).cells[orbit_index(o)];
 		const uint32 l = idx[own.index];
 		if (l != INVALID_INDEX && cells.key()[l] == own.index)
 			return l;

@@ -151,8 +151,8 @@ void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 	for (std::size_t i = 0; i < parts.size(); ++i)
 		if (!parts[i].walked)
 			keeper = i;
-	AttributeContainer& cells = *detail::cells_of(m)[orbit_index(O)];
-	AttributeArray<uint32>& idx = *detail::cell_index_of(m)[orbit_index(O)];
+	AttributeContainer& cells = *detail::state_of(m).cells[orbit_index(O)];
+	AttributeArray<uint32>& idx = *detail::state_of(m).cell_index[orbit_index(O)];
 	cells.key()[line] = parts[keeper].seed.index;
 	for (std::size_t i = 0; i < parts.size(); ++i)
 		if (i != keeper)
@@ -170,7 +170,7 @@ void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 template <typename CELL, typename MAP>
 void relabel_part(MAP& m, Dart start, uint32 from, uint32 to)
 {
-	AttributeArray<uint32>& idx = *detail::cell_index_of(m)[orbit_index(CELL::ORBIT)];
+	AttributeArray<uint32>& idx = *detail::state_of(m).cell_index[orbit_index(CELL::ORBIT)];
 	std::vector<Dart> pending{start};
 	idx[start.index] = to;
 	std::uint64_t walked = 1;

@@ -18,7 +18,7 @@ void index_new_darts(MAP& m, const std::vector<Dart>& darts)
 	auto index_orbit = [&]<typename CELL>(CELL*) {
 		if constexpr (CELL::ORBIT != Orbit::DART)
 		{
-			const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(CELL::ORBIT)];
+			const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(CELL::ORBIT)];
 			if (idx == nullptr)
 				return;
 			for (Dart d : darts)
@@ -40,7 +40,7 @@ namespace cgogn::detail
 template <Orbit O>
 uint32 index_or_invalid(const CMapBase& m, Dart d)
 {
-	const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)];
+	const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)];
 	return idx ? (*idx)[d.index] : INVALID_INDEX;
 }
 
@@ -48,7 +48,7 @@ uint32 index_or_invalid(const CMapBase& m, Dart d)
 template <Orbit O>
 void copy_dart_index(CMapBase& m, Dart dst, Dart src)
 {
-	if (AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)])
+	if (AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)])
 		(*idx)[dst.index] = (*idx)[src.index];
 }
 
@@ -56,7 +56,7 @@ void copy_dart_index(CMapBase& m, Dart dst, Dart src)
 template <Orbit O>
 void set_dart_index(CMapBase& m, Dart d, uint32 i)
 {
-	if (AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)])
+	if (AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)])
 		(*idx)[d.index] = i;
 }
 
@@ -66,7 +66,7 @@ void set_dart_index(CMapBase& m, Dart d, uint32 i)
 template <typename MAP, Orbit O>
 void merge_cell_indices(MAP& m, Cell<O> merged, uint32 keep, uint32 other)
 {
-	if (detail::cell_index_of(m)[orbit_index(O)] == nullptr)
+	if (detail::state_of(m).cell_index[orbit_index(O)] == nullptr)
 		return;
 	if (keep == INVALID_INDEX)
 		std::swap(keep, other);
@@ -74,7 +74,7 @@ void merge_cell_indices(MAP& m, Cell<O> merged, uint32 keep, uint32 other)
 		return;
 	write_index(m, merged, keep);
 	if (other != INVALID_INDEX && other != keep)
-		detail::cells_of(m)[orbit_index(O)]->release_line(other);
+		detail::state_of(m).cells[orbit_index(O)]->release_line(other);
 }
 
 } // namespace cgogn::detail

@@ -69,24 +69,24 @@ void check_unused_lines(const AttributeContainer& c, Orbit o,
 template <typename MAP>
 void check_relations(const MAP& m, Checker& ck)
 {
-	const AttributeContainer& darts = *detail::darts_of(m);
+	const AttributeContainer& darts = *detail::state_of(m).darts;
 	check_container_free_list(darts, Orbit::DART, ck);
 	{
-		std::vector<const AttributeArray<uint32>*> per_dart(detail::relations_of(m).begin(),
-															detail::relations_of(m).end());
-		for (const AttributeArray<uint32>* idx : detail::cell_index_of(m))
+		std::vector<const AttributeArray<uint32>*> per_dart(detail::state_of(m).relations.begin(),
+															detail::state_of(m).relations.end());
+		for (const AttributeArray<uint32>* idx : detail::state_of(m).cell_index)
 			if (idx != nullptr)
 				per_dart.push_back(idx);
 		check_unused_lines(darts, Orbit::DART, per_dart, ck);
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
-			check_unused_lines(*detail::cells_of(m)[o], Orbit(o), {&detail::cells_of(m)[o]->key()}, ck);
+			check_unused_lines(*detail::state_of(m).cells[o], Orbit(o), {&detail::state_of(m).cells[o]->key()}, ck);
 	}
 	std::vector<uint8> phi1_preimages(darts.end_index(), 0);
 	bool relations_ok = true;
 	foreach_dart(m, [&](Dart d) {
-		for (std::size_t r = 0; r < detail::relations_of(m).size(); ++r)
+		for (std::size_t r = 0; r < detail::state_of(m).relations.size(); ++r)
 		{
-			const Dart e((*detail::relations_of(m)[r])[d.index]);
+			const Dart e((*detail::state_of(m).relations[r])[d.index]);
 			if (!is_dart_valid(m, e))
 			{
 				ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
@@ -106,7 +106,7 @@ void check_relations(const MAP& m, Checker& ck)
 				if (e == d)
 					ck.add(Kind::PhiFixedPoint, Orbit::DART, d.index, INVALID_INDEX,
 						   name + " has a fixed point: the map is not closed");
-				else if (Dart((*detail::relations_of(m)[r])[e.index]) != d)
+				else if (Dart((*detail::state_of(m).relations[r])[e.index]) != d)
 					ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX, name + " is not an involution");
 			}
 		}
@@ -148,9 +148,9 @@ void check_relations(const MAP& m, Checker& ck)
 			if (!is_boundary(m, d) && phi1(m, phi1(m, d)) == d)
 				ck.add(Kind::ShortFace, Orbit::PHI1, d.index, INVALID_INDEX, "a face has fewer than 3 edges");
 		});
-		if (marked != detail::nb_boundary_darts_of(m))
+		if (marked != detail::state_of(m).nb_boundary_darts)
 			ck.add(Kind::BoundaryCountWrong, Orbit::DART, INVALID_INDEX, INVALID_INDEX,
-				   "the map counts " + std::to_string(detail::nb_boundary_darts_of(m)) + " boundary darts, " +
+				   "the map counts " + std::to_string(detail::state_of(m).nb_boundary_darts) + " boundary darts, " +
 					   std::to_string(marked) + " are marked");
 	}
 }
@@ -196,10 +196,10 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 template <typename MAP, Orbit O>
 void check_orbit_indexing(const MAP& m, Checker& ck)
 {
-	const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)];
+	const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)];
 	if (idx == nullptr)
 		return;
-	const AttributeContainer& cells = *detail::cells_of(m)[orbit_index(O)];
+	const AttributeContainer& cells = *detail::state_of(m).cells[orbit_index(O)];
 	check_container_free_list(cells, O, ck);
 	std::vector<uint32> count(cells.end_index(), 0);
 	foreach_dart(m, [&](Dart d) {
@@ -249,15 +249,15 @@ void check_orbit_indexing(const MAP& m, Checker& ck)
 // Each quick incidence cache against the relation recomputed from the darts.
 void check_incidence_tables(const CMapBase& m, Checker& ck)
 {
-	for (const auto& t : detail::incidence_tables_of(m))
+	for (const auto& t : detail::state_of(m).incidence_tables)
 	{
-		const AttributeContainer& from = *detail::cells_of(m)[orbit_index(t->from)];
+		const AttributeContainer& from = *detail::state_of(m).cells[orbit_index(t->from)];
 		const std::string what =
 			std::string("incidence cache ") + std::string(orbit_name(t->from)) + " -> " +
 			std::string(orbit_name(t->to)) +
 			(t->through < NB_ORBITS ? std::string(" through ") + std::string(orbit_name(Orbit(t->through)))
 									: std::string());
-		if (detail::cell_index_of(m)[orbit_index(t->from)] == nullptr ||
+		if (detail::state_of(m).cell_index[orbit_index(t->from)] == nullptr ||
 			t->offsets.size() != std::size_t(from.end_index()) + 1)
 		{
 			ck.add(Kind::IncidenceCacheStale, t->from, INVALID_INDEX, INVALID_INDEX,

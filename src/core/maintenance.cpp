@@ -13,12 +13,12 @@ namespace
 // darts moved: relations and representative darts follow
 void remap_darts(CMapBase& m, const std::vector<uint32>& dart_map)
 {
-	const AttributeContainer& darts = *detail::darts_of(m);
-	for (AttributeArray<uint32>* r : detail::relations_of(m))
+	const AttributeContainer& darts = *detail::state_of(m).darts;
+	for (AttributeArray<uint32>* r : detail::state_of(m).relations)
 		for (uint32 i = 0; i < darts.end_index(); ++i)
 			if (darts.is_live(i))
 				(*r)[i] = dart_map[(*r)[i]];
-	for (auto& c : detail::cells_of(m))
+	for (auto& c : detail::state_of(m).cells)
 		for (uint32 i = 0; i < c->end_index(); ++i)
 			if (c->is_live(i))
 				c->key()[i] = dart_map[c->key()[i]];
@@ -27,10 +27,10 @@ void remap_darts(CMapBase& m, const std::vector<uint32>& dart_map)
 // lines of orbit o moved: dart indices follow
 void remap_cells(CMapBase& m, uint32 o, const std::vector<uint32>& line_map)
 {
-	AttributeArray<uint32>* idx = detail::cell_index_of(m)[o];
+	AttributeArray<uint32>* idx = detail::state_of(m).cell_index[o];
 	if (idx == nullptr)
 		return;
-	const AttributeContainer& darts = *detail::darts_of(m);
+	const AttributeContainer& darts = *detail::state_of(m).darts;
 	for (uint32 i = 0; i < darts.end_index(); ++i)
 		if (darts.is_live(i) && (*idx)[i] != INVALID_INDEX)
 			(*idx)[i] = line_map[(*idx)[i]];
@@ -70,16 +70,16 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 	dart_order.reserve(nb_darts(m));
 	for (const auto& [k, d] : vertices)
 		foreach_dart_of_orbit(m, Vertex(d), [&](Dart x) { dart_order.push_back(x.index); });
-	const uint32 nd = detail::darts_of(m)->end_index();
+	const uint32 nd = detail::state_of(m).darts->end_index();
 	const std::vector<uint32> dart_pos = positions_from_order(dart_order, nd);
-	detail::darts_of(m)->permute(dart_pos);
+	detail::state_of(m).darts->permute(dart_pos);
 	remap_darts(m, dart_pos);
 	// 2. cells: vertices in key order, other orbits by their representative's new place
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		if (detail::cell_index_of(m)[o] == nullptr)
+		if (detail::state_of(m).cell_index[o] == nullptr)
 			continue;
-		AttributeContainer& c = *detail::cells_of(m)[o];
+		AttributeContainer& c = *detail::state_of(m).cells[o];
 		std::vector<uint32> lines;
 		for (uint32 i = 0; i < c.end_index(); ++i)
 			if (c.is_live(i))
@@ -90,7 +90,7 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 			// vertices were listed in key order: the dart of rank r belongs to the r-th vertex
 			for (uint32 r = 0; r < vertices.size(); ++r)
 			{
-				const uint32 line = (*detail::cell_index_of(m)[o])[dart_pos[vertices[r].second.index]];
+				const uint32 line = (*detail::state_of(m).cell_index[o])[dart_pos[vertices[r].second.index]];
 				if (line != INVALID_INDEX)
 					rank[line] = r;
 			}
@@ -100,9 +100,9 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 		{
 			// the first dart of each cell in the new dart order
 			std::vector<uint32> first(c.end_index(), INVALID_INDEX);
-			const AttributeArray<uint32>& idx = *detail::cell_index_of(m)[o];
-			for (uint32 i = 0; i < detail::darts_of(m)->end_index(); ++i)
-				if (detail::darts_of(m)->is_live(i) && idx[i] != INVALID_INDEX)
+			const AttributeArray<uint32>& idx = *detail::state_of(m).cell_index[o];
+			for (uint32 i = 0; i < detail::state_of(m).darts->end_index(); ++i)
+				if (detail::state_of(m).darts->is_live(i) && idx[i] != INVALID_INDEX)
 					first[idx[i]] = std::min(first[idx[i]], i);
 			std::stable_sort(lines.begin(), lines.end(), [&](uint32 a, uint32 b) { return first[a] < first[b]; });
 		}
@@ -115,10 +115,10 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 
 void clear(CMapBase& m)
 {
-	detail::incidence_tables_of(m).clear();
-	detail::darts_of(m)->clear();
-	detail::nb_boundary_darts_of(m) = 0;
-	for (auto& c : detail::cells_of(m))
+	detail::state_of(m).incidence_tables.clear();
+	detail::state_of(m).darts->clear();
+	detail::state_of(m).nb_boundary_darts = 0;
+	for (auto& c : detail::state_of(m).cells)
 		c->clear();
 }
 
@@ -126,13 +126,13 @@ CompactMaps compact(CMap1& m)
 {
 	detail::drop_incidence_caches(m); // relations are remapped below, behind set_phi*
 	CompactMaps maps;
-	maps.darts = detail::darts_of(m)->compact();
+	maps.darts = detail::state_of(m).darts->compact();
 	remap_darts(m, maps.darts);
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
-		if (detail::cells_of(m)[o]->end_index() == 0)
+		if (detail::state_of(m).cells[o]->end_index() == 0)
 			continue;
-		maps.cells[o] = detail::cells_of(m)[o]->compact();
+		maps.cells[o] = detail::state_of(m).cells[o]->compact();
 		remap_cells(m, o, maps.cells[o]);
 	}
 	return maps;

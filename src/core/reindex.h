@@ -42,7 +42,7 @@ public:
 	void record(const MAP& m, const std::vector<Dart>& darts)
 	{
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
-			if (const AttributeArray<uint32>* idx = detail::cell_index_of(m)[o])
+			if (const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[o])
 				for (Dart d : darts)
 					if (uint32 l = (*idx)[d.index]; l != INVALID_INDEX)
 						old_[o].push_back(l);
@@ -68,10 +68,10 @@ private:
 		constexpr Orbit O = CELL::ORBIT;
 		if constexpr (O != Orbit::DART)
 		{
-			AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)];
+			AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)];
 			if (idx == nullptr)
 				return;
-			AttributeContainer& cells = *detail::cells_of(m)[orbit_index(O)];
+			AttributeContainer& cells = *detail::state_of(m).cells[orbit_index(O)];
 			auto& olds = old_[orbit_index(O)];
 			std::sort(olds.begin(), olds.end());
 			olds.erase(std::unique(olds.begin(), olds.end()), olds.end());

@@ -51,8 +51,8 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 
 	if (!is_indexed<CMap2::Vertex>(m))
 		index_cells<CMap2::Vertex>(m);
-	AttributeArray<uint32>& vidx = *detail::cell_index_of(m)[orbit_index(Orbit::PHI21)];
-	AttributeContainer& vertices = *detail::cells_of(m)[orbit_index(Orbit::PHI21)];
+	AttributeArray<uint32>& vidx = *detail::state_of(m).cell_index[orbit_index(Orbit::PHI21)];
+	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(Orbit::PHI21)];
 	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
 	report.vertex_offset = offset;
 
@@ -63,8 +63,8 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 		total += s;
 	darts.reserve(std::min(total, face_vertices.size()));
 	// room for the faces' darts only: boundary darts (none on a closed mesh) grow as needed
-	detail::darts_of(m)->reserve(
-		uint32(std::min<std::size_t>(uint64(detail::darts_of(m)->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
+	detail::state_of(m).darts->reserve(uint32(
+		std::min<std::size_t>(uint64(detail::state_of(m).darts->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
 	std::size_t first = 0;
 	std::vector<uint32> sorted;
 	for (uint32 n : face_sizes)

@@ -20,8 +20,8 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 
 	if (!is_indexed<CMap3::Vertex>(m))
 		index_cells<CMap3::Vertex>(m);
-	AttributeArray<uint32>& vidx = *detail::cell_index_of(m)[orbit_index(Orbit::PHI21_PHI31)];
-	AttributeContainer& vertices = *detail::cells_of(m)[orbit_index(Orbit::PHI21_PHI31)];
+	AttributeArray<uint32>& vidx = *detail::state_of(m).cell_index[orbit_index(Orbit::PHI21_PHI31)];
+	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(Orbit::PHI21_PHI31)];
 	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
 	report.vertex_offset = offset;
 	auto origin = [&](Dart d) { return vidx[d.index] - offset; };

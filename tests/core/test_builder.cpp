@@ -263,7 +263,7 @@ TEST(Builder, LeavesNoIdleMarkAllocated)
 	build_surface(m, torus_soup(40, 30, true));
 	std::size_t expected = 0;
 	for (const AttributeContainer* c :
-		 {cgogn::detail::darts_of(m).get(), cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)].get()})
+		 {cgogn::detail::state_of(m).darts.get(), cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI21)].get()})
 	{
 		std::size_t attributes = 0;
 		for (const auto& a : c->attributes())
@@ -273,12 +273,12 @@ TEST(Builder, LeavesNoIdleMarkAllocated)
 	// the darts' boundary mark: one bit per dart line, in whole chunks, in
 	// whole pages
 	const std::size_t mark_bytes =
-		(cgogn::detail::darts_of(m)->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
+		(cgogn::detail::state_of(m).darts->end_index() + CHUNK_SIZE - 1) / CHUNK_SIZE * (CHUNK_SIZE / 8);
 	const std::size_t page = detail::page_size();
 	expected += (mark_bytes + page - 1) / page * page;
-	std::size_t held = cgogn::detail::darts_of(m)->memory_bytes() +
-					   cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)]->memory_bytes();
-	held -= cgogn::detail::darts_of(m)->free_lines().capacity() * sizeof(uint32);
-	held -= cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)]->free_lines().capacity() * sizeof(uint32);
+	std::size_t held = cgogn::detail::state_of(m).darts->memory_bytes() +
+					   cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI21)]->memory_bytes();
+	held -= cgogn::detail::state_of(m).darts->free_lines().capacity() * sizeof(uint32);
+	held -= cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI21)]->free_lines().capacity() * sizeof(uint32);
 	EXPECT_EQ(held, expected);
 }

@@ -47,7 +47,7 @@ TEST(IncidenceCache, SurfaceVertexFaceAndVertexVertex)
 	VVF::build(m);
 	EXPECT_TRUE(VF::is_built(m));
 	EXPECT_GT(VF::memory_bytes(m), 0u);
-	EXPECT_EQ(cgogn::detail::incidence_tables_of(m).size(), 3u);
+	EXPECT_EQ(cgogn::detail::state_of(m).incidence_tables.size(), 3u);
 	EXPECT_EQ((neighbours<V, F>(m, vf)), vf0);
 	EXPECT_EQ((neighbours<V, V>(m, vve)), vve0);
 	EXPECT_EQ((neighbours<V, V>(m, vvf)), vvf0);
@@ -64,7 +64,7 @@ TEST(IncidenceCache, SurfaceVertexFaceAndVertexVertex)
 	EXPECT_LE(n, 2u);
 
 	// the table really is read: a corrupted row is reported and traversed
-	auto& t = **cgogn::detail::incidence_tables_of(m).begin();
+	auto& t = **cgogn::detail::state_of(m).incidence_tables.begin();
 	ASSERT_GT(t.targets.size(), 1u);
 	std::swap(t.targets[0], t.targets[1]);
 	IntegrityReport r = check_integrity(m);
@@ -76,7 +76,7 @@ TEST(IncidenceCache, SurfaceVertexFaceAndVertexVertex)
 
 	// a topological change drops every table (none can be read stale)
 	F added = add_face(m, 3);
-	EXPECT_TRUE(cgogn::detail::incidence_tables_of(m).empty());
+	EXPECT_TRUE(cgogn::detail::state_of(m).incidence_tables.empty());
 	EXPECT_FALSE(VF::is_built(m));
 	EXPECT_TRUE(check_integrity(m).ok());
 	uint32 faces_of_new_vertex = 0;
@@ -88,7 +88,7 @@ TEST(IncidenceCache, SurfaceVertexFaceAndVertexVertex)
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 	VF::remove(m);
 	EXPECT_FALSE(VF::is_built(m));
-	EXPECT_EQ(cgogn::detail::incidence_tables_of(m).size(), 2u);
+	EXPECT_EQ(cgogn::detail::state_of(m).incidence_tables.size(), 2u);
 }
 
 TEST(IncidenceCache, FromCellsGetIndexed)
@@ -199,7 +199,7 @@ TEST(IncidenceCache, LocatedCellsCarryTheirLine)
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 
 	// a wrong stored line is reported
-	for (auto& t : cgogn::detail::incidence_tables_of(m))
+	for (auto& t : cgogn::detail::state_of(m).incidence_tables)
 		if (!t->target_lines.empty())
 			std::swap(t->target_lines[0], t->target_lines[1]);
 	EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::IncidenceCacheStale));
@@ -214,13 +214,13 @@ TEST(IncidenceCache, LocatedCellsCarryTheirLine)
 	});
 	const uint32 spare = container_of<V::ORBIT>(m).new_line(first.dart.index);
 	set_index(m, first, spare);
-	EXPECT_TRUE(cgogn::detail::incidence_tables_of(m).empty());
+	EXPECT_TRUE(cgogn::detail::state_of(m).incidence_tables.empty());
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 
 	// so does compact (it renumbers every line)
 	IncidenceCache<CMap2, V, V, E>::build(m);
 	compact(m);
-	EXPECT_TRUE(cgogn::detail::incidence_tables_of(m).empty());
+	EXPECT_TRUE(cgogn::detail::state_of(m).incidence_tables.empty());
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 }
 
@@ -245,7 +245,7 @@ TEST(IncidenceCache, PlainAndLocatedCallablesReadTheSameRows)
 	IncidenceCache<CMap2, V, F>::build(m);
 	// swap the first two entries of every row: the walk of the darts would not
 	// give that order, so equal sequences prove both callables read the table
-	for (auto& t : cgogn::detail::incidence_tables_of(m))
+	for (auto& t : cgogn::detail::state_of(m).incidence_tables)
 		for (std::size_t r = 0; r + 1 < t->offsets.size(); ++r)
 		{
 			ASSERT_FALSE(t->target_lines.empty());

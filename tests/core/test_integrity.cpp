@@ -30,7 +30,7 @@ Dart inner_dart(const CMap2& m)
 }
 AttributeArray<uint32>& index_attr(CMap2& m, Orbit o)
 {
-	return *cgogn::detail::cell_index_of(m)[orbit_index(o)];
+	return *cgogn::detail::state_of(m).cell_index[orbit_index(o)];
 }
 } // namespace
 
@@ -101,7 +101,7 @@ TEST(Integrity, BoundaryDartCount)
 	EXPECT_TRUE(check_integrity(m).ok());
 	uint32 marked = 0;
 	foreach_dart(m, [&](Dart d) { marked += is_boundary(m, d); });
-	EXPECT_EQ(cgogn::detail::nb_boundary_darts_of(m), marked);
+	EXPECT_EQ(cgogn::detail::state_of(m).nb_boundary_darts, marked);
 	Dart b;
 	foreach_dart(m, [&](Dart d) {
 		b = d;
@@ -109,10 +109,10 @@ TEST(Integrity, BoundaryDartCount)
 	});
 	fill_hole_with_face(m, b); // the grid's only hole
 	EXPECT_FALSE(has_boundary(m));
-	EXPECT_EQ(cgogn::detail::nb_boundary_darts_of(m), 0u);
+	EXPECT_EQ(cgogn::detail::state_of(m).nb_boundary_darts, 0u);
 	EXPECT_TRUE(check_integrity(m).ok());
 	foreach_cell(m, [&](CMap2::Vertex v) { EXPECT_FALSE(is_incident_to_boundary(m, v)); });
-	cgogn::detail::boundary_of(m)->set(inner_dart(m).index); // behind the count's back
+	cgogn::detail::state_of(m).boundary->set(inner_dart(m).index); // behind the count's back
 	EXPECT_TRUE(check_integrity(m).has(Kind::BoundaryCountWrong));
 }
 
@@ -228,7 +228,7 @@ TEST(Integrity, ReportCountsBeyondTheDescribedOnes)
 TEST(Integrity, FreeListDuplicate)
 {
 	CMap2 m = indexed_grid();
-	AttributeContainer& faces = *cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI1)];
+	AttributeContainer& faces = *cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI1)];
 	const Dart d = inner_dart(m);
 	// a face released twice: its line is twice in the free list
 	const uint32 line = index_attr(m, Orbit::PHI1)[d.index];
@@ -241,7 +241,7 @@ TEST(Integrity, FreeListDuplicate)
 TEST(Integrity, LiveLineOnTheFreeList)
 {
 	CMap2 m = indexed_grid();
-	AttributeContainer& faces = *cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI1)];
+	AttributeContainer& faces = *cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI1)];
 	const Dart d = inner_dart(m);
 	const uint32 line = index_attr(m, Orbit::PHI1)[d.index];
 	faces.release_line(line);
@@ -254,15 +254,15 @@ TEST(Integrity, StaleValuesPastTheEnd)
 	{
 		// a dart line never handed out that holds an index
 		CMap2 m = indexed_grid();
-		ASSERT_LT(cgogn::detail::darts_of(m)->end_index(), cgogn::detail::darts_of(m)->capacity());
-		index_attr(m, Orbit::PHI2)[cgogn::detail::darts_of(m)->end_index()] = 0;
+		ASSERT_LT(cgogn::detail::state_of(m).darts->end_index(), cgogn::detail::state_of(m).darts->capacity());
+		index_attr(m, Orbit::PHI2)[cgogn::detail::state_of(m).darts->end_index()] = 0;
 		const IntegrityReport r = check_integrity(m);
 		EXPECT_TRUE(r.has(Kind::StaleUnusedLine)) << r.to_string();
 	}
 	{
 		// a cell line never handed out that holds a representative
 		CMap2 m = indexed_grid();
-		AttributeContainer& vertices = *cgogn::detail::cells_of(m)[orbit_index(Orbit::PHI21)];
+		AttributeContainer& vertices = *cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI21)];
 		ASSERT_LT(vertices.end_index(), vertices.capacity());
 		vertices.key()[vertices.end_index()] = 0;
 		EXPECT_TRUE(check_integrity(m).has(Kind::StaleUnusedLine));

@@ -50,9 +50,9 @@ TEST(Maintenance, CompactAfterEditingKeepsCellsAndValues)
 	}
 	const auto before = neighbourhoods(m, *pos);
 	const uint32 darts = nb_darts(m), faces = nb_cells<CMap2::Face>(m);
-	ASSERT_LT(darts, cgogn::detail::darts_of(m)->end_index()); // there are holes
+	ASSERT_LT(darts, cgogn::detail::state_of(m).darts->end_index()); // there are holes
 	CompactMaps maps = compact(m);
-	EXPECT_EQ(cgogn::detail::darts_of(m)->end_index(), darts);
+	EXPECT_EQ(cgogn::detail::state_of(m).darts->end_index(), darts);
 	EXPECT_EQ(nb_darts(m), darts);
 	EXPECT_EQ(container_of<Orbit::PHI1>(m).end_index(), faces);
 	EXPECT_EQ(container_of<Orbit::PHI21>(m).end_index(), nb_cells<CMap2::Vertex>(m));

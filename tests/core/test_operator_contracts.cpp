@@ -61,8 +61,8 @@ void expect_consistent_containers(const CMap2& m)
 		std::sort(v.begin(), v.end());
 		return std::adjacent_find(v.begin(), v.end()) == v.end();
 	};
-	EXPECT_TRUE(no_duplicates(cgogn::detail::darts_of(m)->free_lines()));
-	for (const auto& c : cgogn::detail::cells_of(m))
+	EXPECT_TRUE(no_duplicates(cgogn::detail::state_of(m).darts->free_lines()));
+	for (const auto& c : cgogn::detail::state_of(m).cells)
 		EXPECT_TRUE(no_duplicates(c->free_lines()));
 }
 } // namespace

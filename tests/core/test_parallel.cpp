@@ -235,9 +235,9 @@ namespace
 template <typename CELL, typename MAP>
 void drop_index(MAP& m)
 {
-	AttributeArray<uint32>*& idx = cgogn::detail::cell_index_of(m)[orbit_index(CELL::ORBIT)];
+	AttributeArray<uint32>*& idx = cgogn::detail::state_of(m).cell_index[orbit_index(CELL::ORBIT)];
 	ASSERT_NE(idx, nullptr);
-	ASSERT_TRUE(cgogn::detail::darts_of(m)->remove_attribute(idx));
+	ASSERT_TRUE(cgogn::detail::state_of(m).darts->remove_attribute(idx));
 	idx = nullptr;
 }
 

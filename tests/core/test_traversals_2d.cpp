@@ -367,7 +367,7 @@ namespace
 template <typename CELL>
 void expect_each_cell_once(const CMap2& m)
 {
-	std::vector<uint32> covered(cgogn::detail::darts_of(m)->end_index(), 0);
+	std::vector<uint32> covered(cgogn::detail::state_of(m).darts->end_index(), 0);
 	uint32 cells = 0, located = 0;
 	foreach_cell(m, [&](CELL c) {
 		++cells;

@@ -340,8 +340,8 @@ TEST(Traversals3D, ThrowingCallableLeavesNoMark)
 		return n;
 	}();
 	auto first_free_mark = [&] {
-		MarkAttribute* mark = cgogn::detail::darts_of(m)->acquire_mark();
-		cgogn::detail::darts_of(m)->release_mark(mark);
+		MarkAttribute* mark = cgogn::detail::state_of(m).darts->acquire_mark();
+		cgogn::detail::state_of(m).darts->release_mark(mark);
 		return mark;
 	};
 	MarkAttribute* const free_before = first_free_mark();

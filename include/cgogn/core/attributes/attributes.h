@@ -80,8 +80,8 @@ bool remove_attribute(MESH& m, const std::shared_ptr<A>& attr)
 	if (!attr || attr->container() == nullptr)
 		return false;
 	const auto& map = map_of(m);
-	bool mine = attr->container() == detail::darts_of(map).get();
-	for (const auto& c : detail::cells_of(map))
+	bool mine = attr->container() == detail::state_of(map).darts.get();
+	for (const auto& c : detail::state_of(map).cells)
 		mine = mine || attr->container() == c.get();
 	return mine && attr->container()->remove_attribute(attr.get());
 }

@@ -44,7 +44,7 @@ inline const IncidenceTable* find_incidence_table(const CMapBase& m, uint32 key)
 {
 	if (incidence_cache_bypass != 0)
 		return nullptr;
-	return detail::incidence_tables_of(m).find(key);
+	return detail::state_of(m).incidence_tables.find(key);
 }
 
 /// Whether callable FUNC takes exactly the plain cell type TO (not a
@@ -69,7 +69,7 @@ constexpr bool takes_plain_cell()
 template <typename TO, typename THROUGH, typename FROM, typename FUNC>
 CGOGN_INLINE bool foreach_cached(const CMapBase& m, FROM c, const FUNC& f)
 {
-	if (detail::incidence_tables_of(m).empty())
+	if (detail::state_of(m).incidence_tables.empty())
 		return false;
 	const IncidenceTable* t = find_incidence_table(m, incidence_key<FROM, TO, THROUGH>());
 	if (t == nullptr)
@@ -129,7 +129,7 @@ struct LineReport
 template <typename TO, typename WALK, typename FUNC>
 CGOGN_INLINE void report_with_lines(const CMapBase& m, const WALK& walk, const FUNC& f)
 {
-	const AttributeArray<uint32>* index = detail::cell_index_of(m)[orbit_index(TO::ORBIT)];
+	const AttributeArray<uint32>* index = detail::state_of(m).cell_index[orbit_index(TO::ORBIT)];
 	if (takes_plain_cell<FUNC, TO>() || index == nullptr)
 	{
 		walk([&](Dart e) { return call_and_continue(f, TO(e)); });

@@ -23,12 +23,8 @@ public:
 
 	CMap2()
 	{
-		phi2_ = add_relation("__phi2");
+		add_relation("__phi2");
 	}
-
-private:
-	friend struct detail::MapMembers;
-	AttributeArray<uint32>* phi2_ = nullptr;
 };
 
 } // namespace cgogn

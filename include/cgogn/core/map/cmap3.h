@@ -27,12 +27,8 @@ public:
 
 	CMap3()
 	{
-		phi3_ = add_relation("__phi3");
+		add_relation("__phi3");
 	}
-
-private:
-	friend struct detail::MapMembers;
-	AttributeArray<uint32>* phi3_ = nullptr;
 };
 
 } // namespace cgogn

@@ -7,29 +7,57 @@
 
 #include <array>
 #include <memory>
-#include <type_traits>
+#include <string>
 #include <vector>
 
 namespace cgogn
 {
 
 class CMapBase;
-class CMap2;
-class CMap3;
 
 namespace detail
 {
-struct MapMembers;
-}
 
-/// What every combinatorial map holds: a dart container whose attributes are
-/// the phi relations, the per-orbit index attributes and the boundary mark,
-/// and one attribute container per orbit for cell data.
+/// What every combinatorial map holds, gathered so that core's implementation
+/// reaches it through one accessor (state_of) while programs cannot: a dart
+/// container whose attributes are the phi relations, the per-orbit index
+/// attributes and the boundary mark, and one attribute container per orbit
+/// for cell data. Not part of the API.
+struct MapState
+{
+	std::unique_ptr<AttributeContainer> darts;
+	std::array<std::unique_ptr<AttributeContainer>, NB_ORBITS> cells;
+	/// Per-orbit dart attribute holding each dart's cell index (nullptr while
+	/// the orbit is not indexed).
+	std::array<AttributeArray<uint32>*, NB_ORBITS> cell_index{};
+	/// phi1 is the key of the dart container: a dart is live when its phi1 is valid.
+	AttributeArray<uint32>* phi1 = nullptr;
+	/// phi2 and phi3, for the maps of dimension 2 and 3 (nullptr below).
+	AttributeArray<uint32>* phi2 = nullptr;
+	AttributeArray<uint32>* phi3 = nullptr;
+	/// phi1, phi2, ... phin in this order.
+	std::vector<AttributeArray<uint32>*> relations;
+	MarkAttribute* boundary = nullptr;
+	/// Number of live darts carrying the boundary mark (kept by
+	/// detail::set_boundary and remove_dart): a map without boundary answers
+	/// is_incident_to_boundary in O(1).
+	uint32 nb_boundary_darts = 0;
+	/// Quick incidence caches (see IncidenceCache); empty unless enabled.
+	IncidenceTables incidence_tables;
+};
+
+MapState& state_of(CMapBase& m);
+const MapState& state_of(const CMapBase& m);
+
+} // namespace detail
+
+/// The base of every combinatorial map: its darts, relations, cells and
+/// attributes (see detail::MapState).
 ///
-/// The members are private: programs use the free functions (phi1(m, d),
-/// index_of(m, c), add_attribute<T, CELL>(m, name), container_of<O>(m), ...).
-/// Core's own implementation reaches them through the accessors of
-/// cgogn::detail below, which are not part of the API.
+/// The state is private: programs use the free functions (phi1(m, d),
+/// index_of(m, c), add_attribute<T, CELL>(m, name), container_of<O>(m), ...);
+/// core's own implementation reaches it through detail::state_of, which is
+/// not part of the API.
 /// Maps can be moved, not copied (use merge(), from the operators, to copy one
 /// map into another).
 class CMapBase
@@ -37,16 +65,15 @@ class CMapBase
 public:
 	CMapBase()
 	{
-		darts_ = std::make_unique<AttributeContainer>("__phi1");
-		phi1_ = &darts_->key();
-		relations_.push_back(phi1_);
-		boundary_ = darts_->add_persistent_mark();
+		state_.darts = std::make_unique<AttributeContainer>("__phi1");
+		state_.phi1 = &state_.darts->key();
+		state_.relations.push_back(state_.phi1);
+		state_.boundary = state_.darts->add_persistent_mark();
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
 		{
-			cells_[o] = std::make_unique<AttributeContainer>("__dart");
-			cells_[o]->set_orbit(Orbit(o));
+			state_.cells[o] = std::make_unique<AttributeContainer>("__dart");
+			state_.cells[o]->set_orbit(Orbit(o));
 		}
-		cell_index_.fill(nullptr);
 	}
 	/// Takes the darts, cells and attributes of another map. Attribute handles
 	/// and marks stay valid (their containers do not move); the moved-from map
@@ -62,113 +89,32 @@ public:
 protected:
 	/// Adds the dart attribute of the next relation (phi2, then phi3), invalid
 	/// on every dart until sewn; called by the constructors of CMap2 and CMap3.
-	AttributeArray<uint32>* add_relation(const std::string& name)
+	void add_relation(const std::string& name)
 	{
-		auto a = darts_->add_attribute<uint32>(name, INVALID_INDEX);
-		relations_.push_back(a.get());
-		return a.get();
+		AttributeArray<uint32>* a = state_.darts->add_attribute<uint32>(name, INVALID_INDEX).get();
+		state_.relations.push_back(a);
+		(state_.relations.size() == 2 ? state_.phi2 : state_.phi3) = a;
 	}
 
 private:
-	friend struct detail::MapMembers;
+	friend detail::MapState& detail::state_of(CMapBase& m);
+	friend const detail::MapState& detail::state_of(const CMapBase& m);
 
-	std::unique_ptr<AttributeContainer> darts_;
-	std::array<std::unique_ptr<AttributeContainer>, NB_ORBITS> cells_;
-	/// Per-orbit dart attribute holding each dart's cell index (nullptr while
-	/// the orbit is not indexed).
-	std::array<AttributeArray<uint32>*, NB_ORBITS> cell_index_;
-	/// phi1 is the key of the dart container: a dart is live when its phi1 is valid.
-	AttributeArray<uint32>* phi1_ = nullptr;
-	/// phi1, phi2, ... phin in this order.
-	std::vector<AttributeArray<uint32>*> relations_;
-	MarkAttribute* boundary_ = nullptr;
-	/// Number of live darts carrying the boundary mark (kept by
-	/// detail::set_boundary and remove_dart): a map without boundary answers
-	/// is_incident_to_boundary in O(1). Only the friend detail::MapMembers
-	/// reaches it, a use clang's -Wunused-private-field does not see.
-	[[maybe_unused]] uint32 nb_boundary_darts_ = 0;
-	/// Quick incidence caches (see IncidenceCache); empty unless enabled.
-	IncidenceTables incidence_tables_;
+	detail::MapState state_;
 };
 
 namespace detail
 {
 
-/// Core's access to the members of the maps. Each accessor returns the member
-/// itself (const when the map is), so core code reads as before. O(1).
-struct MapMembers
+/// Core's access to a map's state (the member itself, const when the map is). O(1).
+inline MapState& state_of(CMapBase& m)
 {
-	template <typename M>
-	static auto& darts(M& m)
-	{
-		return base(m).darts_;
-	}
-	template <typename M>
-	static auto& cells(M& m)
-	{
-		return base(m).cells_;
-	}
-	template <typename M>
-	static auto& cell_index(M& m)
-	{
-		return base(m).cell_index_;
-	}
-	template <typename M>
-	static auto& phi1(M& m)
-	{
-		return base(m).phi1_;
-	}
-	template <typename M>
-	static auto& relations(M& m)
-	{
-		return base(m).relations_;
-	}
-	template <typename M>
-	static auto& boundary(M& m)
-	{
-		return base(m).boundary_;
-	}
-	template <typename M>
-	static auto& nb_boundary_darts(M& m)
-	{
-		return base(m).nb_boundary_darts_;
-	}
-	template <typename M>
-	static auto& incidence_tables(M& m)
-	{
-		return base(m).incidence_tables_;
-	}
-	template <typename M>
-	static auto& phi2(M& m)
-	{
-		return static_cast<std::conditional_t<std::is_const_v<M>, const CMap2&, CMap2&>>(m).phi2_;
-	}
-	template <typename M>
-	static auto& phi3(M& m)
-	{
-		return static_cast<std::conditional_t<std::is_const_v<M>, const CMap3&, CMap3&>>(m).phi3_;
-	}
-
-private:
-	template <typename M>
-	static auto& base(M& m)
-	{
-		return static_cast<std::conditional_t<std::is_const_v<M>, const CMapBase&, CMapBase&>>(m);
-	}
-};
-
-// clang-format off
-template <typename M> auto& darts_of(M& m) { return MapMembers::darts(m); }
-template <typename M> auto& cells_of(M& m) { return MapMembers::cells(m); }
-template <typename M> auto& cell_index_of(M& m) { return MapMembers::cell_index(m); }
-template <typename M> auto& phi1_of(M& m) { return MapMembers::phi1(m); }
-template <typename M> auto& relations_of(M& m) { return MapMembers::relations(m); }
-template <typename M> auto& boundary_of(M& m) { return MapMembers::boundary(m); }
-template <typename M> auto& nb_boundary_darts_of(M& m) { return MapMembers::nb_boundary_darts(m); }
-template <typename M> auto& incidence_tables_of(M& m) { return MapMembers::incidence_tables(m); }
-template <typename M> auto& phi2_of(M& m) { return MapMembers::phi2(m); }
-template <typename M> auto& phi3_of(M& m) { return MapMembers::phi3(m); }
-// clang-format on
+	return m.state_;
+}
+inline const MapState& state_of(const CMapBase& m)
+{
+	return m.state_;
+}
 
 } // namespace detail
 

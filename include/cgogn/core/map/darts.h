@@ -12,7 +12,7 @@ namespace cgogn
 /// Next dart in the face cycle. O(1).
 CGOGN_INLINE Dart phi1(const CMap1& m, Dart d)
 {
-	return Dart((*detail::phi1_of(m))[d.index]);
+	return Dart((*detail::state_of(m).phi1)[d.index]);
 }
 
 /// Previous dart in the face cycle. phi_1 is not stored (see docs/performance.md:
@@ -28,7 +28,7 @@ inline Dart phi_1(const CMap1& m, Dart d)
 /// The dart of the adjacent face along the same edge, opposite direction. O(1).
 CGOGN_INLINE Dart phi2(const CMap2& m, Dart d)
 {
-	return Dart((*detail::phi2_of(m))[d.index]);
+	return Dart((*detail::state_of(m).phi2)[d.index]);
 }
 
 /// Previous dart in the face cycle, in a 2-map. A boundary face of a surface
@@ -39,7 +39,7 @@ CGOGN_INLINE Dart phi2(const CMap2& m, Dart d)
 /// boundary dart.
 inline Dart phi_1(const CMap2& m, Dart d)
 {
-	if (!detail::boundary_of(m)->test(d.index))
+	if (!detail::state_of(m).boundary->test(d.index))
 		return phi_1(static_cast<const CMap1&>(m), d);
 	Dart z = d;
 	for (Dart n = phi1(m, phi2(m, z)); n != d; n = phi1(m, phi2(m, z)))
@@ -57,7 +57,7 @@ inline Dart phi_1(const CMap3& m, Dart d)
 /// The dart of the adjacent volume along the same face, opposite direction. O(1).
 CGOGN_INLINE Dart phi3(const CMap3& m, Dart d)
 {
-	return Dart((*detail::phi3_of(m))[d.index]);
+	return Dart((*detail::state_of(m).phi3)[d.index]);
 }
 
 /// Composition of relations applied left to right: phi<1, 2>(m, d) is
@@ -90,27 +90,27 @@ Dart phi(const MAP& m, Dart d)
 /// Number of live darts, boundary darts included. O(1).
 inline uint32 nb_darts(const CMapBase& m)
 {
-	return detail::darts_of(m)->nb_lines();
+	return detail::state_of(m).darts->nb_lines();
 }
 
 /// True when the dart belongs to a boundary cell (a boundary face of a 2-map,
 /// a boundary volume of a 3-map). O(1).
 CGOGN_INLINE bool is_boundary(const CMapBase& m, Dart d)
 {
-	return detail::boundary_of(m)->test(d.index);
+	return detail::state_of(m).boundary->test(d.index);
 }
 
 /// True when the map has boundary cells (an open surface, a volume mesh with
 /// an outside). O(1): the map counts its boundary darts.
 CGOGN_INLINE bool has_boundary(const CMapBase& m)
 {
-	return detail::nb_boundary_darts_of(m) != 0;
+	return detail::state_of(m).nb_boundary_darts != 0;
 }
 
 /// True when d is a live dart of m. O(1).
 inline bool is_dart_valid(const CMapBase& m, Dart d)
 {
-	return d.is_valid() && detail::darts_of(m)->is_live(d.index);
+	return d.is_valid() && detail::state_of(m).darts->is_live(d.index);
 }
 
 /// Calls f(Dart) on every live dart, boundary darts included; f may return
@@ -119,7 +119,7 @@ template <typename FUNC>
 void foreach_dart(const CMapBase& m, const FUNC& func)
 {
 	held_callable_t<FUNC> f = func; // see held_callable_t
-	const AttributeContainer& c = *detail::darts_of(m);
+	const AttributeContainer& c = *detail::state_of(m).darts;
 	const AttributeArray<uint32>& key = c.key();
 	for (uint32 i = 0, end = c.end_index(); i < end; ++i)
 		if (key[i] != INVALID_INDEX)
@@ -132,10 +132,10 @@ namespace detail
 
 inline Dart add_dart(CMapBase& m)
 {
-	if (!detail::incidence_tables_of(m).empty())
-		detail::incidence_tables_of(m).clear(); // see drop_incidence_caches
-	uint32 i = detail::darts_of(m)->new_line(0);
-	for (AttributeArray<uint32>* r : detail::relations_of(m))
+	if (!detail::state_of(m).incidence_tables.empty())
+		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
+	uint32 i = detail::state_of(m).darts->new_line(0);
+	for (AttributeArray<uint32>* r : detail::state_of(m).relations)
 		(*r)[i] = i;
 	return Dart(i);
 }
@@ -144,23 +144,23 @@ inline Dart add_dart(CMapBase& m)
 /// quick incidence caches hold: every change drops them.
 inline void set_boundary(CMapBase& m, Dart d, bool b)
 {
-	if (detail::boundary_of(m)->test(d.index) == b)
+	if (detail::state_of(m).boundary->test(d.index) == b)
 		return;
-	if (!detail::incidence_tables_of(m).empty())
-		detail::incidence_tables_of(m).clear(); // see drop_incidence_caches
-	detail::boundary_of(m)->set_value(d.index, b);
+	if (!detail::state_of(m).incidence_tables.empty())
+		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
+	detail::state_of(m).boundary->set_value(d.index, b);
 	if (b)
-		++detail::nb_boundary_darts_of(m);
+		++detail::state_of(m).nb_boundary_darts;
 	else
-		--detail::nb_boundary_darts_of(m);
+		--detail::state_of(m).nb_boundary_darts;
 }
 
 inline void remove_dart(CMapBase& m, Dart d)
 {
-	if (!detail::incidence_tables_of(m).empty())
-		detail::incidence_tables_of(m).clear(); // see drop_incidence_caches
+	if (!detail::state_of(m).incidence_tables.empty())
+		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
 	set_boundary(m, d, false);
-	detail::darts_of(m)->release_line(d.index);
+	detail::state_of(m).darts->release_line(d.index);
 }
 
 /// Every change of a relation goes through these: a topological change makes
@@ -168,31 +168,31 @@ inline void remove_dart(CMapBase& m, Dart d)
 /// null pointer when there are none).
 inline void drop_incidence_caches(CMapBase& m)
 {
-	if (!detail::incidence_tables_of(m).empty())
-		detail::incidence_tables_of(m).clear();
+	if (!detail::state_of(m).incidence_tables.empty())
+		detail::state_of(m).incidence_tables.clear();
 }
 /// Frees the pooled marks nobody holds in every container of m (see
 /// AttributeContainer::release_idle_marks; builders call it at the end).
 inline void release_idle_marks(CMapBase& m)
 {
-	detail::darts_of(m)->release_idle_marks();
-	for (auto& c : detail::cells_of(m))
+	detail::state_of(m).darts->release_idle_marks();
+	for (auto& c : detail::state_of(m).cells)
 		c->release_idle_marks();
 }
 inline void set_phi1(CMap1& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
-	(*detail::phi1_of(m))[d.index] = e.index;
+	(*detail::state_of(m).phi1)[d.index] = e.index;
 }
 inline void set_phi2(CMap2& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
-	(*detail::phi2_of(m))[d.index] = e.index;
+	(*detail::state_of(m).phi2)[d.index] = e.index;
 }
 inline void set_phi3(CMap3& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
-	(*detail::phi3_of(m))[d.index] = e.index;
+	(*detail::state_of(m).phi3)[d.index] = e.index;
 }
 
 } // namespace detail

@@ -12,9 +12,9 @@ template <Orbit O>
 AttributeContainer& container_of(const CMapBase& m)
 {
 	if constexpr (O == Orbit::DART)
-		return *detail::darts_of(m);
+		return *detail::state_of(m).darts;
 	else
-		return *detail::cells_of(m)[orbit_index(O)];
+		return *detail::state_of(m).cells[orbit_index(O)];
 }
 
 /// True when cells of this orbit have indices (created by the first attribute
@@ -25,7 +25,7 @@ bool is_indexed(const CMapBase& m)
 	if constexpr (CELL::ORBIT == Orbit::DART)
 		return true;
 	else
-		return detail::cell_index_of(m)[orbit_index(CELL::ORBIT)] != nullptr;
+		return detail::state_of(m).cell_index[orbit_index(CELL::ORBIT)] != nullptr;
 }
 
 /// The index of cell c in its orbit's container: the line of its attribute
@@ -38,8 +38,8 @@ CGOGN_INLINE uint32 index_of(const CMapBase& m, Cell<O> c)
 		return c.dart.index;
 	else
 	{
-		assert(detail::cell_index_of(m)[orbit_index(O)] != nullptr);
-		return (*detail::cell_index_of(m)[orbit_index(O)])[c.dart.index];
+		assert(detail::state_of(m).cell_index[orbit_index(O)] != nullptr);
+		return (*detail::state_of(m).cell_index[orbit_index(O)])[c.dart.index];
 	}
 }
 
@@ -58,17 +58,17 @@ namespace detail
 template <typename MAP, Orbit O>
 void write_index(MAP& m, Cell<O> c, uint32 i)
 {
-	AttributeArray<uint32>& idx = *detail::cell_index_of(m)[orbit_index(O)];
+	AttributeArray<uint32>& idx = *detail::state_of(m).cell_index[orbit_index(O)];
 	foreach_dart_of_orbit(m, c, [&](Dart d) { idx[d.index] = i; });
 	if (i != INVALID_INDEX)
-		detail::cells_of(m)[orbit_index(O)]->key()[i] = c.dart.index;
+		detail::state_of(m).cells[orbit_index(O)]->key()[i] = c.dart.index;
 }
 
 /// A new line for cell c, written on all its darts. Returns it.
 template <typename MAP, Orbit O>
 uint32 new_index(MAP& m, Cell<O> c)
 {
-	uint32 i = detail::cells_of(m)[orbit_index(O)]->new_line(c.dart.index);
+	uint32 i = detail::state_of(m).cells[orbit_index(O)]->new_line(c.dart.index);
 	write_index(m, c, i);
 	return i;
 }
@@ -77,7 +77,7 @@ uint32 new_index(MAP& m, Cell<O> c)
 template <typename MAP, Orbit O>
 void index_new_cell(MAP& m, Cell<O> c)
 {
-	if (detail::cell_index_of(m)[orbit_index(O)] != nullptr)
+	if (detail::state_of(m).cell_index[orbit_index(O)] != nullptr)
 		new_index(m, c);
 }
 
@@ -86,7 +86,7 @@ void index_new_cell(MAP& m, Cell<O> c)
 template <typename MAP, Orbit O>
 void reindex_cell(MAP& m, Cell<O> c, uint32 i)
 {
-	if (detail::cell_index_of(m)[orbit_index(O)] != nullptr && i != INVALID_INDEX)
+	if (detail::state_of(m).cell_index[orbit_index(O)] != nullptr && i != INVALID_INDEX)
 		write_index(m, c, i);
 }
 
@@ -94,8 +94,8 @@ void reindex_cell(MAP& m, Cell<O> c, uint32 i)
 template <Orbit O>
 void release_index(CMapBase& m, uint32 i)
 {
-	if (detail::cell_index_of(m)[orbit_index(O)] != nullptr && i != INVALID_INDEX)
-		detail::cells_of(m)[orbit_index(O)]->release_line(i);
+	if (detail::state_of(m).cell_index[orbit_index(O)] != nullptr && i != INVALID_INDEX)
+		detail::state_of(m).cells[orbit_index(O)]->release_line(i);
 }
 
 /// Makes d the representative of its (indexed) cell of orbit O: operators
@@ -103,11 +103,11 @@ void release_index(CMapBase& m, uint32 i)
 template <Orbit O>
 void set_representative(CMapBase& m, Dart d)
 {
-	if (const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)])
+	if (const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)])
 	{
 		uint32 i = (*idx)[d.index];
 		if (i != INVALID_INDEX)
-			detail::cells_of(m)[orbit_index(O)]->key()[i] = d.index;
+			detail::state_of(m).cells[orbit_index(O)]->key()[i] = d.index;
 	}
 }
 
@@ -123,7 +123,7 @@ void set_index(MAP& m, Cell<O> c, uint32 i)
 {
 	static_assert(O != Orbit::DART, "darts are their own index");
 	assert(is_indexed<Cell<O>>(m));
-	AttributeContainer& cont = *detail::cells_of(m)[orbit_index(O)];
+	AttributeContainer& cont = *detail::state_of(m).cells[orbit_index(O)];
 	assert(cont.is_live(i));
 	const uint32 old = index_of(m, c);
 	if (old == i)
@@ -146,9 +146,10 @@ void index_cells(MAP& m)
 		return;
 	else
 	{
-		AttributeArray<uint32>*& idx = detail::cell_index_of(m)[orbit_index(O)];
+		AttributeArray<uint32>*& idx = detail::state_of(m).cell_index[orbit_index(O)];
 		if (idx == nullptr)
-			idx = detail::darts_of(m)
+			idx = detail::state_of(m)
+					  .darts
 					  ->template add_attribute<uint32>(std::string("__index_") + std::string(orbit_name(O)),
 													   INVALID_INDEX)
 					  .get();

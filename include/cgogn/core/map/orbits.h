@@ -44,9 +44,9 @@ bool foreach_dart_flood(const MAP& m, Dart d, const FUNC& f, NEXT... next)
 template <typename MAP, typename FUNC>
 bool foreach_dart_of_vertex3(const MAP& m, Dart d, const FUNC& f)
 {
-	const auto phi1_of = detail::phi1_of(m)->view();
-	const auto phi2_of = detail::phi2_of(m)->view();
-	const auto phi3_of = detail::phi3_of(m)->view();
+	const auto phi1_of = detail::state_of(m).phi1->view();
+	const auto phi2_of = detail::state_of(m).phi2->view();
+	const auto phi3_of = detail::state_of(m).phi3->view();
 	auto turn = [&](Dart x) { return Dart(phi1_of[phi2_of[x.index]]); };
 	auto cross = [&](Dart x) {
 		const uint32 y = phi1_of[phi3_of[x.index]];
@@ -128,7 +128,7 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 		return call_and_continue(f, d);
 	else if constexpr (O == Orbit::PHI1)
 	{
-		const auto phi1_of = detail::phi1_of(m)->view(); // see LineStorage::View
+		const auto phi1_of = detail::state_of(m).phi1->view(); // see LineStorage::View
 		Dart it = d;
 		do
 		{
@@ -147,8 +147,8 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 	{
 		static_assert(MAP::dimension >= 2);
 		// relations read through views held in locals (see LineStorage::View)
-		const auto phi1_of = detail::phi1_of(m)->view();
-		const auto phi2_of = detail::phi2_of(m)->view();
+		const auto phi1_of = detail::state_of(m).phi1->view();
+		const auto phi2_of = detail::state_of(m).phi2->view();
 		Dart it = d;
 		do
 		{
@@ -271,7 +271,7 @@ bool same_cell(const MAP& m, Cell<O> c1, Cell<O> c2)
 {
 	if constexpr (O != Orbit::DART)
 	{
-		if (const AttributeArray<uint32>* idx = detail::cell_index_of(m)[orbit_index(O)])
+		if (const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)])
 		{
 			uint32 i1 = (*idx)[c1.dart.index];
 			if (i1 != INVALID_INDEX)

@@ -24,7 +24,7 @@ namespace detail
 class ScopedDartMark
 {
 public:
-	explicit ScopedDartMark(const CMapBase& m) : mark_(*detail::darts_of(m))
+	explicit ScopedDartMark(const CMapBase& m) : mark_(*detail::state_of(m).darts)
 	{
 	}
 	~ScopedDartMark()
@@ -112,7 +112,7 @@ public:
 
 	/// A marker of the darts of m (a map or a view: the darts of the map under
 	/// it), with no dart marked. O(1) once the pools are warm.
-	explicit DartMarkerStore(const MESH& m) : map_(map_of(m)), mark_(*detail::darts_of(map_))
+	explicit DartMarkerStore(const MESH& m) : map_(map_of(m)), mark_(*detail::state_of(map_).darts)
 	{
 	}
 	~DartMarkerStore()

@@ -29,7 +29,7 @@ public:
 	/// whole life. O(1) once the pool is warm.
 	explicit CellMarker(const MESH& m)
 		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
-		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *detail::darts_of(map_))
+		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *detail::state_of(map_).darts)
 	{
 	}
 	~CellMarker()
@@ -87,7 +87,7 @@ public:
 	/// A marker of the cells of m, with no cell marked; as CellMarker's.
 	explicit CellMarkerStore(const MESH& m)
 		: map_(map_of(m)), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(map_)),
-		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *detail::darts_of(map_))
+		  mark_(indexed_ ? container_of<CELL::ORBIT>(map_) : *detail::state_of(map_).darts)
 	{
 	}
 	~CellMarkerStore()

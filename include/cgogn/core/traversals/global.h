@@ -100,7 +100,8 @@ void foreach_cell_of_map(const MAP& m, const FUNC& func)
 		// cells) they often keep it out of line, and each cell then pays a call
 		// and reloads everything f captured.
 		const bool indexed = is_indexed<CELL>(m);
-		const AttributeContainer& walked = indexed ? *detail::cells_of(m)[orbit_index(O)] : *detail::darts_of(m);
+		const AttributeContainer& walked =
+			indexed ? *detail::state_of(m).cells[orbit_index(O)] : *detail::state_of(m).darts;
 		std::optional<UnindexedCellStarts<O, MAP>> starts;
 		if (!indexed)
 			starts.emplace(m);
@@ -157,7 +158,7 @@ uint32 nb_cells(const MESH& m)
 	{
 		if constexpr (CELL::ORBIT != Orbit::DART)
 			if (is_indexed<CELL>(m))
-				return detail::cells_of(m)[orbit_index(CELL::ORBIT)]->nb_lines();
+				return detail::state_of(m).cells[orbit_index(CELL::ORBIT)]->nb_lines();
 	}
 	uint32 n = 0;
 	foreach_cell(m, [&](CELL) { ++n; });

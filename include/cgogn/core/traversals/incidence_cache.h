@@ -181,7 +181,7 @@ public:
 				targets[k++] = x.dart;
 			});
 		});
-		detail::incidence_tables_of(m).add(std::move(t));
+		detail::state_of(m).incidence_tables.add(std::move(t));
 	}
 
 	/// Recomputes the table after topological changes (same as build). Cost of build.
@@ -193,19 +193,19 @@ public:
 	/// Frees the table; traversals walk the darts again. O(number of tables).
 	static void remove(MAP& m)
 	{
-		detail::incidence_tables_of(m).remove(key);
+		detail::state_of(m).incidence_tables.remove(key);
 	}
 
 	/// True when the table is built. O(1).
 	static bool is_built(const MAP& m)
 	{
-		return detail::incidence_tables_of(m).find(key) != nullptr;
+		return detail::state_of(m).incidence_tables.find(key) != nullptr;
 	}
 
 	/// Bytes held by the table (0 when not built). O(1).
 	static std::size_t memory_bytes(const MAP& m)
 	{
-		const IncidenceTable* t = detail::incidence_tables_of(m).find(key);
+		const IncidenceTable* t = detail::state_of(m).incidence_tables.find(key);
 		return t == nullptr ? 0 : t->memory_bytes();
 	}
 

@@ -17,7 +17,7 @@ class LocalCellSet
 public:
 	explicit LocalCellSet(const MAP& m)
 		: map_(m), indexed_(CELL::ORBIT != Orbit::DART && is_indexed<CELL>(m)),
-		  mark_(indexed_ ? container_of<CELL::ORBIT>(m) : *detail::darts_of(m))
+		  mark_(indexed_ ? container_of<CELL::ORBIT>(m) : *detail::state_of(m).darts)
 	{
 	}
 	~LocalCellSet()

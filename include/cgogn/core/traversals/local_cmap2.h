@@ -53,7 +53,7 @@ CGOGN_INLINE void foreach_adjacent_vertex_through_edge(const CMap2& m, CellParam
 {
 	if (detail::foreach_cached<CMap2::Vertex, CMap2::Edge>(m, v, f))
 		return;
-	const auto phi2_of = detail::phi2_of(m)->view(); // see LineStorage::View
+	const auto phi2_of = detail::state_of(m).phi2->view(); // see LineStorage::View
 	detail::report_with_lines<CMap2::Vertex>(
 		m,
 		[&](const auto& report) {

@@ -65,8 +65,8 @@ template <typename FUNC>
 bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 {
 	using Neighbour = LocatedCell<CMap3::Vertex::ORBIT>;
-	AttributeContainer& vertices = *detail::cells_of(m)[orbit_index(CMap3::Vertex::ORBIT)];
-	const auto line_of = detail::cell_index_of(m)[orbit_index(CMap3::Vertex::ORBIT)]->view();
+	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(CMap3::Vertex::ORBIT)];
+	const auto line_of = detail::state_of(m).cell_index[orbit_index(CMap3::Vertex::ORBIT)]->view();
 	// up to 64 neighbours on the stack (a tet mesh vertex has ~14), more on the heap
 	std::array<Neighbour, 64> few;
 	std::vector<Neighbour> many;
@@ -90,7 +90,7 @@ bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC
 			}
 		} guard{vertices, few, many, n};
 		MarkAttribute& seen = *guard.mark;
-		const auto phi1_of = detail::phi1_of(m)->view();
+		const auto phi1_of = detail::state_of(m).phi1->view();
 		auto collect = [&](Dart d) {
 			const Dart e(phi1_of[d.index]);
 			const uint32 w = line_of[e.index];

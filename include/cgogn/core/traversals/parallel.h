@@ -67,9 +67,9 @@ struct alignas(64) FloodWorker
 template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 {
-	const uint32 end = detail::darts_of(m)->end_index();
+	const uint32 end = detail::state_of(m).darts->end_index();
 	const uint32 nb_blocks = (end + 63) / 64;
-	const AttributeArray<uint32>& key = detail::darts_of(m)->key();
+	const AttributeArray<uint32>& key = detail::state_of(m).darts->key();
 	if constexpr (orbit_is_cyclic(CELL::ORBIT))
 	{
 		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
@@ -90,7 +90,8 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	{
 		static_assert(orbit_is_flooded(CELL::ORBIT));
 		std::vector<FloodWorker> workers(thread_pool()->nb_workers());
-		std::vector<MarkAttribute*> marks{detail::darts_of(m)->acquire_mark(), detail::darts_of(m)->acquire_mark()};
+		std::vector<MarkAttribute*> marks{detail::state_of(m).darts->acquire_mark(),
+										  detail::state_of(m).darts->acquire_mark()};
 		MarkAttribute& seen = *marks[0];     // darts flooded by a worker other than their scanner (hints)
 		MarkAttribute& reported = *marks[1]; // owners of the reported cells
 		auto clear_and_release = [&](bool in_parallel) {
@@ -106,7 +107,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 			else
 				clear(0, uint32(marks.size()));
 			for (MarkAttribute* mark : marks)
-				detail::darts_of(m)->release_mark(mark);
+				detail::state_of(m).darts->release_mark(mark);
 		};
 		try
 		{
@@ -114,7 +115,7 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 									held_callable_t<FUNC> fc = f; // see held_callable_t
 									FloodWorker& w = workers[current_thread_index()];
 									if (w.flooded == nullptr)
-										w.flooded = detail::darts_of(m)->acquire_mark();
+										w.flooded = detail::state_of(m).darts->acquire_mark();
 									const uint32 b = bb * 64, e = std::min(be * 64, end);
 									for (uint32 i = b; i < e; ++i)
 									{
@@ -157,8 +158,8 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	constexpr Orbit O = CELL::ORBIT;
 	if constexpr (O == Orbit::DART)
 	{
-		const uint32 end = detail::darts_of(m)->end_index();
-		const AttributeArray<uint32>& key = detail::darts_of(m)->key();
+		const uint32 end = detail::state_of(m).darts->end_index();
+		const AttributeArray<uint32>& key = detail::state_of(m).darts->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 								held_callable_t<FUNC> fc = f; // see held_callable_t
 								for (uint32 i = b; i < e; ++i)
@@ -169,7 +170,7 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	else if (is_indexed<CELL>(m))
 	{
 		// split the cell container's line range: one representative dart per live line
-		const AttributeContainer& c = *detail::cells_of(m)[orbit_index(O)];
+		const AttributeContainer& c = *detail::state_of(m).cells[orbit_index(O)];
 		const AttributeArray<uint32>& rep = c.key();
 		parallel_for_chunks(c.end_index(), PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 								held_callable_t<FUNC> fc = f; // see held_callable_t
@@ -184,8 +185,8 @@ void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 	else if constexpr (O == Orbit::PHI2)
 	{
 		// as in the sequential traversal: no mark needed
-		const uint32 end = detail::darts_of(m)->end_index();
-		const AttributeArray<uint32>& key = detail::darts_of(m)->key();
+		const uint32 end = detail::state_of(m).darts->end_index();
+		const AttributeArray<uint32>& key = detail::state_of(m).darts->key();
 		parallel_for_chunks(end, PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
 								held_callable_t<FUNC> fc = f; // see held_callable_t
 								for (uint32 i = b; i < e; ++i)
