@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <pybind11/stl.h>
 
@@ -242,80 +245,139 @@ py::tuple faces_csr(MAP& m)
 	return csr(std::move(offsets), std::move(indices));
 }
 
-// Writes to `out` the rows of the triangles whose smallest dart lies in
-// [begin, end), in dart order: each triangle once, found at its smallest dart
-// without marks (the order foreach_cell uses when faces are not indexed).
-// Returns the number of values written, INVALID_INDEX when a face of that
-// range is not a triangle. `out` holds room for 3 values per dart of the range.
-uint32 triangle_rows(const CMap2& m, uint32 begin, uint32 end, uint32* out)
+// What triangle_rows returns when a face of its range is not a triangle, and
+// when the rows of its range do not fit in the room given.
+constexpr uint32 NOT_A_TRIANGLE = INVALID_INDEX;
+constexpr uint32 NO_ROOM = INVALID_INDEX - 1;
+
+// Counts (out == nullptr) or writes to `out` the rows of the triangles whose
+// smallest dart lies in [begin, end), in dart order: each triangle once, found
+// at its smallest dart without marks (the order foreach_cell uses when faces
+// are not indexed). Returns the number of rows, or NOT_A_TRIANGLE, or NO_ROOM
+// when writing and there are more than `room` rows. Precondition: vertices
+// are indexed.
+// phi1 and the vertex indices are read through views, which keep their
+// addresses in registers for the whole loop (see LineStorage::View): through
+// phi1(m, d) and index_of the compiler reloads them at every dart, since the
+// rows written may alias them as far as it knows.
+uint32 triangle_rows(const CMap2& m, uint32 begin, uint32 end, uint32* out, uint32 room)
 {
-	using Vertex = CMap2::Vertex;
 	const AttributeContainer& darts = container_of<Orbit::DART>(m);
-	uint32* o = out;
+	const auto phi1_of = darts.key().view(); // phi1 is the key of the darts
+	const auto vertex_of = container_of<CMap2::Vertex::ORBIT>(m).cell_index()->view();
+	const uint32 lines = darts.end_index();
+	uint32 rows = 0;
 	for (uint32 i = begin; i < end; ++i)
 	{
-		if (!darts.is_live(i))
-			continue;
-		const Dart d(i);
-		if (is_boundary(m, d))
-			continue;
-		const Dart e = phi1(m, d);
-		if (e.index < i)
-			continue;
-		const Dart g = phi1(m, e);
-		if (g.index < i)
-			continue;
-		if (e == d || phi1(m, g) != d) // a face of 1, 2 or more than 3 edges
-			return INVALID_INDEX;
-		o[0] = index_of(m, Vertex(d));
-		o[1] = index_of(m, Vertex(e));
-		o[2] = index_of(m, Vertex(g));
-		o += 3;
+		const uint32 d = i;
+		uint32 e = d + 1, g = d + 2;
+		// The builder gives each face consecutive darts: that case is tested
+		// first, and steps over the whole triangle (d is then its smallest
+		// dart, and the other two are the smallest of no face).
+		if (g < lines && phi1_of[d] == e && phi1_of[e] == g && phi1_of[g] == d)
+		{
+			i = g;
+			if (is_boundary(m, Dart(d)))
+				continue;
+		}
+		else
+		{
+			e = phi1_of[d];
+			if (e == INVALID_INDEX || e < d) // a free line, or not the smallest dart of its face
+				continue;
+			g = phi1_of[e];
+			if (g < d || is_boundary(m, Dart(d)))
+				continue;
+			if (e == d || phi1_of[g] != d) // a face of 1, 2 or more than 3 edges
+				return NOT_A_TRIANGLE;
+		}
+		if (out != nullptr)
+		{
+			if (rows == room)
+				return NO_ROOM;
+			uint32* row = out + 3 * std::size_t(rows);
+			row[0] = vertex_of[d];
+			row[1] = vertex_of[e];
+			row[2] = vertex_of[g];
+		}
+		++rows;
 	}
-	return uint32(o - out);
+	return rows;
 }
 
-// The triangle rows of a surface whose faces are not indexed, or nothing when
-// a face is not a triangle. The dart lines are cut into one range per worker
-// of the pool, each scanned into its own uninitialized buffer (the first one
-// is the result); the others' rows are then appended in range order.
-std::optional<std::vector<uint32>> unindexed_triangles(const CMap2& m)
+// The (F, 3) rows of a surface whose faces are not indexed and whose vertices
+// are, or nothing when a face is not a triangle.
+//
+// The dart lines are cut into one range per worker of the pool, at multiples
+// of 3, and the ranges are scanned in parallel without the GIL, each writing
+// its rows into its own part of one buffer of 1 value per dart line (3 values
+// per triangle of 3 darts: all the rows fit): range [b, e) gets the values
+// [b, e). The parts are then moved together and the buffer shrunk in place.
+// The darts of a loaded surface are the faces' darts in file order, so every
+// range's rows fit its part. When they do not (an edited map whose faces
+// reach beyond their range), a second try counts each range's rows first and
+// writes them at their exact offsets.
+std::optional<py::array_t<uint32>> unindexed_triangles(const CMap2& m)
 {
 	const uint32 end = container_of<Orbit::DART>(m).end_index();
 	const uint32 parts = end < (1u << 16) || detail::run_sequentially() ? 1u : thread_pool()->nb_workers();
-	std::vector<uint32> first;
-	std::vector<std::unique_ptr<uint32[]>> others(parts);
-	std::vector<uint32> written(parts, 0);
-	const auto range = [&](uint32 k) {
-		return std::pair(uint32(uint64(end) * k / parts), uint32(uint64(end) * (k + 1) / parts));
+	const auto cut = [&](uint32 k) { return k == parts ? end : uint32(uint64(end) * k / parts / 3 * 3); };
+	const auto for_each_range = [&](const auto& body) {
+		py::gil_scoped_release release;
+		if (parts == 1)
+			body(0u);
+		else
+			detail::parallel_for_chunks(parts, 1, detail::ChunkBody([&](uint32 kb, uint32 ke) {
+											for (uint32 k = kb; k < ke; ++k)
+												body(k);
+										}));
 	};
-	first.resize(std::size_t(end)); // all the triangles fit: 3 values per 3 darts
-	for (uint32 k = 1; k < parts; ++k)
-	{
-		const auto [b, e] = range(k);
-		others[k].reset(new uint32[std::min<uint64>(3 * uint64(e - b), end)]); // 3 values per dart at most
-	}
-	const auto scan = [&](uint32 kb, uint32 ke) {
-		for (uint32 k = kb; k < ke; ++k)
-		{
-			const auto [b, e] = range(k);
-			written[k] = triangle_rows(m, b, e, k == 0 ? first.data() : others[k].get());
-		}
+	const auto has = [](const std::vector<uint32>& rows, uint32 v) {
+		return std::find(rows.begin(), rows.end(), v) != rows.end();
 	};
-	if (parts == 1)
-		scan(0, 1);
-	else
-		detail::parallel_for_chunks(parts, 1, detail::ChunkBody(scan));
-	if (std::find(written.begin(), written.end(), INVALID_INDEX) != written.end())
+
+	std::vector<uint32> rows(parts + 1, 0); // rows[k + 1]: the rows of range k
+	std::unique_ptr<uint32, decltype(&std::free)> buffer(
+		static_cast<uint32*>(std::malloc(std::max<std::size_t>(end, 1) * sizeof(uint32))), &std::free);
+	if (!buffer)
+		throw std::bad_alloc();
+	for_each_range([&](uint32 k) {
+		const uint32 b = cut(k), e = cut(k + 1);
+		rows[k + 1] = triangle_rows(m, b, e, buffer.get() + b, (e - b) / 3);
+	});
+	if (has(rows, NOT_A_TRIANGLE))
 		return std::nullopt;
-	std::size_t size = written[0];
-	for (uint32 k = 1; k < parts; ++k)
+	if (!has(rows, NO_ROOM))
 	{
-		std::copy(others[k].get(), others[k].get() + written[k], first.begin() + std::ptrdiff_t(size));
-		size += written[k];
+		std::size_t size = 0;
+		for (uint32 k = 0; k < parts; ++k)
+		{
+			const std::size_t values = 3 * std::size_t(rows[k + 1]);
+			std::memmove(buffer.get() + size, buffer.get() + cut(k), values * sizeof(uint32));
+			size += values;
+		}
+		// realloc shrinks a large block where it is, giving the tail back
+		if (auto* shrunk =
+				static_cast<uint32*>(std::realloc(buffer.get(), std::max<std::size_t>(size, 1) * sizeof(uint32))))
+		{
+			(void)buffer.release();
+			buffer.reset(shrunk);
+		}
+		uint32* const data = buffer.get();
+		py::capsule owner(data, [](void* p) { std::free(p); });
+		(void)buffer.release(); // the capsule owns it now
+		return py::array_t<uint32>({py::ssize_t(size / 3), py::ssize_t(3)},
+								   {py::ssize_t(3 * sizeof(uint32)), py::ssize_t(sizeof(uint32))}, data, owner);
 	}
-	first.resize(size);
-	return first;
+	buffer.reset();
+
+	for_each_range([&](uint32 k) { rows[k + 1] = triangle_rows(m, cut(k), cut(k + 1), nullptr, 0); });
+	std::partial_sum(rows.begin(), rows.end(), rows.begin());
+	py::array_t<uint32> result({py::ssize_t(rows[parts]), py::ssize_t(3)});
+	uint32* const out = result.mutable_data();
+	for_each_range(
+		[&](uint32 k) { triangle_rows(m, cut(k), cut(k + 1), out + 3 * std::size_t(rows[k]), rows[k + 1] - rows[k]); });
+	return result;
 }
 
 // The triangle rows of the faces foreach_face_dart visits (surfaces), or of
@@ -345,18 +407,26 @@ std::optional<std::vector<uint32>> walked_triangles(const MAP& m)
 	return out;
 }
 
+constexpr const char* NOT_TRIANGLES = "the mesh has faces that are not triangles: use faces_csr()";
+
 // (F, 3) array when every face is a triangle.
 template <typename MAP>
 py::array_t<uint32> triangles(MAP& m)
 {
 	using Face = typename mesh_traits<MAP>::Face;
-	std::optional<std::vector<uint32>> rows;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
 	if constexpr (MAP::dimension == 2)
-		rows = is_indexed<Face>(m) ? walked_triangles(m) : unindexed_triangles(m);
-	else
-		rows = walked_triangles(m);
+	{
+		if (!is_indexed<Face>(m) && is_indexed<Vertex>(m))
+		{
+			if (auto rows = unindexed_triangles(m))
+				return *std::move(rows);
+			throw py::value_error(NOT_TRIANGLES);
+		}
+	}
+	std::optional<std::vector<uint32>> rows = walked_triangles(m);
 	if (!rows)
-		throw py::value_error("the mesh has faces that are not triangles: use faces_csr()");
+		throw py::value_error(NOT_TRIANGLES);
 	const py::ssize_t nb_rows = py::ssize_t(rows->size() / 3);
 	auto* heap = new std::vector<uint32>(std::move(*rows));
 	py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<uint32>*>(p); });

@@ -29,6 +29,29 @@ def test_load_gives_the_files_mesh(data):
     assert sorted(canon(list(t)) for t in got) == sorted(canon(f) for f in faces)
 
 
+@pytest.mark.parametrize("workers", [1, 2])
+def test_faces_are_the_rows_of_faces_csr_whatever_the_dart_order(data, tmp_path, workers):
+    # faces() scans the darts in ranges, one per worker: on a loaded surface
+    # (the darts of each face consecutive) and on a subdivided one (new darts
+    # at the end, so a range holds more triangles than its share of darts),
+    # it gives the rows of faces_csr, in the same order
+    n = cgogn.nb_workers()
+    cgogn.set_nb_workers(workers)
+    try:
+        edited = cgogn.load(str(data / "surface" / "hemisphere.off"))
+        edited.subdivide("loop", 2)
+        assert edited.nb_darts() > 2**16  # enough darts for one range per worker
+        edited.save(str(tmp_path / "big.off"))
+        loaded = cgogn.load(str(tmp_path / "big.off"))
+        for m in (edited, loaded):
+            offsets, indices = m.faces_csr()
+            got = m.faces()
+            assert got.shape == (m.nb_cells("face"), 3)
+            assert np.array_equal(got, indices.reshape(-1, 3))
+    finally:
+        cgogn.set_nb_workers(n)
+
+
 def test_polygons_need_faces_csr(data):
     m = cgogn.load(str(data / "surface" / "cube_quad.off"))
     with pytest.raises(ValueError, match="faces_csr"):
