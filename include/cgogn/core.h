@@ -9,6 +9,7 @@
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/map/betas.h>
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/mesh_traits.h>

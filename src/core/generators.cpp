@@ -129,6 +129,82 @@ SurfaceSoup torus_soup(uint32 nu, uint32 nv, bool triangles)
 	return s;
 }
 
+SurfaceSoup mobius_soup(uint32 n, bool triangles)
+{
+	SurfaceSoup s;
+	s.nb_vertices = 2 * n;
+	// vertex (i, side): at angle t = 2 pi i / n, the segment across the strip
+	// turned by t / 2 around the circle's tangent, so it has turned half a
+	// turn after a full loop: side 0 of the last ring meets side 1 of the first
+	for (uint32 i = 0; i < n; ++i)
+	{
+		const double t = 2.0 * std::numbers::pi * i / n;
+		for (double w : {-0.25, 0.25})
+		{
+			const double r = 1.0 + w * std::cos(t / 2);
+			s.positions.push_back({r * std::cos(t), r * std::sin(t), w * std::sin(t / 2)});
+		}
+	}
+	auto v = [&](uint32 i, uint32 side) { return 2 * i + side; };
+	for (uint32 i = 0; i + 1 < n; ++i)
+		add_quad(s, v(i, 0), v(i + 1, 0), v(i + 1, 1), v(i, 1), triangles);
+	add_quad(s, v(n - 1, 0), v(0, 1), v(0, 0), v(n - 1, 1), triangles);
+	return s;
+}
+
+SurfaceSoup klein_bottle_soup(uint32 nu, uint32 nv, bool triangles)
+{
+	SurfaceSoup s = torus_soup(nu, nv, triangles);
+	// the ring i = nu is ring 0 reversed: rewrite the last row of faces
+	s.face_sizes.clear();
+	s.face_vertices.clear();
+	auto v = [&](uint32 i, uint32 j) { return i == nu ? (nv - j % nv) % nv : i * nv + (j % nv); };
+	for (uint32 i = 0; i < nu; ++i)
+		for (uint32 j = 0; j < nv; ++j)
+			add_quad(s, v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1), triangles);
+	return s;
+}
+
+SurfaceSoup hemi_icosahedron_soup()
+{
+	SurfaceSoup s;
+	s.nb_vertices = 6;
+	// the north pole and the upper ring of 5 of the unit icosahedron
+	s.positions.push_back({0.0, 0.0, 1.0});
+	const double z = 1.0 / std::sqrt(5.0), r = 2.0 / std::sqrt(5.0);
+	for (uint32 k = 0; k < 5; ++k)
+	{
+		const double t = 2.0 * std::numbers::pi * k / 5;
+		s.positions.push_back({r * std::cos(t), r * std::sin(t), z});
+	}
+	// the 5 triangles around the pole, and the 5 of the antipodal band, whose
+	// lower ring vertex k + 5/2 is upper vertex k + 2 or k + 3 identified
+	constexpr uint32 faces[10][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 5, 1},
+									 {1, 2, 4}, {2, 3, 5}, {3, 4, 1}, {4, 5, 2}, {5, 1, 3}};
+	for (const auto& f : faces)
+	{
+		s.face_sizes.push_back(3);
+		s.face_vertices.insert(s.face_vertices.end(), {f[0], f[1], f[2]});
+	}
+	return s;
+}
+
+SurfaceSoup hemi_cube_soup()
+{
+	SurfaceSoup s;
+	s.nb_vertices = 4;
+	// one vertex of each antipodal pair of the cube
+	s.positions = {{1.0, 1.0, 1.0}, {-1.0, 1.0, 1.0}, {-1.0, -1.0, 1.0}, {1.0, -1.0, 1.0}};
+	// the three 4-cycles of K4: each edge in two of them
+	constexpr uint32 faces[3][4] = {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}};
+	for (const auto& f : faces)
+	{
+		s.face_sizes.push_back(4);
+		s.face_vertices.insert(s.face_vertices.end(), {f[0], f[1], f[2], f[3]});
+	}
+	return s;
+}
+
 VolumeSoup tet_grid_soup(uint32 nx, uint32 ny, uint32 nz)
 {
 	VolumeSoup s;

@@ -66,6 +66,64 @@ void check_unused_lines(const AttributeContainer& c, Orbit o,
 			}
 }
 
+// The G-map relations: fixed-point-free involutions, beta_j o beta_i an
+// involution for i + 2 <= j, the boundary mark constant on faces (beta0,
+// beta1) and never on both sides of beta_n, faces of 3 edges or more.
+template <typename MAP>
+void check_beta_relations(const MAP& m, Checker& ck)
+{
+	const auto& betas = detail::state_of(m).relations;
+	bool relations_ok = true;
+	foreach_dart(m, [&](Dart d) {
+		for (std::size_t r = 0; r < betas.size(); ++r)
+		{
+			const std::string name = "beta" + std::to_string(r);
+			const Dart e((*betas[r])[d.index]);
+			if (!is_dart_valid(m, e))
+			{
+				ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
+					   name + " points to a dart that is not live");
+				relations_ok = false;
+			}
+			else if (e == d)
+				ck.add(Kind::PhiFixedPoint, Orbit::DART, d.index, INVALID_INDEX,
+					   name + " has a fixed point: the map is not closed");
+			else if (Dart((*betas[r])[e.index]) != d)
+				ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX, name + " is not an involution");
+		}
+	});
+	if (!relations_ok)
+		return;
+	if constexpr (MAP::dimension >= 2)
+	{
+		foreach_dart(m, [&](Dart d) {
+			if (beta<0, 2, 0, 2>(m, d) != d)
+				ck.add(Kind::BetaCompositionNotInvolution, Orbit::DART, d.index, INVALID_INDEX,
+					   "beta2 o beta0 is not an involution");
+		});
+		uint32 marked = 0;
+		foreach_dart(m, [&](Dart d) {
+			const bool b = is_boundary(m, d);
+			marked += b;
+			if (b && is_boundary(m, beta2(m, d)))
+				ck.add(Kind::BoundaryLinked, Orbit::DART, d.index, INVALID_INDEX, "beta2 links two boundary darts");
+			if (is_boundary(m, beta0(m, d)) != b || is_boundary(m, beta1(m, d)) != b)
+				ck.add(Kind::BoundaryMarkNotConstant, Orbit::DART, d.index, INVALID_INDEX,
+					   "the boundary mark is not constant on a boundary cell");
+			const Dart x = beta<0, 1>(m, d);
+			if (!b && (x == d || beta<0, 1>(m, x) == d))
+				ck.add(Kind::ShortFace, Orbit::BETA0_BETA1, d.index, INVALID_INDEX, "a face has fewer than 3 edges");
+		});
+		if (marked != detail::state_of(m).nb_boundary_darts)
+			ck.add(Kind::BoundaryCountWrong, Orbit::DART, INVALID_INDEX, INVALID_INDEX,
+				   "the map counts " + std::to_string(detail::state_of(m).nb_boundary_darts) + " boundary darts, " +
+					   std::to_string(marked) + " are marked");
+	}
+}
+
+template <typename MAP>
+void check_phi_relations(const MAP& m, Checker& ck);
+
 template <typename MAP>
 void check_relations(const MAP& m, Checker& ck)
 {
@@ -81,6 +139,19 @@ void check_relations(const MAP& m, Checker& ck)
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
 			check_unused_lines(*detail::state_of(m).cells[o], Orbit(o), {&detail::state_of(m).cells[o]->key()}, ck);
 	}
+	if constexpr (is_gmap_v<MAP>)
+		check_beta_relations(m, ck);
+	else
+		check_phi_relations(m, ck);
+}
+
+// The combinatorial map relations: phi1 a permutation, phi_i fixed-point-free
+// involutions (and phi3 o phi1 one), the boundary mark constant on boundary
+// cells and never on both sides of phi_n, faces of 3 edges or more.
+template <typename MAP>
+void check_phi_relations(const MAP& m, Checker& ck)
+{
+	const AttributeContainer& darts = *detail::state_of(m).darts;
 	std::vector<uint8> phi1_preimages(darts.end_index(), 0);
 	bool relations_ok = true;
 	foreach_dart(m, [&](Dart d) {
@@ -190,6 +261,15 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 		f(phi1(m, d));
 		f(phi2(m, d));
 		f(phi3(m, d));
+	}
+	else if constexpr (O != Orbit::DART)
+	{
+		if constexpr (orbit_uses_beta(O, 0))
+			f(beta0(m, d));
+		if constexpr (orbit_uses_beta(O, 1))
+			f(beta1(m, d));
+		if constexpr (orbit_uses_beta(O, 2))
+			f(beta2(m, d));
 	}
 }
 
@@ -312,6 +392,16 @@ IntegrityReport check_integrity(const CMap3& m)
 {
 	return check_map<CMap3, Orbit::PHI1, Orbit::PHI2, Orbit::PHI21, Orbit::PHI1_PHI2, Orbit::PHI1_PHI3,
 					 Orbit::PHI2_PHI3, Orbit::PHI21_PHI31, Orbit::PHI1_PHI2_PHI3>(m);
+}
+
+IntegrityReport check_integrity(const GMap1& m)
+{
+	return check_map<GMap1, Orbit::BETA0, Orbit::BETA1, Orbit::BETA0_BETA1>(m);
+}
+
+IntegrityReport check_integrity(const GMap2& m)
+{
+	return check_map<GMap2, Orbit::BETA0_BETA1, Orbit::BETA0_BETA2, Orbit::BETA1_BETA2, Orbit::BETA0_BETA1_BETA2>(m);
 }
 
 } // namespace cgogn

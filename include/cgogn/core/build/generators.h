@@ -39,6 +39,23 @@ SurfaceSoup sphere_soup(uint32 nu, uint32 nv, bool triangles = false);
 /// A closed torus (radii 1 and 0.5): nu x nv quads, or 2 nu nv triangles.
 /// Precondition: nu, nv >= 3.
 SurfaceSoup torus_soup(uint32 nu, uint32 nv, bool triangles = false);
+/// A Möbius strip of n quads (n >= 3) around a circle of radius 1, width
+/// 0.5: 2n vertices, one boundary loop, Euler characteristic 0, not
+/// orientable. Built into a GMap2 it stays whole; a CMap2 cannot hold it.
+SurfaceSoup mobius_soup(uint32 n, bool triangles = false);
+/// A Klein bottle: the nu x nv quad torus whose last ring is glued back to
+/// the first one reversed ((nu, j) ~ (0, -j)); closed, Euler characteristic
+/// 0, not orientable. Positions are those of the torus (the glued ring does
+/// not meet in space). Precondition: nu, nv >= 3.
+SurfaceSoup klein_bottle_soup(uint32 nu, uint32 nv, bool triangles = false);
+/// The projective plane as a hemi-icosahedron: 6 vertices, 15 edges, 10
+/// triangles (the icosahedron with opposite points identified); closed,
+/// Euler characteristic 1, not orientable. Positions: one vertex of each
+/// antipodal pair of the unit icosahedron.
+SurfaceSoup hemi_icosahedron_soup();
+/// The projective plane as a hemi-cube: 4 vertices, 6 edges, 3 quads (the
+/// cube with opposite points identified); Euler characteristic 1.
+SurfaceSoup hemi_cube_soup();
 /// An nx x ny x nz grid of unit cubes, each split into 6 positively oriented
 /// tetrahedra (conforming across cubes).
 VolumeSoup tet_grid_soup(uint32 nx, uint32 ny, uint32 nz);
@@ -46,6 +63,10 @@ VolumeSoup tet_grid_soup(uint32 nx, uint32 ny, uint32 nz);
 VolumeSoup hex_grid_soup(uint32 nx, uint32 ny, uint32 nz);
 
 inline BuildReport build_surface(CMap2& m, const SurfaceSoup& s)
+{
+	return build_surface(m, s.nb_vertices, s.face_sizes, s.face_vertices);
+}
+inline BuildReport build_surface(GMap2& m, const SurfaceSoup& s)
 {
 	return build_surface(m, s.nb_vertices, s.face_sizes, s.face_vertices);
 }

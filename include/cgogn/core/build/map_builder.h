@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 
 #include <span>
 #include <utility>
@@ -50,6 +51,17 @@ struct BuildReport
 /// vertex or an id out of range are skipped and counted; non-manifold edges are
 /// detached and non-manifold vertices split (see BuildReport). O(total size).
 BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> face_sizes,
+						  std::span<const uint32> face_vertices);
+
+/// Builds closed 2-G-map faces from a polygon soup and appends them to m, as
+/// build_surface for a CMap2 does, with one difference: two faces sharing an
+/// edge are glued whatever their orientations, so a soup that cannot be
+/// oriented consistently (a Möbius strip, a Klein bottle) is kept whole, with
+/// no face flipped and no edge detached. A face of n vertices has 2n darts,
+/// consecutive, starting at its first vertex. Edges shared by more than two
+/// faces are detached past the second face (nb_nonmanifold_edges), and
+/// non-manifold vertices split, as for CMap2. O(total size).
+BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> face_sizes,
 						  std::span<const uint32> face_vertices);
 
 /// Builds a closed 3-map from a list of cells and appends them to m. A cell of 4

@@ -30,12 +30,16 @@ struct MapState
 	/// Per-orbit dart attribute holding each dart's cell index (nullptr while
 	/// the orbit is not indexed).
 	std::array<AttributeArray<uint32>*, NB_ORBITS> cell_index{};
-	/// phi1 is the key of the dart container: a dart is live when its phi1 is valid.
+	/// The key of the dart container: a dart is live when its key is valid.
+	/// phi1 in a combinatorial map, beta0 in a generalized map.
 	AttributeArray<uint32>* phi1 = nullptr;
 	/// phi2 and phi3, for the maps of dimension 2 and 3 (nullptr below).
 	AttributeArray<uint32>* phi2 = nullptr;
 	AttributeArray<uint32>* phi3 = nullptr;
-	/// phi1, phi2, ... phin in this order.
+	/// beta0, beta1, ... betan, for the generalized maps (beta0 is the key;
+	/// nullptr in a combinatorial map and above the map's dimension).
+	std::array<AttributeArray<uint32>*, 4> beta{};
+	/// phi1, phi2, ... phin (or beta0, beta1, ... betan) in this order.
 	std::vector<AttributeArray<uint32>*> relations;
 	MarkAttribute* boundary = nullptr;
 	/// Number of live darts carrying the boundary mark (kept by
@@ -51,7 +55,7 @@ const MapState& state_of(const CMapBase& m);
 
 } // namespace detail
 
-/// The base of every combinatorial map: its darts, relations, cells and
+/// The base of every map, combinatorial or generalized: its darts, relations, cells and
 /// attributes (see detail::MapState).
 ///
 /// The state is private: programs use the free functions (phi1(m, d),
@@ -63,17 +67,8 @@ const MapState& state_of(const CMapBase& m);
 class CMapBase
 {
 public:
-	CMapBase()
+	CMapBase() : CMapBase("__phi1")
 	{
-		state_.darts = std::make_unique<AttributeContainer>("__phi1");
-		state_.phi1 = &state_.darts->key();
-		state_.relations.push_back(state_.phi1);
-		state_.boundary = state_.darts->add_persistent_mark();
-		for (uint32 o = 0; o < NB_ORBITS; ++o)
-		{
-			state_.cells[o] = std::make_unique<AttributeContainer>("__dart");
-			state_.cells[o]->set_orbit(Orbit(o));
-		}
 	}
 	/// Takes the darts, cells and attributes of another map. Attribute handles
 	/// and marks stay valid (their containers do not move); the moved-from map
@@ -87,6 +82,22 @@ public:
 	CMapBase& operator=(const CMapBase&) = delete;
 
 protected:
+	/// A map whose first relation, the key of the dart container, is named
+	/// `key_name` ("__phi1" for the combinatorial maps, "__beta0" for the
+	/// generalized ones).
+	explicit CMapBase(const std::string& key_name)
+	{
+		state_.darts = std::make_unique<AttributeContainer>(key_name);
+		state_.phi1 = &state_.darts->key();
+		state_.relations.push_back(state_.phi1);
+		state_.boundary = state_.darts->add_persistent_mark();
+		for (uint32 o = 0; o < NB_ORBITS; ++o)
+		{
+			state_.cells[o] = std::make_unique<AttributeContainer>("__dart");
+			state_.cells[o]->set_orbit(Orbit(o));
+		}
+	}
+
 	/// Adds the dart attribute of the next relation (phi2, then phi3), invalid
 	/// on every dart until sewn; called by the constructors of CMap2 and CMap3.
 	void add_relation(const std::string& name)
@@ -94,6 +105,17 @@ protected:
 		AttributeArray<uint32>* a = state_.darts->add_attribute<uint32>(name, INVALID_INDEX).get();
 		state_.relations.push_back(a);
 		(state_.relations.size() == 2 ? state_.phi2 : state_.phi3) = a;
+	}
+
+	/// Adds the dart attribute of the next involution (beta1, then beta2, ...),
+	/// invalid on every dart until sewn; called by the constructors of the
+	/// generalized maps, whose beta0 is the key.
+	void add_beta_relation(const std::string& name)
+	{
+		state_.beta[0] = state_.phi1;
+		AttributeArray<uint32>* a = state_.darts->add_attribute<uint32>(name, INVALID_INDEX).get();
+		state_.beta[state_.relations.size()] = a;
+		state_.relations.push_back(a);
 	}
 
 private:

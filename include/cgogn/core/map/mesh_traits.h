@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 
 #include <concepts>
 #include <tuple>
@@ -70,6 +71,44 @@ struct mesh_traits<CMap3>
 	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
 	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
 };
+
+/// The traits of a 1-G-map.
+template <>
+struct mesh_traits<GMap1>
+{
+	static constexpr uint32 dimension = 1; ///< The dimension of the map.
+	using MapType = GMap1;                 ///< The map type.
+	using Vertex = GMap1::Vertex;          ///< See GMap1::Vertex.
+	using Edge = GMap1::Edge;              ///< See GMap1::Edge.
+	using Face = GMap1::Face;              ///< See GMap1::Face.
+	/// The cell types: views keep one predicate or cell set per entry.
+	using Cells = std::tuple<Vertex, Edge, Face>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
+};
+
+/// The traits of a 2-G-map.
+template <>
+struct mesh_traits<GMap2>
+{
+	static constexpr uint32 dimension = 2; ///< The dimension of the map.
+	using MapType = GMap2;                 ///< The map type.
+	using Vertex = GMap2::Vertex;          ///< See GMap2::Vertex.
+	using Edge = GMap2::Edge;              ///< See GMap2::Edge.
+	using Face = GMap2::Face;              ///< See GMap2::Face.
+	using Volume = GMap2::Volume;          ///< See GMap2::Volume.
+	/// The cell types: views keep one predicate or cell set per entry.
+	using Cells = std::tuple<Vertex, Edge, Face, Volume>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
+};
+
+/// True for the generalized maps (GMap1, GMap2), whose relations are the
+/// involutions beta_i; false for the combinatorial maps and the views.
+template <typename M>
+inline constexpr bool is_gmap_v = std::derived_from<M, GMap1>;
 
 /// A type usable as a mesh by generic algorithms: a map or a view on one.
 template <typename M>

@@ -75,4 +75,26 @@ constexpr bool orbit_uses_phi(Orbit o, uint32 k)
 	}
 }
 
+/// True when the orbit uses beta_k among its generators (the G-map orbits).
+constexpr bool orbit_uses_beta(Orbit o, uint32 k)
+{
+	switch (o)
+	{
+	case Orbit::BETA0:
+		return k == 0;
+	case Orbit::BETA1:
+		return k == 1;
+	case Orbit::BETA0_BETA1:
+		return k == 0 || k == 1;
+	case Orbit::BETA0_BETA2:
+		return k == 0 || k == 2;
+	case Orbit::BETA1_BETA2:
+		return k == 1 || k == 2;
+	case Orbit::BETA0_BETA1_BETA2:
+		return k <= 2;
+	default:
+		return false;
+	}
+}
+
 } // namespace cgogn

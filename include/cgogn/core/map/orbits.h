@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/map/darts.h>
+#include <cgogn/core/map/betas.h>
 #include <cgogn/core/marking/dart_marker.h>
 
 namespace cgogn
@@ -59,12 +59,36 @@ bool foreach_dart_of_vertex3(const MAP& m, Dart d, const FUNC& f)
 	return foreach_dart_flood(m, d, f, turn, cross);
 }
 
+/// The rest of the orbit of two involutions that is a path, not a cycle:
+/// having met a fixed point going one way from d, walks the other way from d,
+/// starting with `first`, then alternating. Returns false when f stopped.
+template <typename FUNC, typename VIEW>
+bool walk_path_back(Dart d, const FUNC& f, const VIEW& first, const VIEW& second)
+{
+	Dart it = d;
+	for (;;)
+	{
+		const Dart e(first[it.index]);
+		if (e == it)
+			return true;
+		if (!call_and_continue(f, e))
+			return false;
+		const Dart g(second[e.index]);
+		if (g == e)
+			return true;
+		if (!call_and_continue(f, g))
+			return false;
+		it = g;
+	}
+}
+
 /// True for the orbits that foreach_dart_of_orbit floods with a mark and a
 /// work list (volumes, 3-D vertices, connected components); the others are
 /// walked as one or two cycles.
 constexpr bool orbit_is_flooded(Orbit o)
 {
-	return o == Orbit::PHI1_PHI2 || o == Orbit::PHI21_PHI31 || o == Orbit::PHI1_PHI2_PHI3;
+	return o == Orbit::PHI1_PHI2 || o == Orbit::PHI21_PHI31 || o == Orbit::PHI1_PHI2_PHI3 ||
+		   o == Orbit::BETA0_BETA1_BETA2;
 }
 
 /// Breadth-first visit of the orbit O of d with a mark and a work list owned by
@@ -99,6 +123,12 @@ void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vect
 		{
 			visit(phi1(m, phi2(m, x)));
 			visit(phi1(m, phi3(m, x)));
+		}
+		else if constexpr (O == Orbit::BETA0_BETA1_BETA2)
+		{
+			visit(beta0(m, x));
+			visit(beta1(m, x));
+			visit(beta2(m, x));
 		}
 		else
 		{
@@ -223,6 +253,59 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 			m, d, f, [&](Dart x) { return phi1(m, x); }, [&](Dart x) { return phi2(m, x); },
 			[&](Dart x) { return phi3(m, x); });
 	}
+	else if constexpr (O == Orbit::BETA0 || O == Orbit::BETA1)
+	{
+		static_assert(is_gmap_v<MAP>, "orbit not available in combinatorial maps");
+		const Dart e = O == Orbit::BETA0 ? beta0(m, d) : beta1(m, d);
+		return call_and_continue(f, d) && (e == d || call_and_continue(f, e));
+	}
+	else if constexpr (O == Orbit::BETA0_BETA1 || O == Orbit::BETA1_BETA2)
+	{
+		// The orbit of two involutions a, b is one cycle d, a(d), b(a(d)), ...
+		// when both are fixed-point free (a polygon, the corners around a
+		// vertex); with fixed points (an unfinished map) it is a path, walked
+		// from d in both directions.
+		static_assert(is_gmap_v<MAP>, "orbit not available in combinatorial maps");
+		constexpr uint32 A = O == Orbit::BETA0_BETA1 ? 0 : 1;
+		constexpr uint32 B = O == Orbit::BETA0_BETA1 ? 1 : 2;
+		const auto a_of = detail::state_of(m).beta[A]->view(); // see LineStorage::View
+		const auto b_of = detail::state_of(m).beta[B]->view();
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			const Dart e(a_of[it.index]);
+			if (e == it)
+				return detail::walk_path_back(d, f, b_of, a_of);
+			if (!call_and_continue(f, e))
+				return false;
+			it = Dart(b_of[e.index]);
+			if (it == e)
+				return detail::walk_path_back(d, f, b_of, a_of);
+		} while (it != d);
+		return true;
+	}
+	else if constexpr (O == Orbit::BETA0_BETA2)
+	{
+		// an edge: d, beta0(d), beta2(d), beta0(beta2(d)) (beta0 o beta2 is an
+		// involution), two darts on a free edge of an unfinished map
+		static_assert(is_gmap_v<MAP> && MAP::dimension >= 2, "orbit not available in this map");
+		const Dart d0 = beta0(m, d), d2 = beta2(m, d);
+		if (!call_and_continue(f, d) || (d0 != d && !call_and_continue(f, d0)))
+			return false;
+		if (d2 == d)
+			return true;
+		const Dart d20 = beta0(m, d2);
+		return call_and_continue(f, d2) && (d20 == d2 || call_and_continue(f, d20));
+	}
+	else if constexpr (O == Orbit::BETA0_BETA1_BETA2)
+	{
+		static_assert(is_gmap_v<MAP> && MAP::dimension >= 2, "orbit not available in this map");
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
+			[&](Dart x) { return beta2(m, x); });
+	}
 	else
 	{
 		static_assert(O == Orbit::DART, "orbit not available in combinatorial maps");
@@ -235,7 +318,8 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 /// darts are boundary darts. Other orbits straddle the boundary and are always
 /// real cells.
 template <typename MAP, Orbit O>
-inline constexpr bool orbit_inside_top_cell_v = !orbit_uses_phi(O, MAP::dimension);
+inline constexpr bool orbit_inside_top_cell_v =
+	!orbit_uses_phi(O, MAP::dimension) && !orbit_uses_beta(O, MAP::dimension);
 
 /// True when c is a boundary cell (not part of the mesh; skipped by traversals). O(1).
 template <typename MAP, Orbit O>

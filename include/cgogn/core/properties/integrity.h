@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 
 #include <string>
 #include <vector>
@@ -15,25 +16,26 @@ struct IntegrityError
 	/// Which invariant is violated.
 	enum class Kind
 	{
-		DeadRelation,            ///< a relation points to a dart that is not live
-		Phi1NotPermutation,      ///< two darts have the same phi1
-		PhiNotInvolution,        ///< phi_i(phi_i(d)) != d for i >= 2
-		PhiFixedPoint,           ///< phi_i(d) == d for i >= 2: the map is not closed
-		Phi1Phi3NotInvolution,   ///< phi3 o phi1 is not an involution (3-maps)
-		BoundaryLinked,          ///< phi_n links two boundary darts
-		BoundaryMarkNotConstant, ///< a boundary cell is only partly marked
-		BoundaryCountWrong,      ///< the map's count of boundary darts is not the number of marked darts
-		IndexNotConstant,        ///< two darts of one orbit have different indices
-		MissingIndex,            ///< a cell of an indexed orbit has no index
-		BoundaryCellIndexed,     ///< a boundary cell has an index
-		DeadIndex,               ///< a dart refers to a free line
-		BadRepresentative,       ///< a line's representative dart is not a dart of its cell
-		IndexShared,             ///< two cells use the same line
-		FreeLineLive,            ///< the free list holds a live line
-		FreeLineDuplicate,       ///< the free list holds a line twice (it would be handed out twice)
-		StaleUnusedLine,         ///< a line never handed out since the last compaction holds an old index
-		ShortFace,               ///< a non-boundary face of a 2- or 3-map has 1 or 2 edges
-		IncidenceCacheStale,     ///< a quick incidence cache disagrees with the map (see IncidenceCache)
+		DeadRelation,                 ///< a relation points to a dart that is not live
+		Phi1NotPermutation,           ///< two darts have the same phi1
+		PhiNotInvolution,             ///< phi_i(phi_i(d)) != d for i >= 2 (beta_i(beta_i(d)) != d in a G-map)
+		PhiFixedPoint,                ///< phi_i(d) == d for i >= 2 (beta_i(d) == d in a G-map): the map is not closed
+		Phi1Phi3NotInvolution,        ///< phi3 o phi1 is not an involution (3-maps)
+		BetaCompositionNotInvolution, ///< beta_j o beta_i is not an involution for i + 2 <= j (G-maps)
+		BoundaryLinked,               ///< phi_n links two boundary darts
+		BoundaryMarkNotConstant,      ///< a boundary cell is only partly marked
+		BoundaryCountWrong,           ///< the map's count of boundary darts is not the number of marked darts
+		IndexNotConstant,             ///< two darts of one orbit have different indices
+		MissingIndex,                 ///< a cell of an indexed orbit has no index
+		BoundaryCellIndexed,          ///< a boundary cell has an index
+		DeadIndex,                    ///< a dart refers to a free line
+		BadRepresentative,            ///< a line's representative dart is not a dart of its cell
+		IndexShared,                  ///< two cells use the same line
+		FreeLineLive,                 ///< the free list holds a live line
+		FreeLineDuplicate,            ///< the free list holds a line twice (it would be handed out twice)
+		StaleUnusedLine,              ///< a line never handed out since the last compaction holds an old index
+		ShortFace,                    ///< a non-boundary face of a 2- or 3-map has 1 or 2 edges
+		IncidenceCacheStale,          ///< a quick incidence cache disagrees with the map (see IncidenceCache)
 	};
 	Kind kind;                   ///< The violated invariant.
 	Orbit orbit = Orbit::DART;   ///< The orbit of the cell or line at fault; DART for errors of the relations.
@@ -84,5 +86,11 @@ struct IntegrityReport
 IntegrityReport check_integrity(const CMap1& m);
 IntegrityReport check_integrity(const CMap2& m);
 IntegrityReport check_integrity(const CMap3& m);
+/// The same checks for a G-map, where the relations are the involutions
+/// beta_i: each a fixed-point-free involution between live darts, beta_j o
+/// beta_i an involution for i + 2 <= j, no beta_n between two boundary
+/// darts, and faces of at least 3 edges (6 darts) unless boundary.
+IntegrityReport check_integrity(const GMap1& m);
+IntegrityReport check_integrity(const GMap2& m);
 
 } // namespace cgogn

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/traversals/local_cmap3.h>
 
 namespace cgogn
@@ -182,7 +183,8 @@ inline uint32 nb_connected_components(const CMap3& m)
 template <typename MAP>
 requires std::derived_from<MAP, CMapBase> uint32 nb_boundary_components(const MAP& m)
 {
-	using Top = std::conditional_t<MAP::dimension == 3, Cell<Orbit::PHI1_PHI2>, Cell<Orbit::PHI1>>;
+	using Top = std::conditional_t<is_gmap_v<MAP>, Cell<Orbit::BETA0_BETA1>,
+								   std::conditional_t<MAP::dimension == 3, Cell<Orbit::PHI1_PHI2>, Cell<Orbit::PHI1>>>;
 	DartMarker<MAP> dm(m);
 	uint32 n = 0;
 	foreach_dart(m, [&](Dart d) {

@@ -23,7 +23,9 @@ inline constexpr uint32 PARALLEL_DART_BLOCKS_GRAIN = 16; // blocks of 64 darts
 /// (volumes, 3-D vertices, connected components) are flooded with a mark.
 constexpr bool orbit_is_cyclic(Orbit o)
 {
-	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 || o == Orbit::PHI2_PHI3;
+	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 ||
+		   o == Orbit::PHI2_PHI3 || o == Orbit::BETA0 || o == Orbit::BETA1 || o == Orbit::BETA0_BETA1 ||
+		   o == Orbit::BETA0_BETA2 || o == Orbit::BETA1_BETA2;
 }
 
 /// What one worker of a flooded traversal keeps from chunk to chunk: a mark

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/map/darts.h>
+
+namespace cgogn
+{
+
+// The involutions of the generalized maps. A new dart is a fixed point of
+// every beta_i until sewn; builders and operators leave no fixed point in a
+// finished map (holes are closed by boundary faces, as in the CMaps).
+
+/// The dart at the other end of the same edge, in the same face. O(1).
+CGOGN_INLINE Dart beta0(const GMap1& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[0])[d.index]);
+}
+
+/// The dart of the other edge at the same vertex, in the same face. O(1).
+CGOGN_INLINE Dart beta1(const GMap1& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[1])[d.index]);
+}
+
+/// The dart of the adjacent face at the same vertex of the same edge. O(1).
+CGOGN_INLINE Dart beta2(const GMap2& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[2])[d.index]);
+}
+
+/// Composition of involutions applied left to right: beta<0, 2>(m, d) is
+/// beta2(m, beta0(m, d)). O(number of relations).
+template <int... N, typename MAP>
+Dart beta(const MAP& m, Dart d)
+{
+	static_assert(((N >= 0 && N <= int(MAP::dimension)) && ...), "beta<...>: relation not available in this map");
+	auto apply = [&](int n) {
+		if (n == 0)
+			d = beta0(m, d);
+		else if (n == 1)
+			d = beta1(m, d);
+		else if constexpr (MAP::dimension >= 2)
+			d = beta2(m, d);
+	};
+	(apply(N), ...);
+	return d;
+}
+
+namespace detail
+{
+
+/// Sets beta_i(d) = e (one side only). Every change of a relation drops the
+/// quick incidence caches (see drop_incidence_caches).
+template <uint32 I, typename MAP>
+requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) inline void set_beta(MAP& m, Dart d, Dart e)
+{
+	drop_incidence_caches(m);
+	(*detail::state_of(m).beta[I])[d.index] = e.index;
+}
+
+} // namespace detail
+
+/// Links d and e by beta_i; both must be beta_i fixed points. Low level: the
+/// map is not closed while fixed points remain (builders use it).
+template <uint32 I, typename MAP>
+requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) void beta_sew(MAP& m, Dart d, Dart e)
+{
+	assert(beta<int(I)>(m, d) == d && beta<int(I)>(m, e) == e);
+	detail::set_beta<I>(m, d, e);
+	detail::set_beta<I>(m, e, d);
+}
+
+/// Unlinks d and beta_i(d), leaving two fixed points. Low level.
+template <uint32 I, typename MAP>
+requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) void beta_unsew(MAP& m, Dart d)
+{
+	const Dart e = beta<int(I)>(m, d);
+	detail::set_beta<I>(m, d, d);
+	detail::set_beta<I>(m, e, e);
+}
+
+} // namespace cgogn

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/marking/marker.h>
+#include <cgogn/core/traversals/global.h>
+
+namespace cgogn
+{
+
+// Properties of the cells of a GMap2 (as properties.h gives them for CMap2),
+// orientability, and the Euler characteristic of any map.
+
+/// Number of edges incident to v. O(degree): each edge has two darts at v
+/// (one per side, a boundary side included).
+inline uint32 degree(const GMap2& m, GMap2::Vertex v)
+{
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, v, [&](Dart) { ++n; });
+	return n / 2;
+}
+/// Number of faces incident to e (1 or 2, boundary faces excluded). O(1).
+inline uint32 degree(const GMap2& m, GMap2::Edge e)
+{
+	return uint32(!is_boundary(m, e.dart)) + uint32(!is_boundary(m, beta2(m, e.dart)));
+}
+/// Number of edges of face f. O(codegree).
+inline uint32 codegree(const GMap2& m, GMap2::Face f)
+{
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, f, [&](Dart) { ++n; });
+	return n / 2;
+}
+
+/// True when vertex v touches a boundary face. O(1) on a map without
+/// boundary, else O(degree).
+inline bool is_incident_to_boundary(const GMap2& m, GMap2::Vertex v)
+{
+	if (!has_boundary(m))
+		return false;
+	bool b = false;
+	foreach_dart_of_orbit(m, v, [&](Dart d) { return !(b = is_boundary(m, d)); });
+	return b;
+}
+/// True when edge e borders a boundary face. O(1).
+inline bool is_incident_to_boundary(const GMap2& m, GMap2::Edge e)
+{
+	return is_boundary(m, e.dart) || is_boundary(m, beta2(m, e.dart));
+}
+
+/// Number of connected components. O(number of darts).
+inline uint32 nb_connected_components(const GMap2& m)
+{
+	return nb_cells<GMap2::Volume>(m);
+}
+
+/// Whether every connected component of m can be oriented: the paper's
+/// two-colouring, each component's darts coloured so that every beta_i joins
+/// two darts of different colours (a CMap2 is then the darts of one colour).
+/// A boundary face is a face like the others: a Möbius strip stays
+/// non-orientable once closed. O(number of darts).
+template <typename MAP>
+requires std::derived_from<MAP, GMap1>
+bool is_orientable(const MAP& m)
+{
+	DartMarker<MAP> seen(m), black(m);
+	std::vector<Dart> work;
+	bool orientable = true;
+	foreach_dart(m, [&](Dart start) {
+		if (seen.is_marked(start))
+			return true;
+		seen.mark(start);
+		black.mark(start);
+		work.assign(1, start);
+		while (!work.empty() && orientable)
+		{
+			const Dart d = work.back();
+			work.pop_back();
+			const bool d_black = black.is_marked(d);
+			for (uint32 i = 0; i <= MAP::dimension; ++i)
+			{
+				const Dart e = Dart((*detail::state_of(m).beta[i])[d.index]);
+				if (e == d)
+					continue; // a free dart of an unfinished map: no constraint
+				if (!seen.is_marked(e))
+				{
+					seen.mark(e);
+					if (!d_black)
+						black.mark(e);
+					work.push_back(e);
+				}
+				else if (black.is_marked(e) == d_black)
+					orientable = false;
+			}
+		}
+		return orientable;
+	});
+	return orientable;
+}
+
+/// The Euler characteristic of the mesh: V - E + F for a surface (a 2-map
+/// or 2-G-map), V - E + F - W for a volume mesh, counting only real cells
+/// (boundary faces and volumes excluded, so a disk gives 1). O(1) for the
+/// indexed orbits, O(number of darts) for each other one.
+template <typename MAP>
+requires std::derived_from<MAP, CMapBase> &&(MAP::dimension >= 2) int64 euler_characteristic(const MAP& m)
+{
+	using T = mesh_traits<MAP>;
+	int64 chi = int64(nb_cells<typename T::Vertex>(m)) - int64(nb_cells<typename T::Edge>(m)) +
+				int64(nb_cells<typename T::Face>(m));
+	if constexpr (MAP::dimension == 3)
+		chi -= int64(nb_cells<typename T::Volume>(m));
+	return chi;
+}
+
+} // namespace cgogn

@@ -1,0 +1,236 @@
+// 2-G-maps: building from soups (orientable or not), cells, attributes,
+// traversals, properties and integrity, against known surfaces and against
+// the CMap2 built from the same soup.
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+using namespace cgogn;
+
+namespace
+{
+
+struct Counts
+{
+	uint32 vertices, edges, faces, boundary_loops, components;
+	int64 chi;
+	bool operator==(const Counts&) const = default;
+};
+
+template <typename MAP>
+Counts counts(const MAP& m)
+{
+	using T = mesh_traits<MAP>;
+	return {nb_cells<typename T::Vertex>(m), nb_cells<typename T::Edge>(m), nb_cells<typename T::Face>(m),
+			nb_boundary_components(m),       nb_connected_components(m),    euler_characteristic(m)};
+}
+
+// The sorted degrees of the vertices, and the sorted codegrees of the faces.
+template <typename MAP>
+std::pair<std::vector<uint32>, std::vector<uint32>> degrees(const MAP& m)
+{
+	using T = mesh_traits<MAP>;
+	std::vector<uint32> dv, cf;
+	foreach_cell(m, [&](typename T::Vertex v) { dv.push_back(degree(m, v)); });
+	foreach_cell(m, [&](typename T::Face f) { cf.push_back(codegree(m, f)); });
+	std::sort(dv.begin(), dv.end());
+	std::sort(cf.begin(), cf.end());
+	return {dv, cf};
+}
+
+void expect_valid(const GMap2& m)
+{
+	const IntegrityReport r = check_integrity(m);
+	EXPECT_TRUE(r.ok()) << r.to_string();
+}
+
+} // namespace
+
+TEST(GMap2, OneTriangleHasSixDartsAndABoundaryFace)
+{
+	GMap2 m;
+	const std::vector<uint32> sizes{3}, ids{0, 1, 2};
+	const BuildReport r = build_surface(m, 3, sizes, ids);
+	EXPECT_EQ(r.nb_cells_built, 1u);
+	EXPECT_EQ(r.nb_boundary_cells, 1u);
+	EXPECT_EQ(nb_darts(m), 12u); // 6 in the triangle, 6 in the hole
+	EXPECT_EQ(counts(m), (Counts{3, 3, 1, 1, 1, 1}));
+	EXPECT_TRUE(is_orientable(m));
+	expect_valid(m);
+	// a face's darts: beta0 and beta1 alternate, 3 edges
+	const Dart d(0);
+	EXPECT_EQ(beta0(m, beta0(m, d)), d);
+	EXPECT_EQ((beta<0, 1, 0, 1, 0, 1>(m, d)), d);
+	EXPECT_NE((beta<0, 1>(m, d)), d);
+	EXPECT_EQ(codegree(m, GMap2::Face(d)), 3u);
+	EXPECT_EQ(degree(m, GMap2::Vertex(d)), 2u);
+	EXPECT_EQ(degree(m, GMap2::Edge(d)), 1u);
+	EXPECT_TRUE(is_incident_to_boundary(m, GMap2::Edge(d)));
+}
+
+TEST(GMap2, MobiusStripStaysWhole)
+{
+	GMap2 m;
+	const BuildReport r = build_surface(m, mobius_soup(24));
+	EXPECT_EQ(r.nb_nonmanifold_edges, 0u);
+	EXPECT_EQ(r.nb_nonmanifold_vertices, 0u);
+	EXPECT_EQ(r.nb_boundary_cells, 1u);
+	EXPECT_EQ(counts(m), (Counts{48, 72, 24, 1, 1, 0}));
+	EXPECT_FALSE(is_orientable(m));
+	EXPECT_EQ(nb_darts(m), 24u * 8 + 48 * 2);
+	expect_valid(m);
+}
+
+TEST(GMap2, KleinBottleIsClosed)
+{
+	for (bool triangles : {false, true})
+	{
+		GMap2 m;
+		const BuildReport r = build_surface(m, klein_bottle_soup(16, 8, triangles));
+		EXPECT_EQ(r.nb_nonmanifold_edges + r.nb_nonmanifold_vertices + r.nb_boundary_cells, 0u);
+		const uint32 faces = triangles ? 256 : 128;
+		EXPECT_EQ(counts(m), (Counts{128, 128 + faces, faces, 0, 1, 0}));
+		EXPECT_FALSE(is_orientable(m));
+		EXPECT_FALSE(has_boundary(m));
+		expect_valid(m);
+	}
+}
+
+TEST(GMap2, ProjectivePlanes)
+{
+	GMap2 ico;
+	build_surface(ico, hemi_icosahedron_soup());
+	EXPECT_EQ(counts(ico), (Counts{6, 15, 10, 0, 1, 1}));
+	EXPECT_FALSE(is_orientable(ico));
+	expect_valid(ico);
+	foreach_cell(ico, [&](GMap2::Vertex v) { EXPECT_EQ(degree(ico, v), 5u); });
+
+	GMap2 cube;
+	build_surface(cube, hemi_cube_soup());
+	EXPECT_EQ(counts(cube), (Counts{4, 6, 3, 0, 1, 1}));
+	EXPECT_FALSE(is_orientable(cube));
+	expect_valid(cube);
+}
+
+TEST(GMap2, OrientableSoupsGiveTheCMap2sCells)
+{
+	const std::vector<SurfaceSoup> soups{grid_soup(7, 5), grid_soup(4, 6, true), cylinder_soup(9, 3),
+										 sphere_soup(12, 7), torus_soup(10, 6, true)};
+	for (const SurfaceSoup& s : soups)
+	{
+		CMap2 c;
+		GMap2 g;
+		build_surface(c, s);
+		build_surface(g, s);
+		EXPECT_EQ(counts(g), counts(c));
+		EXPECT_EQ(degrees(g), degrees(c));
+		EXPECT_EQ(nb_darts(g), 2 * nb_darts(c));
+		EXPECT_TRUE(is_orientable(g));
+		expect_valid(g);
+		// the same vertex lines: soup vertex i is line i in both
+		std::vector<uint32> cv, gv;
+		foreach_cell(c, [&](CMap2::Vertex v) { cv.push_back(index_of(c, v)); });
+		foreach_cell(g, [&](GMap2::Vertex v) { gv.push_back(index_of(g, v)); });
+		std::sort(cv.begin(), cv.end());
+		std::sort(gv.begin(), gv.end());
+		EXPECT_EQ(gv, cv);
+	}
+}
+
+TEST(GMap2, AttributesOnEveryCellKind)
+{
+	GMap2 m;
+	const SurfaceSoup s = torus_soup(6, 4);
+	build_surface(m, s);
+	auto pos = add_attribute<std::array<double, 3>, GMap2::Vertex>(m, "position");
+	for (uint32 v = 0; v < s.nb_vertices; ++v)
+		(*pos)[v] = s.positions[v];
+	auto edge_id = add_attribute<uint32, GMap2::Edge>(m, "id");
+	auto face_area = add_attribute<double, GMap2::Face>(m, "area");
+	EXPECT_TRUE(is_indexed<GMap2::Edge>(m));
+	EXPECT_TRUE(is_indexed<GMap2::Face>(m));
+	uint32 k = 0;
+	foreach_cell(m, [&](GMap2::Edge e) { value<uint32>(m, edge_id, e) = k++; });
+	EXPECT_EQ(k, 48u);
+	// every dart of an edge reads the edge's value
+	foreach_cell(m, [&](GMap2::Edge e) {
+		const uint32 id = value<uint32>(m, edge_id, e);
+		foreach_dart_of_orbit(m, e, [&](Dart d) { EXPECT_EQ(value<uint32>(m, edge_id, GMap2::Edge(d)), id); });
+	});
+	foreach_cell(m, [&](GMap2::Face f) { value<double>(m, face_area, f) = 1.0; });
+	double total = 0;
+	foreach_cell(m, [&](GMap2::Face f) { total += value<double>(m, face_area, f); });
+	EXPECT_EQ(total, 24.0);
+	// the positions of a vertex's darts are the soup's
+	using Vec3 = std::array<double, 3>;
+	foreach_cell(m, [&](GMap2::Vertex v) {
+		foreach_dart_of_orbit(m, v, [&](Dart d) {
+			const Vec3& p = value<Vec3>(m, pos, GMap2::Vertex(d));
+			EXPECT_EQ(p, s.positions[index_of(m, v)]);
+		});
+	});
+	expect_valid(m);
+}
+
+TEST(GMap2, OrbitsHaveTheirSizes)
+{
+	GMap2 m;
+	build_surface(m, grid_soup(3, 3));
+	std::map<uint32, uint32> vertex_sizes;
+	foreach_cell(m, [&](GMap2::Vertex v) {
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, v, [&](Dart) { ++n; });
+		++vertex_sizes[n];
+	});
+	// 4 corners (2 edges: 4 darts), 8 border vertices (3 edges), 4 inner (4 edges)
+	EXPECT_EQ(vertex_sizes, (std::map<uint32, uint32>{{4, 4}, {6, 8}, {8, 4}}));
+	foreach_cell(m, [&](GMap2::Edge e) {
+		uint32 n = 0;
+		foreach_dart_of_orbit(m, e, [&](Dart) { ++n; });
+		EXPECT_EQ(n, 4u);
+	});
+	// stopping a traversal early
+	uint32 seen = 0;
+	foreach_dart_of_orbit(m, GMap2::Face(Dart(0)), [&](Dart) { return ++seen < 3; });
+	EXPECT_EQ(seen, 3u);
+}
+
+TEST(GMap2, IntegrityFindsBrokenInvolutions)
+{
+	GMap2 m;
+	build_surface(m, sphere_soup(6, 4));
+	expect_valid(m);
+	// beta2 made one-sided: no longer an involution
+	const Dart d(0), e = beta2(m, d);
+	detail::set_beta<2>(m, d, beta0(m, e));
+	IntegrityReport r = check_integrity(m);
+	EXPECT_FALSE(r.ok());
+	EXPECT_TRUE(r.has(IntegrityError::Kind::PhiNotInvolution)) << r.to_string();
+	detail::set_beta<2>(m, d, e);
+	expect_valid(m);
+	// beta2 o beta0 not an involution: the far ends of two edges exchanged,
+	// so that d's edge is glued to one face at d and to another at beta0(d)
+	const Dart d0 = beta0(m, d), e0 = beta0(m, e);
+	const Dart f0 = beta0(m, beta1(m, d)), g0 = beta2(m, f0);
+	beta_unsew<2>(m, d0);
+	beta_unsew<2>(m, f0);
+	beta_sew<2>(m, d0, g0);
+	beta_sew<2>(m, e0, f0);
+	r = check_integrity(m);
+	EXPECT_TRUE(r.has(IntegrityError::Kind::BetaCompositionNotInvolution)) << r.to_string();
+}
+
+TEST(GMap2, ParallelTraversalVisitsEveryCell)
+{
+	GMap2 m;
+	build_surface(m, klein_bottle_soup(40, 30, true));
+	std::atomic<uint32> n = 0;
+	parallel_foreach_cell(m, [&](GMap2::Face) { ++n; });
+	EXPECT_EQ(n.load(), 2400u);
+	n = 0;
+	parallel_foreach_cell(m, [&](GMap2::Vertex) { ++n; });
+	EXPECT_EQ(n.load(), 1200u);
+}
