@@ -21,7 +21,7 @@ int run_info(const std::string& path, bool as_json)
 {
 	Progress progress;
 	json j;
-	with_loaded(path, progress, [&](const auto& m, const io::LoadReport& r) {
+	with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
 		progress.stage("measuring");
 		if constexpr (std::decay_t<decltype(m)>::dimension == 3)
 			j = tool::volume_info(m, r);
@@ -42,7 +42,7 @@ int run_check(const std::string& path, bool as_json)
 	Progress progress;
 	IntegrityReport report;
 	io::LoadReport load;
-	with_loaded(path, progress, [&](const auto& m, const io::LoadReport& r) {
+	with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
 		progress.stage("checking");
 		report = check_integrity(m);
 		load = r;
@@ -59,6 +59,7 @@ int run_check(const std::string& path, bool as_json)
 			errors.push_back(e.message);
 		j["errors"] = errors;
 		j["manifold"] = load.manifold();
+		j["orientable"] = load.orientable;
 		j["nonmanifold_vertices"] = load.nb_nonmanifold_vertices;
 		j["nonmanifold_edges"] = load.nb_nonmanifold_edges;
 		j["nonmanifold_faces"] = load.nb_nonmanifold_faces;
@@ -79,7 +80,7 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 	io::SaveOptions options;
 	options.binary = binary;
 	options.attributes = attributes;
-	with_loaded(in, progress, [&](const auto& m, const io::LoadReport&) {
+	with_loaded_whole(in, progress, [&](const auto& m, const io::LoadReport&) {
 		progress.stage("writing " + out);
 		if constexpr (std::decay_t<decltype(m)>::dimension == 3)
 		{

@@ -41,7 +41,12 @@ void geometry(const MAP& m, json& j)
 	double mn = std::numeric_limits<double>::infinity(), mx = 0.0, sum = 0.0;
 	uint64 n = 0;
 	foreach_cell(m, [&](Edge e) {
-		const double l = ((*pos)[index_of(m, Vertex(e.dart))] - (*pos)[index_of(m, Vertex(phi1(m, e.dart)))]).norm();
+		Dart other;
+		if constexpr (is_gmap_v<MAP>)
+			other = beta0(m, e.dart);
+		else
+			other = phi1(m, e.dart);
+		const double l = ((*pos)[index_of(m, Vertex(e.dart))] - (*pos)[index_of(m, Vertex(other))]).norm();
 		mn = std::min(mn, l);
 		mx = std::max(mx, l);
 		sum += l;
@@ -63,35 +68,54 @@ void load_report(const io::LoadReport& r, json& j)
 	j["nonmanifold_edges"] = r.nb_nonmanifold_edges;
 	j["skipped_cells"] = r.nb_cells_skipped;
 	j["holes_closed"] = r.nb_holes_closed;
+	j["orientation_conflicts"] = r.nb_orientation_conflicts;
 }
 
-} // namespace
-
-json surface_info(const CMap2& m, const io::LoadReport& r)
+template <typename MAP>
+json faces_info(const MAP& m, const io::LoadReport& r)
 {
+	using T = mesh_traits<MAP>;
 	json j;
 	j["dimension"] = 2;
-	const int64 v = nb_cells<CMap2::Vertex>(m), e = nb_cells<CMap2::Edge>(m), f = nb_cells<CMap2::Face>(m);
+	j["map"] = is_gmap_v<MAP> ? "GMap2" : "CMap2";
+	const int64 v = nb_cells<typename T::Vertex>(m), e = nb_cells<typename T::Edge>(m),
+				f = nb_cells<typename T::Face>(m);
 	j["vertices"] = v;
 	j["edges"] = e;
 	j["faces"] = f;
-	j["halfedges"] = nb_darts(m);
+	if constexpr (is_gmap_v<MAP>)
+		j["darts"] = nb_darts(m);
+	else
+		j["halfedges"] = nb_darts(m);
 	uint64 boundary_edges = 0;
-	foreach_cell(m, [&](CMap2::Edge x) { boundary_edges += is_incident_to_boundary(m, x); });
+	foreach_cell(m, [&](typename T::Edge x) { boundary_edges += is_incident_to_boundary(m, x); });
 	j["boundary_edges"] = boundary_edges;
 	const uint32 bc = nb_boundary_components(m), cc = nb_connected_components(m);
 	j["boundary_components"] = bc;
 	j["connected_components"] = cc;
 	const int64 chi = v - e + f;
 	j["euler_characteristic"] = chi;
-	// closed orientable surfaces: chi = 2 cc - 2 g (total genus over the components)
-	if (bc == 0 && cc > 0 && (2 * int64(cc) - chi) % 2 == 0)
+	bool orientable = true;
+	if constexpr (is_gmap_v<MAP>)
+		orientable = is_orientable(m);
+	j["orientable"] = orientable;
+	// closed orientable surfaces: chi = 2 cc - 2 g (total genus over the
+	// components); closed non-orientable connected ones: chi = 2 - k, with k
+	// the non-orientable genus (the number of cross-caps)
+	if (bc == 0 && cc > 0 && orientable && (2 * int64(cc) - chi) % 2 == 0)
 		j["genus"] = (2 * int64(cc) - chi) / 2;
+	else if (bc == 0 && cc == 1 && !orientable)
+		j["genus"] = 2 - chi;
 	else
 		j["genus"] = nullptr;
 	load_report(r, j);
 	std::map<uint32, uint64> degrees;
-	foreach_cell(m, [&](CMap2::Face x) { ++degrees[codegree(static_cast<const CMap1&>(m), CMap1::Face(x.dart))]; });
+	foreach_cell(m, [&](typename T::Face x) {
+		if constexpr (is_gmap_v<MAP>)
+			++degrees[codegree(m, x)];
+		else
+			++degrees[codegree(static_cast<const CMap1&>(m), CMap1::Face(x.dart))];
+	});
 	json h = json::object();
 	for (auto [d, n] : degrees)
 		h[std::to_string(d)] = n;
@@ -100,10 +124,24 @@ json surface_info(const CMap2& m, const io::LoadReport& r)
 	return j;
 }
 
+} // namespace
+
+json surface_info(const CMap2& m, const io::LoadReport& r)
+{
+	return faces_info(m, r);
+}
+
+json surface_info(const GMap2& m, const io::LoadReport& r)
+{
+	return faces_info(m, r);
+}
+
 json volume_info(const CMap3& m, const io::LoadReport& r)
 {
 	json j;
 	j["dimension"] = 3;
+	j["map"] = "CMap3";
+	j["orientable"] = true; // the volume builder orients every cell by its geometry
 	const int64 v = nb_cells<CMap3::Vertex>(m), e = nb_cells<CMap3::Edge>(m), f = nb_cells<CMap3::Face>(m),
 				w = nb_cells<CMap3::Volume>(m);
 	j["vertices"] = v;
@@ -167,22 +205,26 @@ std::string info_text(const json& j)
 	for (const char* k : {"file",
 						  "format",
 						  "dimension",
+						  "map",
 						  "vertices",
 						  "edges",
 						  "faces",
 						  "volumes",
 						  "halfedges",
+						  "darts",
 						  "boundary_edges",
 						  "boundary_faces",
 						  "boundary_components",
 						  "connected_components",
 						  "euler_characteristic",
 						  "genus",
+						  "orientable",
 						  "manifold",
 						  "isolated_vertices",
 						  "nonmanifold_vertices",
 						  "split_vertex_copies",
 						  "nonmanifold_edges",
+						  "orientation_conflicts",
 						  "nonmanifold_faces",
 						  "skipped_cells",
 						  "holes_closed",

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 #include <cgogn/io/options.h>
 
 #include <nlohmann/json.hpp>
@@ -17,6 +18,7 @@ namespace cgogn::tool
 /// bounding box, edge lengths and face degrees (and cell kinds for volumes).
 /// Keys: see the README's `cgogn info` section. O(size of m).
 nlohmann::json surface_info(const CMap2& m, const io::LoadReport& r);
+nlohmann::json surface_info(const GMap2& m, const io::LoadReport& r);
 nlohmann::json volume_info(const CMap3& m, const io::LoadReport& r);
 
 /// The same information as readable text lines.

@@ -71,6 +71,28 @@ void with_loaded(const std::string& path, Progress& progress, const FUNC& f)
 	}
 }
 
+/// As with_loaded, except that a surface that cannot be oriented is loaded
+/// into a GMap2, which keeps it whole (a CMap2 cuts it): f must also take a
+/// GMap2. The file is read twice in that case.
+template <typename FUNC>
+void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& f)
+{
+	with_loaded(path, progress, [&](auto& m, const io::LoadReport& r) {
+		if constexpr (std::decay_t<decltype(m)>::dimension == 2)
+		{
+			if (!r.orientable)
+			{
+				progress.stage("not orientable: loading " + path + " as a GMap2");
+				GMap2 g;
+				const io::LoadReport rg = io::load_surface(g, path);
+				f(g, rg);
+				return;
+			}
+		}
+		f(m, r);
+	});
+}
+
 /// Loads a surface file (throws io::Error naming the file when it is a volume format).
 void load_surface_file(CMap2& m, const std::string& path, Progress& progress);
 

@@ -10,6 +10,7 @@
 #include "index_lines.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace cgogn
 {
@@ -86,6 +87,8 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 {
 	BuildReport report;
 	report.nb_cells_read = uint32(face_sizes.size());
+	std::tie(report.orientable, report.nb_orientation_conflicts) =
+		soup_orientation(nb_vertices, face_sizes, face_vertices);
 
 	if (!is_indexed<GMap2::Vertex>(m))
 		index_cells<GMap2::Vertex>(m);

@@ -8,6 +8,7 @@
 #include "index_lines.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace cgogn
 {
@@ -48,6 +49,8 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 {
 	BuildReport report;
 	report.nb_cells_read = uint32(face_sizes.size());
+	std::tie(report.orientable, report.nb_orientation_conflicts) =
+		soup_orientation(nb_vertices, face_sizes, face_vertices);
 
 	if (!is_indexed<CMap2::Vertex>(m))
 		index_cells<CMap2::Vertex>(m);

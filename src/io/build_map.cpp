@@ -119,10 +119,12 @@ private:
 	uint64 end_;
 };
 
-uint32 darts_of_cell(uint32 size, uint32 dimension)
+// The darts the builder gives a cell of `size` vertices: one per edge of a
+// CMap2 face, two per edge of a GMap2 face, those of a CMap3 volume's faces.
+uint32 darts_of_cell(uint32 size, uint32 dimension, bool gmap)
 {
 	if (dimension == 2)
-		return size;
+		return gmap ? 2 * size : size;
 	switch (size)
 	{
 	case 4:
@@ -163,7 +165,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			tmp.assign(d.cell_vertices.begin() + std::ptrdiff_t(k), d.cell_vertices.begin() + std::ptrdiff_t(k + n));
 			k += n;
 			std::sort(tmp.begin(), tmp.end());
-			const bool ok_size = dim == 2 ? n >= 3 : darts_of_cell(n, 3) != 0;
+			const bool ok_size = dim == 2 ? n >= 3 : darts_of_cell(n, 3, false) != 0;
 			built[c] = ok_size && std::adjacent_find(tmp.begin(), tmp.end()) == tmp.end();
 		}
 	}
@@ -211,7 +213,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			if (built[c])
 			{
 				firsts.emplace_back(predict(k), c);
-				k += darts_of_cell(d.cell_sizes[c], dim);
+				k += darts_of_cell(d.cell_sizes[c], dim, is_gmap_v<MAP>);
 			}
 		for (const auto& c : d.cell_columns)
 		{
@@ -245,12 +247,18 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	rep.nb_nonmanifold_edges = br.nb_nonmanifold_edges;
 	rep.nb_nonmanifold_faces = br.nb_nonmanifold_faces;
 	rep.nb_holes_closed = br.nb_boundary_cells;
+	rep.nb_orientation_conflicts = br.nb_orientation_conflicts;
+	rep.orientable = br.orientable;
 	return rep;
 }
 
 } // namespace
 
 LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path)
+{
+	return build(m, d, path);
+}
+LoadReport build_map(GMap2& m, const MeshData& d, const std::string& path)
 {
 	return build(m, d, path);
 }

@@ -79,12 +79,14 @@ std::vector<uint32> number_vertices(const MAP& m, MeshData& d, const std::string
 	return id;
 }
 
-} // namespace
-
-MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes)
+template <typename MAP>
+MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 {
-	using Vertex = CMap2::Vertex;
-	using Face = CMap2::Face;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Face = typename mesh_traits<MAP>::Face;
+	// a G-map face's darts alternate beta0 and beta1: every other one starts
+	// an edge, in the order of the polygon
+	constexpr uint32 step = is_gmap_v<MAP> ? 2 : 1;
 	MeshData d;
 	const std::vector<uint32> id = number_vertices(m, d, path, attributes);
 	std::vector<uint32> face_lines;
@@ -92,16 +94,28 @@ MeshData extract_surface(const CMap2& m, const std::string& path, bool attribute
 	foreach_cell(m, [&](Face f) {
 		uint32 n = 0;
 		foreach_dart_of_orbit(m, f, [&](Dart x) {
-			d.cell_vertices.push_back(id[index_of(m, Vertex(x))]);
-			++n;
+			if (n++ % step == 0)
+				d.cell_vertices.push_back(id[index_of(m, Vertex(x))]);
 		});
-		d.cell_sizes.push_back(n);
+		d.cell_sizes.push_back(n / step);
 		if (faces_indexed)
 			face_lines.push_back(index_of(m, f));
 	});
 	if (attributes && faces_indexed)
 		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false);
 	return d;
+}
+
+} // namespace
+
+MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes)
+{
+	return extract_faces(m, path, attributes);
+}
+
+MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes)
+{
+	return extract_faces(m, path, attributes);
 }
 
 MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes)

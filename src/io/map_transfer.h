@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 #include <cgogn/io/options.h>
 
 #include "mesh_data.h"
@@ -18,6 +19,7 @@ namespace cgogn::io::detail
 /// Throws io::Error before touching m when an attribute of the same name but
 /// another type exists. O(size of d).
 LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path);
+LoadReport build_map(GMap2& m, const MeshData& d, const std::string& path);
 LoadReport build_map(CMap3& m, const MeshData& d, const std::string& path);
 
 /// Turns over volume cells of negative orientation (tetrahedra by their signed
@@ -31,6 +33,7 @@ uint32 orient_cells(MeshData& d);
 /// path) when there is no `position` or, for volumes, a volume is not a
 /// tetrahedron, pyramid, prism or hexahedron. O(size of m).
 MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes);
+MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes);
 MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes);
 
 } // namespace cgogn::io::detail

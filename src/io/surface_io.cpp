@@ -20,9 +20,9 @@ Format resolve(Format f, const std::string& path)
 		throw Error(path, std::string(format_name(f)) + " is not a surface format (use load_volume/save_volume)");
 	return f;
 }
-} // namespace
 
-LoadReport load_surface(CMap2& m, const std::string& path, const LoadOptions& options)
+template <typename MAP>
+LoadReport load_surface_into(MAP& m, const std::string& path, const LoadOptions& options)
 {
 	const Format f = resolve(options.format, path);
 	const std::string data = detail::read_file(path);
@@ -48,7 +48,8 @@ LoadReport load_surface(CMap2& m, const std::string& path, const LoadOptions& op
 	return r;
 }
 
-void save_surface(const CMap2& m, const std::string& path, const SaveOptions& options)
+template <typename MAP>
+void save_surface_of(const MAP& m, const std::string& path, const SaveOptions& options)
 {
 	const Format f = resolve(options.format, path);
 	const detail::MeshData d = detail::extract_surface(m, path, options.attributes);
@@ -70,6 +71,28 @@ void save_surface(const CMap2& m, const std::string& path, const SaveOptions& op
 		break;
 	}
 	detail::write_file(path, out);
+}
+
+} // namespace
+
+LoadReport load_surface(CMap2& m, const std::string& path, const LoadOptions& options)
+{
+	return load_surface_into(m, path, options);
+}
+
+LoadReport load_surface(GMap2& m, const std::string& path, const LoadOptions& options)
+{
+	return load_surface_into(m, path, options);
+}
+
+void save_surface(const CMap2& m, const std::string& path, const SaveOptions& options)
+{
+	save_surface_of(m, path, options);
+}
+
+void save_surface(const GMap2& m, const std::string& path, const SaveOptions& options)
+{
+	save_surface_of(m, path, options);
 }
 
 } // namespace cgogn::io

@@ -231,6 +231,100 @@ TEST(DataVolumeDetails, MixedMeshCellKinds)
 	EXPECT_EQ(j["cell_kinds"]["pyramids"].get<int64>(), 317);
 }
 
+struct NonOrientableFile
+{
+	const char* file;
+	int64 vertices, edges, faces, boundary_loops, chi, crosscaps; // crosscaps: -1 when not closed
+};
+
+// The non-orientable surfaces: a GMap2 holds them whole, with their exact
+// counts; a CMap2 holds them cut, and its load report says so.
+TEST(NonOrientableFiles, LoadWholeIntoAGMap2AndCutIntoACMap2)
+{
+	for (const NonOrientableFile& s : {NonOrientableFile{"mobius_strip.off", 48, 72, 24, 1, 0, -1},
+									   NonOrientableFile{"klein_bottle.off", 128, 256, 128, 0, 0, 2},
+									   NonOrientableFile{"hemi_icosahedron.off", 6, 15, 10, 0, 1, 1}})
+	{
+		SCOPED_TRACE(s.file);
+		const std::string path = data_file(std::string("surface/") + s.file);
+		GMap2 g;
+		const io::LoadReport rg = io::load_surface(g, path);
+		EXPECT_FALSE(rg.orientable);
+		EXPECT_TRUE(rg.manifold());
+		EXPECT_GT(rg.nb_orientation_conflicts, 0u);
+		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+		EXPECT_FALSE(is_orientable(g));
+		const nlohmann::json j = tool::surface_info(g, rg);
+		EXPECT_EQ(j["map"].get<std::string>(), "GMap2");
+		EXPECT_EQ(j["vertices"].get<int64>(), s.vertices);
+		EXPECT_EQ(j["edges"].get<int64>(), s.edges);
+		EXPECT_EQ(j["faces"].get<int64>(), s.faces);
+		EXPECT_EQ(j["boundary_components"].get<int64>(), s.boundary_loops);
+		EXPECT_EQ(j["euler_characteristic"].get<int64>(), s.chi);
+		EXPECT_FALSE(j["orientable"].get<bool>());
+		if (s.crosscaps >= 0)
+		{
+			EXPECT_EQ(j["genus"].get<int64>(), s.crosscaps);
+		}
+		EXPECT_EQ(rg.summary("GMap2"), "the surface is not orientable\n");
+		// the file is the core's generator written out: same vertices, same places
+		const SurfaceSoup soup = std::string(s.file) == "mobius_strip.off"   ? mobius_soup(24)
+								 : std::string(s.file) == "klein_bottle.off" ? klein_bottle_soup(16, 8)
+																			 : hemi_icosahedron_soup();
+		EXPECT_EQ(soup.face_sizes.size(), std::size_t(s.faces));
+		auto pos = get_attribute<Vec3, GMap2::Vertex>(g, "position");
+		ASSERT_TRUE(pos);
+		foreach_cell(g, [&](GMap2::Vertex v) {
+			const auto& p = soup.positions[index_of(g, v)];
+			EXPECT_LT((value<Vec3>(g, *pos, v) - Vec3(p[0], p[1], p[2])).norm(), 1e-8);
+		});
+
+		CMap2 c;
+		const io::LoadReport rc = io::load_surface(c, path);
+		EXPECT_FALSE(rc.orientable);
+		EXPECT_EQ(rc.nb_orientation_conflicts, rg.nb_orientation_conflicts);
+		EXPECT_GE(rc.nb_nonmanifold_edges, rc.nb_orientation_conflicts);
+		EXPECT_NE(rc.summary("CMap2").find("load it into a GMap2"), std::string::npos) << rc.summary("CMap2");
+		EXPECT_TRUE(check_integrity(c).ok());
+		EXPECT_EQ(nb_cells<CMap2::Face>(c), uint32(s.faces));
+		// cut along the conflicts: each of those edges is two edges there
+		EXPECT_EQ(nb_cells<CMap2::Edge>(c), uint32(s.edges) + rc.nb_orientation_conflicts);
+	}
+}
+
+// A GMap2 written in every surface format and read back gives the same cells.
+TEST(NonOrientableFiles, RoundTripThroughEveryFormat)
+{
+	const std::string tmp = testing::TempDir();
+	for (const char* file : {"mobius_strip.off", "klein_bottle.off", "hemi_icosahedron.off"})
+	{
+		GMap2 g;
+		io::load_surface(g, data_file(std::string("surface/") + file));
+		const bool triangles = std::string(file) == "hemi_icosahedron.off";
+		for (const char* ext : {".off", ".obj", ".ply", ".stl"})
+			for (bool binary : {false, true})
+			{
+				if (std::string(ext) == ".stl" && !triangles)
+					continue;
+				SCOPED_TRACE(std::string(file) + ext + (binary ? " binary" : ""));
+				const std::string out = tmp + "/gmap_round_trip" + ext;
+				io::SaveOptions o;
+				o.binary = binary;
+				io::save_surface(g, out, o);
+				GMap2 back;
+				const io::LoadReport r = io::load_surface(back, out);
+				EXPECT_FALSE(r.orientable);
+				EXPECT_TRUE(check_integrity(back).ok());
+				// STL has no shared vertices: the reader welds equal positions
+				EXPECT_EQ(nb_cells<GMap2::Vertex>(back), nb_cells<GMap2::Vertex>(g));
+				EXPECT_EQ(nb_cells<GMap2::Edge>(back), nb_cells<GMap2::Edge>(g));
+				EXPECT_EQ(nb_cells<GMap2::Face>(back), nb_cells<GMap2::Face>(g));
+				EXPECT_EQ(euler_characteristic(back), euler_characteristic(g));
+				EXPECT_EQ(nb_boundary_components(back), nb_boundary_components(g));
+			}
+	}
+}
+
 TEST(DataFolder, EveryMeshFileIsCoveredAboveOrNamedHere)
 {
 	const std::string dir = CGOGN_DATA_DIR;
@@ -256,7 +350,10 @@ TEST(DataFolder, EveryMeshFileIsCoveredAboveOrNamedHere)
 												 "triangle.off",
 												 "L.off",
 												 "vertex_onering.off",
-												 "edge_onering.off"};
+												 "edge_onering.off",
+												 "mobius_strip.off",
+												 "klein_bottle.off",
+												 "hemi_icosahedron.off"};
 	const std::set<std::string> known_volume = {
 		"armadillo_tet_461k.mesh", "heart_tet_205k.mesh", "elephant_tet_27k.mesh", "elephant_tet_8k.mesh",
 		"armadillo_tet_4k.mesh", "elephant_hex_110k.mesh", "liver_hex_624.mesh", "hex_dominant_11k.mesh",

@@ -72,6 +72,38 @@ TEST(Tool, VolumeInfoAndConvert)
 	EXPECT_NE(r.err.find("surface format"), std::string::npos) << r.err;
 }
 
+TEST(Tool, NonOrientableSurfacesAreLoadedWhole)
+{
+	TempDir dir;
+	const std::string mobius = std::string(CGOGN_DATA_DIR) + "/surface/mobius_strip.off";
+	ToolRun r = run_tool("info --json '" + mobius + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "GMap2");
+	EXPECT_EQ(j["orientable"], false);
+	EXPECT_EQ(j["manifold"], true);
+	EXPECT_EQ(j["vertices"], 48);
+	EXPECT_EQ(j["edges"], 72);
+	EXPECT_EQ(j["faces"], 24);
+	EXPECT_EQ(j["boundary_components"], 1);
+	EXPECT_EQ(j["euler_characteristic"], 0);
+	EXPECT_EQ(j["darts"], 288);
+	// convert keeps it whole, check finds it valid
+	r = run_tool("convert '" + mobius + "' '" + dir.file("m.ply") + "' --binary", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("check --json '" + dir.file("m.ply") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["ok"], true);
+	EXPECT_EQ(j["orientable"], false);
+	EXPECT_EQ(j["manifold"], true);
+	// an orientable surface stays a CMap2
+	r = run_tool("info --json '" + example_mesh() + "'", dir);
+	j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "CMap2");
+	EXPECT_EQ(j["orientable"], true);
+}
+
 TEST(Tool, CheckReportsIntegrityAndRepairs)
 {
 	TempDir dir;

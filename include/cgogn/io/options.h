@@ -82,6 +82,15 @@ struct LoadReport
 	uint32 nb_holes_closed = 0;
 	/// Volume cells given in negative orientation and turned over.
 	uint32 nb_cells_reoriented = 0;
+	/// Edges (surfaces) shared by two faces listing it in the same direction:
+	/// a CMap2 detaches the faces there (they are among nb_nonmanifold_edges),
+	/// a GMap2 glues them.
+	uint32 nb_orientation_conflicts = 0;
+	/// False when the surface cannot be oriented (a Möbius strip, a Klein
+	/// bottle, a projective plane): a CMap2 holds it cut along the conflicts
+	/// above; load it into a GMap2 to keep it whole. Volume meshes are always
+	/// orientable: their cells are oriented by their geometry.
+	bool orientable = true;
 	BuildReport build; ///< The map builder's own report.
 
 	/// True when the input needed no repair: no non-manifold vertex, edge or
@@ -92,6 +101,12 @@ struct LoadReport
 		return nb_nonmanifold_vertices == 0 && nb_nonmanifold_edges == 0 && nb_nonmanifold_faces == 0 &&
 			   nb_cells_skipped == 0;
 	}
+
+	/// What the load changed in the input, one sentence per line (empty when
+	/// nothing), for programs to show their users; `map_type` names the map
+	/// loaded into ("CMap2", "GMap2", "CMap3"), whose abilities the advice
+	/// depends on.
+	std::string summary(const std::string& map_type) const;
 };
 
 } // namespace cgogn::io

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 #include <cgogn/io/error.h>
 #include <cgogn/io/options.h>
 
@@ -28,6 +29,16 @@ LoadReport load_surface(CMap2& m, const std::string& path, const LoadOptions& op
 /// triangles only) or the file cannot be written. Vertices are numbered in
 /// the order of the vertex container. O(size of m).
 void save_surface(const CMap2& m, const std::string& path, const SaveOptions& options = {});
+
+/// The same into a GMap2: as for a CMap2, except that faces sharing an edge
+/// are glued whatever their orientations, so a surface that cannot be
+/// oriented (LoadReport::orientable false) is loaded whole, with its exact
+/// cells; the load into a CMap2 cuts it instead. O(file size).
+LoadReport load_surface(GMap2& m, const std::string& path, const LoadOptions& options = {});
+/// Writes the non-boundary faces of a GMap2, each polygon in the order of
+/// its darts (a non-orientable surface has no consistent order to keep), as
+/// save_surface for a CMap2. O(size of m).
+void save_surface(const GMap2& m, const std::string& path, const SaveOptions& options = {});
 
 // A CMap3 is a CMap2: without these, a volume map would be read as a surface.
 LoadReport load_surface(CMap3& m, const std::string& path, const LoadOptions& options = {}) = delete;

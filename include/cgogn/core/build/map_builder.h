@@ -40,7 +40,24 @@ struct BuildReport
 	std::vector<std::pair<uint32, uint32>> split_vertices;
 	/// Number of distinct soup vertices that were split.
 	uint32 nb_nonmanifold_vertices = 0;
+	/// Edges shared by exactly two faces that list it in the same direction
+	/// (surfaces). A CMap2 cannot glue them: its builder detaches the faces
+	/// there (they are counted in nb_nonmanifold_edges too); a GMap2 glues them.
+	uint32 nb_orientation_conflicts = 0;
+	/// False when the faces cannot be oriented consistently, whatever faces
+	/// are turned over (a Möbius strip, a Klein bottle): only a GMap2 keeps
+	/// such a surface whole. Judged on the edges shared by exactly two faces.
+	bool orientable = true;
 };
+
+/// Whether the faces of a polygon soup can be oriented consistently, and the
+/// number of edges shared by exactly two faces listing it in the same
+/// direction (see BuildReport): faces are coloured "kept" or "turned over"
+/// across each such edge, by a search over the faces; orientable when no face
+/// needs both. The faces the builders skip (fewer than 3 vertices, a
+/// repeated vertex, an id out of range) are ignored. O(total size x log).
+std::pair<bool, uint32> soup_orientation(uint32 nb_vertices, std::span<const uint32> face_sizes,
+										 std::span<const uint32> face_vertices);
 
 /// Builds closed 2-map faces from a polygon soup and appends them to m.
 /// `face_sizes[f]` is the number of vertices of face f and `face_vertices` their

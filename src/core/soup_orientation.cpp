@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// Orientability of a polygon soup, judged on its faces alone (no map).
+#include <cgogn/core/build/map_builder.h>
+
+#include "builder_common.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace cgogn
+{
+
+std::pair<bool, uint32> soup_orientation(uint32 nb_vertices, std::span<const uint32> face_sizes,
+										 std::span<const uint32> face_vertices)
+{
+	// every edge side: (low end, high end, face, listed from low to high)
+	struct Side
+	{
+		uint32 lo, hi, face;
+		bool forward;
+	};
+	std::vector<Side> sides;
+	sides.reserve(face_vertices.size());
+	std::size_t first = 0;
+	const uint32 nb_faces = uint32(face_sizes.size());
+	std::vector<uint32> scratch;
+	for (uint32 f = 0; f < nb_faces; ++f)
+	{
+		const uint32 n = face_sizes[f];
+		if (first + n > face_vertices.size())
+			break;
+		std::span<const uint32> fv = face_vertices.subspan(first, n);
+		first += n;
+		// the faces the builders skip are left out
+		if (n < 3 || std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }) ||
+			detail::has_repeated_vertex(fv, scratch))
+			continue;
+		for (uint32 i = 0; i < n; ++i)
+		{
+			const uint32 a = fv[i], b = fv[(i + 1) % n];
+			sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
+		}
+	}
+	std::sort(sides.begin(), sides.end(),
+			  [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
+
+	// the faces glued two by two: (other face, same direction) per face, CSR
+	std::vector<uint32> offsets(nb_faces + 1, 0);
+	std::vector<std::tuple<uint32, uint32, bool>> pairs;
+	uint32 conflicts = 0;
+	for (std::size_t i = 0; i < sides.size();)
+	{
+		std::size_t j = i;
+		while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi)
+			++j;
+		if (j - i == 2 && sides[i].face != sides[i + 1].face)
+		{
+			const bool same = sides[i].forward == sides[i + 1].forward;
+			conflicts += same;
+			pairs.emplace_back(sides[i].face, sides[i + 1].face, same);
+			++offsets[sides[i].face + 1];
+			++offsets[sides[i + 1].face + 1];
+		}
+		i = j;
+	}
+	for (uint32 f = 0; f < nb_faces; ++f)
+		offsets[f + 1] += offsets[f];
+	std::vector<std::pair<uint32, bool>> glued(offsets[nb_faces]);
+	{
+		std::vector<uint32> pos(offsets.begin(), offsets.end() - 1);
+		for (const auto& [f, g, same] : pairs)
+		{
+			glued[pos[f]++] = {g, same};
+			glued[pos[g]++] = {f, same};
+		}
+	}
+
+	// two-colour the faces: across an edge listed the same way, one of the two
+	// faces must be turned over
+	std::vector<uint8> colour(nb_faces, 2); // 2: not reached yet
+	std::vector<uint32> work;
+	for (uint32 start = 0; start < nb_faces; ++start)
+	{
+		if (colour[start] != 2)
+			continue;
+		colour[start] = 0;
+		work.assign(1, start);
+		while (!work.empty())
+		{
+			const uint32 f = work.back();
+			work.pop_back();
+			for (uint32 k = offsets[f]; k < offsets[f + 1]; ++k)
+			{
+				const auto [g, same] = glued[k];
+				const uint8 want = uint8(colour[f] ^ uint8(same));
+				if (colour[g] == 2)
+				{
+					colour[g] = want;
+					work.push_back(g);
+				}
+				else if (colour[g] != want)
+					return {false, conflicts};
+			}
+		}
+	}
+	return {true, conflicts};
+}
+
+} // namespace cgogn
