@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/build/conversion.h>
 #include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/map/betas.h>

@@ -234,3 +234,87 @@ TEST(GMap2, ParallelTraversalVisitsEveryCell)
 	parallel_foreach_cell(m, [&](GMap2::Vertex) { ++n; });
 	EXPECT_EQ(n.load(), 1200u);
 }
+
+namespace
+{
+
+// (position, degree) of every vertex, sorted: the same multiset in two maps
+// of the same surface whatever their dart and line numbers.
+template <typename MAP>
+std::vector<std::pair<std::array<double, 3>, uint32>> vertex_signature(const MAP& m)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	auto pos = get_attribute<std::array<double, 3>, Vertex>(m, "position");
+	std::vector<std::pair<std::array<double, 3>, uint32>> out;
+	foreach_cell(m, [&](Vertex v) { out.emplace_back(value(m, pos, v), degree(m, v)); });
+	std::sort(out.begin(), out.end());
+	return out;
+}
+
+template <typename MAP>
+std::vector<double> face_values(const MAP& m, const std::string& name)
+{
+	using Face = typename mesh_traits<MAP>::Face;
+	auto a = get_attribute<double, Face>(m, name);
+	std::vector<double> out;
+	foreach_cell(m, [&](Face f) { out.push_back(value(m, a, f)); });
+	std::sort(out.begin(), out.end());
+	return out;
+}
+
+template <typename MAP>
+void add_data(MAP& m, const SurfaceSoup& s)
+{
+	using T = mesh_traits<MAP>;
+	auto pos = add_attribute<std::array<double, 3>, typename T::Vertex>(m, "position");
+	for (uint32 v = 0; v < s.nb_vertices; ++v)
+		(*pos)[v] = s.positions[v];
+	auto degree_of = add_attribute<double, typename T::Face>(m, "degree");
+	foreach_cell(m, [&](typename T::Face f) { value(m, degree_of, f) = double(codegree(m, f)); });
+	add_attribute<uint32, typename T::Edge>(m, "edge_data");
+}
+
+} // namespace
+
+TEST(GMap2, ConversionsCarryCellsAndAttributes)
+{
+	for (const SurfaceSoup& s : {grid_soup(5, 4), sphere_soup(8, 5, true), torus_soup(6, 5), cylinder_soup(7, 3)})
+	{
+		CMap2 c;
+		build_surface(c, s);
+		add_data(c, s);
+		const GMap2 g = to_gmap(c);
+		expect_valid(g);
+		EXPECT_EQ(nb_darts(g), 2 * nb_darts(c));
+		EXPECT_EQ(counts(g), counts(c));
+		EXPECT_EQ(degrees(g), degrees(c));
+		EXPECT_EQ(vertex_signature(g), vertex_signature(c));
+		EXPECT_EQ(face_values(g, "degree"), face_values(c, "degree"));
+		EXPECT_TRUE((get_attribute<uint32, GMap2::Edge>(g, "edge_data")));
+		EXPECT_TRUE(is_orientable(g));
+
+		const CMap2 back = to_cmap(g);
+		EXPECT_TRUE(check_integrity(back).ok()) << check_integrity(back).to_string();
+		EXPECT_EQ(nb_darts(back), nb_darts(c));
+		EXPECT_EQ(counts(back), counts(c));
+		EXPECT_EQ(degrees(back), degrees(c));
+		EXPECT_EQ(vertex_signature(back), vertex_signature(c));
+		EXPECT_EQ(face_values(back, "degree"), face_values(c, "degree"));
+	}
+	// from a G-map built directly, too
+	GMap2 g;
+	const SurfaceSoup s = sphere_soup(9, 4);
+	build_surface(g, s);
+	add_data(g, s);
+	const CMap2 c = to_cmap(g);
+	EXPECT_TRUE(check_integrity(c).ok());
+	EXPECT_EQ(counts(c), counts(g));
+	EXPECT_EQ(vertex_signature(c), vertex_signature(g));
+}
+
+TEST(GMap2, ANonOrientableGMapHasNoCMap)
+{
+	GMap2 g;
+	build_surface(g, klein_bottle_soup(5, 4));
+	EXPECT_THROW(to_cmap(g), TopologyError);
+}

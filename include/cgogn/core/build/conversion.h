@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/map/cmap2.h>
+#include <cgogn/core/map/gmap2.h>
+
+namespace cgogn
+{
+
+/// The 2-G-map of a 2-map: each dart d of m becomes two darts, one at each
+/// end of its edge side (beta0 between them), so the result has exactly twice
+/// the darts. Every cell of m is a cell of the result, boundary faces
+/// included, and every attribute of m (vertex, edge, face, volume and dart
+/// attributes, the indices of each indexed orbit) is copied: a cell's values
+/// go to the same cell, a dart's values to both of its darts. Lines are
+/// renumbered in the order of m's live lines (the same numbers when m is
+/// compact). O(size of m x number of attributes).
+GMap2 to_gmap(const CMap2& m);
+
+/// The 2-map of an orientable 2-G-map: in each connected component, the darts
+/// of one class of the two-colouring (the class of the component's smallest
+/// dart) become the darts of the result, with phi1 = beta1 o beta0 and
+/// phi2 = beta0 o beta2 (so the result has exactly half the darts). Cells and
+/// attributes are carried as by to_gmap; a dart attribute takes the value of
+/// the kept dart. Throws TopologyError when g is not orientable (see
+/// is_orientable: no CMap2 can hold it). O(size of g x number of attributes).
+CMap2 to_cmap(const GMap2& g);
+
+} // namespace cgogn
