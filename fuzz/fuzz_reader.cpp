@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target for one reader (chosen by CGOGN_FUZZ_FORMAT at compile
 // time): any input must either throw io::Error or give data that builds into
-// a map passing check_integrity. Crashes, leaks and sanitizer reports are bugs.
+// a map passing check_integrity (a surface into both a CMap2 and a GMap2).
+// Crashes, leaks and sanitizer reports are bugs.
 //
 // With CGOGN_FUZZ_APPEND the first byte of the input chooses the reader and
 // the rest is the file, loaded into a map that already holds a mesh and
@@ -11,6 +12,7 @@
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
@@ -178,7 +180,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	if (volume)
 		load_into_non_empty_map<CMap3>(d, tet_grid_soup(1, 1, 1), path);
 	else
+	{
 		load_into_non_empty_map<CMap2>(d, grid_soup(2, 1, true), path);
+		load_into_non_empty_map<GMap2>(d, mobius_soup(3), path);
+	}
 #else
 	try
 	{
@@ -192,9 +197,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 		else
 		{
 			CMap2 m;
-			io::detail::build_map(m, d, path);
+			const io::LoadReport r = io::detail::build_map(m, d, path);
 			if (!check_integrity(m).ok())
 				std::abort();
+			GMap2 g;
+			const io::LoadReport rg = io::detail::build_map(g, d, path);
+			if (!check_integrity(g).ok() || rg.orientable != r.orientable || rg.orientable != is_orientable(g))
+				std::abort(); // the soup's orientability is the G-map's
 		}
 	}
 	catch (const io::Error&)

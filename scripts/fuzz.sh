@@ -40,6 +40,7 @@ rm -rf "$seeds"
 tool=build/release/tools/cgogn
 for t in "${targets[@]}"; do mkdir -p "$seeds/$t"; done
 cp examples/data/*.obj "$seeds/obj/"
+cp tests/data/surface/mobius_strip.off tests/data/surface/hemi_icosahedron.off "$seeds/off/"
 if [ -x "$tool" ]; then
   "$tool" convert examples/data/spot_control_mesh.obj "$seeds/off/spot.off"
   "$tool" convert examples/data/spot_control_mesh.obj "$seeds/ply/spot_ascii.ply"

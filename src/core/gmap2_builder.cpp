@@ -169,16 +169,20 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 			return false;
 		});
 	}
+	std::vector<std::pair<uint32, uint32>> detached; // the edges, each once
 	for (Dart a : sides)
 	{
 		if (beta2(m, a) != a)
 			continue;
 		// a free side whose edge has other sides: a face detached there
-		const uint32 hi = high_end(a);
+		const uint32 lo = low_end(a), hi = high_end(a);
 		bool shared = false;
-		by_low.foreach_at(low_end(a), [&](Dart e) { return !(shared = e != a && high_end(e) == hi); });
-		report.nb_nonmanifold_edges += shared;
+		by_low.foreach_at(lo, [&](Dart e) { return !(shared = e != a && high_end(e) == hi); });
+		if (shared)
+			detached.emplace_back(lo, hi);
 	}
+	std::sort(detached.begin(), detached.end());
+	report.nb_nonmanifold_edges = uint32(std::unique(detached.begin(), detached.end()) - detached.begin());
 
 	// 3. close every hole with a boundary face
 	const std::vector<Dart> boundary_darts = close_holes(m, darts, vidx);

@@ -53,13 +53,14 @@ std::pair<bool, uint32> soup_orientation(uint32 nb_vertices, std::span<const uin
 		std::size_t j = i;
 		while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi)
 			++j;
-		if (j - i == 2 && sides[i].face != sides[i + 1].face)
+		// glued two by two in face order, as the GMap2 builder glues them
+		for (std::size_t k = i; k + 1 < j; k += 2)
 		{
-			const bool same = sides[i].forward == sides[i + 1].forward;
-			conflicts += same;
-			pairs.emplace_back(sides[i].face, sides[i + 1].face, same);
-			++offsets[sides[i].face + 1];
-			++offsets[sides[i + 1].face + 1];
+			const bool same = sides[k].forward == sides[k + 1].forward;
+			conflicts += same && j - i == 2;
+			pairs.emplace_back(sides[k].face, sides[k + 1].face, same);
+			++offsets[sides[k].face + 1];
+			++offsets[sides[k + 1].face + 1];
 		}
 		i = j;
 	}

@@ -124,6 +124,7 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 			return true;
 		});
 	}
+	std::vector<std::pair<uint32, uint32>> detached; // the edges, each once
 	for (Dart d : darts)
 	{
 		if (phi2(m, d) != d)
@@ -134,8 +135,11 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 		out.foreach_from(b, [&](Dart e) { return !(shared = target(e) == a); });
 		if (!shared)
 			out.foreach_from(a, [&](Dart e) { return !(shared = e != d && target(e) == b); });
-		report.nb_nonmanifold_edges += shared;
+		if (shared)
+			detached.emplace_back(std::min(a, b), std::max(a, b));
 	}
+	std::sort(detached.begin(), detached.end());
+	report.nb_nonmanifold_edges = uint32(std::unique(detached.begin(), detached.end()) - detached.begin());
 
 	// 3. close every hole with a boundary face
 	std::vector<Dart> boundary_darts;

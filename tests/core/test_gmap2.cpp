@@ -318,3 +318,51 @@ TEST(GMap2, ANonOrientableGMapHasNoCMap)
 	build_surface(g, klein_bottle_soup(5, 4));
 	EXPECT_THROW(to_cmap(g), TopologyError);
 }
+
+TEST(GMap2, SoupOrientationIsTheGMapsOrientability)
+{
+	// a Möbius strip: one edge glues two faces listing it the same way
+	{
+		const SurfaceSoup s = mobius_soup(5);
+		const auto [orientable, conflicts] = soup_orientation(s.nb_vertices, s.face_sizes, s.face_vertices);
+		EXPECT_FALSE(orientable);
+		EXPECT_EQ(conflicts, 1u);
+	}
+	// a grid with one face turned over: conflicts, yet orientable
+	{
+		SurfaceSoup s = grid_soup(3, 3);
+		std::reverse(s.face_vertices.begin() + 4 * 4, s.face_vertices.begin() + 4 * 5); // the middle quad
+		const auto [orientable, conflicts] = soup_orientation(s.nb_vertices, s.face_sizes, s.face_vertices);
+		EXPECT_TRUE(orientable);
+		EXPECT_EQ(conflicts, 4u);
+		GMap2 g;
+		const BuildReport r = build_surface(g, s);
+		EXPECT_TRUE(r.orientable);
+		EXPECT_TRUE(is_orientable(g));
+		EXPECT_EQ(counts(g), (Counts{16, 24, 9, 1, 1, 1}));
+		CMap2 c;
+		const BuildReport rc = build_surface(c, s);
+		EXPECT_EQ(rc.nb_orientation_conflicts, 4u);
+		EXPECT_EQ(rc.nb_nonmanifold_edges, 4u); // the CMap2 detaches the turned face there
+	}
+	// non-manifold edges, glued two by two: the report agrees with the G-map
+	for (uint32 turned = 0; turned < 16; ++turned)
+	{
+		// four triangles on the edge (0, 1), each listing it one way or the other,
+		// and two more joining the first and the third through vertex 2's edges
+		std::vector<std::vector<uint32>> faces{{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 1, 5}, {1, 2, 4}, {0, 2, 4}};
+		for (uint32 k = 0; k < 4; ++k)
+			if (turned & (1u << k))
+				std::swap(faces[k][0], faces[k][1]);
+		std::vector<uint32> sizes, ids;
+		for (const auto& f : faces)
+		{
+			sizes.push_back(3);
+			ids.insert(ids.end(), f.begin(), f.end());
+		}
+		GMap2 g;
+		const BuildReport r = build_surface(g, 6, sizes, ids);
+		EXPECT_EQ(r.orientable, is_orientable(g)) << turned;
+		expect_valid(g);
+	}
+}

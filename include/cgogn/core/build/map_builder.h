@@ -46,15 +46,19 @@ struct BuildReport
 	uint32 nb_orientation_conflicts = 0;
 	/// False when the faces cannot be oriented consistently, whatever faces
 	/// are turned over (a Möbius strip, a Klein bottle): only a GMap2 keeps
-	/// such a surface whole. Judged on the edges shared by exactly two faces.
+	/// such a surface whole. Judged on the faces glued as the GMap2 builder
+	/// glues them (see soup_orientation).
 	bool orientable = true;
 };
 
 /// Whether the faces of a polygon soup can be oriented consistently, and the
 /// number of edges shared by exactly two faces listing it in the same
-/// direction (see BuildReport): faces are coloured "kept" or "turned over"
-/// across each such edge, by a search over the faces; orientable when no face
-/// needs both. The faces the builders skip (fewer than 3 vertices, a
+/// direction (see BuildReport). The faces sharing an edge are glued two by
+/// two in the soup's order (the first with the second, the third with the
+/// fourth...), as the GMap2 builder glues them; they are coloured "kept" or
+/// "turned over" across each glued pair by a search over the faces; the soup
+/// is orientable when no face needs both colours, that is exactly when the
+/// GMap2 built from it is orientable. The faces the builders skip (fewer than 3 vertices, a
 /// repeated vertex, an id out of range) are ignored. O(total size x log).
 std::pair<bool, uint32> soup_orientation(uint32 nb_vertices, std::span<const uint32> face_sizes,
 										 std::span<const uint32> face_vertices);
