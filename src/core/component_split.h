@@ -18,12 +18,14 @@ std::uint64_t reindexed_dart_count();
 void reset_reindexed_dart_count();
 void count_reindexed_darts(std::uint64_t n);
 
-/// The darts joined to d by phi1, phi2 (and phi3): walking them from a dart
-/// visits its connected component.
+/// The darts joined to d by phi1, phi2 (and phi3), or by beta0, beta1, beta2
+/// in a G-map: walking them from a dart visits its connected component.
 template <typename MAP>
-std::array<Dart, MAP::dimension> linked_darts(const MAP& m, Dart d)
+std::array<Dart, MAP::dimension + (is_gmap_v<MAP> ? 1 : 0)> linked_darts(const MAP& m, Dart d)
 {
-	if constexpr (MAP::dimension >= 3)
+	if constexpr (is_gmap_v<MAP>)
+		return {beta0(m, d), beta1(m, d), beta2(m, d)};
+	else if constexpr (MAP::dimension >= 3)
 		return {phi1(m, d), phi2(m, d), phi3(m, d)};
 	else
 		return {phi1(m, d), phi2(m, d)};

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Operators of 2-G-maps: cut an edge, cut a face, merge the faces of an edge.
+#include <cgogn/core/map/orbits.h>
+#include <cgogn/core/operators/gmap2.h>
+
+#include "reindex.h"
+
+#include <cassert>
+
+namespace cgogn
+{
+
+namespace
+{
+
+// A new dart with the boundary mark of `like` (the face it joins).
+Dart new_dart_like(GMap2& m, Dart like)
+{
+	const Dart d = detail::add_dart(m);
+	if (is_boundary(m, like))
+		detail::set_boundary(m, d, true);
+	return d;
+}
+
+// The darts of an edge: d, beta0(d), beta2(d), beta0(beta2(d)).
+std::vector<Dart> edge_darts(const GMap2& m, Dart d)
+{
+	return {d, beta0(m, d), beta2(m, d), beta0(m, beta2(m, d))};
+}
+
+} // namespace
+
+GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices)
+{
+	const std::vector<Dart> old = edge_darts(m, e.dart);
+	detail::RegionReindexer<GMap2> reindex;
+	if (set_indices)
+		reindex.record(m, old);
+	std::vector<Dart> region = old;
+	// each side (d, beta0(d)) of the edge gets two darts at the new vertex,
+	// x after d and y after beta0(d), joined by beta1
+	std::array<std::pair<Dart, Dart>, 2> made;
+	for (uint32 side = 0; side < 2; ++side)
+	{
+		const Dart d = old[2 * side], d0 = old[2 * side + 1];
+		const Dart x = new_dart_like(m, d), y = new_dart_like(m, d);
+		beta_unsew<0>(m, d);
+		beta_sew<0>(m, d, x);
+		beta_sew<0>(m, d0, y);
+		beta_sew<1>(m, x, y);
+		made[side] = {x, y};
+		region.insert(region.end(), {x, y});
+	}
+	// beta2(d) is at d's end of the edge: x2 (after beta2(d)) faces x
+	beta_sew<2>(m, made[0].first, made[1].first);
+	beta_sew<2>(m, made[0].second, made[1].second);
+	if (set_indices)
+		reindex.apply(m, region);
+	return GMap2::Vertex(made[0].second);
+}
+
+bool can_cut_face(const GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2)
+{
+	const Dart d = v1.dart, e = v2.dart;
+	if (is_boundary(m, d) || is_boundary(m, e))
+		return false;
+	// the corners of the face, as (dart, beta1(dart)) pairs met walking from d
+	bool same_face = false, same_vertex = false;
+	foreach_dart_of_orbit(m, GMap2::Face(d), [&](Dart x) {
+		same_face = same_face || x == e;
+		return !same_face;
+	});
+	if (!same_face)
+		return false;
+	const Dart e1 = beta1(m, e);
+	same_vertex = e == d || e1 == d;
+	if (same_vertex)
+		return false;
+	// joined by an edge of the face: e or beta1(e) is beta0 of d's corner
+	for (Dart x : {d, beta1(m, d)})
+		if (beta0(m, x) == e || beta0(m, x) == e1)
+			return false;
+	return true;
+}
+
+GMap2::Edge cut_face(GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indices)
+{
+	assert(can_cut_face(m, v1, v2));
+	const Dart d = v1.dart, d1 = beta1(m, d);
+	const Dart e = v2.dart, e1 = beta1(m, e);
+	// f: the dart of e's corner met first walking from d away from d1 (beta0
+	// first); the part d ... f keeps the face's line, d1 ... the other
+	Dart f = Dart();
+	for (Dart x = d;;)
+	{
+		x = beta0(m, x);
+		if (x == e || x == e1)
+		{
+			f = x;
+			break;
+		}
+		x = beta1(m, x);
+	}
+	const Dart g = f == e ? e1 : e;
+	std::vector<Dart> region{d, d1, e, e1};
+	detail::RegionReindexer<GMap2> reindex;
+	if (set_indices)
+		reindex.record(m, region);
+	const Dart p = new_dart_like(m, d), p0 = new_dart_like(m, d); // in d's part
+	const Dart q = new_dart_like(m, d), q0 = new_dart_like(m, d); // in d1's part
+	beta_unsew<1>(m, d);
+	beta_unsew<1>(m, e);
+	beta_sew<1>(m, d, p);
+	beta_sew<1>(m, f, p0);
+	beta_sew<1>(m, d1, q);
+	beta_sew<1>(m, g, q0);
+	beta_sew<0>(m, p, p0);
+	beta_sew<0>(m, q, q0);
+	beta_sew<2>(m, p, q);
+	beta_sew<2>(m, p0, q0);
+	region.insert(region.end(), {p, p0, q, q0});
+	if (set_indices)
+		reindex.apply(m, region);
+	return GMap2::Edge(p);
+}
+
+bool can_merge_incident_faces(const GMap2& m, GMap2::Edge e)
+{
+	const Dart d = e.dart, d2 = beta2(m, d);
+	if (is_boundary(m, d) || is_boundary(m, d2))
+		return false;
+	return !same_orbit(m, GMap2::Face(d), GMap2::Face(d2));
+}
+
+GMap2::Face merge_incident_faces(GMap2& m, GMap2::Edge e, bool set_indices)
+{
+	assert(can_merge_incident_faces(m, e));
+	const std::vector<Dart> edge = edge_darts(m, e.dart);
+	// the corners around the edge: at d's end a = beta1(d) in d's face and
+	// b = beta1(beta2(d)) in the other; at the other end, the same from beta0(d)
+	const Dart a = beta1(m, edge[0]), b = beta1(m, edge[2]);
+	const Dart a0 = beta1(m, edge[1]), b0 = beta1(m, edge[3]);
+	std::vector<Dart> region = edge;
+	region.insert(region.end(), {a, b, a0, b0});
+	detail::RegionReindexer<GMap2> reindex;
+	if (set_indices)
+		reindex.record(m, region);
+	for (Dart x : edge)
+		beta_unsew<1>(m, x);
+	beta_sew<1>(m, a, b);
+	beta_sew<1>(m, a0, b0);
+	for (Dart x : edge)
+		detail::remove_dart(m, x);
+	const std::vector<Dart> kept{a, b, a0, b0};
+	if (set_indices)
+		reindex.apply(m, kept);
+	return GMap2::Face(a);
+}
+
+} // namespace cgogn
