@@ -366,3 +366,102 @@ TEST(GMap2, SoupOrientationIsTheGMapsOrientability)
 		expect_valid(g);
 	}
 }
+
+namespace
+{
+
+// The cells around each vertex and face of a surface, named by vertex lines
+// (the builders give soup vertex i line i in both models): vertices by their
+// line, edges by their two ends, faces by their sorted vertices.
+template <typename MAP>
+std::map<std::string, std::vector<std::vector<uint32>>> neighbourhoods(const MAP& m)
+{
+	using T = mesh_traits<MAP>;
+	using Vertex = typename T::Vertex;
+	using Edge = typename T::Edge;
+	using Face = typename T::Face;
+	const auto vertex_name = [&](Vertex v) { return std::vector<uint32>{index_of(m, v)}; };
+	const auto edge_name = [&](Edge e) {
+		std::vector<uint32> n;
+		foreach_incident_vertex(m, e, [&](Vertex v) { n.push_back(index_of(m, v)); });
+		std::sort(n.begin(), n.end());
+		return n;
+	};
+	const auto face_name = [&](Face f) {
+		std::vector<uint32> n;
+		foreach_incident_vertex(m, f, [&](Vertex v) { n.push_back(index_of(m, v)); });
+		std::sort(n.begin(), n.end());
+		return n;
+	};
+	std::map<std::string, std::vector<std::vector<uint32>>> out;
+	auto add = [&](const std::string& key, std::vector<std::vector<uint32>> names, std::vector<uint32> of) {
+		std::sort(names.begin(), names.end());
+		std::vector<uint32> row = of;
+		row.push_back(INVALID_INDEX);
+		for (const auto& n : names)
+		{
+			row.insert(row.end(), n.begin(), n.end());
+			row.push_back(INVALID_INDEX);
+		}
+		out[key].push_back(row);
+	};
+	foreach_cell(m, [&](Vertex v) {
+		std::vector<std::vector<uint32>> e, f, av, avf;
+		foreach_incident_edge(m, v, [&](Edge x) { e.push_back(edge_name(x)); });
+		foreach_incident_face(m, v, [&](Face x) { f.push_back(face_name(x)); });
+		foreach_adjacent_vertex_through_edge(m, v, [&](Vertex x) { av.push_back(vertex_name(x)); });
+		foreach_adjacent_vertex_through_face(m, v, [&](Vertex x) { avf.push_back(vertex_name(x)); });
+		add("vertex-edges", e, vertex_name(v));
+		add("vertex-faces", f, vertex_name(v));
+		add("vertex-vertices-by-edge", av, vertex_name(v));
+		add("vertex-vertices-by-face", avf, vertex_name(v));
+	});
+	foreach_cell(m, [&](Edge x) {
+		std::vector<std::vector<uint32>> f;
+		foreach_incident_face(m, x, [&](Face y) { f.push_back(face_name(y)); });
+		add("edge-faces", f, edge_name(x));
+	});
+	foreach_cell(m, [&](Face x) {
+		std::vector<std::vector<uint32>> e, af, afv;
+		foreach_incident_edge(m, x, [&](Edge y) { e.push_back(edge_name(y)); });
+		foreach_adjacent_face_through_edge(m, x, [&](Face y) { af.push_back(face_name(y)); });
+		foreach_adjacent_face_through_vertex(m, x, [&](Face y) { afv.push_back(face_name(y)); });
+		add("face-edges", e, face_name(x));
+		add("face-faces-by-edge", af, face_name(x));
+		add("face-faces-by-vertex", afv, face_name(x));
+	});
+	for (auto& [k, rows] : out)
+		std::sort(rows.begin(), rows.end());
+	return out;
+}
+
+} // namespace
+
+TEST(GMap2, LocalTraversalsGiveTheCMap2sNeighbours)
+{
+	for (const SurfaceSoup& s :
+		 {grid_soup(4, 3), grid_soup(3, 3, true), sphere_soup(7, 5), torus_soup(6, 5, true), cylinder_soup(5, 2)})
+	{
+		CMap2 c;
+		GMap2 g;
+		build_surface(c, s);
+		build_surface(g, s);
+		const auto nc = neighbourhoods(c), ng = neighbourhoods(g);
+		ASSERT_EQ(nc.size(), ng.size());
+		for (const auto& [key, rows] : nc)
+			EXPECT_EQ(ng.at(key), rows) << key;
+	}
+	// on a Möbius strip: every face has its 4 vertices and 2 or 3 neighbours
+	GMap2 g;
+	build_surface(g, mobius_soup(8));
+	foreach_cell(g, [&](GMap2::Face f) {
+		uint32 nv = 0, nf = 0;
+		foreach_incident_vertex(g, f, [&](GMap2::Vertex) { ++nv; });
+		foreach_adjacent_face_through_edge(g, f, [&](GMap2::Face) { ++nf; });
+		EXPECT_EQ(nv, 4u);
+		EXPECT_EQ(nf, 2u);
+	});
+	uint32 n = 0;
+	foreach_incident_face(g, GMap2::Volume(Dart(0)), [&](GMap2::Face) { ++n; });
+	EXPECT_EQ(n, 8u);
+}
