@@ -36,6 +36,20 @@ bool represents_unindexed_edge(const MAP& m, Dart d)
 	return d.index < e.index || is_boundary(m, e);
 }
 
+/// The same for a 2-G-map's edge, whose (up to) four darts are d, beta0(d),
+/// beta2(d) and beta0(beta2(d)): d is its smallest non-boundary dart.
+template <typename MAP>
+bool represents_unindexed_gmap_edge(const MAP& m, Dart d)
+{
+	// beta0(d) is usually d's neighbour line: the cheapest test first
+	if (beta0(m, d).index < d.index || is_boundary(m, d))
+		return false;
+	const Dart d2 = beta2(m, d);
+	if (is_boundary(m, d2))
+		return true;
+	return d.index < d2.index && d.index < beta0(m, d2).index;
+}
+
 /// Says which darts of a map without an index for the orbit O start a new
 /// cell: the walk of foreach_cell_of_map when the cells have no container to
 /// walk. Asked in increasing dart order, it reports each cell from its
@@ -47,7 +61,7 @@ class UnindexedCellStarts
 public:
 	explicit UnindexedCellStarts(const MAP& m) : m_(m)
 	{
-		if constexpr (O != Orbit::PHI2)
+		if constexpr (O != Orbit::PHI2 && O != Orbit::BETA0_BETA2)
 			mark_.emplace(m);
 		if constexpr (orbit_is_flooded(O))
 			work_.emplace();
@@ -59,6 +73,8 @@ public:
 	{
 		if constexpr (O == Orbit::PHI2)
 			return represents_unindexed_edge(m_, d);
+		else if constexpr (O == Orbit::BETA0_BETA2)
+			return represents_unindexed_gmap_edge(m_, d);
 		else
 		{
 			MarkAttribute& mark = **mark_;

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// GMap2 against CMap2 on the same surface, in one process: the read-only
+// workloads of the surface suite (bench/README.md) that run on both models,
+// on a closed torus of 1M triangles with vertices and faces indexed, and
+// the memory of each map. A G-map has twice the darts of a 2-map: the target
+// is at most 2x the CMap2's time and bytes. Each benchmark's counters give
+// ns per visited incidence and, for "build", bytes per face.
+#include <cgogn/core.h>
+
+#include "harness.h"
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+
+using namespace cgogn;
+using Vec3 = std::array<double, 3>;
+
+namespace
+{
+
+const SurfaceSoup& soup()
+{
+	static const SurfaceSoup s = torus_soup(1000, 500, true); // 1,000,000 triangles, closed
+	return s;
+}
+
+template <typename MAP>
+struct Mesh
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Face = typename mesh_traits<MAP>::Face;
+	MAP map;
+	std::shared_ptr<AttributeArray<Vec3>> position;
+	Mesh()
+	{
+		const BuildReport r = build_surface(map, soup());
+		position = add_attribute<Vec3, Vertex>(map, "position");
+		for (uint32 i = 0; i < soup().nb_vertices; ++i)
+			(*position)[r.vertex_offset + i] = soup().positions[i];
+		add_attribute<double, Face>(map, "face_data"); // faces indexed, as in the suite
+	}
+};
+
+template <typename MAP>
+Mesh<MAP>& mesh()
+{
+	static Mesh<MAP> m;
+	return m;
+}
+
+// every vertex's faces, then every face's vertices
+template <typename MAP>
+void circulator(benchmark::State& state)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Face = typename mesh_traits<MAP>::Face;
+	const MAP& m = mesh<MAP>().map;
+	for (auto _ : state)
+	{
+		int64 c = 0;
+		foreach_cell(m, [&](Vertex v) { foreach_incident_face(m, v, [&](Face) { ++c; }); });
+		foreach_cell(m, [&](Face f) { foreach_incident_vertex(m, f, [&](Vertex) { --c; }); });
+		if (c != 0)
+			state.SkipWithError("circulator check failed");
+		benchmark::DoNotOptimize(c);
+	}
+	state.counters["ns_per_incidence"] = benchmark::Counter(6.0 * double(soup().face_sizes.size()) * state.iterations(),
+															benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// one in-place pass of umbrella smoothing over the vertices
+template <typename MAP>
+void smoothing(benchmark::State& state)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	const MAP& m = mesh<MAP>().map;
+	AttributeArray<Vec3>& pos = *mesh<MAP>().position;
+	uint64 incidences = 0;
+	for (auto _ : state)
+	{
+		incidences = 0;
+		foreach_cell(m, [&](Vertex v) {
+			Vec3 sum = {0, 0, 0};
+			uint32 n = 0;
+			foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
+				const Vec3& q = value<Vec3>(m, pos, w);
+				sum[0] += q[0], sum[1] += q[1], sum[2] += q[2];
+				++n;
+			});
+			pos[v] = {sum[0] / n, sum[1] / n, sum[2] / n};
+			incidences += n;
+		});
+	}
+	state.counters["ns_per_incidence"] = benchmark::Counter(double(incidences) * state.iterations(),
+															benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// counting the cells of every kind: vertices and faces are indexed (their
+// containers' counts), edges are not (a walk of the darts with a mark)
+template <typename MAP>
+void count_cells(benchmark::State& state)
+{
+	using T = mesh_traits<MAP>;
+	const MAP& m = mesh<MAP>().map;
+	for (auto _ : state)
+	{
+		uint64 n = nb_cells<typename T::Vertex>(m) + nb_cells<typename T::Edge>(m) + nb_cells<typename T::Face>(m);
+		benchmark::DoNotOptimize(n);
+	}
+}
+
+// building the map from the soup, and its memory once built
+template <typename MAP>
+void build(benchmark::State& state)
+{
+	double bytes = 0;
+	for (auto _ : state)
+	{
+		const std::size_t before = cgogn_bench::heap_bytes();
+		{
+			MAP m;
+			build_surface(m, soup());
+			bytes = double(cgogn_bench::heap_bytes() - before);
+			benchmark::DoNotOptimize(m);
+		}
+	}
+	state.counters["bytes_per_face"] = bytes / double(soup().face_sizes.size());
+}
+
+} // namespace
+
+BENCHMARK_TEMPLATE(circulator, CMap2)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_TEMPLATE(circulator, GMap2)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_TEMPLATE(smoothing, CMap2)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_TEMPLATE(smoothing, GMap2)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_TEMPLATE(count_cells, CMap2)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_TEMPLATE(count_cells, GMap2)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK_TEMPLATE(build, CMap2)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_TEMPLATE(build, GMap2)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+BENCHMARK_MAIN();
