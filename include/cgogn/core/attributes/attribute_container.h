@@ -490,6 +490,13 @@ std::shared_ptr<AttributeBase> AttributeArray<T>::clone_empty(AttributeContainer
 template <typename T, Orbit O>
 std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContainer& to) const
 {
+	// a container of the same cell kind in the other model of surfaces (the
+	// CMap2 <-> GMap2 conversions) gets an attribute typed by its own orbit
+	constexpr Orbit P = surface_counterpart(O);
+	if constexpr (P != O)
+		if (to.orbit() == P)
+			return to.add_attribute<T, CellAttribute<T, P>>(this->name(), this->default_value());
+	assert(to.orbit() == O && "clone into a container of another orbit");
 	return to.add_attribute<T, CellAttribute<T, O>>(this->name(), this->default_value());
 }
 

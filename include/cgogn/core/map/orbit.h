@@ -97,4 +97,34 @@ constexpr bool orbit_uses_beta(Orbit o, uint32 k)
 	}
 }
 
+/// The orbit of the same cell kind in the other model of surfaces: a CMap2
+/// vertex (PHI21) is a GMap2 vertex (BETA1_BETA2), and so for edges (PHI2,
+/// BETA0_BETA2), faces (PHI1, BETA0_BETA1) and components (PHI1_PHI2,
+/// BETA0_BETA1_BETA2), both ways; the orbit itself for the others. The
+/// conversions between the two models move attributes along it.
+constexpr Orbit surface_counterpart(Orbit o)
+{
+	switch (o)
+	{
+	case Orbit::PHI21:
+		return Orbit::BETA1_BETA2;
+	case Orbit::PHI2:
+		return Orbit::BETA0_BETA2;
+	case Orbit::PHI1:
+		return Orbit::BETA0_BETA1;
+	case Orbit::PHI1_PHI2:
+		return Orbit::BETA0_BETA1_BETA2;
+	case Orbit::BETA1_BETA2:
+		return Orbit::PHI21;
+	case Orbit::BETA0_BETA2:
+		return Orbit::PHI2;
+	case Orbit::BETA0_BETA1:
+		return Orbit::PHI1;
+	case Orbit::BETA0_BETA1_BETA2:
+		return Orbit::PHI1_PHI2;
+	default:
+		return o;
+	}
+}
+
 } // namespace cgogn
