@@ -87,8 +87,6 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 {
 	BuildReport report;
 	report.nb_cells_read = uint32(face_sizes.size());
-	std::tie(report.orientable, report.nb_orientation_conflicts) =
-		soup_orientation(nb_vertices, face_sizes, face_vertices);
 
 	if (!is_indexed<GMap2::Vertex>(m))
 		index_cells<GMap2::Vertex>(m);
@@ -155,6 +153,7 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	const auto low_end = [&](Dart a) { return std::min(soup(a), soup(beta0(m, a))); };
 	const auto high_end = [&](Dart a) { return std::max(soup(a), soup(beta0(m, a))); };
 	SidesByVertex by_low(sides, nb_vertices, low_end);
+	bool glued_same_way = false;
 	for (Dart a : sides)
 	{
 		if (beta2(m, a) != a)
@@ -164,6 +163,7 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 			if (e == a || beta2(m, e) != e || high_end(e) != hi)
 				return true;
 			const bool same_start = soup(e) == soup(a);
+			glued_same_way = glued_same_way || same_start;
 			beta_sew<2>(m, a, same_start ? e : beta0(m, e));
 			beta_sew<2>(m, beta0(m, a), same_start ? beta0(m, e) : e);
 			return false;
@@ -183,6 +183,12 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	}
 	std::sort(detached.begin(), detached.end());
 	report.nb_nonmanifold_edges = uint32(std::unique(detached.begin(), detached.end()) - detached.begin());
+	// Judging the orientation sorts every edge side: needed only when two
+	// faces were glued along an edge they list in the same direction. With
+	// none, keeping every face as listed orients the map, with no conflict.
+	if (glued_same_way)
+		std::tie(report.orientable, report.nb_orientation_conflicts) =
+			soup_orientation(nb_vertices, face_sizes, face_vertices);
 
 	// 3. close every hole with a boundary face
 	const std::vector<Dart> boundary_darts = close_holes(m, darts, vidx);
