@@ -27,6 +27,54 @@ inline bool has_repeated_vertex(std::span<const uint32> vs, std::vector<uint32>&
 	return std::adjacent_find(scratch.begin(), scratch.end()) != scratch.end();
 }
 
+/// Calls f(face, ids) on each face of a polygon soup that the surface
+/// builders build, in order: at least 3 vertices, all in [0, nb_vertices),
+/// none repeated. The others are counted in `report` when given (a face
+/// running past the end of `face_vertices`, or naming a vertex out of range,
+/// is invalid; a short face or one with a repeated vertex is degenerate).
+/// O(total size).
+template <typename FUNC>
+void foreach_buildable_face(uint32 nb_vertices, std::span<const uint32> face_sizes,
+							std::span<const uint32> face_vertices, BuildReport* report, const FUNC& f)
+{
+	std::size_t first = 0;
+	std::vector<uint32> scratch;
+	for (uint32 face = 0; face < uint32(face_sizes.size()); ++face)
+	{
+		const uint32 n = face_sizes[face];
+		if (first + n > face_vertices.size())
+		{
+			if (report)
+				++report->nb_cells_invalid;
+			first = face_vertices.size();
+			continue;
+		}
+		const std::span<const uint32> fv = face_vertices.subspan(first, n);
+		first += n;
+		if (std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }))
+		{
+			if (report)
+				++report->nb_cells_invalid;
+			continue;
+		}
+		if (n < 3 || has_repeated_vertex(fv, scratch))
+		{
+			if (report)
+				++report->nb_cells_degenerate;
+			continue;
+		}
+		f(face, fv);
+	}
+}
+
+/// Reserves room in m's dart container for `count` more darts (boundary
+/// darts, unknown in advance, grow it as needed).
+inline void reserve_darts(CMapBase& m, std::size_t count)
+{
+	AttributeContainer& darts = *detail::state_of(m).darts;
+	darts.reserve(uint32(std::min<std::size_t>(uint64(darts.end_index()) + count, INVALID_INDEX - 1)));
+}
+
 /// After a build: each vertex orbit of the new darts claims the line of its
 /// soup vertex; a second orbit with the same soup vertex (a non-manifold
 /// vertex) gets a new line, recorded in the report; unused lines are released.

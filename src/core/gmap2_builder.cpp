@@ -104,47 +104,27 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	total = std::min(total, face_vertices.size());
 	darts.reserve(2 * total);
 	sides.reserve(total);
-	detail::state_of(m).darts->reserve(uint32(
-		std::min<std::size_t>(uint64(detail::state_of(m).darts->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
-	std::size_t first = 0;
-	std::vector<uint32> sorted;
-	for (uint32 n : face_sizes)
-	{
-		if (first + n > face_vertices.size())
-		{
-			report.nb_cells_invalid += 1;
-			first = face_vertices.size();
-			continue;
-		}
-		std::span<const uint32> fv = face_vertices.subspan(first, n);
-		first += n;
-		if (std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }))
-		{
-			++report.nb_cells_invalid;
-			continue;
-		}
-		if (n < 3 || detail::has_repeated_vertex(fv, sorted))
-		{
-			++report.nb_cells_degenerate;
-			continue;
-		}
-		const std::size_t face_start = darts.size();
-		for (uint32 i = 0; i < n; ++i)
-		{
-			const Dart a = detail::add_dart(m);
-			const Dart b = detail::add_dart(m);
-			vidx[a.index] = offset + fv[i];
-			vidx[b.index] = offset + fv[(i + 1) % n];
-			beta_sew<0>(m, a, b);
-			if (i > 0)
-				beta_sew<1>(m, darts.back(), a);
-			darts.push_back(a);
-			darts.push_back(b);
-			sides.push_back(a);
-		}
-		beta_sew<1>(m, darts.back(), darts[face_start]);
-		++report.nb_cells_built;
-	}
+	detail::reserve_darts(m, darts.capacity());
+	detail::foreach_buildable_face(nb_vertices, face_sizes, face_vertices, &report,
+								   [&](uint32, std::span<const uint32> fv) {
+									   const uint32 n = uint32(fv.size());
+									   const std::size_t face_start = darts.size();
+									   for (uint32 i = 0; i < n; ++i)
+									   {
+										   const Dart a = detail::add_dart(m);
+										   const Dart b = detail::add_dart(m);
+										   vidx[a.index] = offset + fv[i];
+										   vidx[b.index] = offset + fv[(i + 1) % n];
+										   beta_sew<0>(m, a, b);
+										   if (i > 0)
+											   beta_sew<1>(m, darts.back(), a);
+										   darts.push_back(a);
+										   darts.push_back(b);
+										   sides.push_back(a);
+									   }
+									   beta_sew<1>(m, darts.back(), darts[face_start]);
+									   ++report.nb_cells_built;
+								   });
 
 	// 2. glue the sides of each undirected edge two by two, end to end: the
 	// darts of both sides at the same vertex are exchanged by beta2, whatever

@@ -21,26 +21,16 @@ std::pair<bool, uint32> soup_orientation(uint32 nb_vertices, std::span<const uin
 	};
 	std::vector<Side> sides;
 	sides.reserve(face_vertices.size());
-	std::size_t first = 0;
 	const uint32 nb_faces = uint32(face_sizes.size());
-	std::vector<uint32> scratch;
-	for (uint32 f = 0; f < nb_faces; ++f)
-	{
-		const uint32 n = face_sizes[f];
-		if (first + n > face_vertices.size())
-			break;
-		std::span<const uint32> fv = face_vertices.subspan(first, n);
-		first += n;
-		// the faces the builders skip are left out
-		if (n < 3 || std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }) ||
-			detail::has_repeated_vertex(fv, scratch))
-			continue;
-		for (uint32 i = 0; i < n; ++i)
-		{
-			const uint32 a = fv[i], b = fv[(i + 1) % n];
-			sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
-		}
-	}
+	// the faces the builders skip are left out
+	detail::foreach_buildable_face(nb_vertices, face_sizes, face_vertices, nullptr,
+								   [&](uint32 f, std::span<const uint32> fv) {
+									   for (std::size_t i = 0; i < fv.size(); ++i)
+									   {
+										   const uint32 a = fv[i], b = fv[(i + 1) % fv.size()];
+										   sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
+									   }
+								   });
 	std::sort(sides.begin(), sides.end(),
 			  [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
 

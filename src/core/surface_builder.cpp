@@ -63,46 +63,25 @@ BuildReport build_surface(CMap2& m, uint32 nb_vertices, std::span<const uint32> 
 	for (uint32 s : face_sizes)
 		total += s;
 	darts.reserve(std::min(total, face_vertices.size()));
-	// room for the faces' darts only: boundary darts (none on a closed mesh) grow as needed
-	detail::state_of(m).darts->reserve(uint32(
-		std::min<std::size_t>(uint64(detail::state_of(m).darts->end_index()) + darts.capacity(), INVALID_INDEX - 1)));
-	std::size_t first = 0;
-	std::vector<uint32> sorted;
-	for (uint32 n : face_sizes)
-	{
-		if (first + n > face_vertices.size())
-		{
-			report.nb_cells_invalid += 1;
-			first = face_vertices.size();
-			continue;
-		}
-		std::span<const uint32> fv = face_vertices.subspan(first, n);
-		first += n;
-		if (std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }))
-		{
-			++report.nb_cells_invalid;
-			continue;
-		}
-		if (n < 3 || detail::has_repeated_vertex(fv, sorted))
-		{
-			++report.nb_cells_degenerate;
-			continue;
-		}
-		const Dart d0 = detail::add_dart(m);
-		Dart prev = d0;
-		vidx[d0.index] = offset + fv[0];
-		darts.push_back(d0);
-		for (uint32 i = 1; i < n; ++i)
-		{
-			const Dart d = detail::add_dart(m);
-			vidx[d.index] = offset + fv[i];
-			detail::set_phi1(m, prev, d);
-			darts.push_back(d);
-			prev = d;
-		}
-		detail::set_phi1(m, prev, d0);
-		++report.nb_cells_built;
-	}
+	detail::reserve_darts(m, darts.capacity());
+	detail::foreach_buildable_face(nb_vertices, face_sizes, face_vertices, &report,
+								   [&](uint32, std::span<const uint32> fv) {
+									   const uint32 n = uint32(fv.size());
+									   const Dart d0 = detail::add_dart(m);
+									   Dart prev = d0;
+									   vidx[d0.index] = offset + fv[0];
+									   darts.push_back(d0);
+									   for (uint32 i = 1; i < n; ++i)
+									   {
+										   const Dart d = detail::add_dart(m);
+										   vidx[d.index] = offset + fv[i];
+										   detail::set_phi1(m, prev, d);
+										   darts.push_back(d);
+										   prev = d;
+									   }
+									   detail::set_phi1(m, prev, d0);
+									   ++report.nb_cells_built;
+								   });
 
 	// 2. sew opposite half-edges: a->b with a free b->a
 	OutgoingDarts out(darts, vidx, offset, nb_vertices);
