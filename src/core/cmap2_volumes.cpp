@@ -4,6 +4,7 @@
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 
+#include "attribute_copy.h"
 #include "index_lines.h"
 
 namespace cgogn
@@ -154,38 +155,15 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 		detail::set_boundary(m, c, is_boundary(other, d));
 	});
 	// attributes of darts
-	auto copy_attributes = [&](const AttributeContainer& from, AttributeContainer& to, auto line_of) {
-		for (const auto& a : from.attributes())
-		{
-			if (a.get() == &from.key() || a->name().rfind("__", 0) == 0)
-				continue;
-			auto target = to.find(a->name());
-			if (target && target->type() != a->type())
-				continue; // same name, another type: left alone
-			if (!target)
-				target = a->clone_empty(to);
-			for (uint32 i = 0; i < from.end_index(); ++i)
-				if (from.is_live(i))
-					target->copy_line_from(line_of(i), *a, i);
-		}
-	};
-	copy_attributes(*detail::state_of(other).darts, *detail::state_of(m).darts,
-					[&](uint32 i) { return copy[i].index; });
+	detail::copy_attributes(*detail::state_of(other).darts, *detail::state_of(m).darts,
+							[&](uint32 i, const auto& put) { put(copy[i].index); });
 	// indexed orbits of other: one new line per line, written on the copied darts
 	for (uint32 o = 0; o < NB_ORBITS; ++o)
 	{
 		const AttributeArray<uint32>* oidx = detail::state_of(other).cell_index[o];
 		if (oidx == nullptr)
 			continue;
-		if (detail::state_of(m).cell_index[o] == nullptr)
-		{
-			detail::state_of(m).cell_index[o] =
-				detail::state_of(m)
-					.darts->add_attribute<uint32>("__index_" + std::string(orbit_name(Orbit(o))), INVALID_INDEX)
-					.get();
-			detail::state_of(m).cells[o]->set_cell_index(detail::state_of(m).cell_index[o]);
-		}
-		AttributeArray<uint32>& midx = *detail::state_of(m).cell_index[o];
+		AttributeArray<uint32>& midx = detail::index_attribute(m, Orbit(o));
 		const AttributeContainer& oc = *detail::state_of(other).cells[o];
 		AttributeContainer& mc = *detail::state_of(m).cells[o];
 		std::vector<uint32> line(oc.end_index(), INVALID_INDEX);
@@ -196,7 +174,7 @@ std::vector<Dart> merge(CMap2& m, const CMap2& other)
 			const uint32 i = (*oidx)[d.index];
 			midx[copy[d.index].index] = i == INVALID_INDEX ? INVALID_INDEX : line[i];
 		});
-		copy_attributes(oc, mc, [&](uint32 i) { return line[i]; });
+		detail::copy_attributes(oc, mc, [&](uint32 i, const auto& put) { put(line[i]); });
 	}
 	// orbits indexed in m but not in other: index the new cells
 	std::vector<Dart> new_darts;

@@ -111,6 +111,20 @@ void set_representative(CMapBase& m, Dart d)
 	}
 }
 
+/// The index attribute of orbit o (the dart attribute holding each dart's
+/// line), created and handed to the orbit's container when o is not indexed
+/// yet: its darts then hold INVALID_INDEX. O(1).
+inline AttributeArray<uint32>& index_attribute(CMapBase& m, Orbit o)
+{
+	AttributeArray<uint32>*& idx = state_of(m).cell_index[orbit_index(o)];
+	if (idx == nullptr)
+	{
+		idx = state_of(m).darts->add_attribute<uint32>("__index_" + std::string(orbit_name(o)), INVALID_INDEX).get();
+		state_of(m).cells[orbit_index(o)]->set_cell_index(idx);
+	}
+	return *idx;
+}
+
 } // namespace detail
 
 /// Assigns cell c to line i of its orbit's container: every dart of c gets
@@ -146,14 +160,7 @@ void index_cells(MAP& m)
 		return;
 	else
 	{
-		AttributeArray<uint32>*& idx = detail::state_of(m).cell_index[orbit_index(O)];
-		if (idx == nullptr)
-			idx = detail::state_of(m)
-					  .darts
-					  ->template add_attribute<uint32>(std::string("__index_") + std::string(orbit_name(O)),
-													   INVALID_INDEX)
-					  .get();
-		container_of<O>(m).set_cell_index(idx);
+		AttributeArray<uint32>* idx = &detail::index_attribute(m, O);
 		foreach_dart(m, [&](Dart d) {
 			if ((*idx)[d.index] == INVALID_INDEX && !is_boundary_cell(m, CELL(d)))
 				detail::new_index(m, CELL(d));

@@ -53,25 +53,28 @@ inline uint32 nb_connected_components(const GMap2& m)
 	return nb_cells<GMap2::Volume>(m);
 }
 
-/// Whether every connected component of m can be oriented: the paper's
-/// two-colouring, each component's darts coloured so that every beta_i joins
-/// two darts of different colours (a CMap2 is then the darts of one colour).
-/// A boundary face is a face like the others: a Möbius strip stays
-/// non-orientable once closed. O(number of darts).
+namespace detail
+{
+
+/// The paper's two-colouring of a G-map: marks in `black` the darts of one
+/// colour, the smallest dart of each connected component black, so that
+/// every beta_i joins two colours. Returns false, with the colouring left
+/// unfinished, when some beta_i joins two darts of one colour (the map is
+/// not orientable). O(number of darts).
 template <typename MAP>
 requires std::derived_from<MAP, GMap1>
-bool is_orientable(const MAP& m)
+bool two_colour(const MAP& m, DartMarker<MAP>& black)
 {
-	DartMarker<MAP> seen(m), black(m);
+	DartMarker<MAP> seen(m);
 	std::vector<Dart> work;
-	bool orientable = true;
+	bool ok = true;
 	foreach_dart(m, [&](Dart start) {
 		if (seen.is_marked(start))
 			return true;
 		seen.mark(start);
 		black.mark(start);
 		work.assign(1, start);
-		while (!work.empty() && orientable)
+		while (!work.empty() && ok)
 		{
 			const Dart d = work.back();
 			work.pop_back();
@@ -89,12 +92,27 @@ bool is_orientable(const MAP& m)
 					work.push_back(e);
 				}
 				else if (black.is_marked(e) == d_black)
-					orientable = false;
+					ok = false;
 			}
 		}
-		return orientable;
+		return ok;
 	});
-	return orientable;
+	return ok;
+}
+
+} // namespace detail
+
+/// Whether every connected component of m can be oriented: the paper's
+/// two-colouring, each component's darts coloured so that every beta_i joins
+/// two darts of different colours (a CMap2 is then the darts of one colour).
+/// A boundary face is a face like the others: a Möbius strip stays
+/// non-orientable once closed. O(number of darts).
+template <typename MAP>
+requires std::derived_from<MAP, GMap1>
+bool is_orientable(const MAP& m)
+{
+	DartMarker<MAP> black(m);
+	return detail::two_colour(m, black);
 }
 
 /// The Euler characteristic of the mesh: V - E + F for a surface (a 2-map
