@@ -110,12 +110,7 @@ json faces_info(const MAP& m, const io::LoadReport& r)
 		j["genus"] = nullptr;
 	load_report(r, j);
 	std::map<uint32, uint64> degrees;
-	foreach_cell(m, [&](typename T::Face x) {
-		if constexpr (is_gmap_v<MAP>)
-			++degrees[codegree(m, x)];
-		else
-			++degrees[codegree(static_cast<const CMap1&>(m), CMap1::Face(x.dart))];
-	});
+	foreach_cell(m, [&](typename T::Face x) { ++degrees[codegree(m, x)]; });
 	json h = json::object();
 	for (auto [d, n] : degrees)
 		h[std::to_string(d)] = n;

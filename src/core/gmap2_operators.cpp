@@ -64,18 +64,13 @@ bool can_cut_face(const GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2)
 	const Dart d = v1.dart, e = v2.dart;
 	if (is_boundary(m, d) || is_boundary(m, e))
 		return false;
-	// the corners of the face, as (dart, beta1(dart)) pairs met walking from d
-	bool same_face = false, same_vertex = false;
-	foreach_dart_of_orbit(m, GMap2::Face(d), [&](Dart x) {
-		same_face = same_face || x == e;
-		return !same_face;
-	});
+	bool same_face = false;
+	foreach_dart_of_orbit(m, GMap2::Face(d), [&](Dart x) { return !(same_face = x == e); });
 	if (!same_face)
 		return false;
 	const Dart e1 = beta1(m, e);
-	same_vertex = e == d || e1 == d;
-	if (same_vertex)
-		return false;
+	if (e == d || e1 == d)
+		return false; // the same corner
 	// joined by an edge of the face: e or beta1(e) is beta0 of d's corner
 	for (Dart x : {d, beta1(m, d)})
 		if (beta0(m, x) == e || beta0(m, x) == e1)
