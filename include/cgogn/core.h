@@ -21,6 +21,7 @@
 #include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/operators/creation.h>
 #include <cgogn/core/operators/dimension_guards.h>
+#include <cgogn/core/operators/gmap1.h>
 #include <cgogn/core/operators/gmap2.h>
 #include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/parallel/thread_pool.h>

@@ -23,8 +23,10 @@ void count_reindexed_darts(std::uint64_t n);
 template <typename MAP>
 std::array<Dart, MAP::dimension + (is_gmap_v<MAP> ? 1 : 0)> linked_darts(const MAP& m, Dart d)
 {
-	if constexpr (is_gmap_v<MAP>)
+	if constexpr (is_gmap_v<MAP> && MAP::dimension >= 2)
 		return {beta0(m, d), beta1(m, d), beta2(m, d)};
+	else if constexpr (is_gmap_v<MAP>)
+		return {beta0(m, d), beta1(m, d)};
 	else if constexpr (MAP::dimension >= 3)
 		return {phi1(m, d), phi2(m, d), phi3(m, d)};
 	else

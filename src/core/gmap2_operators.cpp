@@ -3,6 +3,7 @@
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/operators/gmap2.h>
 
+#include "gmap_darts.h"
 #include "reindex.h"
 
 #include <cassert>
@@ -10,40 +11,20 @@
 namespace cgogn
 {
 
-namespace
-{
-
-// A new dart with the boundary mark of `like` (the face it joins).
-Dart new_dart_like(GMap2& m, Dart like)
-{
-	const Dart d = detail::add_dart(m);
-	if (is_boundary(m, like))
-		detail::set_boundary(m, d, true);
-	return d;
-}
-
-// The darts of an edge: d, beta0(d), beta2(d), beta0(beta2(d)).
-std::vector<Dart> edge_darts(const GMap2& m, Dart d)
-{
-	return {d, beta0(m, d), beta2(m, d), beta0(m, beta2(m, d))};
-}
-
-} // namespace
-
 GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices)
 {
-	const std::vector<Dart> old = edge_darts(m, e.dart);
+	const std::array<Dart, 4> old = detail::edge_darts(m, e.dart);
 	detail::RegionReindexer<GMap2> reindex;
 	if (set_indices)
-		reindex.record(m, old);
-	std::vector<Dart> region = old;
+		reindex.record(m, {old.begin(), old.end()});
+	std::vector<Dart> region(old.begin(), old.end());
 	// each side (d, beta0(d)) of the edge gets two darts at the new vertex,
 	// x after d and y after beta0(d), joined by beta1
 	std::array<std::pair<Dart, Dart>, 2> made;
 	for (uint32 side = 0; side < 2; ++side)
 	{
 		const Dart d = old[2 * side], d0 = old[2 * side + 1];
-		const Dart x = new_dart_like(m, d), y = new_dart_like(m, d);
+		const Dart x = detail::new_dart_like(m, d), y = detail::new_dart_like(m, d);
 		beta_unsew<0>(m, d);
 		beta_sew<0>(m, d, x);
 		beta_sew<0>(m, d0, y);
@@ -101,8 +82,8 @@ GMap2::Edge cut_face(GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indi
 	detail::RegionReindexer<GMap2> reindex;
 	if (set_indices)
 		reindex.record(m, region);
-	const Dart p = new_dart_like(m, d), p0 = new_dart_like(m, d); // in d's part
-	const Dart q = new_dart_like(m, d), q0 = new_dart_like(m, d); // in d1's part
+	const Dart p = detail::new_dart_like(m, d), p0 = detail::new_dart_like(m, d); // in d's part
+	const Dart q = detail::new_dart_like(m, d), q0 = detail::new_dart_like(m, d); // in d1's part
 	beta_unsew<1>(m, d);
 	beta_unsew<1>(m, e);
 	beta_sew<1>(m, d, p);
@@ -130,12 +111,12 @@ bool can_merge_incident_faces(const GMap2& m, GMap2::Edge e)
 GMap2::Face merge_incident_faces(GMap2& m, GMap2::Edge e, bool set_indices)
 {
 	assert(can_merge_incident_faces(m, e));
-	const std::vector<Dart> edge = edge_darts(m, e.dart);
+	const std::array<Dart, 4> edge = detail::edge_darts(m, e.dart);
 	// the corners around the edge: at d's end a = beta1(d) in d's face and
 	// b = beta1(beta2(d)) in the other; at the other end, the same from beta0(d)
 	const Dart a = beta1(m, edge[0]), b = beta1(m, edge[2]);
 	const Dart a0 = beta1(m, edge[1]), b0 = beta1(m, edge[3]);
-	std::vector<Dart> region = edge;
+	std::vector<Dart> region(edge.begin(), edge.end());
 	region.insert(region.end(), {a, b, a0, b0});
 	detail::RegionReindexer<GMap2> reindex;
 	if (set_indices)
