@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Catmull-Clark subdivision of polygon meshes.
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/gmap2.h>
 
 #include "subdivision_common.h"
 
@@ -12,12 +13,14 @@ using namespace detail;
 namespace
 {
 
-/// Vertex centroid of the face of d.
-Vec3 face_point(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
+/// Vertex centroid of the face of d (a G-map face has two darts per vertex:
+/// the mean is the same).
+template <typename MAP>
+Vec3 face_point(const MAP& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	Vec3 sum = Vec3::Zero();
 	uint32 n = 0;
-	foreach_dart_of_orbit(m, Face(d), [&](Dart x) {
+	foreach_dart_of_orbit(m, typename mesh_traits<MAP>::Face(d), [&](Dart x) {
 		sum += position(m, pos, x);
 		++n;
 	});
@@ -48,10 +51,37 @@ Vertex cut_into_quads(CMap2& m, Dart d0, std::vector<Dart>& midpoints)
 	return centre;
 }
 
-} // namespace
-
-SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+/// The same in a G-map. midpoints[i] is the dart at the i-th midpoint whose
+/// edge goes on to the next old vertex (the walk from d0). Each cut takes,
+/// at the centre, the dart on the side of the part still to cut.
+GMap2::Vertex cut_into_quads(GMap2& m, Dart d0, std::vector<Dart>& midpoints)
 {
+	midpoints.clear();
+	Dart d = next_in_face(m, d0);
+	do
+	{
+		midpoints.push_back(d);
+		d = next_in_face(m, next_in_face(m, d));
+	} while (d != next_in_face(m, d0));
+	using V = GMap2::Vertex;
+	// cut off the corner after midpoints[0]: joined on the side of d0
+	const GMap2::Edge first = cut_face(m, V(beta0(m, d0)), V(midpoints[1]));
+	// the centre's dart lies in the part still to cut (the face of
+	// first.dart), on the half towards midpoints[1]; beta1 of it is on the
+	// half towards midpoints[0], which the next cut keeps
+	const GMap2::Vertex centre = cut_edge(m, first);
+	Dart from_centre = beta1(m, centre.dart);
+	for (std::size_t i = 2; i < midpoints.size(); ++i)
+		from_centre = cut_face(m, V(from_centre), V(midpoints[i])).dart;
+	return centre;
+}
+
+template <typename MAP>
+SubdivisionResult catmull_clark_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	using V = typename mesh_traits<MAP>::Vertex;
+	using E = typename mesh_traits<MAP>::Edge;
+	using F = typename mesh_traits<MAP>::Face;
 	StepProgress step(progress);
 	VertexPositions vertices(m);
 	const std::vector<Dart> edges = edge_snapshot(m);
@@ -70,27 +100,28 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos,
 		if (!step.computing(i, total))
 			return step.cancelled_before_change();
 		face_points[i] = face_point(m, pos, faces[i]);
-		foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) { face_of_dart[d.index] = uint32(i); });
+		foreach_dart_of_orbit(m, F(faces[i]), [&](Dart d) { face_of_dart[d.index] = uint32(i); });
 	}
-	// 2. the old vertices: (Q + 2R + (n - 3) p) / n
+	// 2. the old vertices: (Q + 2R + (n - 3) p) / n (the sums over the
+	// vertex's darts: their means are the same whatever the darts per edge)
 	for (std::size_t i = 0; i < vertices.vertices.size(); ++i)
 	{
 		if (!step.computing(faces.size() + i, total))
 			return step.cancelled_before_change();
-		const Vertex v(vertices.vertices[i]);
+		const V v(vertices.vertices[i]);
 		if (boundary_vertex_rule(m, pos, v, vertices.positions[i]))
 			continue;
 		const Vec3& p = position(m, pos, v.dart);
 		Vec3 q = Vec3::Zero(), r = Vec3::Zero();
-		uint32 n = 0;
+		uint32 darts = 0;
 		foreach_dart_of_orbit(m, v, [&](Dart d) {
 			q += face_points[face_of_dart[d.index]];
-			r += position(m, pos, phi2(m, d));
-			++n;
+			r += position(m, pos, across_edge(m, d));
+			++darts;
 		});
 		// R, the mean of the edge midpoints, is (p + mean of the neighbours) / 2
-		const double dn = double(n);
-		vertices.positions[i] = (q / dn + (p + r / dn) + (dn - 3.0) * p) / dn;
+		const double dd = double(darts), dn = dd / double(darts_per_edge_at_vertex<MAP>);
+		vertices.positions[i] = (q / dd + (p + r / dd) + (dn - 3.0) * p) / dn;
 	}
 	// 3. the edge points
 	std::vector<Vec3> edge_points(edges.size());
@@ -98,22 +129,22 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos,
 	{
 		if (!step.computing(faces.size() + vertices.vertices.size() + i, total))
 			return step.cancelled_before_change();
-		const Dart d = edges[i], d2 = phi2(m, d);
-		const Vec3 ends = position(m, pos, d) + position(m, pos, d2);
+		const Dart d = edges[i], d2 = other_side(m, d);
+		const Vec3 ends = position(m, pos, d) + position(m, pos, across_edge(m, d));
 		if (is_boundary(m, d) || is_boundary(m, d2))
 			edge_points[i] = 0.5 * ends;
 		else
 			edge_points[i] = 0.25 * (ends + face_points[face_of_dart[d.index]] + face_points[face_of_dart[d2.index]]);
 	}
 
-	// 4. the connectivity (cut_edge keeps the origins of the existing darts,
+	// 4. the connectivity (cut_edge keeps the vertices of the existing darts,
 	// so the face snapshot still starts at old vertices)
 	vertices.commit(m, pos);
 	const std::size_t work = edges.size() + faces.size();
 	for (std::size_t i = 0; i < edges.size(); ++i)
 	{
 		step.changing(i, work);
-		pos[index_of(m, cut_edge(m, Edge(edges[i])))] = edge_points[i];
+		pos[index_of(m, cut_edge(m, E(edges[i])))] = edge_points[i];
 	}
 	std::vector<Dart> midpoints;
 	for (std::size_t i = 0; i < faces.size(); ++i)
@@ -122,6 +153,18 @@ SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos,
 		pos[index_of(m, cut_into_quads(m, faces[i], midpoints))] = face_points[i];
 	}
 	return step.finish();
+}
+
+} // namespace
+
+SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	return catmull_clark_step(m, pos, progress);
+}
+
+SubdivisionResult catmull_clark_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	return catmull_clark_step(m, pos, progress);
 }
 
 } // namespace cgogn::modeling

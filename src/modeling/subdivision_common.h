@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/betas.h>
 #include <cgogn/core/map/indexing.h>
+#include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/modeling/subdivision.h>
@@ -20,16 +22,60 @@ using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
 using Face = CMap2::Face;
 
-/// The position of the origin of d.
-inline const Vec3& position(const CMap2& m, const AttributeArray<Vec3>& pos, Dart d)
+// The schemes run on CMap2 and GMap2. What differs is how a dart reaches its
+// neighbours: the other end of its edge (origin of phi2 in a 2-map, beta0 in
+// a G-map), the other side of its edge (phi2, beta2), the next dart along
+// its face, and how many darts a vertex has per incident edge (1, or 2 in a
+// G-map: one per side of the edge). Sums over a vertex's darts are divided
+// by the latter.
+
+/// A dart at the other end of d's edge.
+template <typename MAP>
+Dart across_edge(const MAP& m, Dart d)
 {
-	return pos[index_of(m, Vertex(d))];
+	if constexpr (is_gmap_v<MAP>)
+		return beta0(m, d);
+	else
+		return phi2(m, d);
+}
+
+/// The dart of d's edge on its other side (the other face).
+template <typename MAP>
+Dart other_side(const MAP& m, Dart d)
+{
+	if constexpr (is_gmap_v<MAP>)
+		return beta2(m, d);
+	else
+		return phi2(m, d);
+}
+
+/// The next dart along d's face, at the next vertex in the direction of d's
+/// edge (phi1; beta1 o beta0 in a G-map).
+template <typename MAP>
+Dart next_in_face(const MAP& m, Dart d)
+{
+	if constexpr (is_gmap_v<MAP>)
+		return beta<0, 1>(m, d);
+	else
+		return phi1(m, d);
+}
+
+/// Darts of a vertex per incident edge.
+template <typename MAP>
+inline constexpr uint32 darts_per_edge_at_vertex = is_gmap_v<MAP> ? 2 : 1;
+
+/// The position of the vertex of d (the origin of d in a 2-map).
+template <typename MAP>
+const Vec3& position(const MAP& m, const AttributeArray<Vec3>& pos, Dart d)
+{
+	return pos[index_of(m, typename mesh_traits<MAP>::Vertex(d))];
 }
 
 /// True when the edge of d has a boundary face on one side.
-inline bool is_boundary_edge(const CMap2& m, Dart d)
+template <typename MAP>
+bool is_boundary_edge(const MAP& m, Dart d)
 {
-	return is_boundary(m, d) || is_boundary(m, phi2(m, d));
+	return is_boundary(m, d) || is_boundary(m, other_side(m, d));
 }
 
 /// The boundary rule shared by Loop and Catmull-Clark for a vertex whose
@@ -37,7 +83,8 @@ inline bool is_boundary_edge(const CMap2& m, Dart d)
 /// its two boundary edges); a vertex with another number of boundary edges
 /// (a pinched vertex) stays. Returns false (and leaves `out`) when v is not
 /// on the boundary.
-inline bool boundary_vertex_rule(const CMap2& m, const AttributeArray<Vec3>& pos, Vertex v, Vec3& out)
+template <typename MAP>
+bool boundary_vertex_rule(const MAP& m, const AttributeArray<Vec3>& pos, typename mesh_traits<MAP>::Vertex v, Vec3& out)
 {
 	Vec3 sum = Vec3::Zero();
 	uint32 n = 0;
@@ -46,37 +93,47 @@ inline bool boundary_vertex_rule(const CMap2& m, const AttributeArray<Vec3>& pos
 		if (is_boundary_edge(m, d))
 		{
 			boundary = true;
-			sum += position(m, pos, phi2(m, d));
+			sum += position(m, pos, across_edge(m, d));
 			++n;
 		}
 	});
 	if (!boundary)
 		return false;
 	const Vec3& p = position(m, pos, v.dart);
-	out = n == 2 ? Vec3(0.75 * p + 0.125 * sum) : p;
+	constexpr uint32 k = darts_per_edge_at_vertex<MAP>;
+	out = n == 2 * k ? Vec3(0.75 * p + 0.125 / double(k) * sum) : p;
 	return true;
 }
 
 /// One dart per vertex, as the map is before a step (the operators create
 /// cells while the snapshot is walked). Vertices are indexed (positions):
 /// the container is walked. O(vertices).
-inline std::vector<Dart> vertex_snapshot(const CMap2& m)
+template <typename MAP>
+std::vector<Dart> vertex_snapshot(const MAP& m)
 {
+	using V = typename mesh_traits<MAP>::Vertex;
 	std::vector<Dart> darts;
-	darts.reserve(nb_cells<Vertex>(m));
-	foreach_cell(m, [&](Vertex v) { darts.push_back(v.dart); });
+	darts.reserve(nb_cells<V>(m));
+	foreach_cell(m, [&](V v) { darts.push_back(v.dart); });
 	return darts;
 }
 
-/// One dart per edge: the one of smaller index (phi2 never joins two boundary
-/// darts, so every edge is real). No marker, whether edges are indexed or
-/// not. O(darts).
-inline std::vector<Dart> edge_snapshot(const CMap2& m)
+/// One dart per edge: the one of smallest index (phi2 never joins two
+/// boundary darts, so every edge is real; a G-map edge's four darts are
+/// compared). No marker, whether edges are indexed or not. O(darts).
+template <typename MAP>
+std::vector<Dart> edge_snapshot(const MAP& m)
 {
 	std::vector<Dart> darts;
-	darts.reserve(nb_darts(m) / 2);
+	darts.reserve(nb_darts(m) / (2 * darts_per_edge_at_vertex<MAP>));
 	foreach_dart(m, [&](Dart d) {
-		if (d.index < phi2(m, d).index)
+		const Dart d2 = other_side(m, d);
+		if constexpr (is_gmap_v<MAP>)
+		{
+			if (d.index < beta0(m, d).index && d.index < d2.index && d.index < beta0(m, d2).index)
+				darts.push_back(d);
+		}
+		else if (d.index < d2.index)
 			darts.push_back(d);
 	});
 	return darts;
@@ -84,24 +141,35 @@ inline std::vector<Dart> edge_snapshot(const CMap2& m)
 
 /// One dart per non-boundary face (the one of smallest index, found by
 /// walking the face until a smaller one shows up), with the smallest and
-/// largest face degrees. No marker. O(sum of squared face degrees) in the
-/// worst case, about 1.5 steps per dart on triangles.
+/// largest face degrees. In a G-map only the darts whose edge goes forward
+/// from them along next_in_face are walked (one per edge): the face's
+/// smallest such dart is kept. No marker. O(sum of squared face degrees) in
+/// the worst case, about 1.5 steps per dart on triangles.
 struct FaceSnapshot
 {
 	std::vector<Dart> darts;
 	uint32 min_degree = 0, max_degree = 0;
 
-	explicit FaceSnapshot(const CMap2& m)
+	template <typename MAP>
+	explicit FaceSnapshot(const MAP& m)
 	{
-		darts.reserve(nb_darts(m) / 3);
+		darts.reserve(nb_darts(m) / (3 * darts_per_edge_at_vertex<MAP>));
 		min_degree = ~0u;
 		foreach_dart(m, [&](Dart d) {
 			if (is_boundary(m, d))
 				return;
+			if constexpr (is_gmap_v<MAP>)
+				if (beta0(m, d).index < d.index)
+					return;
 			uint32 degree = 1;
-			for (Dart x = phi1(m, d); x != d; x = phi1(m, x), ++degree)
+			for (Dart x = next_in_face(m, d); x != d; x = next_in_face(m, x), ++degree)
+			{
 				if (x.index < d.index)
 					return;
+				if constexpr (is_gmap_v<MAP>)
+					if (beta0(m, x).index < d.index)
+						return; // the other walk direction holds a smaller dart
+			}
 			darts.push_back(d);
 			min_degree = std::min(min_degree, degree);
 			max_degree = std::max(max_degree, degree);
@@ -152,13 +220,15 @@ struct VertexPositions
 	std::vector<Dart> vertices;
 	std::vector<Vec3> positions;
 
-	explicit VertexPositions(const CMap2& m) : vertices(vertex_snapshot(m)), positions(vertices.size())
+	template <typename MAP>
+	explicit VertexPositions(const MAP& m) : vertices(vertex_snapshot(m)), positions(vertices.size())
 	{
 	}
-	void commit(const CMap2& m, AttributeArray<Vec3>& pos) const
+	template <typename MAP>
+	void commit(const MAP& m, AttributeArray<Vec3>& pos) const
 	{
 		for (std::size_t i = 0; i < vertices.size(); ++i)
-			pos[index_of(m, Vertex(vertices[i]))] = positions[i];
+			pos[index_of(m, typename mesh_traits<MAP>::Vertex(vertices[i]))] = positions[i];
 	}
 };
 

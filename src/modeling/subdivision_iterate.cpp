@@ -5,8 +5,11 @@
 namespace cgogn::modeling
 {
 
-SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
-							const ProgressCallback& progress)
+namespace
+{
+template <typename MAP>
+SubdivisionResult iterate(MAP& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+						  const ProgressCallback& progress)
 {
 	SubdivisionResult result;
 	for (uint32 i = 0; i < iterations; ++i)
@@ -35,6 +38,19 @@ SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme s
 		}
 	}
 	return result;
+}
+} // namespace
+
+SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+							const ProgressCallback& progress)
+{
+	return iterate(m, pos, scheme, iterations, progress);
+}
+
+SubdivisionResult subdivide(GMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+							const ProgressCallback& progress)
+{
+	return iterate(m, pos, scheme, iterations, progress);
 }
 
 } // namespace cgogn::modeling

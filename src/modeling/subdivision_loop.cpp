@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Loop subdivision of triangle meshes.
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/gmap2.h>
 
 #include "subdivision_common.h"
 
@@ -18,6 +19,17 @@ bool is_triangle_mesh(const CMap2& m)
 	bool ok = true;
 	foreach_dart(m, [&](Dart d) {
 		ok = is_boundary(m, d) || (phi<1, 1, 1>(m, d) == d && phi1(m, d) != d);
+		return ok;
+	});
+	return ok;
+}
+
+bool is_triangle_mesh(const GMap2& m)
+{
+	bool ok = true;
+	foreach_dart(m, [&](Dart d) {
+		ok = is_boundary(m, d) ||
+			 (beta<0, 1, 0, 1, 0, 1>(m, d) == d && beta<0, 1>(m, d) != d && beta<0, 1, 0, 1>(m, d) != d);
 		return ok;
 	});
 	return ok;
@@ -47,12 +59,36 @@ void cut_hexagon(CMap2& m, Dart h0)
 	cut_face(m, Vertex(x1), Vertex(h5));
 }
 
-} // namespace
-
-SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+/// The same in a G-map: w0 .. w5 walk the hexagon from h0 (an old vertex),
+/// each at the vertex where its edge starts. Each cut joins two midpoints by
+/// their darts on the side of the middle triangle, which so keeps the line.
+void cut_hexagon(GMap2& m, Dart h0)
 {
+	std::array<Dart, 6> w;
+	w[0] = h0;
+	for (uint32 k = 1; k < 6; ++k)
+		w[k] = next_in_face(m, w[k - 1]);
+	using V = GMap2::Vertex;
+	const Dart e1 = cut_face(m, V(beta0(m, w[0])), V(w[3])).dart; // cuts off w[2]'s corner; e1 at w[1]'s vertex
+	const Dart e2 = cut_face(m, V(beta0(m, e1)), V(w[5])).dart;   // w[4]'s corner; e2 at w[3]'s vertex
+	cut_face(m, V(beta0(m, e2)), V(e1));                          // w[0]'s corner
+}
+
+/// The vertex opposite to d's edge in d's triangle.
+template <typename MAP>
+Dart opposite_in_triangle(const MAP& m, Dart d)
+{
+	return across_edge(m, next_in_face(m, d));
+}
+
+template <typename MAP>
+SubdivisionResult loop_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	using V = typename mesh_traits<MAP>::Vertex;
+	using E = typename mesh_traits<MAP>::Edge;
+	constexpr uint32 k = darts_per_edge_at_vertex<MAP>;
 	const FaceSnapshot snapshot(m);
-	const std::vector<Dart>& faces = snapshot.darts; // darts starting at old vertices
+	const std::vector<Dart>& faces = snapshot.darts; // darts at old vertices
 	if (!faces.empty() && (snapshot.min_degree != 3 || snapshot.max_degree != 3))
 		throw SubdivisionError("Loop subdivision: every face must be a triangle");
 	StepProgress step(progress);
@@ -68,15 +104,17 @@ SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const Pr
 	{
 		if (!step.computing(i, total))
 			return step.cancelled_before_change();
-		const Vertex v(vertices.vertices[i]);
+		const V v(vertices.vertices[i]);
 		if (boundary_vertex_rule(m, pos, v, vertices.positions[i]))
 			continue;
 		Vec3 sum = Vec3::Zero();
 		uint32 n = 0;
 		foreach_dart_of_orbit(m, v, [&](Dart d) {
-			sum += position(m, pos, phi2(m, d));
+			sum += position(m, pos, across_edge(m, d));
 			++n;
 		});
+		n /= k;
+		sum /= double(k);
 		const double beta = n < betas.size() ? betas[n] : loop_beta(n);
 		vertices.positions[i] = (1.0 - double(n) * beta) * position(m, pos, v.dart) + beta * sum;
 	}
@@ -86,23 +124,23 @@ SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const Pr
 	{
 		if (!step.computing(vertices.vertices.size() + i, total))
 			return step.cancelled_before_change();
-		const Dart d = edges[i], d2 = phi2(m, d);
-		const Vec3 ends = position(m, pos, d) + position(m, pos, d2);
+		const Dart d = edges[i], d2 = other_side(m, d);
+		const Vec3 ends = position(m, pos, d) + position(m, pos, across_edge(m, d));
 		if (is_boundary(m, d) || is_boundary(m, d2))
 			edge_points[i] = 0.5 * ends;
 		else
-			edge_points[i] =
-				0.375 * ends + 0.125 * (position(m, pos, phi<1, 1>(m, d)) + position(m, pos, phi<1, 1>(m, d2)));
+			edge_points[i] = 0.375 * ends + 0.125 * (position(m, pos, opposite_in_triangle(m, d)) +
+													 position(m, pos, opposite_in_triangle(m, d2)));
 	}
 
-	// 3. the connectivity (cut_edge keeps the origins of the existing darts,
+	// 3. the connectivity (cut_edge keeps the vertices of the existing darts,
 	// so the face snapshot still starts at old vertices)
 	vertices.commit(m, pos);
 	const std::size_t work = edges.size() + faces.size();
 	for (std::size_t i = 0; i < edges.size(); ++i)
 	{
 		step.changing(i, work);
-		pos[index_of(m, cut_edge(m, Edge(edges[i])))] = edge_points[i];
+		pos[index_of(m, cut_edge(m, E(edges[i])))] = edge_points[i];
 	}
 	for (std::size_t i = 0; i < faces.size(); ++i)
 	{
@@ -110,6 +148,18 @@ SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const Pr
 		cut_hexagon(m, faces[i]);
 	}
 	return step.finish();
+}
+
+} // namespace
+
+SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	return loop_step(m, pos, progress);
+}
+
+SubdivisionResult loop_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	return loop_step(m, pos, progress);
 }
 
 } // namespace cgogn::modeling

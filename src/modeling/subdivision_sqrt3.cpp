@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // sqrt3 subdivision of triangle meshes (Kobbelt 2000).
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/gmap2.h>
 
 #include "subdivision_common.h"
 
@@ -16,16 +17,27 @@ namespace
 {
 
 /// True when the vertex of d has at least k edges. O(k).
-bool has_degree_at_least(const CMap2& m, Dart d, uint32 k)
+template <typename MAP>
+bool has_degree_at_least(const MAP& m, Dart d, uint32 k)
 {
 	Dart x = d;
 	for (uint32 i = 1; i < k; ++i)
 	{
-		x = phi<2, 1>(m, x);
+		if constexpr (is_gmap_v<MAP>)
+			x = beta<1, 2>(m, x);
+		else
+			x = phi<2, 1>(m, x);
 		if (x == d)
 			return false;
 	}
 	return true;
+}
+
+/// The vertex opposite to d's edge in d's triangle.
+template <typename MAP>
+Dart opposite_in_triangle(const MAP& m, Dart d)
+{
+	return across_edge(m, next_in_face(m, d));
 }
 
 /// can_flip_edge for an old edge d between two split triangles, in O(degree)
@@ -33,37 +45,45 @@ bool has_degree_at_least(const CMap2& m, Dart d, uint32 k)
 /// the two triangles, which fails only when they are already joined (two
 /// triangles sharing two edges: the first flip joined them) or when an end
 /// of d would be left with fewer than 2 edges.
-bool can_flip_old_edge(const CMap2& m, Dart d)
+template <typename MAP>
+bool can_flip_old_edge(const MAP& m, Dart d)
 {
-	const Dart d2 = phi2(m, d);
-	if (!has_degree_at_least(m, d, 3) || !has_degree_at_least(m, d2, 3))
+	using V = typename mesh_traits<MAP>::Vertex;
+	const Dart d2 = other_side(m, d);
+	if (!has_degree_at_least(m, d, 3) || !has_degree_at_least(m, across_edge(m, d), 3))
 		return false;
-	const Dart c1 = phi<1, 1>(m, d);
-	const uint32 c2 = index_of(m, Vertex(phi<1, 1>(m, d2)));
-	bool joined = index_of(m, Vertex(c1)) == c2;
-	foreach_dart_of_orbit(m, Vertex(c1), [&](Dart x) { return !(joined = index_of(m, Vertex(phi2(m, x))) == c2); });
+	const Dart c1 = opposite_in_triangle(m, d);
+	const uint32 c2 = index_of(m, V(opposite_in_triangle(m, d2)));
+	bool joined = index_of(m, V(c1)) == c2;
+	foreach_dart_of_orbit(m, V(c1), [&](Dart x) { return !(joined = index_of(m, V(across_edge(m, x))) == c2); });
 	return !joined;
 }
 
 /// True when the triangles on both sides of d share another edge than d's.
 /// O(1).
-bool shares_another_edge(const CMap2& m, Dart d)
+template <typename MAP>
+bool shares_another_edge(const MAP& m, Dart d)
 {
-	const Dart d2 = phi2(m, d);
-	const Dart e1 = phi1(m, d2), e2 = phi1(m, e1);
-	for (Dart x : {phi1(m, d), phi<1, 1>(m, d)})
-	{
-		const Dart y = phi2(m, x);
-		if (y == d2 || y == e1 || y == e2)
+	using F = typename mesh_traits<MAP>::Face;
+	const Dart d2 = other_side(m, d);
+	bool shared = false;
+	// the other sides of the darts of d's face that are not on d's edge
+	foreach_dart_of_orbit(m, F(d), [&](Dart x) {
+		if (same_orbit(m, typename mesh_traits<MAP>::Edge(x), typename mesh_traits<MAP>::Edge(d)))
 			return true;
-	}
-	return false;
+		const Dart y = other_side(m, x);
+		foreach_dart_of_orbit(m, F(d2), [&](Dart z) { return !(shared = z == y); });
+		return !shared;
+	});
+	return shared;
 }
 
-} // namespace
-
-SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+template <typename MAP>
+SubdivisionResult sqrt3_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
+	using V = typename mesh_traits<MAP>::Vertex;
+	using E = typename mesh_traits<MAP>::Edge;
+	using F = typename mesh_traits<MAP>::Face;
 	const FaceSnapshot snapshot(m);
 	const std::vector<Dart>& faces = snapshot.darts;
 	if (!faces.empty() && (snapshot.min_degree != 3 || snapshot.max_degree != 3))
@@ -77,14 +97,14 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const P
 	{
 		if (!step.computing(i, total))
 			return step.cancelled_before_change();
-		const Vertex v(vertices.vertices[i]);
+		const V v(vertices.vertices[i]);
 		const Vec3& p = position(m, pos, v.dart);
 		Vec3 sum = Vec3::Zero();
 		uint32 n = 0;
 		bool boundary = false;
 		foreach_dart_of_orbit(m, v, [&](Dart d) {
 			boundary = boundary || is_boundary(m, d);
-			sum += position(m, pos, phi2(m, d));
+			sum += position(m, pos, across_edge(m, d));
 			++n;
 		});
 		if (boundary)
@@ -92,6 +112,8 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const P
 			vertices.positions[i] = p;
 			continue;
 		}
+		n /= darts_per_edge_at_vertex<MAP>;
+		sum /= double(darts_per_edge_at_vertex<MAP>);
 		const double alpha = (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / double(n))) / 9.0;
 		vertices.positions[i] = (1.0 - alpha) * p + (alpha / double(n)) * sum;
 	}
@@ -101,8 +123,8 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const P
 	{
 		if (!step.computing(vertices.vertices.size() + i, total))
 			return step.cancelled_before_change();
-		const Dart d = faces[i];
-		centroids[i] = (position(m, pos, d) + position(m, pos, phi1(m, d)) + position(m, pos, phi<1, 1>(m, d))) / 3.0;
+		const Dart d = faces[i], d1 = next_in_face(m, d);
+		centroids[i] = (position(m, pos, d) + position(m, pos, d1) + position(m, pos, next_in_face(m, d1))) / 3.0;
 	}
 	// the interior edges, flipped once the faces are split
 	// (those whose two triangles share another edge are checked before
@@ -117,23 +139,36 @@ SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const P
 		return true;
 	});
 
-	// 3. the connectivity
+	// 3. the connectivity (flipping an old edge, in either direction, joins
+	// the centroids of its two triangles)
 	vertices.commit(m, pos);
 	const std::size_t work = faces.size() + interior_edges.size();
 	for (std::size_t i = 0; i < faces.size(); ++i)
 	{
 		step.changing(i, work);
-		pos[index_of(m, triangulate_face(m, Face(faces[i])))] = centroids[i];
+		pos[index_of(m, triangulate_face(m, F(faces[i])))] = centroids[i];
 	}
 	for (std::size_t i = 0; i < interior_edges.size(); ++i)
 	{
 		step.changing(faces.size() + i, work);
-		flip_edge(m, Edge(interior_edges[i]));
+		flip_edge(m, E(interior_edges[i]));
 	}
 	for (Dart d : guarded_edges)
 		if (can_flip_old_edge(m, d))
-			flip_edge(m, Edge(d));
+			flip_edge(m, E(d));
 	return step.finish();
+}
+
+} // namespace
+
+SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	return sqrt3_step(m, pos, progress);
+}
+
+SubdivisionResult sqrt3_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
+{
+	return sqrt3_step(m, pos, progress);
 }
 
 } // namespace cgogn::modeling

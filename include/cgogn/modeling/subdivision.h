@@ -5,6 +5,7 @@
 
 #include <cgogn/core/map/cmap2.h>
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
@@ -42,9 +43,14 @@ struct SubdivisionResult
 // are the attributes' defaults (zero vectors, 0, ...). Only `pos` is
 // computed. Boundary faces are never subdivided; the boundary edges are cut
 // like the others. Each function does one step in O(size of the map).
+// The surface schemes run on a CMap2 and on a GMap2, orientable or not,
+// with the same rules: on a G-map, the result has the same vertices, edges
+// and faces as the CMap2's result on the same surface.
 
 /// True when every non-boundary face of m is a triangle. O(darts).
 bool is_triangle_mesh(const CMap2& m);
+/// True when every non-boundary face of m is a triangle. O(darts).
+bool is_triangle_mesh(const GMap2& m);
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 bool is_triangle_mesh(const CMap3& m) = delete;
 
@@ -59,6 +65,8 @@ bool is_triangle_mesh(const CMap3& m) = delete;
 /// untouched) when a face is not a triangle (see is_triangle_mesh).
 /// V + E vertices, 4F faces afterwards. O(n).
 SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Loop subdivision of a 2-G-map (see the CMap2 version). O(n).
+SubdivisionResult loop_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult loop_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {}) = delete;
 
@@ -72,6 +80,8 @@ SubdivisionResult loop_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pr
 /// two boundary edges stays). Afterwards every face is a quad. Throws
 /// SubdivisionError (map untouched) when a face has fewer than 3 edges. O(n).
 SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Catmull-Clark subdivision of a 2-G-map (see the CMap2 version). O(n).
+SubdivisionResult catmull_clark_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 											const ProgressCallback& progress = {}) = delete;
@@ -88,6 +98,8 @@ SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 /// SubdivisionError (map untouched) when a face is not a triangle.
 /// V + F vertices, 3F faces afterwards. O(n).
 SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// sqrt3 subdivision of a 2-G-map (see the CMap2 version). O(n).
+SubdivisionResult sqrt3_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult sqrt3_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 									const ProgressCallback& progress = {}) = delete;
@@ -102,6 +114,9 @@ enum class SurfaceScheme
 /// `iterations` steps of a scheme; progress goes from 0 to 1 over all steps.
 /// Stops after the step during which the callback asked to stop.
 SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+							const ProgressCallback& progress = {});
+/// The same on a 2-G-map.
+SubdivisionResult subdivide(GMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
 							const ProgressCallback& progress = {});
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult subdivide(CMap3& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
