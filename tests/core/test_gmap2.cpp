@@ -417,9 +417,13 @@ std::map<std::string, std::vector<std::vector<uint32>>> neighbourhoods(const MAP
 		add("vertex-vertices-by-face", avf, vertex_name(v));
 	});
 	foreach_cell(m, [&](Edge x) {
-		std::vector<std::vector<uint32>> f;
+		std::vector<std::vector<uint32>> f, aev, aef;
 		foreach_incident_face(m, x, [&](Face y) { f.push_back(face_name(y)); });
+		foreach_adjacent_edge_through_vertex(m, x, [&](Edge y) { aev.push_back(edge_name(y)); });
+		foreach_adjacent_edge_through_face(m, x, [&](Edge y) { aef.push_back(edge_name(y)); });
 		add("edge-faces", f, edge_name(x));
+		add("edge-edges-by-vertex", aev, edge_name(x));
+		add("edge-edges-by-face", aef, edge_name(x));
 	});
 	foreach_cell(m, [&](Face x) {
 		std::vector<std::vector<uint32>> e, af, afv;

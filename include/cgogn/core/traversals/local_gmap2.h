@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/detail/incidence_lookup.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/traversals/global.h>
 
@@ -8,7 +9,8 @@ namespace cgogn
 {
 
 // Local traversals of 2-G-maps, with the names and order of the CMap2 ones
-// (local_cmap2.h). Each calls f on the requested neighbours of a cell; f may
+// (local_cmap2.h), and like them reading an IncidenceCache of the relation
+// when one is built. Each calls f on the requested neighbours of a cell; f may
 // return false to stop. Boundary faces are never reported. A vertex's darts
 // come in pairs (two per edge, two per face corner): the walks step by
 // beta2 o beta1 around a vertex and by beta1 o beta0 around a face, meeting
@@ -56,6 +58,8 @@ void foreach_cell_of_component(const GMap2& m, Dart start, const FUNC& f)
 template <typename FUNC>
 void foreach_incident_edge(const GMap2& m, CellParam<GMap2::Vertex> v, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Edge, void>(m, v, f))
+		return;
 	detail::foreach_step_of<1, 2>(m, v.dart, [&](Dart d) { return call_and_continue(f, GMap2::Edge(d)); });
 }
 
@@ -63,6 +67,8 @@ void foreach_incident_edge(const GMap2& m, CellParam<GMap2::Vertex> v, const FUN
 template <typename FUNC>
 void foreach_incident_face(const GMap2& m, CellParam<GMap2::Vertex> v, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Face, void>(m, v, f))
+		return;
 	detail::foreach_step_of<1, 2>(m, v.dart,
 								  [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, GMap2::Face(d)); });
 }
@@ -78,6 +84,8 @@ void foreach_incident_volume(const GMap2&, CellParam<GMap2::Vertex> v, const FUN
 template <typename FUNC>
 void foreach_adjacent_vertex_through_edge(const GMap2& m, CellParam<GMap2::Vertex> v, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Vertex, GMap2::Edge>(m, v, f))
+		return;
 	detail::foreach_step_of<1, 2>(m, v.dart, [&](Dart d) { return call_and_continue(f, GMap2::Vertex(beta0(m, d))); });
 }
 
@@ -87,6 +95,8 @@ void foreach_adjacent_vertex_through_edge(const GMap2& m, CellParam<GMap2::Verte
 template <typename FUNC>
 void foreach_adjacent_vertex_through_face(const GMap2& m, CellParam<GMap2::Vertex> v, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Vertex, GMap2::Face>(m, v, f))
+		return;
 	detail::foreach_step_of<1, 2>(m, v.dart, [&](Dart d) {
 		// d's edge leads to the first neighbour; d's face holds the others,
 		// up to the vertex before v on the way back
@@ -128,10 +138,42 @@ void foreach_incident_volume(const GMap2&, CellParam<GMap2::Edge> e, const FUNC&
 	call_and_continue(f, GMap2::Volume(e.dart));
 }
 
+/// Edges sharing a vertex with e (e excluded): around the vertex of e.dart,
+/// then around the other end. O(degree of both ends).
+template <typename FUNC>
+void foreach_adjacent_edge_through_vertex(const GMap2& m, CellParam<GMap2::Edge> e, const FUNC& f)
+{
+	if (detail::foreach_cached<GMap2::Edge, GMap2::Vertex>(m, e, f))
+		return;
+	for (Dart start : {e.dart, beta0(m, e.dart)})
+		if (!detail::foreach_step_of<1, 2>(m, start,
+										   [&](Dart d) { return d == start || call_and_continue(f, GMap2::Edge(d)); }))
+			return;
+}
+
+/// Edges sharing a (non-boundary) face with e, e excluded. O(degree of its
+/// faces).
+template <typename FUNC>
+void foreach_adjacent_edge_through_face(const GMap2& m, CellParam<GMap2::Edge> e, const FUNC& f)
+{
+	if (detail::foreach_cached<GMap2::Edge, GMap2::Face>(m, e, f))
+		return;
+	for (Dart start : {e.dart, beta2(m, e.dart)})
+	{
+		if (is_boundary(m, start))
+			continue;
+		if (!detail::foreach_step_of<0, 1>(m, start,
+										   [&](Dart d) { return d == start || call_and_continue(f, GMap2::Edge(d)); }))
+			return;
+	}
+}
+
 /// Vertices of face f, in the order of its darts from f.dart. O(codegree).
 template <typename FUNC>
 void foreach_incident_vertex(const GMap2& m, CellParam<GMap2::Face> f, const FUNC& fn)
 {
+	if (detail::foreach_cached<GMap2::Vertex, void>(m, f, fn))
+		return;
 	detail::foreach_step_of<0, 1>(m, f.dart, [&](Dart d) { return call_and_continue(fn, GMap2::Vertex(d)); });
 }
 
@@ -139,6 +181,8 @@ void foreach_incident_vertex(const GMap2& m, CellParam<GMap2::Face> f, const FUN
 template <typename FUNC>
 void foreach_incident_edge(const GMap2& m, CellParam<GMap2::Face> f, const FUNC& fn)
 {
+	if (detail::foreach_cached<GMap2::Edge, void>(m, f, fn))
+		return;
 	detail::foreach_step_of<0, 1>(m, f.dart, [&](Dart d) { return call_and_continue(fn, GMap2::Edge(d)); });
 }
 
@@ -154,6 +198,8 @@ void foreach_incident_volume(const GMap2&, CellParam<GMap2::Face> f, const FUNC&
 template <typename FUNC>
 void foreach_adjacent_face_through_edge(const GMap2& m, CellParam<GMap2::Face> f, const FUNC& fn)
 {
+	if (detail::foreach_cached<GMap2::Face, GMap2::Edge>(m, f, fn))
+		return;
 	detail::foreach_step_of<0, 1>(m, f.dart, [&](Dart d) {
 		const Dart d2 = beta2(m, d);
 		return is_boundary(m, d2) || call_and_continue(fn, GMap2::Face(d2));
@@ -166,6 +212,8 @@ void foreach_adjacent_face_through_edge(const GMap2& m, CellParam<GMap2::Face> f
 template <typename FUNC>
 void foreach_adjacent_face_through_vertex(const GMap2& m, CellParam<GMap2::Face> f, const FUNC& fn)
 {
+	if (detail::foreach_cached<GMap2::Face, GMap2::Vertex>(m, f, fn))
+		return;
 	detail::foreach_step_of<0, 1>(m, f.dart, [&](Dart d) {
 		// around d's vertex, from the face across d's edge to the face before
 		// the one across the corner's other edge (reported by the previous vertex)
@@ -187,12 +235,16 @@ void foreach_adjacent_face_through_vertex(const GMap2& m, CellParam<GMap2::Face>
 template <typename FUNC>
 void foreach_incident_vertex(const GMap2& m, CellParam<GMap2::Volume> w, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Vertex, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_component<GMap2::Vertex>(m, w.dart, f);
 }
 /// Edges of connected component w (no defined order). O(size of w).
 template <typename FUNC>
 void foreach_incident_edge(const GMap2& m, CellParam<GMap2::Volume> w, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Edge, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_component<GMap2::Edge>(m, w.dart, f);
 }
 /// Faces of connected component w, boundary faces skipped (no defined
@@ -200,6 +252,8 @@ void foreach_incident_edge(const GMap2& m, CellParam<GMap2::Volume> w, const FUN
 template <typename FUNC>
 void foreach_incident_face(const GMap2& m, CellParam<GMap2::Volume> w, const FUNC& f)
 {
+	if (detail::foreach_cached<GMap2::Face, void>(m, w, f))
+		return;
 	detail::foreach_cell_of_component<GMap2::Face>(m, w.dart, f);
 }
 
