@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/gmap2.h>
+#include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/algos/normal.h>
@@ -103,19 +105,65 @@ struct Polygon
 
 namespace
 {
+// The corners of face f in cyclic order, one dart each, at the corner's
+// vertex (the origin of a 2-map dart; a G-map dart whose edge goes on to
+// the next corner).
+void collect_corners(const CMap2& m, CMap2::Face f, std::vector<Dart>& corners)
+{
+	foreach_dart_of_orbit(m, f, [&](Dart d) { corners.push_back(d); });
+}
+void collect_corners(const GMap2& m, GMap2::Face f, std::vector<Dart>& corners)
+{
+	Dart d = f.dart;
+	do
+	{
+		corners.push_back(d);
+		d = beta<0, 1>(m, d);
+	} while (d != f.dart);
+}
+
+// The Newell vector of the face: the CMap2's from the geometry layer, the
+// G-map's from its corners in walk order (the same sum).
+Vec3 face_newell(const CMap2& m, const AttributeArray<Vec3>& pos, const Polygon&, Dart d)
+{
+	return geometry::newell_vector(m, pos, d);
+}
+Vec3 face_newell(const GMap2& m, const AttributeArray<Vec3>& pos, const Polygon& poly, Dart)
+{
+	const auto at = [&](std::size_t i) -> const Vec3& { return pos[index_of(m, GMap2::Vertex(poly.darts[i]))]; };
+	const Vec3& p0 = at(0);
+	Vec3 n = Vec3::Zero();
+	for (std::size_t i = 1; i + 1 < poly.darts.size(); ++i)
+		n += (at(i) - p0).cross(at(i + 1) - p0);
+	return n;
+}
+
+// Cuts off the triangle (p, i, n) of the polygon; returns the new edge's
+// dart at p's corner in the rest, whose edge goes on to n.
+Dart cut_ear(CMap2& m, Dart at_p, Dart at_n)
+{
+	return cut_face(m, CMap2::Vertex(at_p), CMap2::Vertex(at_n)).dart;
+}
+Dart cut_ear(GMap2& m, Dart at_p, Dart at_n)
+{
+	// at p, the dart on the side of the rest is beta1 of the corner's
+	return cut_face(m, GMap2::Vertex(beta1(m, at_p)), GMap2::Vertex(at_n)).dart;
+}
+
 // ear_clip_face with the caller's buffers (triangulate_faces reuses one
 // Polygon for all faces: no allocation per face)
-uint32 ear_clip(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f, Polygon& poly)
+template <typename MAP>
+uint32 ear_clip(MAP& m, const AttributeArray<Vec3>& pos, typename mesh_traits<MAP>::Face f, Polygon& poly)
 {
 	assert(!is_boundary(m, f.dart));
 	poly.darts.clear();
 	poly.points.clear();
-	foreach_dart_of_orbit(m, f, [&](Dart d) { poly.darts.push_back(d); });
+	collect_corners(m, f, poly.darts);
 	if (poly.darts.size() <= 3)
 		return 0;
 
 	// a frame (u, v, n) of the face's plane, counter-clockwise seen from n
-	Vec3 n = geometry::newell_vector(m, pos, f.dart);
+	Vec3 n = face_newell(m, pos, poly, f.dart);
 	if (n.squaredNorm() == 0.0)
 		n = Vec3::UnitZ();
 	n.normalize();
@@ -123,7 +171,7 @@ uint32 ear_clip(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f, Polygo
 	const Vec3 v = n.cross(u);
 	for (Dart d : poly.darts)
 	{
-		const Vec3& p = pos[index_of(m, CMap2::Vertex(d))];
+		const Vec3& p = pos[index_of(m, typename mesh_traits<MAP>::Vertex(d))];
 		poly.points.emplace_back(p.dot(u), p.dot(v));
 	}
 
@@ -132,15 +180,29 @@ uint32 ear_clip(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f, Polygo
 	{
 		const std::size_t i = poly.best_corner();
 		const std::size_t p = poly.prev(i), nx = poly.next(i);
-		// the cut leaves the triangle (p, i, nx) on poly.darts[p]'s side; the
-		// new edge's dart, from p's corner to nx's, is in the rest
-		const CMap2::Edge e = cut_face(m, CMap2::Vertex(poly.darts[p]), CMap2::Vertex(poly.darts[nx]));
-		poly.darts[p] = e.dart;
+		// the triangle (p, i, nx) is cut off; the new edge's dart from p's
+		// corner to nx's, in the rest, takes p's place
+		poly.darts[p] = cut_ear(m, poly.darts[p], poly.darts[nx]);
 		poly.darts.erase(poly.darts.begin() + std::ptrdiff_t(i));
 		poly.points.erase(poly.points.begin() + std::ptrdiff_t(i));
 		++nb_triangles;
 	}
 	return nb_triangles + 1;
+}
+
+template <typename MAP>
+uint32 triangulate_all(MAP& m, const AttributeArray<Vec3>& pos)
+{
+	using F = typename mesh_traits<MAP>::Face;
+	std::vector<F> polygons;
+	foreach_cell(m, [&](F f) {
+		if (codegree(m, f) > 3)
+			polygons.push_back(f);
+	});
+	Polygon poly;
+	for (F f : polygons)
+		ear_clip(m, pos, f, poly);
+	return uint32(polygons.size());
 }
 } // namespace
 
@@ -150,17 +212,20 @@ uint32 ear_clip_face(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f)
 	return ear_clip(m, pos, f, poly);
 }
 
+uint32 ear_clip_face(GMap2& m, const AttributeArray<Vec3>& pos, GMap2::Face f)
+{
+	Polygon poly;
+	return ear_clip(m, pos, f, poly);
+}
+
 uint32 triangulate_faces(CMap2& m, const AttributeArray<Vec3>& pos)
 {
-	std::vector<CMap2::Face> polygons;
-	foreach_cell(m, [&](CMap2::Face f) {
-		if (codegree(m, f) > 3)
-			polygons.push_back(f);
-	});
-	Polygon poly;
-	for (CMap2::Face f : polygons)
-		ear_clip(m, pos, f, poly);
-	return uint32(polygons.size());
+	return triangulate_all(m, pos);
+}
+
+uint32 triangulate_faces(GMap2& m, const AttributeArray<Vec3>& pos)
+{
+	return triangulate_all(m, pos);
 }
 
 } // namespace cgogn::modeling

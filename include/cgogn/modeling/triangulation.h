@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 namespace cgogn::modeling
@@ -18,12 +19,17 @@ namespace cgogn::modeling
 /// created (0 for a triangle). Precondition: f is not a boundary face.
 /// O(degree^3) worst case, O(degree^2) for convex faces.
 uint32 ear_clip_face(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f);
+/// The same on a 2-G-map: the polygon is walked from f.dart (its corners in
+/// the order of beta1 o beta0). Same cost.
+uint32 ear_clip_face(GMap2& m, const AttributeArray<Vec3>& pos, GMap2::Face f);
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 uint32 ear_clip_face(CMap3& m, const AttributeArray<Vec3>& pos, CMap2::Face f) = delete;
 
 /// ear_clip_face on every face of degree > 3; returns the number of faces cut.
 /// The map's faces are then all triangles (boundary faces excepted).
 uint32 triangulate_faces(CMap2& m, const AttributeArray<Vec3>& pos);
+/// The same on a 2-G-map, orientable or not.
+uint32 triangulate_faces(GMap2& m, const AttributeArray<Vec3>& pos);
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 uint32 triangulate_faces(CMap3& m, const AttributeArray<Vec3>& pos) = delete;
 
