@@ -122,9 +122,11 @@ void clear(CMapBase& m)
 		c->clear();
 }
 
-CompactMaps compact(CMap1& m)
+namespace
 {
-	detail::drop_incidence_caches(m); // relations are remapped below, behind set_phi*
+CompactMaps compact_map(CMapBase& m)
+{
+	detail::drop_incidence_caches(m); // relations are remapped below, behind set_phi* / set_beta
 	CompactMaps maps;
 	maps.darts = detail::state_of(m).darts->compact();
 	remap_darts(m, maps.darts);
@@ -137,6 +139,17 @@ CompactMaps compact(CMap1& m)
 	}
 	return maps;
 }
+} // namespace
+
+CompactMaps compact(CMap1& m)
+{
+	return compact_map(m);
+}
+
+CompactMaps compact(GMap1& m)
+{
+	return compact_map(m);
+}
 
 void reorder(CMap2& m, const std::function<uint64(CMap2::Vertex)>& key)
 {
@@ -144,6 +157,11 @@ void reorder(CMap2& m, const std::function<uint64(CMap2::Vertex)>& key)
 }
 
 void reorder(CMap3& m, const std::function<uint64(CMap3::Vertex)>& key)
+{
+	reorder_map(m, key);
+}
+
+void reorder(GMap2& m, const std::function<uint64(GMap2::Vertex)>& key)
 {
 	reorder_map(m, key);
 }

@@ -8,6 +8,7 @@
 #include <array>
 #include <map>
 #include <random>
+#include <set>
 
 using namespace cgogn;
 
@@ -428,4 +429,45 @@ TEST(GMap2Editing, RandomSequencesOfEveryOperator)
 		for (uint32 op = 0; op < NbOps; ++op)
 			EXPECT_GT(done[op], 20u) << "operator " << op;
 	}
+}
+
+// After editing, compact leaves no free dart or line and keeps the values
+// with their cells; reorder puts the vertices in key order.
+TEST(GMap2Editing, CompactAndReorderKeepCellsAndValues)
+{
+	GMap2 m;
+	build_surface(m, klein_bottle_soup(8, 6, true));
+	index_everything(m);
+	auto id = add_attribute<uint32, GMap2::Vertex>(m, "id");
+	uint32 next = 0;
+	foreach_cell(m, [&](GMap2::Vertex v) { value<uint32>(m, *id, v) = next++ * 7919u % 1000u; });
+	// holes in the containers: collapse edges, cut others
+	std::mt19937 rng(7);
+	for (uint32 i = 0; i < 40; ++i)
+	{
+		std::vector<Dart> darts;
+		foreach_dart(m, [&](Dart d) { darts.push_back(d); });
+		const GMap2::Edge e(darts[rng() % darts.size()]);
+		if (can_collapse_edge(m, e))
+			collapse_edge(m, e);
+	}
+	const Counts before = counts(m);
+	std::multiset<uint32> ids;
+	foreach_cell(m, [&](GMap2::Vertex v) { ids.insert(value<uint32>(m, *id, v)); });
+	ASSERT_LT(nb_darts(m), container_of<Orbit::DART>(m).end_index()) << "the edits left free darts";
+	compact(m);
+	EXPECT_TRUE(valid(m));
+	EXPECT_EQ(counts(m), before);
+	EXPECT_EQ(container_of<Orbit::DART>(m).end_index(), nb_darts(m));
+	EXPECT_EQ(container_of<Orbit::BETA1_BETA2>(m).end_index(), before.v);
+	std::multiset<uint32> after;
+	foreach_cell(m, [&](GMap2::Vertex v) { after.insert(value<uint32>(m, *id, v)); });
+	EXPECT_EQ(after, ids);
+	// reorder by id: vertex lines in id order
+	reorder(m, [&](GMap2::Vertex v) { return uint64(value<uint32>(m, *id, v)); });
+	EXPECT_TRUE(valid(m));
+	EXPECT_EQ(counts(m), before);
+	for (uint32 l = 1; l < before.v; ++l)
+		EXPECT_LE((*id)[l - 1], (*id)[l]);
+	EXPECT_FALSE(is_orientable(m));
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 
 #include <array>
 #include <cstdint>
@@ -33,6 +34,8 @@ void clear(CMapBase& m);
 /// and Cell values held by the caller (use the returned maps) and incidence
 /// caches. Precondition: no marker alive. O(darts + cells).
 CompactMaps compact(CMap1& m);
+/// The same for the G-maps (GMap1, GMap2).
+CompactMaps compact(GMap1& m);
 
 /// Permutes darts and cells so that memory order follows `key`, given per
 /// vertex (e.g. a Morton code of its position): vertices sorted by key, the
@@ -42,5 +45,6 @@ CompactMaps compact(CMap1& m);
 /// O(n log n).
 void reorder(CMap2& m, const std::function<uint64(CMap2::Vertex)>& key);
 void reorder(CMap3& m, const std::function<uint64(CMap3::Vertex)>& key);
+void reorder(GMap2& m, const std::function<uint64(GMap2::Vertex)>& key);
 
 } // namespace cgogn
