@@ -15,24 +15,28 @@ namespace cgogn::geometry
 /// between d and the previous edge of the face. Measured in 3-D between the
 /// two edge vectors, so never more than pi: at a reflex corner of a non-convex
 /// polygon it is 2 pi minus the interior angle. O(face degree) (phi_1 is not
-/// stored).
+/// stored); O(1) on a G-map, where the corner's other edge is that of
+/// beta1(d).
 template <GeometricMesh MESH>
 double corner_angle(const MESH& m, Dart d, const AttributeArray<Vec3>& pos)
 {
 	const Vec3& p = origin_position(m, pos, d);
-	return angle_between(origin_position(m, pos, phi1(m, d)) - p, origin_position(m, pos, phi_1(m, d)) - p);
+	return angle_between(origin_position(m, pos, oriented_phi1(m, d)) - p,
+						 origin_position(m, pos, oriented_phi_1(m, d)) - p);
 }
 
 /// Signed dihedral angle of edge e of a surface: the angle between the normals
 /// of its two faces, in (-pi, pi], positive where the surface is convex (with
 /// faces oriented outwards), 0 where it is flat and on boundary edges. The
-/// interior angle between the faces is pi minus this. O(degrees of the two
-/// faces).
+/// interior angle between the faces is pi minus this. On a G-map the faces
+/// are oriented as the face of e.dart (see face_normal): the sign is that of
+/// a 2-map whose face of e.dart runs the same way, and flips with it.
+/// O(degrees of the two faces).
 template <SurfaceMesh MESH>
 double dihedral_angle(const MESH& m, typename mesh_traits<MESH>::Edge e, const AttributeArray<Vec3>& pos)
 {
 	const Dart d = e.dart;
-	const Dart d2 = phi2(m, d);
+	const Dart d2 = oriented_phi2(m, d);
 	if (is_boundary(m, d) || is_boundary(m, d2))
 		return 0.0;
 	using Face = typename mesh_traits<MESH>::Face;
@@ -43,7 +47,8 @@ double dihedral_angle(const MESH& m, typename mesh_traits<MESH>::Edge e, const A
 }
 
 /// Writes the signed dihedral angle of every edge into the edge attribute
-/// `angle`. O(number of darts times the face degree).
+/// `angle` (on a G-map, each edge in the orientation of its dart).
+/// O(number of darts times the face degree).
 template <SurfaceMesh MESH>
 void compute_dihedral_angles(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& angle)
 {
@@ -63,9 +68,10 @@ double vertex_angle_sum(const MESH& m, typename mesh_traits<MESH>::Vertex v, con
 	do
 	{
 		prev = it;
-		it = phi1(m, phi2(m, it));
+		it = oriented_phi1(m, oriented_phi2(m, it));
 		if (!is_boundary(m, it))
-			s += angle_between(origin_position(m, pos, phi1(m, it)) - p, origin_position(m, pos, phi1(m, prev)) - p);
+			s += angle_between(origin_position(m, pos, oriented_phi1(m, it)) - p,
+							   origin_position(m, pos, oriented_phi1(m, prev)) - p);
 	} while (it != v.dart);
 	return s;
 }

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/local_cmap2.h>
+#include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/geometry/algos/normal.h>
 
 #include <cassert>
@@ -37,8 +38,10 @@ struct BilateralNormalFilteringParams
 /// (x_v += mean over incident faces f of n_f (n_f . (c_f - x_v))). Any
 /// polygons (Newell normals, vertex centroids). O((normal_iterations x sum of
 /// the face one-ring sizes) + vertex_iterations x number of darts); scratch
-/// arrays of one entry per dart and per face, allocated once. Preconditions:
-/// sigma_r > 0, sigma_s >= 0.
+/// arrays of one entry per dart and per face, allocated once. On a G-map,
+/// orientable or not, each face's neighbours are oriented as the face before
+/// their normals are compared, so the result is that of the 2-map of the
+/// same surface. Preconditions: sigma_r > 0, sigma_s >= 0.
 template <SurfaceMesh MESH>
 void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const BilateralNormalFilteringParams& p = {})
 {
@@ -47,31 +50,67 @@ void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const 
 	assert(p.sigma_r > 0.0 && p.sigma_s >= 0.0);
 
 	// number the faces densely through their darts: no face attribute needed
-	std::vector<uint32> face_of_dart(container_of<Orbit::DART>(map_of(m)).end_index(), INVALID_INDEX);
+	const uint32 nb_darts = container_of<Orbit::DART>(map_of(m)).end_index();
+	std::vector<uint32> face_of_dart(nb_darts, INVALID_INDEX);
+	// G-maps: whether a dart runs its face as the face's dart does (faces[i])
+	std::vector<uint8> aligned(is_gmap_v<MESH> ? nb_darts : 0, 0);
 	std::vector<Dart> faces;
 	foreach_cell(m, [&](Face f) {
 		foreach_dart_of_orbit(m, f, [&](Dart d) { face_of_dart[d.index] = uint32(faces.size()); });
+		if constexpr (is_gmap_v<MESH>)
+			for (Dart d = f.dart; !aligned[d.index]; d = oriented_phi1(m, d))
+				aligned[d.index] = 1;
 		faces.push_back(f.dart);
 	});
 	const std::size_t nf = faces.size();
 	std::vector<Vec3> normal(nf), filtered(nf), center(nf);
 	std::vector<double> area(nf);
-	auto update_faces = [&] {
-		for (std::size_t i = 0; i < nf; ++i)
+	auto vertex_centroid = [&](Dart f) {
+		Vec3 c = Vec3::Zero();
+		uint32 k = 0;
+		Dart d = f;
+		do
 		{
-			const Vec3 n = newell_vector(m, pos, faces[i]);
-			area[i] = 0.5 * n.norm();
-			normal[i] = area[i] > 0.0 ? Vec3(n / (2.0 * area[i])) : Vec3::Zero();
-			Vec3 c = Vec3::Zero();
-			uint32 k = 0;
-			foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) {
-				c += origin_position(m, pos, d);
-				++k;
-			});
-			center[i] = c / k;
-		}
+			c += origin_position(m, pos, d);
+			++k;
+			d = oriented_phi1(m, d);
+		} while (d != f);
+		return Vec3(c / k);
 	};
-	update_faces();
+	for (std::size_t i = 0; i < nf; ++i)
+	{
+		const Vec3 n = newell_vector(m, pos, faces[i]);
+		area[i] = 0.5 * n.norm();
+		normal[i] = area[i] > 0.0 ? Vec3(n / (2.0 * area[i])) : Vec3::Zero();
+		center[i] = vertex_centroid(faces[i]);
+	}
+	// Calls fn(j, s) for the faces j sharing a vertex with face i, s = 1 when
+	// normal[j] is oriented as face i sees it, -1 when it must be turned over
+	// (G-maps: the walk around each vertex of i keeps i's orientation)
+	auto foreach_neighbour = [&](std::size_t i, const auto& fn) {
+		if constexpr (is_gmap_v<MESH>)
+		{
+			const Dart f = faces[i];
+			Dart d = f;
+			do
+			{
+				// as foreach_adjacent_face_through_vertex on a 2-map
+				for (Dart it = oriented_phi1(m, oriented_phi2(m, d)); it != d;)
+				{
+					const Dart next = oriented_phi1(m, oriented_phi2(m, it));
+					if (next == d)
+						break;
+					if (!is_boundary(m, it))
+						fn(face_of_dart[it.index], aligned[it.index] ? 1.0 : -1.0);
+					it = next;
+				}
+				d = oriented_phi1(m, d);
+			} while (d != f);
+		}
+		else
+			foreach_adjacent_face_through_vertex(m, Face(faces[i]),
+												 [&](Face g) { fn(face_of_dart[g.dart.index], 1.0); });
+	};
 
 	double sigma_s = p.sigma_s;
 	if (sigma_s <= 0.0)
@@ -93,11 +132,11 @@ void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const 
 		for (std::size_t i = 0; i < nf; ++i)
 		{
 			Vec3 s = area[i] * normal[i];
-			foreach_adjacent_face_through_vertex(m, Face(faces[i]), [&](Face g) {
-				const uint32 j = face_of_dart[g.dart.index];
+			foreach_neighbour(i, [&](uint32 j, double sign) {
+				const Vec3 nj = sign * normal[j];
 				const double w = area[j] * std::exp(ws * (center[i] - center[j]).squaredNorm()) *
-								 std::exp(wr * (normal[i] - normal[j]).squaredNorm());
-				s += w * normal[j];
+								 std::exp(wr * (normal[i] - nj).squaredNorm());
+				s += w * nj;
 			});
 			const double l = s.norm();
 			filtered[i] = l > 0.0 ? Vec3(s / l) : normal[i];
@@ -112,15 +151,7 @@ void bilateral_normal_filtering(const MESH& m, AttributeArray<Vec3>& pos, const 
 	{
 		if (it > 0) // centroids follow the vertices; the target normals stay
 			for (std::size_t i = 0; i < nf; ++i)
-			{
-				Vec3 c = Vec3::Zero();
-				uint32 k = 0;
-				foreach_dart_of_orbit(m, Face(faces[i]), [&](Dart d) {
-					c += origin_position(m, pos, d);
-					++k;
-				});
-				center[i] = c / k;
-			}
+				center[i] = vertex_centroid(faces[i]);
 		foreach_cell(m, [&](Vertex v) {
 			const uint32 iv = index_of(m, v);
 			if (!moves[iv])

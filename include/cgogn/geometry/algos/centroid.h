@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 namespace cgogn::geometry

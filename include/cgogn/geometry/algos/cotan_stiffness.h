@@ -22,8 +22,10 @@ namespace cgogn::geometry::detail
 class FaceStiffness
 {
 public:
-	/// Fills the matrix for the face cycle of dart f. Returns its degree n;
-	/// dart(i) is the dart of the i-th vertex, K(i, j) the matrix.
+	/// Fills the matrix for the face cycle of dart f (on a G-map, walked in
+	/// the orientation of f: see oriented_phi1; K does not depend on it).
+	/// Returns its degree n; dart(i) is the dart of the i-th vertex, K(i, j)
+	/// the matrix.
 	template <GeometricMesh MESH>
 	uint32 compute(const MESH& m, const AttributeArray<Vec3>& pos, Dart f)
 	{
@@ -34,7 +36,7 @@ public:
 		{
 			darts_.push_back(it);
 			p_.push_back(origin_position(m, pos, it));
-			it = phi1(m, it);
+			it = oriented_phi1(m, it);
 		} while (it != f);
 		const uint32 n = uint32(darts_.size());
 		if (n == 3)

@@ -61,7 +61,7 @@ SparseMatrix uniform_laplacian(const MESH& m, const VertexNumbering& num)
 	triplets.reserve(4 * std::size_t(nb_cells<Edge>(m)));
 	foreach_cell(m, [&](Edge e) {
 		const uint32 a = num[index_of(m, Vertex(e.dart))];
-		const uint32 b = num[index_of(m, Vertex(phi1(m, e.dart)))];
+		const uint32 b = num[index_of(m, Vertex(oriented_phi1(m, e.dart)))];
 		triplets.emplace_back(a, b, 1.0);
 		triplets.emplace_back(b, a, 1.0);
 		triplets.emplace_back(a, a, -1.0);

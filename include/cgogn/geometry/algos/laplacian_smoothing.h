@@ -3,6 +3,7 @@
 
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/geometry/algos/dart_geometry.h>
 
 #include <cassert>

@@ -13,13 +13,14 @@ namespace cgogn::geometry
 /// Integrated cotangent Laplacian of the positions at vertex v: the sum over
 /// the incident faces of their stiffness rows (see cotan_laplacian), i.e.
 /// -2 H n A on a smooth surface (H the mean curvature, n the normal, A the
-/// vertex area). O(sum of the squared degrees of the incident faces).
+/// vertex area). The same on a G-map (it needs no orientation). O(sum of
+/// the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
 Vec3 cotan_laplacian_of_position(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	detail::FaceStiffness& k = detail::face_stiffness_scratch();
 	Vec3 l = Vec3::Zero();
-	foreach_dart_of_orbit(m, v, [&](Dart d) {
+	foreach_oriented_corner(m, v, [&](Dart d) {
 		if (is_boundary(m, d))
 			return;
 		const uint32 n = k.compute(m, pos, d); // d, the vertex v, is row 0
@@ -33,8 +34,10 @@ Vec3 cotan_laplacian_of_position(const MESH& m, typename mesh_traits<MESH>::Vert
 /// cotangent Laplacian of the positions and A the mixed Voronoi area, signed
 /// positive where the surface bends away from its normal (a sphere with
 /// outward faces has H = 1 / radius). 0 at boundary vertices (there L x
-/// measures the boundary curve, not the surface). O(sum of the squared
-/// degrees of the incident faces).
+/// measures the boundary curve, not the surface). On a G-map the sign is
+/// taken against the faces oriented as the face of v.dart (see face_normal):
+/// |H| is that of the 2-map, the sign that of a 2-map oriented so. O(sum of
+/// the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
 double mean_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
@@ -45,13 +48,14 @@ double mean_curvature(const MESH& m, typename mesh_traits<MESH>::Vertex v, const
 		return 0.0;
 	const Vec3 l = cotan_laplacian_of_position(m, v, pos);
 	Vec3 n = Vec3::Zero(); // area-weighted normal: only its side matters
-	foreach_dart_of_orbit(m, v, [&](Dart d) { n += newell_vector(m, pos, d); });
+	foreach_oriented_corner(m, v, [&](Dart d) { n += newell_vector(m, pos, d); });
 	const double h = l.norm() / (2.0 * a);
 	return l.dot(n) > 0.0 ? -h : h;
 }
 
-/// Writes mean_curvature of every vertex into the vertex attribute `h`.
-/// O(number of darts times the face degree).
+/// Writes mean_curvature of every vertex into the vertex attribute `h` (on a
+/// G-map, each signed in the orientation of its vertex's dart). O(number of
+/// darts times the face degree).
 template <SurfaceMesh MESH>
 void compute_mean_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& h)
 {

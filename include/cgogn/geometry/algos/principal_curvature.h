@@ -33,7 +33,9 @@ struct PrincipalCurvatures
 /// largest one is the direction of least curvature). Signs follow
 /// mean_curvature (a sphere with outward faces has k = 1 / radius). Works on
 /// any polygons; at boundary vertices the estimate only sees the inner side.
-/// O(sum of the squared degrees of the incident faces).
+/// On a G-map the one-ring is oriented as the face of v.dart (see
+/// face_normal); turning it over gives (-kmax, -kmin) with the directions
+/// swapped. O(sum of the squared degrees of the incident faces).
 template <SurfaceMesh MESH>
 PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MESH>::Vertex v,
 										 const AttributeArray<Vec3>& pos)
@@ -48,13 +50,14 @@ PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MES
 		if (l > 0.0)
 			t += (weight * beta / l) * e * e.transpose(); // beta |e| (e/|e|)(e/|e|)^T
 	};
-	foreach_dart_of_orbit(m, v, [&](Dart d) {
+	// each dart oriented as v.dart, so that the dihedral angles agree in sign
+	foreach_oriented_corner(m, v, [&](Dart d) {
 		add_edge(d, 1.0);
 		if (is_boundary(m, d))
 			return;
 		area += 0.5 * newell_vector(m, pos, d).norm();
 		// edges of the face of d that do not touch v: all but d and the one before d
-		for (Dart x = phi1(m, d); phi1(m, x) != d; x = phi1(m, x))
+		for (Dart x = oriented_phi1(m, d); oriented_phi1(m, x) != d; x = oriented_phi1(m, x))
 			add_edge(x, 0.5);
 	});
 	PrincipalCurvatures r;
@@ -82,7 +85,8 @@ PrincipalCurvatures principal_curvatures(const MESH& m, typename mesh_traits<MES
 }
 
 /// Writes principal_curvatures of every vertex into the vertex attributes
-/// kmin, kmax, dmin, dmax. O(number of darts times the face degree).
+/// kmin, kmax, dmin, dmax (on a G-map, each vertex in the orientation of its
+/// dart). O(number of darts times the face degree).
 template <SurfaceMesh MESH>
 void compute_principal_curvatures(const MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& kmin,
 								  AttributeArray<double>& kmax, AttributeArray<Vec3>& dmin, AttributeArray<Vec3>& dmax)

@@ -2,9 +2,12 @@
 #pragma once
 
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/algos/normal.h>
 
 #include <Eigen/Geometry> // cross()
+
+#include <vector>
 
 namespace cgogn::geometry
 {
@@ -19,7 +22,8 @@ namespace cgogn::geometry
 
 namespace detail
 {
-/// Signed volume of the cone from o over the face cycle of dart d. O(face degree).
+/// Signed volume of the cone from o over the face cycle of dart d, in the
+/// orientation of d. O(face degree).
 template <GeometricMesh MESH>
 double face_cone_volume(const MESH& m, const AttributeArray<Vec3>& pos, Dart d, const Vec3& o)
 {
@@ -30,17 +34,58 @@ double face_cone_volume(const MESH& m, const AttributeArray<Vec3>& pos, Dart d, 
 	{
 		c += origin_position(m, pos, it);
 		++n;
-		it = phi1(m, it);
+		it = oriented_phi1(m, it);
 	} while (it != d);
 	c /= n;
 	return (c - o).dot(newell_vector(m, pos, d)) / 6.0;
+}
+
+/// Calls f(d) once per face of the connected component of `start` in a
+/// 2-G-map, d the dart of the face oriented consistently with start (the
+/// darts reached from start by oriented_phi1 and oriented_phi2: the 2-map
+/// to_cmap would keep if start were the component's smallest dart).
+/// Boundary faces are reported too. Marks the reached darts in `reached`.
+/// Returns false, at the first face found in both orientations, when the
+/// component is not orientable. O(number of darts of the component).
+template <typename FUNC>
+bool foreach_oriented_face(const GMap2& m, Dart start, DartMarker<GMap2>& reached, const FUNC& f)
+{
+	std::vector<Dart> work(1, start);
+	while (!work.empty())
+	{
+		const Dart d = work.back();
+		work.pop_back();
+		if (reached.is_marked(d))
+			continue;
+		// the darts of a face in one orientation are marked together: the
+		// other orientation (that of beta0(d)) reached too means a twist
+		if (reached.is_marked(beta0(m, d)))
+			return false;
+		Dart it = d;
+		do
+		{
+			reached.mark(it);
+			it = oriented_phi1(m, it);
+		} while (it != d);
+		f(d);
+		do
+		{
+			if (const Dart o = oriented_phi2(m, it); !reached.is_marked(o))
+				work.push_back(o);
+			it = oriented_phi1(m, it);
+		} while (it != d);
+	}
+	return true;
 }
 } // namespace detail
 
 /// Signed volume enclosed by a closed surface (all its components), positive
 /// when the faces are oriented outwards (counterclockwise seen from outside).
-/// Precondition: no boundary (otherwise the value depends on the position of
-/// the mesh). O(number of darts).
+/// The sign needs an orientation: on a 2-G-map each component is oriented as
+/// its smallest dart, as by to_cmap (the value is that of to_cmap(m)), and a
+/// non-orientable component throws TopologyError. Precondition: no boundary
+/// (otherwise the value depends on the position of the mesh). O(number of
+/// darts).
 template <SurfaceMesh MESH>
 double signed_volume(const MESH& m, const AttributeArray<Vec3>& pos)
 {
@@ -48,24 +93,54 @@ double signed_volume(const MESH& m, const AttributeArray<Vec3>& pos)
 	bool first = true;
 	Vec3 o = Vec3::Zero();
 	double v = 0.0;
-	foreach_cell(m, [&](Face f) {
+	auto add_face = [&](Dart d) {
 		if (first)
-			o = origin_position(m, pos, f.dart);
+			o = origin_position(m, pos, d);
 		first = false;
-		v += detail::face_cone_volume(m, pos, f.dart, o);
-	});
+		v += detail::face_cone_volume(m, pos, d, o);
+	};
+	if constexpr (is_gmap_v<MESH>)
+	{
+		// in dart order, a dart neither reached nor the other orientation of a
+		// reached one is the smallest dart of a new component
+		DartMarker<MESH> reached(m);
+		foreach_dart(m, [&](Dart d) {
+			if (reached.is_marked(d) || reached.is_marked(beta0(m, d)))
+				return true;
+			if (!detail::foreach_oriented_face(m, d, reached, [&](Dart x) {
+					if (!is_boundary(m, x))
+						add_face(x);
+				}))
+				throw TopologyError("signed_volume: the G-map is not orientable");
+			return true;
+		});
+	}
+	else
+		foreach_cell(m, [&](Face f) { add_face(f.dart); });
 	return v;
 }
 
 /// Signed volume enclosed by one connected component w of a closed surface.
-/// O(number of darts of w).
+/// On a 2-G-map the component is oriented as w.dart (positive when the face
+/// of w.dart, seen from w.dart, is oriented outwards); a non-orientable
+/// component throws TopologyError. O(number of darts of w).
 template <SurfaceMesh MESH>
 double volume(const MESH& m, typename mesh_traits<MESH>::Volume w, const AttributeArray<Vec3>& pos)
 {
 	using Face = typename mesh_traits<MESH>::Face;
 	const Vec3 o = origin_position(m, pos, w.dart);
 	double v = 0.0;
-	foreach_incident_face(m, w, [&](Face f) { v += detail::face_cone_volume(m, pos, f.dart, o); });
+	if constexpr (is_gmap_v<MESH>)
+	{
+		DartMarker<MESH> reached(m);
+		if (!detail::foreach_oriented_face(m, w.dart, reached, [&](Dart d) {
+				if (!is_boundary(m, d))
+					v += detail::face_cone_volume(m, pos, d, o);
+			}))
+			throw TopologyError("volume: the G-map component is not orientable");
+	}
+	else
+		foreach_incident_face(m, w, [&](Face f) { v += detail::face_cone_volume(m, pos, f.dart, o); });
 	return v;
 }
 

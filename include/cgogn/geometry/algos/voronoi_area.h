@@ -33,9 +33,9 @@ inline double mixed_voronoi_share(const Vec3& p, const Vec3& q, const Vec3& r)
 template <SurfaceMesh MESH>
 double corner_area(const MESH& m, Dart d, const AttributeArray<Vec3>& pos)
 {
-	const Dart d1 = phi1(m, d);
-	const Dart d2 = phi1(m, d1);
-	if (phi1(m, d2) == d)
+	const Dart d1 = oriented_phi1(m, d);
+	const Dart d2 = oriented_phi1(m, d1);
+	if (oriented_phi1(m, d2) == d)
 		return mixed_voronoi_share(origin_position(m, pos, d), origin_position(m, pos, d1),
 								   origin_position(m, pos, d2));
 	uint32 n = 0;
@@ -43,7 +43,7 @@ double corner_area(const MESH& m, Dart d, const AttributeArray<Vec3>& pos)
 	do
 	{
 		++n;
-		it = phi1(m, it);
+		it = oriented_phi1(m, it);
 	} while (it != d);
 	return 0.5 * newell_vector(m, pos, d).norm() / n;
 }
@@ -52,12 +52,14 @@ double corner_area(const MESH& m, Dart d, const AttributeArray<Vec3>& pos)
 /// Area of the region of vertex v of a surface: mixed Voronoi areas (Meyer,
 /// Desbrun, Schroeder, Barr 2003) on incident triangles, an equal share of
 /// the area on other incident polygons. The areas of all vertices add up to the
-/// area of the surface. O(sum of the degrees of the incident faces).
+/// area of the surface. The same on a G-map (it needs no orientation).
+/// O(sum of the degrees of the incident faces).
 template <SurfaceMesh MESH>
 double voronoi_area(const MESH& m, typename mesh_traits<MESH>::Vertex v, const AttributeArray<Vec3>& pos)
 {
 	double a = 0.0;
-	foreach_dart_of_orbit(m, v, [&](Dart d) {
+	// one dart per corner (a G-map has two per corner)
+	foreach_oriented_corner(m, v, [&](Dart d) {
 		if (!is_boundary(m, d))
 			a += detail::corner_area(m, d, pos);
 	});
