@@ -35,33 +35,33 @@ struct SmoothOptions
 int run_smooth(const SmoothOptions& o)
 {
 	Progress progress;
-	CMap2 m;
-	load_surface_file(m, o.files.in, progress);
-	auto pos = positions(m);
 	const uint32 iterations = o.iterations > 0 ? o.iterations : (o.method == Method::Implicit ? 1 : 10);
-	progress.stage("smoothing");
-	switch (o.method)
-	{
-	case Method::Laplacian:
-		geometry::laplacian_smoothing(m, *pos, iterations, o.lambda, !o.move_boundary);
-		break;
-	case Method::Taubin:
-		geometry::taubin_smoothing(m, *pos, iterations, o.lambda, o.mu, !o.move_boundary);
-		break;
-	case Method::Bilateral: {
-		geometry::BilateralNormalFilteringParams p;
-		p.normal_iterations = iterations;
-		p.fix_boundary = !o.move_boundary;
-		geometry::bilateral_normal_filtering(m, *pos, p);
-		break;
-	}
-	case Method::Implicit: {
-		const double l = geometry::mean_edge_length(m, *pos);
-		geometry::implicit_smoothing(m, *pos, o.time_step * l * l, iterations, false, !o.move_boundary);
-		break;
-	}
-	}
-	save_surface_file(m, o.files.out, o.files.binary, progress);
+	with_surface_whole(o.files.in, progress, [&](auto& m) {
+		auto pos = positions(m);
+		progress.stage("smoothing");
+		switch (o.method)
+		{
+		case Method::Laplacian:
+			geometry::laplacian_smoothing(m, *pos, iterations, o.lambda, !o.move_boundary);
+			break;
+		case Method::Taubin:
+			geometry::taubin_smoothing(m, *pos, iterations, o.lambda, o.mu, !o.move_boundary);
+			break;
+		case Method::Bilateral: {
+			geometry::BilateralNormalFilteringParams p;
+			p.normal_iterations = iterations;
+			p.fix_boundary = !o.move_boundary;
+			geometry::bilateral_normal_filtering(m, *pos, p);
+			break;
+		}
+		case Method::Implicit: {
+			const double l = geometry::mean_edge_length(m, *pos);
+			geometry::implicit_smoothing(m, *pos, o.time_step * l * l, iterations, false, !o.move_boundary);
+			break;
+		}
+		}
+		save_surface_file(m, o.files.out, o.files.binary, progress);
+	});
 	return 0;
 }
 

@@ -69,13 +69,13 @@ int run_subdivide(const SubdivideOptions& o)
 			io::save_volume(m, o.files.out, so);
 			return 0;
 		}
-		CMap2 m;
-		load_surface_file(m, o.files.in, progress);
 		const modeling::SurfaceScheme scheme = o.scheme == Scheme::Loop    ? modeling::SurfaceScheme::Loop
 											   : o.scheme == Scheme::Sqrt3 ? modeling::SurfaceScheme::Sqrt3
 																		   : modeling::SurfaceScheme::CatmullClark;
-		modeling::subdivide(m, *positions(m), scheme, o.iterations, progress.percent("subdividing"));
-		save_surface_file(m, o.files.out, o.files.binary, progress);
+		with_surface_whole(o.files.in, progress, [&](auto& m) {
+			modeling::subdivide(m, *positions(m), scheme, o.iterations, progress.percent("subdividing"));
+			save_surface_file(m, o.files.out, o.files.binary, progress);
+		});
 		return 0;
 	}
 	catch (const modeling::SubdivisionError& e)

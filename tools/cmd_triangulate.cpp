@@ -14,11 +14,11 @@ Command add_triangulate_command(CLI::App& app)
 	add_edit_files(*sub, *files);
 	return {sub, [files] {
 				Progress progress;
-				CMap2 m;
-				load_surface_file(m, files->in, progress);
-				progress.stage("triangulating");
-				modeling::triangulate_faces(m, *positions(m));
-				save_surface_file(m, files->out, files->binary, progress);
+				with_surface_whole(files->in, progress, [&](auto& m) {
+					progress.stage("triangulating");
+					modeling::triangulate_faces(m, *positions(m));
+					save_surface_file(m, files->out, files->binary, progress);
+				});
 				return 0;
 			}};
 }

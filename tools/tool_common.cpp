@@ -53,15 +53,18 @@ io::Format format_of(const std::string& path)
 	return f;
 }
 
-void load_surface_file(CMap2& m, const std::string& path, Progress& progress)
+io::LoadReport load_surface_file(CMap2& m, const std::string& path, Progress& progress)
 {
 	if (is_volume_format(format_of(path)))
 		throw io::Error(path, "this command works on surfaces; the file is a volume mesh");
 	progress.stage("loading " + path);
-	io::load_surface(m, path);
+	return io::load_surface(m, path);
 }
 
-void save_surface_file(const CMap2& m, const std::string& path, bool binary, Progress& progress)
+namespace
+{
+template <typename MAP>
+void save_surface_to(const MAP& m, const std::string& path, bool binary, Progress& progress)
 {
 	if (is_volume_format(format_of(path)))
 		throw io::Error(path, "a surface mesh cannot be written in a volume format");
@@ -69,6 +72,26 @@ void save_surface_file(const CMap2& m, const std::string& path, bool binary, Pro
 	io::SaveOptions options;
 	options.binary = binary;
 	io::save_surface(m, path, options);
+}
+
+template <typename MAP>
+std::shared_ptr<AttributeArray<Vec3>> positions_of(MAP& m)
+{
+	auto pos = get_attribute<Vec3, typename mesh_traits<MAP>::Vertex>(m, "position");
+	if (!pos)
+		throw std::runtime_error("the mesh has no vertex positions");
+	return pos;
+}
+} // namespace
+
+void save_surface_file(const CMap2& m, const std::string& path, bool binary, Progress& progress)
+{
+	save_surface_to(m, path, binary, progress);
+}
+
+void save_surface_file(const GMap2& m, const std::string& path, bool binary, Progress& progress)
+{
+	save_surface_to(m, path, binary, progress);
 }
 
 void add_edit_files(CLI::App& sub, EditFiles& files)
@@ -80,10 +103,12 @@ void add_edit_files(CLI::App& sub, EditFiles& files)
 
 std::shared_ptr<AttributeArray<Vec3>> positions(CMap2& m)
 {
-	auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
-	if (!pos)
-		throw std::runtime_error("the mesh has no vertex positions");
-	return pos;
+	return positions_of(m);
+}
+
+std::shared_ptr<AttributeArray<Vec3>> positions(GMap2& m)
+{
+	return positions_of(m);
 }
 
 } // namespace cgogn::tool

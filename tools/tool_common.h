@@ -94,10 +94,32 @@ void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& 
 }
 
 /// Loads a surface file (throws io::Error naming the file when it is a volume format).
-void load_surface_file(CMap2& m, const std::string& path, Progress& progress);
+io::LoadReport load_surface_file(CMap2& m, const std::string& path, Progress& progress);
+
+/// Loads a surface file into a CMap2 and calls f(map), or, when the surface
+/// cannot be oriented, into a GMap2, which keeps it whole (a CMap2 cuts it):
+/// f must also take a GMap2. The file is read twice in that case.
+template <typename FUNC>
+void with_surface_whole(const std::string& path, Progress& progress, const FUNC& f)
+{
+	{
+		CMap2 m;
+		if (load_surface_file(m, path, progress).orientable)
+		{
+			f(m);
+			return;
+		}
+	}
+	progress.stage("not orientable: loading " + path + " as a GMap2");
+	GMap2 g;
+	io::load_surface(g, path);
+	f(g);
+}
 
 /// Saves a surface (throws io::Error when out names a volume format).
 void save_surface_file(const CMap2& m, const std::string& path, bool binary, Progress& progress);
+/// The same for a GMap2.
+void save_surface_file(const GMap2& m, const std::string& path, bool binary, Progress& progress);
 
 /// The input/output options every editing subcommand has: IN, OUT, --binary.
 struct EditFiles
@@ -109,5 +131,7 @@ void add_edit_files(CLI::App& sub, EditFiles& files);
 
 /// The "position" attribute of a loaded surface (every reader creates it).
 std::shared_ptr<AttributeArray<Vec3>> positions(CMap2& m);
+/// The same for a GMap2.
+std::shared_ptr<AttributeArray<Vec3>> positions(GMap2& m);
 
 } // namespace cgogn::tool

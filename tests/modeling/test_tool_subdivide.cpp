@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <sys/wait.h>
 
@@ -107,4 +108,56 @@ TEST(ToolSubdivide, TetMeshAndWrongKinds)
 				 dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("volume"), std::string::npos) << r.err;
+}
+
+// A surface that cannot be oriented is subdivided or triangulated whole
+// (through a GMap2), not cut apart as a CMap2 would cut it.
+TEST(ToolSubdivide, NonOrientableSurfacesStayWhole)
+{
+	TempDir dir;
+	const std::string klein = std::string(CGOGN_DATA_DIR) + "/surface/klein_bottle.off";
+	const std::string mobius = std::string(CGOGN_DATA_DIR) + "/surface/mobius_strip.off";
+	const ToolRun r = run_tool("subdivide " + quoted(klein) + " " + quoted(dir.file("k.off")), dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	GMap2 k;
+	const io::LoadReport rk = io::load_surface(k, dir.file("k.off"));
+	EXPECT_FALSE(rk.orientable);
+	EXPECT_EQ(nb_cells<GMap2::Face>(k), 4u * 128u);
+	EXPECT_EQ(nb_cells<GMap2::Vertex>(k), 128u + 256u + 128u);
+	EXPECT_EQ(euler_characteristic(k), 0);
+	EXPECT_EQ(nb_boundary_components(k), 0u);
+	EXPECT_TRUE(check_integrity(k).ok());
+
+	const ToolRun t = run_tool("triangulate " + quoted(mobius) + " " + quoted(dir.file("m.obj")), dir);
+	ASSERT_EQ(t.status, 0) << t.err;
+	const ToolRun l =
+		run_tool("subdivide " + quoted(dir.file("m.obj")) + " " + quoted(dir.file("m2.off")) + " --scheme loop", dir);
+	ASSERT_EQ(l.status, 0) << l.err;
+	GMap2 m;
+	EXPECT_FALSE(io::load_surface(m, dir.file("m2.off")).orientable);
+	EXPECT_EQ(nb_cells<GMap2::Face>(m), 4u * 48u);
+	EXPECT_EQ(euler_characteristic(m), 0);
+	EXPECT_EQ(nb_boundary_components(m), 1u);
+	EXPECT_FALSE(is_orientable(m));
+	EXPECT_TRUE(check_integrity(m).ok());
+
+	// smoothing moves the vertices of the whole Klein bottle, none cut off
+	for (const char* method : {"laplacian", "taubin", "bilateral", "implicit"})
+	{
+		const ToolRun sm =
+			run_tool("smooth " + quoted(klein) + " " + quoted(dir.file("s.off")) + " --method " + method, dir);
+		ASSERT_EQ(sm.status, 0) << method << ": " << sm.err;
+		GMap2 s, k0;
+		EXPECT_FALSE(io::load_surface(s, dir.file("s.off")).orientable) << method;
+		io::load_surface(k0, klein);
+		EXPECT_EQ(nb_cells<GMap2::Vertex>(s), 128u) << method;
+		EXPECT_EQ(nb_cells<GMap2::Face>(s), 128u) << method;
+		EXPECT_EQ(euler_characteristic(s), 0) << method;
+		auto p = get_attribute<Vec3, GMap2::Vertex>(s, "position");
+		auto p0 = get_attribute<Vec3, GMap2::Vertex>(k0, "position");
+		double moved = 0.0;
+		for (uint32 i = 0; i < 128; ++i)
+			moved = std::max(moved, ((*p)[i] - (*p0)[i]).norm());
+		EXPECT_GT(moved, 1e-3) << method;
+	}
 }
