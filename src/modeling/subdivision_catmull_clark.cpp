@@ -68,11 +68,12 @@ GMap2::Vertex cut_into_quads(GMap2& m, Dart d0, std::vector<Dart>& midpoints)
 	const GMap2::Edge first = cut_face(m, V(beta0(m, d0)), V(midpoints[1]));
 	// the centre's dart lies in the part still to cut (the face of
 	// first.dart), on the half towards midpoints[1]; beta1 of it is on the
-	// half towards midpoints[0], which the next cut keeps
+	// half towards midpoints[0], which every cut leaves in the part still to
+	// cut (each cut takes off the quad on the side of midpoints[1])
 	const GMap2::Vertex centre = cut_edge(m, first);
-	Dart from_centre = beta1(m, centre.dart);
+	const Dart from_centre = beta1(m, centre.dart);
 	for (std::size_t i = 2; i < midpoints.size(); ++i)
-		from_centre = cut_face(m, V(from_centre), V(midpoints[i])).dart;
+		cut_face(m, V(from_centre), V(midpoints[i]));
 	return centre;
 }
 

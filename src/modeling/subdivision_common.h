@@ -60,6 +60,13 @@ Dart next_in_face(const MAP& m, Dart d)
 		return phi1(m, d);
 }
 
+/// A dart at the vertex opposite to d's edge in d's triangle.
+template <typename MAP>
+Dart opposite_in_triangle(const MAP& m, Dart d)
+{
+	return across_edge(m, next_in_face(m, d));
+}
+
 /// Darts of a vertex per incident edge.
 template <typename MAP>
 inline constexpr uint32 darts_per_edge_at_vertex = is_gmap_v<MAP> ? 2 : 1;

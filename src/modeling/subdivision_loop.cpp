@@ -74,13 +74,6 @@ void cut_hexagon(GMap2& m, Dart h0)
 	cut_face(m, V(beta0(m, e2)), V(e1));                          // w[0]'s corner
 }
 
-/// The vertex opposite to d's edge in d's triangle.
-template <typename MAP>
-Dart opposite_in_triangle(const MAP& m, Dart d)
-{
-	return across_edge(m, next_in_face(m, d));
-}
-
 template <typename MAP>
 SubdivisionResult loop_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {

@@ -33,13 +33,6 @@ bool has_degree_at_least(const MAP& m, Dart d, uint32 k)
 	return true;
 }
 
-/// The vertex opposite to d's edge in d's triangle.
-template <typename MAP>
-Dart opposite_in_triangle(const MAP& m, Dart d)
-{
-	return across_edge(m, next_in_face(m, d));
-}
-
 /// can_flip_edge for an old edge d between two split triangles, in O(degree)
 /// instead of O(degree^2): the new edge would join the centroids c1, c2 of
 /// the two triangles, which fails only when they are already joined (two

@@ -122,22 +122,6 @@ void collect_corners(const GMap2& m, GMap2::Face f, std::vector<Dart>& corners)
 	} while (d != f.dart);
 }
 
-// The Newell vector of the face: the CMap2's from the geometry layer, the
-// G-map's from its corners in walk order (the same sum).
-Vec3 face_newell(const CMap2& m, const AttributeArray<Vec3>& pos, const Polygon&, Dart d)
-{
-	return geometry::newell_vector(m, pos, d);
-}
-Vec3 face_newell(const GMap2& m, const AttributeArray<Vec3>& pos, const Polygon& poly, Dart)
-{
-	const auto at = [&](std::size_t i) -> const Vec3& { return pos[index_of(m, GMap2::Vertex(poly.darts[i]))]; };
-	const Vec3& p0 = at(0);
-	Vec3 n = Vec3::Zero();
-	for (std::size_t i = 1; i + 1 < poly.darts.size(); ++i)
-		n += (at(i) - p0).cross(at(i + 1) - p0);
-	return n;
-}
-
 // Cuts off the triangle (p, i, n) of the polygon; returns the new edge's
 // dart at p's corner in the rest, whose edge goes on to n.
 Dart cut_ear(CMap2& m, Dart at_p, Dart at_n)
@@ -163,7 +147,7 @@ uint32 ear_clip(MAP& m, const AttributeArray<Vec3>& pos, typename mesh_traits<MA
 		return 0;
 
 	// a frame (u, v, n) of the face's plane, counter-clockwise seen from n
-	Vec3 n = face_newell(m, pos, poly, f.dart);
+	Vec3 n = geometry::newell_vector(m, pos, f.dart);
 	if (n.squaredNorm() == 0.0)
 		n = Vec3::UnitZ();
 	n.normalize();

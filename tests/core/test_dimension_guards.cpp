@@ -73,6 +73,12 @@ static_assert(CanFlipEdge<CMap2, CMap2::Edge> && CanFlipEdge<CMap3, CMap3::Edge>
 static_assert(!CanFlipEdge<CMap3, CMap2::Edge>);
 static_assert(CanCutFace<CMap2, CMap2::Vertex> && !CanCutFace<CMap3, CMap2::Vertex>);
 static_assert(CanMerge<CMap2> && !CanMerge<CMap3>);
+// 1-G-map operators on 2-G-maps; each keeps its own
+static_assert(CanAddFace<GMap1> && CanAddFace<GMap2>);
+static_assert(CanCutEdge<GMap1, GMap1::Edge> && CanCutEdge<GMap2, GMap2::Edge>);
+static_assert(!CanCutEdge<GMap2, GMap1::Edge> && !CanCollapseEdge<GMap2, GMap1::Edge>);
+static_assert(CanCollapseEdge<GMap1, GMap1::Edge> && CanCollapseEdge<GMap2, GMap2::Edge>);
+static_assert(CanTriangulate<GMap2> && CanLoop<GMap2>);
 // surface algorithms on 3-maps
 static_assert(CanTriangulate<CMap2> && !CanTriangulate<CMap3>);
 static_assert(CanDecimate<CMap2> && !CanDecimate<CMap3>);

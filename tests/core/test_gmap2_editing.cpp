@@ -221,6 +221,7 @@ TEST(GMap2Editing, CollapseAndFlipPredicatesAgreeWithCMap2)
 	tet.positions.resize(4);
 	tet.face_sizes = {3, 3, 3, 3};
 	tet.face_vertices = {0, 1, 2, 0, 3, 1, 1, 3, 2, 2, 3, 0};
+	uint32 total_flippable = 0;
 	for (const SurfaceSoup& s : {tet, grid_soup(3, 1, true), grid_soup(4, 3, true), torus_soup(5, 4, true),
 								 sphere_soup(6, 4, true), cylinder_soup(5, 2, true)})
 	{
@@ -247,7 +248,9 @@ TEST(GMap2Editing, CollapseAndFlipPredicatesAgreeWithCMap2)
 		});
 		EXPECT_EQ(nb_cells<GMap2::Edge>(g), expected.size());
 		EXPECT_GT(collapsible, 0u);
+		total_flippable += flippable;
 	}
+	EXPECT_GT(total_flippable, 0u) << "the flip predicates were compared on flippable edges";
 }
 
 TEST(GMap2Editing, UnsewThenSewStraightOrTwisted)
@@ -414,7 +417,13 @@ TEST(GMap2Editing, RandomSequencesOfEveryOperator)
 				}
 				sew_faces(m, e, GMap2::Edge(other));
 				if (op == UnsewSewElsewhere)
+				{
+					// an edge cut, an edge glued: vertices and loops follow the
+					// two boundary edges chosen, edges and faces do not change
+					ASSERT_EQ(counts(m).e, c.e) << "step " << step;
+					ASSERT_EQ(counts(m).f, c.f) << "step " << step;
 					c = counts(m);
+				}
 				break;
 			}
 			case NbOps:
@@ -441,7 +450,7 @@ TEST(GMap2Editing, CompactAndReorderKeepCellsAndValues)
 	auto id = add_attribute<uint32, GMap2::Vertex>(m, "id");
 	uint32 next = 0;
 	foreach_cell(m, [&](GMap2::Vertex v) { value<uint32>(m, *id, v) = next++ * 7919u % 1000u; });
-	// holes in the containers: collapse edges, cut others
+	// free darts and lines in the containers: collapse edges
 	std::mt19937 rng(7);
 	for (uint32 i = 0; i < 40; ++i)
 	{

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace cgogn;
@@ -87,6 +88,32 @@ SurfaceSoup wobbly(SurfaceSoup s)
 	return s;
 }
 
+// A closed prism on an n-gon: two n-gons and n quads.
+SurfaceSoup prism_soup(uint32 n)
+{
+	SurfaceSoup s;
+	s.nb_vertices = 2 * n;
+	for (uint32 k = 0; k < 2; ++k)
+		for (uint32 i = 0; i < n; ++i)
+		{
+			const double a = 2.0 * 3.14159265358979 * double(i) / double(n);
+			s.positions.push_back({std::cos(a), std::sin(a) * (1.0 + 0.1 * double(i)), double(k)});
+		}
+	s.face_sizes.push_back(n); // bottom, seen from below
+	for (uint32 i = 0; i < n; ++i)
+		s.face_vertices.push_back(n - 1 - i);
+	s.face_sizes.push_back(n); // top
+	for (uint32 i = 0; i < n; ++i)
+		s.face_vertices.push_back(n + i);
+	for (uint32 i = 0; i < n; ++i)
+	{
+		const uint32 j = (i + 1) % n;
+		s.face_sizes.push_back(4);
+		s.face_vertices.insert(s.face_vertices.end(), {i, j, n + j, n + i});
+	}
+	return s;
+}
+
 } // namespace
 
 TEST(SubdivisionGMap, SameResultAsTheCMap2OnOrientableSurfaces)
@@ -104,6 +131,9 @@ TEST(SubdivisionGMap, SameResultAsTheCMap2OnOrientableSurfaces)
 		{wobbly(torus_soup(6, 4)), SurfaceScheme::CatmullClark},
 		{wobbly(grid_soup(4, 3)), SurfaceScheme::CatmullClark},
 		{wobbly(sphere_soup(6, 4)), SurfaceScheme::CatmullClark},
+		{prism_soup(5), SurfaceScheme::CatmullClark}, // faces of 5, 6 and 7 edges
+		{prism_soup(6), SurfaceScheme::CatmullClark},
+		{prism_soup(7), SurfaceScheme::CatmullClark},
 	};
 	for (const Case& c : cases)
 	{

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap2.h>
 
 #include <vector>
 
@@ -62,5 +63,10 @@ void reverse_orientation(CMap3& m) = delete;
 std::vector<Dart> merge(CMap3& m, const CMap2& other) = delete;
 std::vector<Dart> merge(CMap2& m, const CMap3& other) = delete;
 std::vector<Dart> merge(CMap3& m, const CMap3& other) = delete;
+
+// ---- 1-G-map operators on 2-G-maps (GMap2 derives from GMap1 in the same
+// way): an edge of a polygon is not an edge of a surface
+GMap1::Vertex cut_edge(GMap2& m, GMap1::Edge e, bool set_indices = true) = delete;
+GMap1::Vertex collapse_edge(GMap2& m, GMap1::Edge e, bool set_indices = true) = delete;
 
 } // namespace cgogn

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/gmap1.h>
+#include <cgogn/core/operators/dimension_guards.h>
 
 namespace cgogn
 {

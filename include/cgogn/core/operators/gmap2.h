@@ -14,7 +14,8 @@ namespace cgogn
 // default), every indexed orbit stays indexed (a split cell keeps its line
 // on the part containing the given dart, new cells get new lines, removed
 // cells release theirs). They work on orientable and non-orientable maps
-// alike. Costs are independent of the size of the map, except where said.
+// alike. Costs are independent of the size of the map, except where said
+// (close, and sew / unsew with components indexed).
 // Darts are named as in the README's G-map section: a dart sits at one
 // vertex of one edge of one face, and its edge "goes" from that vertex to
 // the one of beta0(dart); the operators that need a direction (flip) take
@@ -33,7 +34,8 @@ GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices = true);
 /// faces are distinct with at least 3 edges, two incident triangles do not
 /// have the same opposite vertex, two boundary vertices are not pinched
 /// together, and the link condition holds (the outside of a boundary
-/// counting as a vertex). O(degree of the two vertices).
+/// counting as a vertex). O(sum of the degrees of the two ends and of their
+/// neighbours), with dart marks.
 bool can_collapse_edge(const GMap2& m, GMap2::Edge e);
 
 /// Contracts edge e: the vertex of e.dart disappears, the other end survives
@@ -128,12 +130,13 @@ bool can_sew_faces(const GMap2& m, GMap2::Edge e1, GMap2::Edge e2);
 /// makes a surface non-orientable. The boundary darts of both edges are
 /// removed and the boundary faces they were in merge or split. Lines: e1's
 /// edge line is kept, e2's released; merged vertices keep the line of
-/// e1.dart's side; merged components keep e1's line (e2's is walked whole); a
-/// vertex or component that comes apart at a pinched vertex keeps its line
-/// on the part of e1.dart, the others get new ones.
+/// e1.dart's side; merged components keep e1's line; a vertex that comes
+/// apart at a pinched vertex keeps its line on the part of e1.dart, a
+/// component that comes apart on its larger part, the others get new ones.
 /// Precondition: can_sew_faces(m, e1, e2). O(degree of the end vertices);
-/// with components indexed, plus the size of the components that merge or
-/// come apart.
+/// with components indexed, plus the size of the merged component when two
+/// components merge (walked whole), or of the smaller part when one comes
+/// apart.
 void sew_faces(GMap2& m, GMap2::Edge e1, GMap2::Edge e2, bool set_indices = true);
 
 /// True when e is an interior edge that is not a loop at a boundary vertex.
@@ -143,9 +146,10 @@ bool can_unsew_faces(const GMap2& m, GMap2::Edge e);
 /// Cuts an interior edge into two boundary edges (the inverse of sew_faces):
 /// end vertices already on the boundary split in two, the part of e.dart
 /// keeping the line. The side of e.dart keeps the edge's line, the other
-/// gets a new one; a component cut in two keeps its line on the part of
-/// e.dart. Precondition: can_unsew_faces(m, e). O(degree of its ends); with
-/// components indexed, plus the darts met while telling the parts apart.
+/// gets a new one; a component cut in two keeps its line on the larger
+/// part, the smaller one gets a new line. Precondition: can_unsew_faces(m,
+/// e). O(degree of its ends); with components indexed, plus the darts met
+/// while telling the parts apart.
 void unsew_faces(GMap2& m, GMap2::Edge e, bool set_indices = true);
 
 } // namespace cgogn
