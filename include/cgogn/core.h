@@ -12,6 +12,7 @@
 #include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/map/betas.h>
 #include <cgogn/core/map/darts.h>
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/orbits.h>

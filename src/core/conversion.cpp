@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Between the two models of surfaces: CMap2 <-> GMap2, with every attribute.
+// Between the two models of maps: CMap2 <-> GMap2, CMap3 <-> GMap3, with
+// every attribute.
 #include <cgogn/core/build/conversion.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/orbits.h>
@@ -45,10 +46,17 @@ void copy_orbit(TARGET& target, const SOURCE& source, const DART_OF& dart_of)
 
 } // namespace
 
-GMap2 to_gmap(const CMap2& m)
+namespace
 {
-	GMap2 g;
-	// dart d of m: a(d) = 2k at its origin, b(d) = 2k + 1 at its end
+
+// The G-map of a combinatorial map: each dart d of m becomes A(d) = 2k at
+// its origin and B(d) = 2k + 1 at its end, beta0 between them; beta1 joins
+// the end of d to the origin of phi1(d), beta_i (i >= 2) the origin of d to
+// the end of phi_i(d), which goes the other way.
+template <typename GMAP, typename CMAP>
+GMAP gmap_of(const CMAP& m)
+{
+	GMAP g;
 	const AttributeContainer& darts = *detail::state_of(m).darts;
 	std::vector<uint32> a(darts.end_index(), INVALID_INDEX);
 	foreach_dart(m, [&](Dart d) {
@@ -64,6 +72,11 @@ GMap2 to_gmap(const CMap2& m)
 		detail::set_beta<1>(g, A(phi1(m, d)), B(d));
 		detail::set_beta<2>(g, A(d), B(phi2(m, d)));
 		detail::set_beta<2>(g, B(phi2(m, d)), A(d));
+		if constexpr (CMAP::dimension >= 3)
+		{
+			detail::set_beta<3>(g, A(d), B(phi3(m, d)));
+			detail::set_beta<3>(g, B(phi3(m, d)), A(d));
+		}
 		if (is_boundary(m, d))
 		{
 			detail::set_boundary(g, A(d), true);
@@ -78,18 +91,29 @@ GMap2 to_gmap(const CMap2& m)
 	copy_orbit<Orbit::BETA0_BETA2>(g, m, A);
 	copy_orbit<Orbit::BETA0_BETA1>(g, m, A);
 	copy_orbit<Orbit::BETA0_BETA1_BETA2>(g, m, A);
+	if constexpr (CMAP::dimension >= 3)
+	{
+		copy_orbit<Orbit::BETA1_BETA2_BETA3>(g, m, A);
+		copy_orbit<Orbit::BETA0_BETA2_BETA3>(g, m, A);
+		copy_orbit<Orbit::BETA0_BETA1_BETA3>(g, m, A);
+		copy_orbit<Orbit::BETA0_BETA1_BETA2_BETA3>(g, m, A);
+	}
 	detail::release_idle_marks(g);
 	return g;
 }
 
-CMap2 to_cmap(const GMap2& g)
+// The combinatorial map of an orientable G-map: the darts of one colour
+// class, phi1 = beta1 o beta0 and phi_i = beta0 o beta_i (i >= 2).
+template <typename CMAP, typename GMAP>
+CMAP cmap_of(const GMAP& g, const char* name)
 {
 	// the kept darts: in each component, the colour class of its smallest dart
-	DartMarker<GMap2> kept(g);
+	DartMarker<GMAP> kept(g);
 	if (!detail::two_colour(g, kept))
-		throw TopologyError("to_cmap: the G-map is not orientable (a Möbius strip, a Klein bottle, ...): no CMap2 "
-							"can hold it");
-	CMap2 m;
+		throw TopologyError(std::string(name) +
+							": the G-map is not orientable (a Möbius strip, a Klein bottle, ...): no combinatorial "
+							"map can hold it");
+	CMAP m;
 	const AttributeContainer& darts = *detail::state_of(g).darts;
 	std::vector<uint32> c(darts.end_index(), INVALID_INDEX);
 	foreach_dart(g, [&](Dart d) {
@@ -102,6 +126,8 @@ CMap2 to_cmap(const GMap2& g)
 			return;
 		detail::set_phi1(m, C(d), C(beta1(g, beta0(g, d))));
 		detail::set_phi2(m, C(d), C(beta0(g, beta2(g, d))));
+		if constexpr (CMAP::dimension >= 3)
+			detail::set_phi3(m, C(d), C(beta0(g, beta3(g, d))));
 		if (is_boundary(g, d))
 			detail::set_boundary(m, C(d), true);
 	});
@@ -110,7 +136,7 @@ CMap2 to_cmap(const GMap2& g)
 			put(c[i]);
 	});
 	// a cell's kept dart: the representative, or its beta1 (vertices) or beta0
-	// neighbour (edges, faces, components), which lies in the same cell
+	// neighbour (the other cells), which lies in the same cell
 	auto kept_in = [&](bool vertex) {
 		return [&, vertex](Dart d) { return C(kept.is_marked(d) ? d : vertex ? beta1(g, d) : beta0(g, d)); };
 	};
@@ -118,8 +144,37 @@ CMap2 to_cmap(const GMap2& g)
 	copy_orbit<Orbit::PHI2>(m, g, kept_in(false));
 	copy_orbit<Orbit::PHI1>(m, g, kept_in(false));
 	copy_orbit<Orbit::PHI1_PHI2>(m, g, kept_in(false));
+	if constexpr (CMAP::dimension >= 3)
+	{
+		copy_orbit<Orbit::PHI21_PHI31>(m, g, kept_in(true));
+		copy_orbit<Orbit::PHI2_PHI3>(m, g, kept_in(false));
+		copy_orbit<Orbit::PHI1_PHI3>(m, g, kept_in(false));
+		copy_orbit<Orbit::PHI1_PHI2_PHI3>(m, g, kept_in(false));
+	}
 	detail::release_idle_marks(m);
 	return m;
+}
+
+} // namespace
+
+GMap2 to_gmap(const CMap2& m)
+{
+	return gmap_of<GMap2>(m);
+}
+
+GMap3 to_gmap(const CMap3& m)
+{
+	return gmap_of<GMap3>(m);
+}
+
+CMap2 to_cmap(const GMap2& g)
+{
+	return cmap_of<CMap2>(g, "to_cmap");
+}
+
+CMap3 to_cmap(const GMap3& g)
+{
+	return cmap_of<CMap3>(g, "to_cmap");
 }
 
 } // namespace cgogn

@@ -100,14 +100,36 @@ void check_beta_relations(const MAP& m, Checker& ck)
 			if (beta<0, 2, 0, 2>(m, d) != d)
 				ck.add(Kind::BetaCompositionNotInvolution, Orbit::DART, d.index, INVALID_INDEX,
 					   "beta2 o beta0 is not an involution");
+			if constexpr (MAP::dimension >= 3)
+			{
+				if (beta<0, 3, 0, 3>(m, d) != d)
+					ck.add(Kind::BetaCompositionNotInvolution, Orbit::DART, d.index, INVALID_INDEX,
+						   "beta3 o beta0 is not an involution");
+				if (beta<1, 3, 1, 3>(m, d) != d)
+					ck.add(Kind::BetaCompositionNotInvolution, Orbit::DART, d.index, INVALID_INDEX,
+						   "beta3 o beta1 is not an involution");
+			}
 		});
+		// the boundary: faces (2-G-maps) or volumes (3-G-maps) whose darts
+		// all carry the mark, never glued to each other by the last beta
+		const auto top = [&](Dart d) {
+			if constexpr (MAP::dimension >= 3)
+				return beta3(m, d);
+			else
+				return beta2(m, d);
+		};
+		const std::string top_name = "beta" + std::to_string(MAP::dimension);
 		uint32 marked = 0;
 		foreach_dart(m, [&](Dart d) {
 			const bool b = is_boundary(m, d);
 			marked += b;
-			if (b && is_boundary(m, beta2(m, d)))
-				ck.add(Kind::BoundaryLinked, Orbit::DART, d.index, INVALID_INDEX, "beta2 links two boundary darts");
-			if (is_boundary(m, beta0(m, d)) != b || is_boundary(m, beta1(m, d)) != b)
+			if (b && is_boundary(m, top(d)))
+				ck.add(Kind::BoundaryLinked, Orbit::DART, d.index, INVALID_INDEX,
+					   top_name + " links two boundary darts");
+			bool constant = is_boundary(m, beta0(m, d)) == b && is_boundary(m, beta1(m, d)) == b;
+			if constexpr (MAP::dimension >= 3)
+				constant = constant && is_boundary(m, beta2(m, d)) == b;
+			if (!constant)
 				ck.add(Kind::BoundaryMarkNotConstant, Orbit::DART, d.index, INVALID_INDEX,
 					   "the boundary mark is not constant on a boundary cell");
 			const Dart x = beta<0, 1>(m, d);
@@ -270,6 +292,8 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 			f(beta1(m, d));
 		if constexpr (orbit_uses_beta(O, 2))
 			f(beta2(m, d));
+		if constexpr (orbit_uses_beta(O, 3))
+			f(beta3(m, d));
 	}
 }
 
@@ -402,6 +426,13 @@ IntegrityReport check_integrity(const GMap1& m)
 IntegrityReport check_integrity(const GMap2& m)
 {
 	return check_map<GMap2, Orbit::BETA0_BETA1, Orbit::BETA0_BETA2, Orbit::BETA1_BETA2, Orbit::BETA0_BETA1_BETA2>(m);
+}
+
+IntegrityReport check_integrity(const GMap3& m)
+{
+	return check_map<GMap3, Orbit::BETA0_BETA1, Orbit::BETA0_BETA2, Orbit::BETA1_BETA2, Orbit::BETA0_BETA1_BETA2,
+					 Orbit::BETA0_BETA1_BETA3, Orbit::BETA0_BETA2_BETA3, Orbit::BETA1_BETA2_BETA3,
+					 Orbit::BETA0_BETA1_BETA2_BETA3>(m);
 }
 
 } // namespace cgogn

@@ -79,6 +79,12 @@ static_assert(CanCutEdge<GMap1, GMap1::Edge> && CanCutEdge<GMap2, GMap2::Edge>);
 static_assert(!CanCutEdge<GMap2, GMap1::Edge> && !CanCollapseEdge<GMap2, GMap1::Edge>);
 static_assert(CanCollapseEdge<GMap1, GMap1::Edge> && CanCollapseEdge<GMap2, GMap2::Edge>);
 static_assert(CanTriangulate<GMap2> && CanLoop<GMap2>);
+// 1- and 2-G-map operators and surface algorithms on 3-G-maps
+static_assert(!CanAddFace<GMap3>);
+static_assert(!CanCutEdge<GMap3, GMap1::Edge> && !CanCutEdge<GMap3, GMap2::Edge>);
+static_assert(!CanCollapseEdge<GMap3, GMap2::Edge> && !CanFlipEdge<GMap3, GMap2::Edge>);
+static_assert(!CanCutFace<GMap3, GMap2::Vertex>);
+static_assert(!CanTriangulate<GMap3> && !CanLoop<GMap3>);
 // surface algorithms on 3-maps
 static_assert(CanTriangulate<CMap2> && !CanTriangulate<CMap3>);
 static_assert(CanDecimate<CMap2> && !CanDecimate<CMap3>);

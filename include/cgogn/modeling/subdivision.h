@@ -5,7 +5,7 @@
 
 #include <cgogn/core/map/cmap2.h>
 #include <cgogn/core/map/cmap3.h>
-#include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/modeling/progress.h>
@@ -51,6 +51,8 @@ struct SubdivisionResult
 bool is_triangle_mesh(const CMap2& m);
 /// True when every non-boundary face of m is a triangle. O(darts).
 bool is_triangle_mesh(const GMap2& m);
+/// Not for 3-G-maps: deleted.
+bool is_triangle_mesh(const GMap3& m) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 bool is_triangle_mesh(const CMap3& m) = delete;
 
@@ -67,6 +69,8 @@ bool is_triangle_mesh(const CMap3& m) = delete;
 SubdivisionResult loop_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Loop subdivision of a 2-G-map (see the CMap2 version). O(n).
 SubdivisionResult loop_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Not for 3-G-maps: deleted.
+SubdivisionResult loop_subdivision(GMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {}) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult loop_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {}) = delete;
 
@@ -82,6 +86,9 @@ SubdivisionResult loop_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pr
 SubdivisionResult catmull_clark_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// Catmull-Clark subdivision of a 2-G-map (see the CMap2 version). O(n).
 SubdivisionResult catmull_clark_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Not for 3-G-maps: deleted.
+SubdivisionResult catmull_clark_subdivision(GMap3& m, AttributeArray<Vec3>& pos,
+											const ProgressCallback& progress = {}) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 											const ProgressCallback& progress = {}) = delete;
@@ -100,6 +107,9 @@ SubdivisionResult catmull_clark_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 SubdivisionResult sqrt3_subdivision(CMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 /// sqrt3 subdivision of a 2-G-map (see the CMap2 version). O(n).
 SubdivisionResult sqrt3_subdivision(GMap2& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
+/// Not for 3-G-maps: deleted.
+SubdivisionResult sqrt3_subdivision(GMap3& m, AttributeArray<Vec3>& pos,
+									const ProgressCallback& progress = {}) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult sqrt3_subdivision(CMap3& m, AttributeArray<Vec3>& pos,
 									const ProgressCallback& progress = {}) = delete;
@@ -118,6 +128,9 @@ SubdivisionResult subdivide(CMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme s
 /// The same on a 2-G-map.
 SubdivisionResult subdivide(GMap2& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
 							const ProgressCallback& progress = {});
+/// Not for 3-G-maps: deleted.
+SubdivisionResult subdivide(GMap3& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
+							const ProgressCallback& progress = {}) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 SubdivisionResult subdivide(CMap3& m, AttributeArray<Vec3>& pos, SurfaceScheme scheme, uint32 iterations,
 							const ProgressCallback& progress = {}) = delete;

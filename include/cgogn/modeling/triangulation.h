@@ -3,7 +3,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
-#include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 namespace cgogn::modeling
@@ -22,6 +22,8 @@ uint32 ear_clip_face(CMap2& m, const AttributeArray<Vec3>& pos, CMap2::Face f);
 /// The same on a 2-G-map: the polygon is walked from f.dart (its corners in
 /// the order of beta1 o beta0). Same cost.
 uint32 ear_clip_face(GMap2& m, const AttributeArray<Vec3>& pos, GMap2::Face f);
+/// Not for 3-G-maps: deleted.
+uint32 ear_clip_face(GMap3& m, const AttributeArray<Vec3>& pos, GMap2::Face f) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 uint32 ear_clip_face(CMap3& m, const AttributeArray<Vec3>& pos, CMap2::Face f) = delete;
 
@@ -30,6 +32,8 @@ uint32 ear_clip_face(CMap3& m, const AttributeArray<Vec3>& pos, CMap2::Face f) =
 uint32 triangulate_faces(CMap2& m, const AttributeArray<Vec3>& pos);
 /// The same on a 2-G-map, orientable or not.
 uint32 triangulate_faces(GMap2& m, const AttributeArray<Vec3>& pos);
+/// Not for 3-G-maps: deleted.
+uint32 triangulate_faces(GMap3& m, const AttributeArray<Vec3>& pos) = delete;
 /// Not for 3-maps (their faces are not a surface): deleted, so that such a call does not compile.
 uint32 triangulate_faces(CMap3& m, const AttributeArray<Vec3>& pos) = delete;
 

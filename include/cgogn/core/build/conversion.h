@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/map/cmap2.h>
-#include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap3.h>
 
 namespace cgogn
 {
@@ -25,5 +25,16 @@ GMap2 to_gmap(const CMap2& m);
 /// the kept dart. Throws TopologyError when g is not orientable (see
 /// is_orientable: no CMap2 can hold it). O(size of g x number of attributes).
 CMap2 to_cmap(const GMap2& g);
+
+/// The 3-G-map of a 3-map, as to_gmap of a 2-map: twice the darts, beta3
+/// joining each dart's origin to the end of its phi3; every cell (3-D
+/// cells, the cells of one volume, boundary volumes) and attribute carried.
+/// O(size of m x number of attributes).
+GMap3 to_gmap(const CMap3& m);
+
+/// The 3-map of an orientable 3-G-map, as to_cmap of a 2-G-map (phi3 =
+/// beta0 o beta3). Throws TopologyError when g is not orientable.
+/// O(size of g x number of attributes).
+CMap3 to_cmap(const GMap3& g);
 
 } // namespace cgogn

@@ -28,6 +28,12 @@ CGOGN_INLINE Dart beta2(const GMap2& m, Dart d)
 	return Dart((*detail::state_of(m).beta[2])[d.index]);
 }
 
+/// The dart of the adjacent volume at the same vertex, edge and face. O(1).
+CGOGN_INLINE Dart beta3(const GMap3& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[3])[d.index]);
+}
+
 /// Composition of involutions applied left to right: beta<0, 2>(m, d) is
 /// beta2(m, beta0(m, d)). O(number of relations).
 template <int... N, typename MAP>
@@ -39,8 +45,13 @@ Dart beta(const MAP& m, Dart d)
 			d = beta0(m, d);
 		else if (n == 1)
 			d = beta1(m, d);
-		else if constexpr (MAP::dimension >= 2)
-			d = beta2(m, d);
+		else if (n == 2)
+		{
+			if constexpr (MAP::dimension >= 2)
+				d = beta2(m, d);
+		}
+		else if constexpr (MAP::dimension >= 3)
+			d = beta3(m, d);
 	};
 	(apply(N), ...);
 	return d;

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 
 #include <concepts>
 #include <tuple>
@@ -105,7 +106,28 @@ struct mesh_traits<GMap2>
 	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
 };
 
-/// True for the generalized maps (GMap1, GMap2), whose relations are the
+/// The traits of a 3-G-map.
+template <>
+struct mesh_traits<GMap3>
+{
+	static constexpr uint32 dimension = 3; ///< The dimension of the map.
+	using MapType = GMap3;                 ///< The map type.
+	using Vertex = GMap3::Vertex;          ///< See GMap3::Vertex.
+	using Vertex2 = GMap3::Vertex2;        ///< See GMap3::Vertex2.
+	using Edge = GMap3::Edge;              ///< See GMap3::Edge.
+	using Edge2 = GMap3::Edge2;            ///< See GMap3::Edge2.
+	using Face = GMap3::Face;              ///< See GMap3::Face.
+	using Face2 = GMap3::Face2;            ///< See GMap3::Face2.
+	using Volume = GMap3::Volume;          ///< See GMap3::Volume.
+	using CC = GMap3::CC;                  ///< See GMap3::CC.
+	/// The cell types: views keep one predicate or cell set per entry.
+	using Cells = std::tuple<Vertex, Vertex2, Edge, Edge2, Face, Face2, Volume, CC>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
+};
+
+/// True for the generalized maps (GMap1, GMap2, GMap3), whose relations are the
 /// involutions beta_i; false for the combinatorial maps and the views.
 template <typename M>
 inline constexpr bool is_gmap_v = std::derived_from<M, GMap1>;

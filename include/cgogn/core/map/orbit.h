@@ -25,12 +25,16 @@ enum class Orbit : uint32
 	PHI21_PHI31,    // 3d vertex
 	PHI1_PHI2_PHI3, // 3d connected component
 	// generalized maps
-	BETA0,             // 1d g-vertex pair / edge half
-	BETA1,             // 1d vertex of a g-cycle
-	BETA0_BETA1,       // 1d cycle, 2d face
-	BETA0_BETA2,       // 2d edge
-	BETA1_BETA2,       // 2d vertex
-	BETA0_BETA1_BETA2, // 2d connected component
+	BETA0,                   // 1d g-vertex pair / edge half
+	BETA1,                   // 1d vertex of a g-cycle
+	BETA0_BETA1,             // 1d cycle, 2d face
+	BETA0_BETA2,             // 2d edge
+	BETA1_BETA2,             // 2d vertex
+	BETA0_BETA1_BETA2,       // 2d connected component, 3d volume
+	BETA0_BETA1_BETA3,       // 3d face
+	BETA0_BETA2_BETA3,       // 3d edge
+	BETA1_BETA2_BETA3,       // 3d vertex
+	BETA0_BETA1_BETA2_BETA3, // 3d connected component
 	NB_ORBITS
 };
 
@@ -43,10 +47,25 @@ constexpr uint32 orbit_index(Orbit o)
 
 constexpr std::string_view orbit_name(Orbit o)
 {
-	constexpr std::array<std::string_view, NB_ORBITS> names = {
-		"DART",      "PHI1",        "PHI2",        "PHI21",          "PHI1_PHI2",
-		"PHI1_PHI3", "PHI2_PHI3",   "PHI21_PHI31", "PHI1_PHI2_PHI3", "BETA0",
-		"BETA1",     "BETA0_BETA1", "BETA0_BETA2", "BETA1_BETA2",    "BETA0_BETA1_BETA2"};
+	constexpr std::array<std::string_view, NB_ORBITS> names = {"DART",
+															   "PHI1",
+															   "PHI2",
+															   "PHI21",
+															   "PHI1_PHI2",
+															   "PHI1_PHI3",
+															   "PHI2_PHI3",
+															   "PHI21_PHI31",
+															   "PHI1_PHI2_PHI3",
+															   "BETA0",
+															   "BETA1",
+															   "BETA0_BETA1",
+															   "BETA0_BETA2",
+															   "BETA1_BETA2",
+															   "BETA0_BETA1_BETA2",
+															   "BETA0_BETA1_BETA3",
+															   "BETA0_BETA2_BETA3",
+															   "BETA1_BETA2_BETA3",
+															   "BETA0_BETA1_BETA2_BETA3"};
 	return names[orbit_index(o)];
 }
 
@@ -92,15 +111,27 @@ constexpr bool orbit_uses_beta(Orbit o, uint32 k)
 		return k == 1 || k == 2;
 	case Orbit::BETA0_BETA1_BETA2:
 		return k <= 2;
+	case Orbit::BETA0_BETA1_BETA3:
+		return k == 0 || k == 1 || k == 3;
+	case Orbit::BETA0_BETA2_BETA3:
+		return k == 0 || k == 2 || k == 3;
+	case Orbit::BETA1_BETA2_BETA3:
+		return k >= 1 && k <= 3;
+	case Orbit::BETA0_BETA1_BETA2_BETA3:
+		return k <= 3;
 	default:
 		return false;
 	}
 }
 
-/// The orbit of the same cell kind in the other model of surfaces: a CMap2
+/// The orbit of the same cell kind in the other model of maps: a CMap2
 /// vertex (PHI21) is a GMap2 vertex (BETA1_BETA2), and so for edges (PHI2,
 /// BETA0_BETA2), faces (PHI1, BETA0_BETA1) and components (PHI1_PHI2,
-/// BETA0_BETA1_BETA2), both ways; the orbit itself for the others. The
+/// BETA0_BETA1_BETA2), both ways; in 3-D the same pairs are the cells of
+/// one volume, and a CMap3 vertex (PHI21_PHI31) is a GMap3 vertex
+/// (BETA1_BETA2_BETA3), and so for edges (PHI2_PHI3, BETA0_BETA2_BETA3),
+/// faces (PHI1_PHI3, BETA0_BETA1_BETA3) and components (PHI1_PHI2_PHI3,
+/// BETA0_BETA1_BETA2_BETA3). The orbit itself for the others. The
 /// conversions between the two models move attributes along it.
 constexpr Orbit surface_counterpart(Orbit o)
 {
@@ -114,6 +145,14 @@ constexpr Orbit surface_counterpart(Orbit o)
 		return Orbit::BETA0_BETA1;
 	case Orbit::PHI1_PHI2:
 		return Orbit::BETA0_BETA1_BETA2;
+	case Orbit::PHI21_PHI31:
+		return Orbit::BETA1_BETA2_BETA3;
+	case Orbit::PHI2_PHI3:
+		return Orbit::BETA0_BETA2_BETA3;
+	case Orbit::PHI1_PHI3:
+		return Orbit::BETA0_BETA1_BETA3;
+	case Orbit::PHI1_PHI2_PHI3:
+		return Orbit::BETA0_BETA1_BETA2_BETA3;
 	case Orbit::BETA1_BETA2:
 		return Orbit::PHI21;
 	case Orbit::BETA0_BETA2:
@@ -122,6 +161,14 @@ constexpr Orbit surface_counterpart(Orbit o)
 		return Orbit::PHI1;
 	case Orbit::BETA0_BETA1_BETA2:
 		return Orbit::PHI1_PHI2;
+	case Orbit::BETA1_BETA2_BETA3:
+		return Orbit::PHI21_PHI31;
+	case Orbit::BETA0_BETA2_BETA3:
+		return Orbit::PHI2_PHI3;
+	case Orbit::BETA0_BETA1_BETA3:
+		return Orbit::PHI1_PHI3;
+	case Orbit::BETA0_BETA1_BETA2_BETA3:
+		return Orbit::PHI1_PHI2_PHI3;
 	default:
 		return o;
 	}

@@ -88,7 +88,8 @@ bool walk_path_back(Dart d, const FUNC& f, const VIEW& first, const VIEW& second
 constexpr bool orbit_is_flooded(Orbit o)
 {
 	return o == Orbit::PHI1_PHI2 || o == Orbit::PHI21_PHI31 || o == Orbit::PHI1_PHI2_PHI3 ||
-		   o == Orbit::BETA0_BETA1_BETA2;
+		   o == Orbit::BETA0_BETA1_BETA2 || o == Orbit::BETA0_BETA1_BETA3 || o == Orbit::BETA0_BETA2_BETA3 ||
+		   o == Orbit::BETA1_BETA2_BETA3 || o == Orbit::BETA0_BETA1_BETA2_BETA3;
 }
 
 /// Breadth-first visit of the orbit O of d with a mark and a work list owned by
@@ -124,11 +125,17 @@ void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vect
 			visit(phi1(m, phi2(m, x)));
 			visit(phi1(m, phi3(m, x)));
 		}
-		else if constexpr (O == Orbit::BETA0_BETA1_BETA2)
+		else if constexpr (orbit_uses_beta(O, 0) || orbit_uses_beta(O, 1))
 		{
-			visit(beta0(m, x));
-			visit(beta1(m, x));
-			visit(beta2(m, x));
+			// a G-map orbit: its involutions
+			if constexpr (orbit_uses_beta(O, 0))
+				visit(beta0(m, x));
+			if constexpr (orbit_uses_beta(O, 1))
+				visit(beta1(m, x));
+			if constexpr (orbit_uses_beta(O, 2))
+				visit(beta2(m, x));
+			if constexpr (orbit_uses_beta(O, 3))
+				visit(beta3(m, x));
 		}
 		else
 		{
@@ -305,6 +312,37 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 		return detail::foreach_dart_flood(
 			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
 			[&](Dart x) { return beta2(m, x); });
+	}
+	else if constexpr (O == Orbit::BETA0_BETA1_BETA3)
+	{
+		// a face of a 3-G-map: its two sides (a polygon each), exchanged by beta3
+		static_assert(is_gmap_v<MAP> && MAP::dimension >= 3, "orbit not available in this map");
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
+			[&](Dart x) { return beta3(m, x); });
+	}
+	else if constexpr (O == Orbit::BETA0_BETA2_BETA3)
+	{
+		// an edge of a 3-G-map: its four darts in each face around it
+		static_assert(is_gmap_v<MAP> && MAP::dimension >= 3, "orbit not available in this map");
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta2(m, x); },
+			[&](Dart x) { return beta3(m, x); });
+	}
+	else if constexpr (O == Orbit::BETA1_BETA2_BETA3)
+	{
+		// a vertex of a 3-G-map: its corners in every volume around it
+		static_assert(is_gmap_v<MAP> && MAP::dimension >= 3, "orbit not available in this map");
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return beta1(m, x); }, [&](Dart x) { return beta2(m, x); },
+			[&](Dart x) { return beta3(m, x); });
+	}
+	else if constexpr (O == Orbit::BETA0_BETA1_BETA2_BETA3)
+	{
+		static_assert(is_gmap_v<MAP> && MAP::dimension >= 3, "orbit not available in this map");
+		return detail::foreach_dart_flood(
+			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
+			[&](Dart x) { return beta2(m, x); }, [&](Dart x) { return beta3(m, x); });
 	}
 	else
 	{

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
-#include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 
 #include <vector>
 
@@ -68,5 +68,31 @@ std::vector<Dart> merge(CMap3& m, const CMap3& other) = delete;
 // way): an edge of a polygon is not an edge of a surface
 GMap1::Vertex cut_edge(GMap2& m, GMap1::Edge e, bool set_indices = true) = delete;
 GMap1::Vertex collapse_edge(GMap2& m, GMap1::Edge e, bool set_indices = true) = delete;
+
+// ---- 1- and 2-G-map operators on 3-G-maps (GMap3 derives from GMap2): they
+// would leave beta3 unlinked
+GMap1::Vertex cut_edge(GMap3& m, GMap1::Edge e, bool set_indices = true) = delete;
+GMap1::Vertex collapse_edge(GMap3& m, GMap1::Edge e, bool set_indices = true) = delete;
+GMap2::Face add_face(GMap3& m, uint32 n, bool set_indices = true) = delete;
+GMap2::Vertex cut_edge(GMap3& m, GMap2::Edge e, bool set_indices = true) = delete;
+bool can_collapse_edge(const GMap3& m, GMap2::Edge e) = delete;
+GMap2::Vertex collapse_edge(GMap3& m, GMap2::Edge e, bool set_indices = true) = delete;
+bool can_flip_edge(const GMap3& m, GMap2::Edge e) = delete;
+void flip_edge(GMap3& m, GMap2::Edge e, bool set_indices = true) = delete;
+bool can_flip_back_edge(const GMap3& m, GMap2::Edge e) = delete;
+void flip_back_edge(GMap3& m, GMap2::Edge e, bool set_indices = true) = delete;
+bool can_cut_face(const GMap3& m, GMap2::Vertex v1, GMap2::Vertex v2) = delete;
+GMap2::Edge cut_face(GMap3& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indices = true) = delete;
+bool can_merge_incident_faces(const GMap3& m, GMap2::Edge e) = delete;
+GMap2::Face merge_incident_faces(GMap3& m, GMap2::Edge e, bool set_indices = true) = delete;
+GMap2::Vertex triangulate_face(GMap3& m, GMap2::Face f, bool set_indices = true) = delete;
+GMap2::Face close_hole(GMap3& m, Dart d, bool mark_boundary = true, bool set_indices = true) = delete;
+uint32 close(GMap3& m, bool set_indices = true) = delete;
+bool can_fill_hole_with_face(const GMap3& m, Dart d) = delete;
+GMap2::Face fill_hole_with_face(GMap3& m, Dart d, bool set_indices = true) = delete;
+bool can_sew_faces(const GMap3& m, GMap2::Edge e1, GMap2::Edge e2) = delete;
+void sew_faces(GMap3& m, GMap2::Edge e1, GMap2::Edge e2, bool set_indices = true) = delete;
+bool can_unsew_faces(const GMap3& m, GMap2::Edge e) = delete;
+void unsew_faces(GMap3& m, GMap2::Edge e, bool set_indices = true) = delete;
 
 } // namespace cgogn

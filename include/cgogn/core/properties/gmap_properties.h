@@ -52,6 +52,11 @@ inline uint32 nb_connected_components(const GMap2& m)
 {
 	return nb_cells<GMap2::Volume>(m);
 }
+/// Number of connected components of a 3-G-map. O(number of darts).
+inline uint32 nb_connected_components(const GMap3& m)
+{
+	return nb_cells<GMap3::CC>(m);
+}
 
 namespace detail
 {

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
-#include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 
 #include <string>
 #include <vector>
@@ -92,5 +92,7 @@ IntegrityReport check_integrity(const CMap3& m);
 /// darts, and faces of at least 3 edges (6 darts) unless boundary.
 IntegrityReport check_integrity(const GMap1& m);
 IntegrityReport check_integrity(const GMap2& m);
+/// The same for a 3-G-map, with beta3 o beta0 and beta3 o beta1 involutions and boundary volumes.
+IntegrityReport check_integrity(const GMap3& m);
 
 } // namespace cgogn

@@ -178,13 +178,15 @@ inline uint32 nb_connected_components(const CMap3& m)
 	return nb_cells<CMap3::CC>(m);
 }
 
-/// Number of boundary components (boundary faces of a 2-map, boundary volumes
-/// of a 3-map). O(number of darts).
+/// Number of boundary components (boundary faces of a 2-map or 2-G-map,
+/// boundary volumes of a 3-map or 3-G-map). O(number of darts).
 template <typename MAP>
 requires std::derived_from<MAP, CMapBase> uint32 nb_boundary_components(const MAP& m)
 {
-	using Top = std::conditional_t<is_gmap_v<MAP>, Cell<Orbit::BETA0_BETA1>,
-								   std::conditional_t<MAP::dimension == 3, Cell<Orbit::PHI1_PHI2>, Cell<Orbit::PHI1>>>;
+	using Top = std::conditional_t<
+		is_gmap_v<MAP>,
+		std::conditional_t<MAP::dimension == 3, Cell<Orbit::BETA0_BETA1_BETA2>, Cell<Orbit::BETA0_BETA1>>,
+		std::conditional_t<MAP::dimension == 3, Cell<Orbit::PHI1_PHI2>, Cell<Orbit::PHI1>>>;
 	DartMarker<MAP> dm(m);
 	uint32 n = 0;
 	foreach_dart(m, [&](Dart d) {
