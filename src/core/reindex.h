@@ -76,8 +76,11 @@ private:
 			std::sort(olds.begin(), olds.end());
 			olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
 			std::erase_if(olds, [&](uint32 l) { return !cells.is_live(l); });
-			// connected components of a 3-map or a 2-G-map: never walked whole
-			if ((O == Orbit::PHI1_PHI2_PHI3 || O == Orbit::BETA0_BETA1_BETA2) && olds.size() == 1 && !region.empty())
+			// connected components of a 3-map or a G-map: never walked whole
+			// (BETA0_BETA1_BETA2 is the component of a 2-G-map, a volume of a 3-G-map)
+			constexpr bool component = O == Orbit::PHI1_PHI2_PHI3 || O == Orbit::BETA0_BETA1_BETA2_BETA3 ||
+									   (O == Orbit::BETA0_BETA1_BETA2 && MAP::dimension == 2);
+			if (component && olds.size() == 1 && !region.empty())
 			{
 				for (Dart d : region)
 					(*idx)[d.index] = olds.front();
