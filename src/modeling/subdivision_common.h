@@ -10,6 +10,7 @@
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/geometry/algos/dart_geometry.h>
 #include <cgogn/modeling/subdivision.h>
 
 #include <algorithm>
@@ -50,14 +51,11 @@ Dart other_side(const MAP& m, Dart d)
 }
 
 /// The next dart along d's face, at the next vertex in the direction of d's
-/// edge (phi1; beta1 o beta0 in a G-map).
+/// edge: the geometry layer's oriented walk (phi1; beta1 o beta0 in a G-map).
 template <typename MAP>
 Dart next_in_face(const MAP& m, Dart d)
 {
-	if constexpr (is_gmap_v<MAP>)
-		return beta<0, 1>(m, d);
-	else
-		return phi1(m, d);
+	return geometry::oriented_phi1(m, d);
 }
 
 /// A dart at the vertex opposite to d's edge in d's triangle.

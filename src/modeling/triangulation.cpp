@@ -108,17 +108,14 @@ namespace
 // The corners of face f in cyclic order, one dart each, at the corner's
 // vertex (the origin of a 2-map dart; a G-map dart whose edge goes on to
 // the next corner).
-void collect_corners(const CMap2& m, CMap2::Face f, std::vector<Dart>& corners)
-{
-	foreach_dart_of_orbit(m, f, [&](Dart d) { corners.push_back(d); });
-}
-void collect_corners(const GMap2& m, GMap2::Face f, std::vector<Dart>& corners)
+template <typename MAP>
+void collect_corners(const MAP& m, typename mesh_traits<MAP>::Face f, std::vector<Dart>& corners)
 {
 	Dart d = f.dart;
 	do
 	{
 		corners.push_back(d);
-		d = beta<0, 1>(m, d);
+		d = geometry::oriented_phi1(m, d);
 	} while (d != f.dart);
 }
 
