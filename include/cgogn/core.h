@@ -24,6 +24,7 @@
 #include <cgogn/core/operators/dimension_guards.h>
 #include <cgogn/core/operators/gmap1.h>
 #include <cgogn/core/operators/gmap2.h>
+#include <cgogn/core/operators/gmap3.h>
 #include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/parallel/thread_pool.h>
 #include <cgogn/core/properties/integrity.h>

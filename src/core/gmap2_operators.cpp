@@ -14,37 +14,19 @@ namespace cgogn
 GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices)
 {
 	const std::array<Dart, 4> old = detail::edge_darts(m, e.dart);
+	std::vector<Dart> region(old.begin(), old.end());
 	detail::RegionReindexer<GMap2> reindex;
 	if (set_indices)
-		reindex.record(m, {old.begin(), old.end()});
-	std::vector<Dart> region(old.begin(), old.end());
-	// each side (d, beta0(d)) of the edge gets two darts at the new vertex,
-	// x after d and y after beta0(d), joined by beta1
-	std::array<std::pair<Dart, Dart>, 2> made;
-	for (uint32 side = 0; side < 2; ++side)
-	{
-		const Dart d = old[2 * side], d0 = old[2 * side + 1];
-		const Dart x = detail::new_dart_like(m, d), y = detail::new_dart_like(m, d);
-		beta_unsew<0>(m, d);
-		beta_sew<0>(m, d, x);
-		beta_sew<0>(m, d0, y);
-		beta_sew<1>(m, x, y);
-		made[side] = {x, y};
-		region.insert(region.end(), {x, y});
-	}
-	// beta2(d) is at d's end of the edge: x2 (after beta2(d)) faces x
-	beta_sew<2>(m, made[0].first, made[1].first);
-	beta_sew<2>(m, made[0].second, made[1].second);
+		reindex.record(m, region);
+	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, region);
+	region.insert(region.end(), added.begin(), added.end());
 	if (set_indices)
 		reindex.apply(m, region);
-	return GMap2::Vertex(made[0].second);
+	return GMap2::Vertex(added[1]); // the new dart beside beta0(e.dart)
 }
 
-bool can_cut_face(const GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2)
+bool detail::corners_can_be_joined(const GMap2& m, Dart d, Dart e)
 {
-	const Dart d = v1.dart, e = v2.dart;
-	if (is_boundary(m, d) || is_boundary(m, e))
-		return false;
 	bool same_face = false;
 	foreach_dart_of_orbit(m, GMap2::Face(d), [&](Dart x) { return !(same_face = x == e); });
 	if (!same_face)
@@ -59,13 +41,11 @@ bool can_cut_face(const GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2)
 	return true;
 }
 
-GMap2::Edge cut_face(GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indices)
+detail::FaceSideCut detail::split_face_side(GMap2& m, Dart d, Dart e)
 {
-	assert(can_cut_face(m, v1, v2));
-	const Dart d = v1.dart, d1 = beta1(m, d);
-	const Dart e = v2.dart, e1 = beta1(m, e);
+	const Dart d1 = beta1(m, d), e1 = beta1(m, e);
 	// f: the dart of e's corner met first walking from d away from d1 (beta0
-	// first); the part d ... f keeps the face's line, d1 ... the other
+	// first); the part d ... f is d's
 	Dart f = Dart();
 	for (Dart x = d;;)
 	{
@@ -78,26 +58,38 @@ GMap2::Edge cut_face(GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indi
 		x = beta1(m, x);
 	}
 	const Dart g = f == e ? e1 : e;
-	std::vector<Dart> region{d, d1, e, e1};
+	const FaceSideCut c{new_dart_like(m, d), new_dart_like(m, d), new_dart_like(m, d), new_dart_like(m, d)};
+	beta_unsew<1>(m, d);
+	beta_unsew<1>(m, e);
+	beta_sew<1>(m, d, c.p);
+	beta_sew<1>(m, f, c.p0);
+	beta_sew<1>(m, d1, c.q);
+	beta_sew<1>(m, g, c.q0);
+	beta_sew<0>(m, c.p, c.p0);
+	beta_sew<0>(m, c.q, c.q0);
+	beta_sew<2>(m, c.p, c.q);
+	beta_sew<2>(m, c.p0, c.q0);
+	return c;
+}
+
+bool can_cut_face(const GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2)
+{
+	return !is_boundary(m, v1.dart) && !is_boundary(m, v2.dart) && detail::corners_can_be_joined(m, v1.dart, v2.dart);
+}
+
+GMap2::Edge cut_face(GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indices)
+{
+	assert(can_cut_face(m, v1, v2));
+	const Dart d = v1.dart, e = v2.dart;
+	std::vector<Dart> region{d, beta1(m, d), e, beta1(m, e)};
 	detail::RegionReindexer<GMap2> reindex;
 	if (set_indices)
 		reindex.record(m, region);
-	const Dart p = detail::new_dart_like(m, d), p0 = detail::new_dart_like(m, d); // in d's part
-	const Dart q = detail::new_dart_like(m, d), q0 = detail::new_dart_like(m, d); // in d1's part
-	beta_unsew<1>(m, d);
-	beta_unsew<1>(m, e);
-	beta_sew<1>(m, d, p);
-	beta_sew<1>(m, f, p0);
-	beta_sew<1>(m, d1, q);
-	beta_sew<1>(m, g, q0);
-	beta_sew<0>(m, p, p0);
-	beta_sew<0>(m, q, q0);
-	beta_sew<2>(m, p, q);
-	beta_sew<2>(m, p0, q0);
-	region.insert(region.end(), {p, p0, q, q0});
+	const detail::FaceSideCut c = detail::split_face_side(m, d, e);
+	region.insert(region.end(), {c.p, c.p0, c.q, c.q0});
 	if (set_indices)
 		reindex.apply(m, region);
-	return GMap2::Edge(p);
+	return GMap2::Edge(c.p);
 }
 
 bool can_merge_incident_faces(const GMap2& m, GMap2::Edge e)

@@ -31,6 +31,60 @@ inline uint32 codegree(const GMap2& m, GMap2::Face f)
 	return n / 2;
 }
 
+/// Number of edges incident to v in a 3-G-map. O(size of the vertex orbit),
+/// with a dart mark: the darts of one edge at v are linked by beta2 and beta3.
+inline uint32 degree(const GMap3& m, GMap3::Vertex v)
+{
+	DartMarkerStore<GMap3> seen(m);
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, v, [&](Dart d) {
+		if (seen.is_marked(d))
+			return;
+		++n;
+		Dart x = d;
+		do
+		{
+			seen.mark(x);
+			x = beta2(m, x);
+			seen.mark(x);
+			x = beta3(m, x);
+		} while (x != d);
+	});
+	return n;
+}
+/// Number of faces incident to e in a 3-G-map. O(degree): each face has four
+/// darts in the edge (two ends, two sides).
+inline uint32 degree(const GMap3& m, GMap3::Edge e)
+{
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, e, [&](Dart) { ++n; });
+	return n / 4;
+}
+/// Number of non-boundary volumes incident to f (1 or 2). O(1).
+inline uint32 degree(const GMap3& m, GMap3::Face f)
+{
+	return uint32(!is_boundary(m, f.dart)) + uint32(!is_boundary(m, beta3(m, f.dart)));
+}
+/// Number of edges of face f of a 3-G-map. O(codegree).
+inline uint32 codegree(const GMap3& m, GMap3::Face f)
+{
+	return codegree(static_cast<const GMap2&>(m), GMap2::Face(f.dart));
+}
+/// Number of faces of volume w. O(number of darts of w), with a dart mark.
+inline uint32 codegree(const GMap3& m, GMap3::Volume w)
+{
+	DartMarkerStore<GMap3> seen(m);
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, w, [&](Dart d) {
+		if (!seen.is_marked(d))
+		{
+			++n;
+			seen.mark_orbit(GMap3::Face2(d));
+		}
+	});
+	return n;
+}
+
 /// True when vertex v touches a boundary face. O(1) on a map without
 /// boundary, else O(degree).
 inline bool is_incident_to_boundary(const GMap2& m, GMap2::Vertex v)
