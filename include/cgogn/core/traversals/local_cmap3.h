@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/traversals/local_cell_set.h>
 #include <cgogn/core/traversals/local_cmap2.h>
 
@@ -53,7 +54,9 @@ void foreach_cell_around_vertex3(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 }
 
 // The vertices adjacent to v through an edge are the vertices at phi1 of the
-// darts of v (each dart leaves v). On a map with indexed vertices they are
+// darts of v (each dart leaves v); in a 3-G-map, at beta0 of its darts (the
+// other end of the dart's edge), the relation held where a 3-map holds phi1,
+// so the same code serves both. On a map with indexed vertices they are
 // told apart by their line, with a mark on the vertex container (a bit per
 // vertex, which stays in cache) instead of marking the darts of every edge
 // around v (a cycle of ~10 darts per edge in a tet mesh): one flood of the
@@ -61,12 +64,13 @@ void foreach_cell_around_vertex3(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 // collected first and reported after, so that a vertex without a line (made
 // with set_indices = false) can still fall back to the dart walk: returns
 // false then, having reported nothing.
-template <typename FUNC>
-bool foreach_adjacent_vertex_by_line(const CMap3& m, CMap3::Vertex v, const FUNC& f)
+template <typename MAP, typename FUNC>
+bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const FUNC& f)
 {
-	using Neighbour = LocatedCell<CMap3::Vertex::ORBIT>;
-	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(CMap3::Vertex::ORBIT)];
-	const auto line_of = detail::state_of(m).cell_index[orbit_index(CMap3::Vertex::ORBIT)]->view();
+	static_assert(std::is_same_v<MAP, CMap3> || std::is_same_v<MAP, GMap3>);
+	using Neighbour = LocatedCell<MAP::Vertex::ORBIT>;
+	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(MAP::Vertex::ORBIT)];
+	const auto line_of = detail::state_of(m).cell_index[orbit_index(MAP::Vertex::ORBIT)]->view();
 	// up to 64 neighbours on the stack (a tet mesh vertex has ~14), more on the heap
 	std::array<Neighbour, 64> few;
 	std::vector<Neighbour> many;

@@ -22,10 +22,12 @@ namespace detail
 
 /// Calls f on x, g(x), g(g(x)), ... until back at d, with g = beta_b o beta_a:
 /// one dart per corner around a vertex (a = 1, b = 2), one per edge around a
-/// face (a = 0, b = 1). Returns false when f stopped.
-template <uint32 A, uint32 B, typename FUNC>
-bool foreach_step_of(const GMap2& m, Dart d, const FUNC& f)
+/// face (a = 0, b = 1), one per face around an edge of a 3-G-map (a = 2,
+/// b = 3). Returns false when f stopped.
+template <uint32 A, uint32 B, typename MAP, typename FUNC>
+bool foreach_step_of(const MAP& m, Dart d, const FUNC& f)
 {
+	static_assert(std::derived_from<MAP, GMap2> && A <= MAP::dimension && B <= MAP::dimension);
 	const auto a_of = detail::state_of(m).beta[A]->view(); // see LineStorage::View
 	const auto b_of = detail::state_of(m).beta[B]->view();
 	Dart x = d;
