@@ -34,6 +34,7 @@
 #include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/traversals/local_cmap3.h>
 #include <cgogn/core/traversals/local_gmap2.h>
+#include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/core/traversals/local_views.h>
 #include <cgogn/core/traversals/parallel.h>
 #include <cgogn/core/utils/error.h>

@@ -4,6 +4,7 @@
 #include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/traversals/local_cmap3.h>
 #include <cgogn/core/traversals/local_gmap2.h>
+#include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/core/traversals/parallel.h>
 
 #include <memory>
@@ -119,13 +120,13 @@ constexpr bool incidence_cache_supported()
 /// Memory: 4 bytes per FROM container line + 4 bytes per stored neighbour
 /// (8 with the lines), and 60 KB per map holding any cache (the lookup array
 /// of IncidenceTables).
-/// Supported: every local traversal of 2- and 3-maps and 2-G-maps but the O(1) ones
-/// (2-D edge -> vertex/face/volume, 3-D edge -> vertex, face -> volume, * ->
-/// connected component of a 2-map).
+/// Supported: every local traversal of 2- and 3-maps and of 2- and 3-G-maps
+/// but the O(1) ones (2-D edge -> vertex/face/volume, 3-D edge -> vertex,
+/// face -> volume, * -> connected component of a 2-map).
 template <typename MAP, typename FROM, typename TO, typename THROUGH = void>
 class IncidenceCache
 {
-	static_assert(MapType<MAP>, "IncidenceCache<MAP, ...>: MAP must be a map type (CMap2, CMap3, GMap2)");
+	static_assert(MapType<MAP>, "IncidenceCache<MAP, ...>: MAP must be a map type (CMap2, CMap3, GMap2, GMap3)");
 	static_assert(has_cell_type_v<MAP, FROM> && has_cell_type_v<MAP, TO>,
 				  "IncidenceCache: FROM and TO must be cell types of MAP");
 	static_assert(detail::incidence_cache_supported<MAP, FROM, TO, THROUGH>(),
