@@ -8,6 +8,7 @@
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_gmap3.h>
 
 #include <algorithm>
 #include <array>
@@ -102,24 +103,13 @@ inline bool is_tetra(const GMap3& m, Dart w)
 	return tet && darts == 24;
 }
 
-/// A dart of each volume around v (boundary volumes included). O(size of the
+/// A dart of each volume around v (boundary volumes skipped). O(size of the
 /// star of v).
-inline std::vector<Dart> volumes_around(const CMap3& m, CMap3::Vertex v)
+template <typename MAP>
+std::vector<Dart> volumes_around(const MAP& m, typename mesh_traits<MAP>::Vertex v)
 {
 	std::vector<Dart> w;
-	foreach_incident_volume(m, v, [&](CMap3::Volume x) { w.push_back(x.dart); });
-	return w;
-}
-inline std::vector<Dart> volumes_around(const GMap3& m, GMap3::Vertex v)
-{
-	std::vector<Dart> w;
-	DartMarkerStore<GMap3> seen(m);
-	foreach_dart_of_orbit(m, v, [&](Dart d) {
-		if (seen.is_marked(d) || is_boundary(m, d))
-			return;
-		w.push_back(d);
-		seen.mark_orbit(GMap3::Volume(d));
-	});
+	foreach_incident_volume(m, v, [&](typename mesh_traits<MAP>::Volume x) { w.push_back(x.dart); });
 	return w;
 }
 

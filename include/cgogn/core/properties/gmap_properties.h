@@ -3,6 +3,7 @@
 
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_gmap3.h>
 
 namespace cgogn
 {
@@ -31,25 +32,11 @@ inline uint32 codegree(const GMap2& m, GMap2::Face f)
 	return n / 2;
 }
 
-/// Number of edges incident to v in a 3-G-map. O(size of the vertex orbit),
-/// with a dart mark: the darts of one edge at v are linked by beta2 and beta3.
+/// Number of edges incident to v in a 3-G-map. O(size of the vertex orbit).
 inline uint32 degree(const GMap3& m, GMap3::Vertex v)
 {
-	DartMarkerStore<GMap3> seen(m);
 	uint32 n = 0;
-	foreach_dart_of_orbit(m, v, [&](Dart d) {
-		if (seen.is_marked(d))
-			return;
-		++n;
-		Dart x = d;
-		do
-		{
-			seen.mark(x);
-			x = beta2(m, x);
-			seen.mark(x);
-			x = beta3(m, x);
-		} while (x != d);
-	});
+	foreach_incident_edge(m, v, [&](GMap3::Edge) { ++n; });
 	return n;
 }
 /// Number of faces incident to e in a 3-G-map. O(degree): each face has four
@@ -70,18 +57,11 @@ inline uint32 codegree(const GMap3& m, GMap3::Face f)
 {
 	return codegree(static_cast<const GMap2&>(m), GMap2::Face(f.dart));
 }
-/// Number of faces of volume w. O(number of darts of w), with a dart mark.
+/// Number of faces of volume w. O(number of darts of w).
 inline uint32 codegree(const GMap3& m, GMap3::Volume w)
 {
-	DartMarkerStore<GMap3> seen(m);
 	uint32 n = 0;
-	foreach_dart_of_orbit(m, w, [&](Dart d) {
-		if (!seen.is_marked(d))
-		{
-			++n;
-			seen.mark_orbit(GMap3::Face2(d));
-		}
-	});
+	foreach_incident_face(m, w, [&](GMap3::Face) { ++n; });
 	return n;
 }
 
