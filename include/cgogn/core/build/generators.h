@@ -74,5 +74,9 @@ inline BuildReport build_volume(CMap3& m, const VolumeSoup& s)
 {
 	return build_volume(m, s.nb_vertices, s.cell_sizes, s.cell_vertices);
 }
+inline BuildReport build_volume(GMap3& m, const VolumeSoup& s)
+{
+	return build_volume(m, s.nb_vertices, s.cell_sizes, s.cell_vertices);
+}
 
 } // namespace cgogn

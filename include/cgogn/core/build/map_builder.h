@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 
 #include <span>
 #include <utility>
@@ -47,7 +48,9 @@ struct BuildReport
 	/// False when the faces cannot be oriented consistently, whatever faces
 	/// are turned over (a Möbius strip, a Klein bottle): only a GMap2 keeps
 	/// such a surface whole. Judged on the faces glued as the GMap2 builder
-	/// glues them (see soup_orientation).
+	/// glues them (see soup_orientation). For volumes, the GMap3 builder
+	/// tells whether the cells it glued can be oriented consistently (a
+	/// solid Klein bottle cannot); the CMap3 builder leaves it true.
 	bool orientable = true;
 };
 
@@ -93,6 +96,21 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 /// boundary volumes. Vertices are indexed as for build_surface. Cells of other
 /// sizes or with out-of-range ids are skipped and counted. O(total size).
 BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
+						 std::span<const uint32> cell_vertices);
+
+/// Builds closed 3-G-map volumes from a list of cells and appends them to m,
+/// as build_volume for a CMap3 does (same cells and vertex orders, same
+/// report), with one difference: two cells sharing a face are glued whatever
+/// the direction each lists it in, so a cell given in the opposite
+/// orientation (a tetrahedron with two vertices swapped) is glued to its
+/// neighbours, and a mesh that cannot be oriented is kept whole
+/// (BuildReport::orientable tells). A face of n vertices has 2n darts; a
+/// cell's darts are consecutive (the cells in their order, the boundary
+/// after them). Faces shared by more than two cells are glued two by two in
+/// the order of the cells, the face left over closed by the boundary
+/// (nb_nonmanifold_faces); non-manifold vertices are split. The result has
+/// twice the darts of the CMap3 of the same cells. O(total size x log).
+BuildReport build_volume(GMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
 						 std::span<const uint32> cell_vertices);
 
 } // namespace cgogn

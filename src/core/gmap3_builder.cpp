@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: MIT
+// The cell-list builder of 3-G-maps: each cell as a closed 2-G-map, then
+// beta3 gluing of the faces shared by two cells, then the boundary volumes
+// that close the map.
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/map/indexing.h>
+#include <cgogn/core/map/orbits.h>
+#include <cgogn/core/marking/marker.h>
+
+#include "builder_common.h"
+#include "cmap3_build.h"
+#include "gmap3_close.h"
+#include "gmap_darts.h"
+#include "index_lines.h"
+
+#include <algorithm>
+#include <array>
+
+namespace cgogn
+{
+
+namespace
+{
+
+// A face of a built cell: its 2k darts are darts[first .. first + 2k), the
+// dart at the start of each edge side followed by the dart at its end.
+// `key` is its cycle of soup vertices from the smallest one, towards the
+// smaller of its two neighbours (padded with INVALID_INDEX): two faces with
+// the same key have the same vertices in the same cyclic order, up to the
+// direction; `forward` tells whether that direction is the face's own.
+struct CellFace
+{
+	std::array<uint32, 4> key;
+	uint32 first;
+	uint32 size;
+	bool forward;
+};
+
+CellFace make_face(const std::vector<uint32>& fv, uint32 first)
+{
+	const uint32 k = uint32(fv.size());
+	const uint32 p = uint32(std::min_element(fv.begin(), fv.end()) - fv.begin());
+	const bool forward = fv[(p + 1) % k] < fv[(p + k - 1) % k];
+	CellFace f{{INVALID_INDEX, INVALID_INDEX, INVALID_INDEX, INVALID_INDEX}, first, k, forward};
+	for (uint32 j = 0; j < k; ++j)
+		f.key[j] = fv[forward ? (p + j) % k : (p + k - j) % k];
+	return f;
+}
+
+// Whether the darts given can be coloured in two so that every beta joins
+// two colours (see is_orientable): the darts must be whole components.
+bool orientable(const GMap3& m, const std::vector<Dart>& darts)
+{
+	DartMarker<GMap3> seen(m), black(m);
+	std::vector<Dart> work;
+	for (Dart start : darts)
+	{
+		if (seen.is_marked(start))
+			continue;
+		seen.mark(start);
+		black.mark(start);
+		work.assign(1, start);
+		while (!work.empty())
+		{
+			const Dart d = work.back();
+			work.pop_back();
+			const bool d_black = black.is_marked(d);
+			for (const Dart e : {beta0(m, d), beta1(m, d), beta2(m, d), beta3(m, d)})
+			{
+				if (!seen.is_marked(e))
+				{
+					seen.mark(e);
+					if (!d_black)
+						black.mark(e);
+					work.push_back(e);
+				}
+				else if (black.is_marked(e) == d_black)
+					return false;
+			}
+		}
+	}
+	return true;
+}
+
+} // namespace
+
+BuildReport build_volume(GMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
+						 std::span<const uint32> cell_vertices)
+{
+	BuildReport report;
+	report.nb_cells_read = uint32(cell_sizes.size());
+
+	if (!is_indexed<GMap3::Vertex>(m))
+		index_cells<GMap3::Vertex>(m);
+	AttributeArray<uint32>& vidx = *detail::state_of(m).cell_index[orbit_index(GMap3::Vertex::ORBIT)];
+	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(GMap3::Vertex::ORBIT)];
+	const uint32 offset = vertices.new_lines_at_end(nb_vertices);
+	report.vertex_offset = offset;
+	const auto soup = [&](Dart d) { return vidx[d.index] - offset; };
+
+	// 1. each cell as a closed 2-G-map: 2n darts per face of n vertices
+	// (beta0 between the two ends of an edge side, beta1 between the two
+	// sides of a corner), beta2 between the faces of the cell along each edge,
+	// dart at a vertex to dart at the same vertex. A cell's darts are added
+	// consecutively (the io layer predicts the first dart of each cell).
+	std::vector<Dart> darts;
+	std::vector<CellFace> faces;
+	std::vector<uint32> scratch, fv;
+	{
+		std::size_t total = 0;
+		for (uint32 n : cell_sizes)
+			total += n;
+		detail::reserve_darts(m, 6 * std::min(total, cell_vertices.size()));
+	}
+	std::size_t first = 0;
+	for (uint32 n : cell_sizes)
+	{
+		if (first + n > cell_vertices.size())
+		{
+			++report.nb_cells_invalid;
+			first = cell_vertices.size();
+			continue;
+		}
+		const std::span<const uint32> cv = cell_vertices.subspan(first, n);
+		first += n;
+		const detail::FaceList* cell = detail::cell_faces(n);
+		if (cell == nullptr || std::any_of(cv.begin(), cv.end(), [&](uint32 v) { return v >= nb_vertices; }))
+		{
+			++report.nb_cells_invalid;
+			continue;
+		}
+		if (detail::has_repeated_vertex(cv, scratch))
+		{
+			++report.nb_cells_degenerate;
+			continue;
+		}
+		// the edge sides waiting for the other face of their edge, by their
+		// two local vertices (fewer than 8), with the local vertex of their start
+		std::array<std::pair<Dart, uint32>, 64> waiting;
+		waiting.fill({Dart(), 0});
+		for (const auto& f : *cell)
+		{
+			const uint32 k = uint32(f.size());
+			const std::size_t face_start = darts.size();
+			fv.clear();
+			for (uint32 i = 0; i < k; ++i)
+			{
+				const uint32 u = f[i], w = f[(i + 1) % k];
+				const Dart a = detail::add_dart(m);
+				const Dart b = detail::add_dart(m);
+				vidx[a.index] = offset + cv[u];
+				vidx[b.index] = offset + cv[w];
+				beta_sew<0>(m, a, b);
+				if (i > 0)
+					beta_sew<1>(m, darts.back(), a);
+				darts.push_back(a);
+				darts.push_back(b);
+				fv.push_back(cv[u]);
+				auto& slot = waiting[std::min(u, w) * 8 + std::max(u, w)];
+				if (!slot.first.is_valid())
+					slot = {a, u};
+				else
+				{
+					const Dart o = slot.first;
+					beta_sew<2>(m, a, slot.second == u ? o : beta0(m, o));
+					beta_sew<2>(m, b, slot.second == u ? beta0(m, o) : o);
+				}
+			}
+			beta_sew<1>(m, darts.back(), darts[face_start]);
+			faces.push_back(make_face(fv, uint32(face_start)));
+		}
+		++report.nb_cells_built;
+	}
+
+	// 2. glue the faces shared by two cells: the dart at vertex a of edge
+	// {a, b} of one face to the dart at vertex a of edge {a, b} of the other,
+	// whatever the direction in which each cell lists the face. Among the
+	// faces of the same vertices, each is glued to the first one after it
+	// listing them in the other direction (a cell on the other side, as the
+	// CMap3 builder sews), then the others two by two in the order of the
+	// cells. A face left alone in a group of three or more is non-manifold:
+	// it is closed by the boundary.
+	std::vector<uint32> order(faces.size());
+	for (uint32 i = 0; i < uint32(order.size()); ++i)
+		order[i] = i;
+	std::sort(order.begin(), order.end(),
+			  [&](uint32 x, uint32 y) { return faces[x].key != faces[y].key ? faces[x].key < faces[y].key : x < y; });
+	bool glued_same_way = false;
+	auto glue = [&](const CellFace& f, const CellFace& g) {
+		glued_same_way = glued_same_way || f.forward == g.forward;
+		for (uint32 i = 0; i < 2 * f.size; ++i)
+		{
+			const Dart x = darts[f.first + i];
+			const uint32 v = soup(x), w = soup(beta0(m, x));
+			for (uint32 j = 0; j < 2 * g.size; ++j)
+			{
+				const Dart y = darts[g.first + j];
+				if (soup(y) == v && soup(beta0(m, y)) == w)
+				{
+					beta_sew<3>(m, x, y);
+					break;
+				}
+			}
+		}
+	};
+	std::vector<uint8> paired;
+	for (std::size_t i = 0; i < order.size();)
+	{
+		std::size_t j = i + 1;
+		while (j < order.size() && faces[order[j]].key == faces[order[i]].key)
+			++j;
+		if (j - i == 2)
+			glue(faces[order[i]], faces[order[i + 1]]);
+		else if (j - i > 2)
+		{
+			paired.assign(j - i, 0);
+			for (bool opposite : {true, false})
+				for (std::size_t p = 0; p < j - i; ++p)
+					for (std::size_t q = p + 1; q < j - i && !paired[p]; ++q)
+						if (!paired[q] && (faces[order[i + p]].forward != faces[order[i + q]].forward) == opposite)
+						{
+							glue(faces[order[i + p]], faces[order[i + q]]);
+							paired[p] = paired[q] = 1;
+						}
+			report.nb_nonmanifold_faces += uint32((j - i) % 2);
+		}
+		i = j;
+	}
+
+	// 3. close: boundary volumes mirror the free faces
+	std::vector<Dart> boundary_darts;
+	detail::close_beta3_holes(m, darts, boundary_darts);
+	{
+		DartMarker<GMap3> seen(m);
+		for (Dart b : boundary_darts)
+			if (!seen.is_marked(b))
+			{
+				seen.mark_orbit(GMap3::Volume(b));
+				++report.nb_boundary_cells;
+			}
+	}
+	darts.insert(darts.end(), boundary_darts.begin(), boundary_darts.end());
+	// the cells listed consistently (every shared face in opposite
+	// directions) orient the map; otherwise a two-colouring tells
+	if (glued_same_way)
+		report.orientable = orientable(m, darts);
+
+	// 4. vertex lines, split of non-manifold vertices
+	detail::assign_vertex_lines<GMap3::Vertex>(m, darts, vertices, vidx, offset, nb_vertices, report);
+
+	detail::index_new_darts(m, darts);
+	detail::release_idle_marks(m);
+	return report;
+}
+
+} // namespace cgogn

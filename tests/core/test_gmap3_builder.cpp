@@ -1,0 +1,336 @@
+// The cell-list builder of 3-G-maps: the same cells as the CMap3 builder
+// (and as to_gmap of its result) on every mesh the CMap3 builder builds
+// whole, cells listed in the opposite orientation glued, the same report on
+// bad input, and the meshes no 3-map can hold.
+#include <cgogn/cgogn.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace cgogn;
+
+namespace
+{
+
+struct Counts
+{
+	uint32 darts, v, e, f, w, cc, boundary;
+	int64 chi;
+	bool operator==(const Counts&) const = default;
+};
+
+std::ostream& operator<<(std::ostream& os, const Counts& c)
+{
+	return os << "{darts " << c.darts << ", V " << c.v << ", E " << c.e << ", F " << c.f << ", W " << c.w << ", CC "
+			  << c.cc << ", boundary " << c.boundary << ", chi " << c.chi << "}";
+}
+
+template <typename MAP>
+Counts counts(const MAP& m)
+{
+	using T = mesh_traits<MAP>;
+	return {nb_darts(m),
+			nb_cells<typename T::Vertex>(m),
+			nb_cells<typename T::Edge>(m),
+			nb_cells<typename T::Face>(m),
+			nb_cells<typename T::Volume>(m),
+			nb_cells<typename T::CC>(m),
+			nb_boundary_components(m),
+			euler_characteristic(m)};
+}
+
+// The same counts with the darts of the G-map halved.
+Counts halved(Counts c)
+{
+	c.darts /= 2;
+	return c;
+}
+
+void expect_same_report(const BuildReport& g, const BuildReport& c)
+{
+	EXPECT_EQ(g.vertex_offset, c.vertex_offset);
+	EXPECT_EQ(g.nb_cells_read, c.nb_cells_read);
+	EXPECT_EQ(g.nb_cells_built, c.nb_cells_built);
+	EXPECT_EQ(g.nb_cells_degenerate, c.nb_cells_degenerate);
+	EXPECT_EQ(g.nb_cells_invalid, c.nb_cells_invalid);
+	EXPECT_EQ(g.nb_isolated_vertices, c.nb_isolated_vertices);
+	EXPECT_EQ(g.nb_nonmanifold_edges, c.nb_nonmanifold_edges);
+	EXPECT_EQ(g.nb_nonmanifold_faces, c.nb_nonmanifold_faces);
+	EXPECT_EQ(g.nb_boundary_cells, c.nb_boundary_cells);
+	EXPECT_EQ(g.nb_nonmanifold_vertices, c.nb_nonmanifold_vertices);
+	EXPECT_EQ(g.split_vertices.size(), c.split_vertices.size());
+	EXPECT_EQ(g.orientable, c.orientable);
+}
+
+// A 2x2x1 hex grid with a pyramid and a prism on top.
+VolumeSoup mixed_soup()
+{
+	VolumeSoup s = hex_grid_soup(2, 2, 1);
+	const uint32 base = s.nb_vertices;
+	auto id = [](uint32 i, uint32 j, uint32 k) { return (k * 3 + j) * 3 + i; };
+	s.cell_sizes.push_back(5);
+	for (uint32 v : {id(0, 0, 1), id(1, 0, 1), id(1, 1, 1), id(0, 1, 1), base})
+		s.cell_vertices.push_back(v);
+	s.cell_sizes.push_back(6);
+	for (uint32 v : {id(1, 0, 1), id(2, 0, 1), id(2, 1, 1), base + 1, base + 2, base + 3})
+		s.cell_vertices.push_back(v);
+	s.nb_vertices = base + 4;
+	s.positions.resize(s.nb_vertices);
+	return s;
+}
+
+// Two soups side by side, the second's vertices numbered after the first's.
+VolumeSoup side_by_side(const VolumeSoup& a, const VolumeSoup& b)
+{
+	VolumeSoup s = a;
+	s.cell_sizes.insert(s.cell_sizes.end(), b.cell_sizes.begin(), b.cell_sizes.end());
+	for (uint32 v : b.cell_vertices)
+		s.cell_vertices.push_back(a.nb_vertices + v);
+	s.nb_vertices += b.nb_vertices;
+	s.positions.insert(s.positions.end(), b.positions.begin(), b.positions.end());
+	return s;
+}
+
+std::vector<std::pair<std::string, VolumeSoup>> soups()
+{
+	return {{"tet grid 1", tet_grid_soup(1, 1, 1)},
+			{"tet grid 3x2x2", tet_grid_soup(3, 2, 2)},
+			{"hex grid 1", hex_grid_soup(1, 1, 1)},
+			{"hex grid 2x3x2", hex_grid_soup(2, 3, 2)},
+			{"mixed", mixed_soup()},
+			{"tets and hexes apart", side_by_side(tet_grid_soup(2, 1, 1), hex_grid_soup(1, 2, 1))}};
+}
+
+// A ring of n hexahedra whose last one is glued back to the first through a
+// reflection of the square section: the solid Klein bottle, whose boundary
+// is a Klein bottle. No 3-map holds it whole.
+VolumeSoup solid_klein_bottle(uint32 n)
+{
+	VolumeSoup s;
+	s.nb_vertices = 4 * n;
+	s.positions.resize(s.nb_vertices);
+	auto v = [&](uint32 ring, uint32 corner) { return 4 * (ring % n) + corner; };
+	for (uint32 i = 0; i < n; ++i)
+	{
+		s.cell_sizes.push_back(8);
+		for (uint32 c = 0; c < 4; ++c)
+			s.cell_vertices.push_back(v(i, c));
+		const bool last = i + 1 == n;
+		for (uint32 c : {0u, 1u, 2u, 3u})
+			s.cell_vertices.push_back(v(i + 1, last ? c ^ 1u : c));
+	}
+	return s;
+}
+
+} // namespace
+
+TEST(GMap3Builder, SameCellsAsTheCMap3BuilderAndToGmap)
+{
+	for (const auto& [name, s] : soups())
+	{
+		SCOPED_TRACE(name);
+		CMap3 c;
+		const BuildReport rc = build_volume(c, s);
+		GMap3 g;
+		const BuildReport rg = build_volume(g, s);
+		expect_same_report(rg, rc);
+		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+		EXPECT_TRUE(is_orientable(g));
+		EXPECT_EQ(nb_darts(g), 2 * nb_darts(c));
+		EXPECT_EQ(halved(counts(g)), counts(c));
+		EXPECT_EQ(counts(g), counts(to_gmap(c)));
+		EXPECT_EQ(nb_cells<GMap3::Face2>(g), nb_cells<CMap3::Face2>(c));
+		EXPECT_EQ(nb_cells<GMap3::Edge2>(g), nb_cells<CMap3::Edge2>(c));
+		EXPECT_EQ(nb_cells<GMap3::Vertex2>(g), nb_cells<CMap3::Vertex2>(c));
+		// and back: the 3-map of the G-map is the 3-map built
+		const CMap3 back = to_cmap(g);
+		EXPECT_TRUE(check_integrity(back).ok());
+		EXPECT_EQ(counts(back), counts(c));
+	}
+}
+
+TEST(GMap3Builder, DartsOfACellAreConsecutiveFromItsFirstVertex)
+{
+	const VolumeSoup s = mixed_soup();
+	GMap3 g;
+	build_volume(g, s);
+	// cell after cell, the darts of a cell, the first one at one of its vertices
+	uint32 first = 0, k = 0;
+	for (uint32 n : s.cell_sizes)
+	{
+		const Dart d(first);
+		EXPECT_FALSE(is_boundary(g, d));
+		const auto cv = s.cell_vertices.begin() + k;
+		EXPECT_NE(std::find(cv, cv + n, index_of(g, GMap3::Vertex(d))), cv + n);
+		uint32 size = 0;
+		uint32 last = first;
+		foreach_dart_of_orbit(g, GMap3::Volume(d), [&](Dart x) {
+			EXPECT_GE(x.index, first);
+			last = std::max(last, x.index);
+			++size;
+		});
+		EXPECT_EQ(last, first + size - 1);
+		first += size;
+		k += n;
+	}
+}
+
+TEST(GMap3Builder, CellsListedInTheOppositeOrientationAreGlued)
+{
+	const VolumeSoup s = tet_grid_soup(2, 2, 2);
+	CMap3 reference;
+	build_volume(reference, s);
+	for (uint32 cell : {0u, 5u, 17u, 47u})
+	{
+		VolumeSoup t = s;
+		std::swap(t.cell_vertices[4 * cell], t.cell_vertices[4 * cell + 1]);
+		GMap3 g;
+		const BuildReport r = build_volume(g, t);
+		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+		EXPECT_EQ(halved(counts(g)), counts(reference)) << "cell " << cell;
+		EXPECT_TRUE(r.orientable);
+		EXPECT_TRUE(is_orientable(g));
+		EXPECT_EQ(r.nb_nonmanifold_faces, 0u);
+		// the 3-map builder cannot sew the turned cell to its neighbours
+		CMap3 c;
+		build_volume(c, t);
+		EXPECT_GT(nb_cells<CMap3::Face>(c), nb_cells<CMap3::Face>(reference));
+	}
+	// a hexahedron turned over (bottom and top reversed) in a hex grid
+	const VolumeSoup h = hex_grid_soup(2, 2, 2);
+	CMap3 hc;
+	build_volume(hc, h);
+	VolumeSoup t = h;
+	std::swap(t.cell_vertices[8 * 3 + 1], t.cell_vertices[8 * 3 + 3]);
+	std::swap(t.cell_vertices[8 * 3 + 5], t.cell_vertices[8 * 3 + 7]);
+	GMap3 g;
+	build_volume(g, t);
+	EXPECT_TRUE(check_integrity(g).ok());
+	EXPECT_EQ(halved(counts(g)), counts(hc));
+}
+
+TEST(GMap3Builder, InvalidAndDegenerateCellsAreReportedAsForCMap3)
+{
+	VolumeSoup s = tet_grid_soup(1, 1, 1);
+	const uint32 nv = s.nb_vertices;
+	auto add = [&](std::vector<uint32> cell) {
+		s.cell_sizes.push_back(uint32(cell.size()));
+		s.cell_vertices.insert(s.cell_vertices.end(), cell.begin(), cell.end());
+	};
+	add({0, 1, 2, 3, 4, 5, 6});    // no such cell kind: invalid
+	add({0, 1, 2, nv});            // a vertex out of range: invalid
+	add({0, 1, 1, 3});             // a repeated vertex: degenerate
+	add({0, 1, 2, 3, 4, 5, 6, 6}); // degenerate hexahedron
+	s.cell_sizes.push_back(8);     // runs past the end: invalid
+	s.cell_vertices.push_back(0);
+	CMap3 c;
+	const BuildReport rc = build_volume(c, s);
+	GMap3 g;
+	const BuildReport rg = build_volume(g, s);
+	expect_same_report(rg, rc);
+	EXPECT_EQ(rg.nb_cells_invalid, 3u);
+	EXPECT_EQ(rg.nb_cells_degenerate, 2u);
+	EXPECT_EQ(rg.nb_cells_built, 6u);
+	EXPECT_TRUE(check_integrity(g).ok());
+	EXPECT_EQ(counts(g), counts(to_gmap(c)));
+
+	// nothing buildable: an empty map, every vertex isolated
+	GMap3 e;
+	const BuildReport re = build_volume(e, 3, std::vector<uint32>{4}, std::vector<uint32>{0, 1, 2, 7});
+	EXPECT_EQ(re.nb_cells_invalid, 1u);
+	EXPECT_EQ(re.nb_isolated_vertices, 3u);
+	EXPECT_EQ(nb_darts(e), 0u);
+	EXPECT_EQ(nb_cells<GMap3::Vertex>(e), 0u);
+}
+
+TEST(GMap3Builder, NonManifoldFacesAndVerticesAsForCMap3)
+{
+	// three tetrahedra on one triangle: one above it, two below, in every
+	// order; the one above is glued to a tetrahedron below, as in the CMap3
+	const std::vector<uint32> sizes = {4, 4, 4};
+	for (const std::vector<uint32>& ids : {std::vector<uint32>{0, 1, 2, 3, 0, 2, 1, 4, 0, 2, 1, 5},
+										   std::vector<uint32>{0, 2, 1, 4, 0, 2, 1, 5, 0, 1, 2, 3},
+										   std::vector<uint32>{0, 2, 1, 4, 0, 1, 2, 3, 0, 2, 1, 5}})
+	{
+		CMap3 c;
+		const BuildReport rc = build_volume(c, 6, sizes, ids);
+		GMap3 g;
+		const BuildReport rg = build_volume(g, 6, sizes, ids);
+		expect_same_report(rg, rc);
+		EXPECT_EQ(rg.nb_nonmanifold_faces, 1u);
+		EXPECT_TRUE(rg.orientable);
+		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+		EXPECT_EQ(counts(g), counts(to_gmap(c)));
+	}
+
+	// two tetrahedra sharing a vertex only, then an edge only
+	for (const std::vector<uint32>& two :
+		 {std::vector<uint32>{0, 1, 2, 3, 0, 4, 5, 6}, std::vector<uint32>{0, 1, 2, 3, 0, 1, 4, 5}})
+	{
+		CMap3 c2;
+		const BuildReport r2c = build_volume(c2, 7, std::vector<uint32>{4, 4}, two);
+		GMap3 g2;
+		const BuildReport r2g = build_volume(g2, 7, std::vector<uint32>{4, 4}, two);
+		expect_same_report(r2g, r2c);
+		EXPECT_EQ(r2g.split_vertices, r2c.split_vertices);
+		EXPECT_TRUE(check_integrity(g2).ok()) << check_integrity(g2).to_string();
+		EXPECT_EQ(counts(g2), counts(to_gmap(c2)));
+	}
+}
+
+TEST(GMap3Builder, AppendsWithAVertexOffset)
+{
+	const VolumeSoup s = hex_grid_soup(2, 1, 1);
+	GMap3 g;
+	const BuildReport r1 = build_volume(g, s);
+	const Counts one = counts(g);
+	const BuildReport r2 = build_volume(g, s);
+	EXPECT_EQ(r1.vertex_offset, 0u);
+	EXPECT_EQ(r2.vertex_offset, s.nb_vertices);
+	EXPECT_TRUE(check_integrity(g).ok());
+	const Counts two = counts(g);
+	EXPECT_EQ(two.darts, 2 * one.darts);
+	EXPECT_EQ(two.v, 2 * one.v);
+	EXPECT_EQ(two.w, 2 * one.w);
+	EXPECT_EQ(two.cc, 2 * one.cc);
+	// the second copy's vertices are the lines after the first's
+	foreach_dart(g, [&](Dart d) {
+		const uint32 line = index_of(g, GMap3::Vertex(d));
+		EXPECT_EQ(line >= s.nb_vertices, d.index >= one.darts);
+	});
+	// other indexed orbits get the new cells
+	GMap3 h;
+	index_cells<GMap3::Edge>(h);
+	index_cells<GMap3::Volume>(h);
+	build_volume(h, s);
+	EXPECT_TRUE(check_integrity(h).ok()) << check_integrity(h).to_string();
+	EXPECT_EQ(container_of<Orbit::BETA0_BETA2_BETA3>(h).nb_lines(), one.e);
+	EXPECT_EQ(container_of<Orbit::BETA0_BETA1_BETA2>(h).nb_lines(), one.w);
+}
+
+TEST(GMap3Builder, ASolidKleinBottleStaysWhole)
+{
+	const uint32 n = 5;
+	const VolumeSoup s = solid_klein_bottle(n);
+	GMap3 g;
+	const BuildReport r = build_volume(g, s);
+	EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+	EXPECT_FALSE(r.orientable);
+	EXPECT_FALSE(is_orientable(g));
+	EXPECT_EQ(r.nb_cells_built, n);
+	EXPECT_EQ(r.nb_nonmanifold_faces, 0u);
+	EXPECT_EQ(nb_cells<GMap3::Vertex>(g), 4 * n);
+	EXPECT_EQ(nb_cells<GMap3::Edge>(g), 8 * n);
+	EXPECT_EQ(nb_cells<GMap3::Face>(g), 5 * n);
+	EXPECT_EQ(nb_cells<GMap3::Volume>(g), n);
+	EXPECT_EQ(nb_boundary_components(g), 1u);
+	EXPECT_EQ(euler_characteristic(g), 0);
+	EXPECT_THROW(to_cmap(g), TopologyError);
+	// the 3-map builder leaves the twisted face open on both sides
+	CMap3 c;
+	build_volume(c, s);
+	EXPECT_EQ(nb_cells<CMap3::Face>(c), 5 * n + 1);
+}
