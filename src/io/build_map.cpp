@@ -120,21 +120,23 @@ private:
 };
 
 // The darts the builder gives a cell of `size` vertices: one per edge of a
-// CMap2 face, two per edge of a GMap2 face, those of a CMap3 volume's faces.
+// CMap2 face, two per edge of a GMap2 face, those of a CMap3 volume's faces,
+// twice those for a GMap3.
 uint32 darts_of_cell(uint32 size, uint32 dimension, bool gmap)
 {
 	if (dimension == 2)
 		return gmap ? 2 * size : size;
+	const uint32 factor = gmap ? 2 : 1;
 	switch (size)
 	{
 	case 4:
-		return 12;
+		return 12 * factor;
 	case 5:
-		return 16;
+		return 16 * factor;
 	case 6:
-		return 18;
+		return 18 * factor;
 	case 8:
-		return 24;
+		return 24 * factor;
 	default:
 		return 0;
 	}
@@ -151,7 +153,9 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	// 1. everything that can fail, before touching m
 	check_names<Vertex, Top>(m, d, path);
 	if (uint64(d.nb_vertices()) + container_of<Vertex::ORBIT>(m).end_index() >= INVALID_INDEX ||
-		uint64(d.cell_vertices.size()) * 6 + container_of<Orbit::DART>(m).end_index() >= INVALID_INDEX)
+		uint64(d.cell_vertices.size()) * (is_gmap_v<MAP> && dim == 3 ? 12 : 6) +
+				container_of<Orbit::DART>(m).end_index() >=
+			INVALID_INDEX)
 		throw Error(path, "the mesh is too large for 32-bit indices");
 
 	// which cells the builder will build (same rules as build_surface/build_volume)
@@ -263,6 +267,10 @@ LoadReport build_map(GMap2& m, const MeshData& d, const std::string& path)
 	return build(m, d, path);
 }
 LoadReport build_map(CMap3& m, const MeshData& d, const std::string& path)
+{
+	return build(m, d, path);
+}
+LoadReport build_map(GMap3& m, const MeshData& d, const std::string& path)
 {
 	return build(m, d, path);
 }

@@ -106,44 +106,73 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 	return d;
 }
 
-} // namespace
-
-MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes)
+// The volumes of a 3-map, or of a 3-G-map: each volume in the orientation
+// of the dart it is reached by (on a G-map, the darts reached from it by
+// phi1 = beta1 o beta0 and phi2 = beta0 o beta2), classified by its faces and
+// written bottom face first (reversed), then the vertices above the bottom.
+template <typename MAP>
+MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 {
-	return extract_faces(m, path, attributes);
-}
-
-MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes)
-{
-	return extract_faces(m, path, attributes);
-}
-
-MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes)
-{
-	using Vertex = CMap3::Vertex;
-	using Volume = CMap3::Volume;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Volume = typename mesh_traits<MAP>::Volume;
 	MeshData d;
 	const std::vector<uint32> id = number_vertices(m, d, path, attributes);
 	auto origin = [&](Dart x) { return id[index_of(m, Vertex(x))]; };
+	auto next = [&](Dart x) {
+		if constexpr (is_gmap_v<MAP>)
+			return beta1(m, beta0(m, x));
+		else
+			return phi1(m, x);
+	};
+	auto previous = [&](Dart x) {
+		if constexpr (is_gmap_v<MAP>)
+			return beta0(m, beta1(m, x));
+		else
+			return phi_1(m, x);
+	};
+	auto across = [&](Dart x) {
+		if constexpr (is_gmap_v<MAP>)
+			return beta0(m, beta2(m, x));
+		else
+			return phi2(m, x);
+	};
 	std::vector<uint32> volume_lines;
 	const bool volumes_indexed = is_indexed<Volume>(m);
-	DartMarker<CMap3> seen(m);
+	DartMarker<MAP> seen(m);
 	std::vector<std::pair<Dart, uint32>> faces; // (dart, degree) of one volume
+	std::vector<Dart> work;
 	foreach_cell(m, [&](Volume w) {
 		faces.clear();
-		foreach_dart_of_orbit(m, w, [&](Dart x) {
-			if (seen.is_marked(x))
-				return;
+		auto add_face = [&](Dart x) {
 			uint32 n = 0;
 			Dart it = x;
 			do
 			{
 				seen.mark(it);
 				++n;
-				it = phi1(m, it);
+				if constexpr (is_gmap_v<MAP>)
+					work.push_back(across(it));
+				it = next(it);
 			} while (it != x);
 			faces.emplace_back(x, n);
-		});
+		};
+		if constexpr (is_gmap_v<MAP>)
+		{
+			// the faces of the darts of w.dart's colour only
+			work.assign(1, w.dart);
+			while (!work.empty())
+			{
+				const Dart x = work.back();
+				work.pop_back();
+				if (!seen.is_marked(x))
+					add_face(x);
+			}
+		}
+		else
+			foreach_dart_of_orbit(m, w, [&](Dart x) {
+				if (!seen.is_marked(x))
+					add_face(x);
+			});
 		uint32 tri = 0, quad = 0;
 		for (const auto& f : faces)
 		{
@@ -179,17 +208,42 @@ MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes
 		{
 			x[i] = it;
 			d.cell_vertices.push_back(origin(it));
-			it = phi_1(m, it);
+			it = previous(it);
 		}
 		const uint32 tops = size == 4 || size == 5 ? 1 : bottom_degree;
 		for (uint32 i = 0; i < tops; ++i)
-			d.cell_vertices.push_back(origin(phi1(m, phi1(m, phi2(m, x[i])))));
+			d.cell_vertices.push_back(origin(next(next(across(x[i])))));
 		d.cell_sizes.push_back(size);
 		if (volumes_indexed)
 			volume_lines.push_back(index_of(m, w));
 	});
 	if (attributes && volumes_indexed)
 		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false);
+	return d;
+}
+
+} // namespace
+
+MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes)
+{
+	return extract_faces(m, path, attributes);
+}
+
+MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes)
+{
+	return extract_faces(m, path, attributes);
+}
+
+MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes)
+{
+	return extract_volumes(m, path, attributes);
+}
+
+MeshData extract_volume(const GMap3& m, const std::string& path, bool attributes)
+{
+	// a volume reached by a dart of the inner colour comes out turned over
+	MeshData d = extract_volumes(m, path, attributes);
+	orient_cells(d);
 	return d;
 }
 

@@ -24,6 +24,8 @@ std::string LoadReport::summary(const std::string& map_type) const
 			s += "the surface is not orientable: a CMap2 holds it cut along " +
 				 std::to_string(nb_orientation_conflicts) +
 				 " edge(s) whose two faces disagree on orientation; load it into a GMap2 to keep it whole\n";
+		else if (map_type == "GMap3")
+			s += "the volume mesh is not orientable\n";
 		else
 			s += "the surface is not orientable\n";
 	}

@@ -5,6 +5,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/io/options.h>
 
 #include "mesh_data.h"
@@ -21,6 +22,7 @@ namespace cgogn::io::detail
 LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path);
 LoadReport build_map(GMap2& m, const MeshData& d, const std::string& path);
 LoadReport build_map(CMap3& m, const MeshData& d, const std::string& path);
+LoadReport build_map(GMap3& m, const MeshData& d, const std::string& path);
 
 /// Turns over volume cells of negative orientation (tetrahedra by their signed
 /// volume; other cells by the side of the top relative to the bottom face's
@@ -31,9 +33,14 @@ uint32 orient_cells(MeshData& d);
 /// the builder's order) with positions and, when `attributes`, the double,
 /// Vec2 and Vec3 vertex and face/volume attributes. Throws io::Error (naming
 /// path) when there is no `position` or, for volumes, a volume is not a
-/// tetrahedron, pyramid, prism or hexahedron. O(size of m).
+/// tetrahedron, pyramid, prism or hexahedron. A volume of a GMap3 is read in
+/// the orientation of the dart it is reached by (a volume is a sphere: it can
+/// always be oriented), then turned over when that gives it a negative
+/// orientation (see orient_cells), so that every cell is written in the
+/// format's order whatever the orientation of the darts. O(size of m).
 MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes);
 MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes);
 MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes);
+MeshData extract_volume(const GMap3& m, const std::string& path, bool attributes);
 
 } // namespace cgogn::io::detail

@@ -27,9 +27,9 @@ std::string with_extension(const std::string& path, const char* ext)
 	const std::size_t dot = path.find_last_of('.');
 	return (dot == std::string::npos ? path : path.substr(0, dot)) + ext;
 }
-} // namespace
 
-LoadReport load_volume(CMap3& m, const std::string& path, const LoadOptions& options)
+template <typename MAP>
+LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& options)
 {
 	const Format f = resolve(options.format, path);
 	detail::MeshData d;
@@ -66,7 +66,8 @@ LoadReport load_volume(CMap3& m, const std::string& path, const LoadOptions& opt
 	return r;
 }
 
-void save_volume(const CMap3& m, const std::string& path, const SaveOptions& options)
+template <typename MAP>
+void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& options)
 {
 	const Format f = resolve(options.format, path);
 	const detail::MeshData d = detail::extract_volume(m, path, options.attributes);
@@ -96,6 +97,28 @@ void save_volume(const CMap3& m, const std::string& path, const SaveOptions& opt
 		break;
 	}
 	}
+}
+
+} // namespace
+
+LoadReport load_volume(CMap3& m, const std::string& path, const LoadOptions& options)
+{
+	return load_volume_into(m, path, options);
+}
+
+LoadReport load_volume(GMap3& m, const std::string& path, const LoadOptions& options)
+{
+	return load_volume_into(m, path, options);
+}
+
+void save_volume(const CMap3& m, const std::string& path, const SaveOptions& options)
+{
+	save_volume_of(m, path, options);
+}
+
+void save_volume(const GMap3& m, const std::string& path, const SaveOptions& options)
+{
+	save_volume_of(m, path, options);
 }
 
 } // namespace cgogn::io

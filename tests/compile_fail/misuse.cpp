@@ -13,11 +13,13 @@ void misuse()
 	CMap1 m1;
 	CMap2 m2;
 	CMap3 m3;
+	GMap3 g3;
 	const CMap2& c2 = m2;
 	auto pos2 = add_attribute<Vec3, CMap2::Vertex>(m2, "position");
 	auto pos3 = add_attribute<Vec3, CMap3::Vertex>(m3, "position");
 	auto area = add_attribute<double, CMap2::Face>(m2, "area");
 	(void)m1;
+	(void)g3;
 	(void)c2;
 	(void)pos3;
 	(void)area;
@@ -33,6 +35,7 @@ void misuse()
 	const Vec3& p = value(c2, pos2, CMap2::Vertex(Dart(0)));
 	(*pos2)[CMap2::Vertex(Dart(0))] = p;
 	(*area)[CMap2::Face(Dart(0))] = 1.0;
+	(void)io::load_volume(g3, "volume.mesh");
 #elif CASE(add_face_on_3map)
 	add_face(m3, 4); // would create darts without phi3
 #elif CASE(cut_edge_2d_on_3map)
@@ -49,6 +52,8 @@ void misuse()
 	modeling::triangulate_faces(m3, *pos3);
 #elif CASE(subdivision_on_3map)
 	modeling::loop_subdivision(m3, *pos3);
+#elif CASE(load_surface_on_gmap3)
+	io::load_surface(g3, "surface.off"); // a GMap3 is a GMap2: it would be read as a surface
 #elif CASE(value_on_const_map_is_read_only)
 	value(c2, area, CMap2::Face(Dart(0))) = 1.0;
 #elif CASE(attribute_indexed_by_other_orbit)

@@ -4,6 +4,8 @@
 // bad input, and the meshes no 3-map can hold.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -149,6 +151,25 @@ TEST(GMap3Builder, SameCellsAsTheCMap3BuilderAndToGmap)
 		const CMap3 back = to_cmap(g);
 		EXPECT_TRUE(check_integrity(back).ok());
 		EXPECT_EQ(counts(back), counts(c));
+	}
+}
+
+TEST(GMap3Builder, VolumeFilesGiveTheCellsOfTheCMap3)
+{
+	for (const char* file : {"volume/armadillo_tet_4k.mesh", "volume/liver_hex_624.mesh", "volume/elephant_tet_8k.mesh",
+							 "volume/hex_dominant_11k.mesh"})
+	{
+		SCOPED_TRACE(file);
+		const std::string path = std::string(CGOGN_DATA_DIR) + "/" + file;
+		CMap3 c;
+		const io::LoadReport rc = io::load_volume(c, path);
+		GMap3 g;
+		const io::LoadReport rg = io::load_volume(g, path);
+		expect_same_report(rg.build, rc.build);
+		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+		EXPECT_TRUE(is_orientable(g));
+		EXPECT_EQ(halved(counts(g)), counts(c));
+		EXPECT_EQ(counts(g), counts(to_gmap(c)));
 	}
 }
 

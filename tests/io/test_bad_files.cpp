@@ -137,12 +137,18 @@ TEST_P(BadFile, ThrowsAndLeavesTheMapUntouched)
 		CMap3 m;
 		build_with_positions(m, tet_grid_soup(1, 1, 1));
 		check(m);
+		GMap3 g;
+		build_with_positions(g, tet_grid_soup(1, 1, 1));
+		check(g);
 	}
 	else
 	{
 		CMap2 m;
 		build_with_positions(m, grid_soup(2, 2, true));
 		check(m);
+		GMap2 g;
+		build_with_positions(g, grid_soup(2, 2, true));
+		check(g);
 	}
 }
 

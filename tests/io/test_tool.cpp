@@ -66,6 +66,10 @@ TEST(Tool, VolumeInfoAndConvert)
 	EXPECT_EQ(j["euler_characteristic"], 1);
 	EXPECT_EQ(j["cell_kinds"]["tetrahedra"], 48);
 	EXPECT_EQ(j["manifold"], true);
+	EXPECT_EQ(j["orientable"], true);
+	r = run_tool("info '" + dir.file("g.vtu") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("\norientable: true\n"), std::string::npos) << r.out;
 	// a volume cannot go to a surface format
 	r = run_tool("convert '" + dir.file("g.mesh") + "' '" + dir.file("g.off") + "'", dir);
 	EXPECT_EQ(r.status, 2);

@@ -104,7 +104,7 @@ struct LoadReport
 
 	/// What the load changed in the input, one sentence per line (empty when
 	/// nothing), for programs to show their users; `map_type` names the map
-	/// loaded into ("CMap2", "GMap2", "CMap3"), whose abilities the advice
+	/// loaded into ("CMap2", "GMap2", "CMap3", "GMap3"), whose abilities the advice
 	/// depends on.
 	std::string summary(const std::string& map_type) const;
 };

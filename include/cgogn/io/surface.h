@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/io/error.h>
 #include <cgogn/io/options.h>
 
@@ -40,8 +41,11 @@ LoadReport load_surface(GMap2& m, const std::string& path, const LoadOptions& op
 /// save_surface for a CMap2. O(size of m).
 void save_surface(const GMap2& m, const std::string& path, const SaveOptions& options = {});
 
-// A CMap3 is a CMap2: without these, a volume map would be read as a surface.
+// A CMap3 is a CMap2 and a GMap3 a GMap2: without these, a volume map would
+// be read as a surface.
 LoadReport load_surface(CMap3& m, const std::string& path, const LoadOptions& options = {}) = delete;
 void save_surface(const CMap3& m, const std::string& path, const SaveOptions& options = {}) = delete;
+LoadReport load_surface(GMap3& m, const std::string& path, const LoadOptions& options = {}) = delete;
+void save_surface(const GMap3& m, const std::string& path, const SaveOptions& options = {}) = delete;
 
 } // namespace cgogn::io

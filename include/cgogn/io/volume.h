@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/gmap3.h>
 #include <cgogn/io/error.h>
 #include <cgogn/io/options.h>
 
@@ -26,5 +27,17 @@ LoadReport load_volume(CMap3& m, const std::string& path, const LoadOptions& opt
 /// Vec3 `position` vertex attribute, or the file cannot be written.
 /// O(size of m).
 void save_volume(const CMap3& m, const std::string& path, const SaveOptions& options = {});
+
+/// The same into a GMap3, built by build_volume for a GMap3: the same
+/// formats, cells, attributes, report and errors as for a CMap3 (a failure
+/// leaves m untouched), and the same cells (twice the darts). Cells given
+/// with negative orientation are turned over and counted as for a CMap3.
+/// O(file size).
+LoadReport load_volume(GMap3& m, const std::string& path, const LoadOptions& options = {});
+/// Writes the volumes of a GMap3 as save_volume for a CMap3 does. Each
+/// volume is oriented on its own (a volume is a sphere, so it can be, even
+/// when the whole map cannot), in the orientation that its positions make
+/// positive, and written in the format's vertex order. O(size of m).
+void save_volume(const GMap3& m, const std::string& path, const SaveOptions& options = {});
 
 } // namespace cgogn::io
