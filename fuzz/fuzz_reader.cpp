@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target for one reader (chosen by CGOGN_FUZZ_FORMAT at compile
 // time): any input must either throw io::Error or give data that builds into
-// a map passing check_integrity (a surface into both a CMap2 and a GMap2).
+// a map passing check_integrity (a surface into both a CMap2 and a GMap2, a
+// volume mesh into both a CMap3 and a GMap3).
 // Crashes, leaks and sanitizer reports are bugs.
 //
 // With CGOGN_FUZZ_APPEND the first byte of the input chooses the reader and
@@ -178,7 +179,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 		io::detail::orient_cells(d);
 #ifdef CGOGN_FUZZ_APPEND
 	if (volume)
+	{
 		load_into_non_empty_map<CMap3>(d, tet_grid_soup(1, 1, 1), path);
+		load_into_non_empty_map<GMap3>(d, hex_grid_soup(1, 1, 1), path);
+	}
 	else
 	{
 		load_into_non_empty_map<CMap2>(d, grid_soup(2, 1, true), path);
@@ -190,9 +194,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 		if (volume)
 		{
 			CMap3 m;
-			io::detail::build_map(m, d, path);
+			const io::LoadReport rm = io::detail::build_map(m, d, path);
 			if (!check_integrity(m).ok())
 				std::abort();
+			GMap3 g;
+			const io::LoadReport rg = io::detail::build_map(g, d, path);
+			if (!check_integrity(g).ok() || rg.orientable != is_orientable(g))
+				std::abort();
+			if (rg.nb_cells_built != rm.nb_cells_built || nb_cells<GMap3::Volume>(g) != nb_cells<CMap3::Volume>(m))
+				std::abort(); // both builders build the same cells
 		}
 		else
 		{
