@@ -177,7 +177,15 @@ TEST(GMap3Builder, DartsOfACellAreConsecutiveFromItsFirstVertex)
 {
 	const VolumeSoup s = mixed_soup();
 	GMap3 g;
-	build_volume(g, s);
+	const BuildReport r = build_volume(g, s);
+	// the prism meets the rest at vertices only: those are split for it
+	EXPECT_GT(r.split_vertices.size(), 0u);
+	auto soup_vertex = [&](uint32 line) {
+		for (const auto& [l, v] : r.split_vertices)
+			if (l == line)
+				return v;
+		return line;
+	};
 	// cell after cell, the darts of a cell, the first one at one of its vertices
 	uint32 first = 0, k = 0;
 	for (uint32 n : s.cell_sizes)
@@ -185,7 +193,7 @@ TEST(GMap3Builder, DartsOfACellAreConsecutiveFromItsFirstVertex)
 		const Dart d(first);
 		EXPECT_FALSE(is_boundary(g, d));
 		const auto cv = s.cell_vertices.begin() + k;
-		EXPECT_NE(std::find(cv, cv + n, index_of(g, GMap3::Vertex(d))), cv + n);
+		EXPECT_NE(std::find(cv, cv + n, soup_vertex(index_of(g, GMap3::Vertex(d)))), cv + n);
 		uint32 size = 0;
 		uint32 last = first;
 		foreach_dart_of_orbit(g, GMap3::Volume(d), [&](Dart x) {
