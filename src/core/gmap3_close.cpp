@@ -30,8 +30,8 @@ void close_beta3_holes(GMap3& m, const std::vector<Dart>& darts, std::vector<Dar
 		created.push_back(b);
 	}
 	// 2. the faces of the boundary mirror the free faces; around each edge, a
-	// boundary dart is glued to the mirror of the free dart met by turning
-	// from its own free dart through the inner volumes
+	// boundary dart is glued to the first boundary dart met by turning from
+	// its own free dart through the inner volumes
 	for (std::size_t i = first; i < created.size(); ++i)
 	{
 		const Dart b = created[i];
@@ -46,10 +46,10 @@ void close_beta3_holes(GMap3& m, const std::vector<Dart>& darts, std::vector<Dar
 		Dart e = beta2(m, d);
 		while (beta3(m, e) != e && !is_boundary(m, beta3(m, e)))
 			e = beta2(m, beta3(m, e));
-		const Dart z = beta3(m, e);
-		assert(z != e && beta2(m, z) == z); // see the preconditions
-		if (z != e && beta2(m, z) == z)
-			link_beta<2>(m, b, z);
+		assert(beta3(m, e) != e); // free darts come in whole faces: all mirrored above
+		// a new boundary dart, or an older one, which leaves its former
+		// neighbour (that one meets a new dart from the other side)
+		link_beta<2>(m, b, beta3(m, e));
 	}
 }
 

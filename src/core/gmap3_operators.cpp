@@ -5,12 +5,12 @@
 #include <cgogn/core/operators/gmap3.h>
 #include <cgogn/core/properties/properties.h>
 
+#include "gmap3_close.h"
 #include "gmap_darts.h"
 #include "reindex.h"
 
 #include <algorithm>
 #include <cassert>
-#include <unordered_map>
 
 namespace cgogn
 {
@@ -313,44 +313,6 @@ void sew_volumes(GMap3& m, GMap3::Face f1, GMap3::Face f2, bool set_indices)
 		reindex.apply(m, region);
 }
 
-namespace
-{
-// Gives every beta3 fixed point of `free` (whole faces of the darts' volumes)
-// a boundary dart: the copies keep beta0 and beta1 among themselves, and
-// beta2 joins each copy to the dart found by turning around its edge through
-// the volumes from the free dart: the copy of the next free dart, or a
-// boundary dart already there (which is relinked to the copy). Returns the
-// new darts. O(number of free darts x the degree of their edges).
-std::vector<Dart> close_free_darts(GMap3& m, const std::vector<Dart>& free)
-{
-	std::unordered_map<uint32, Dart> copy;
-	std::vector<Dart> made;
-	for (Dart d : free)
-	{
-		const Dart b = detail::add_dart(m);
-		detail::set_boundary(m, b, true);
-		copy.emplace(d.index, b);
-		made.push_back(b);
-	}
-	for (std::size_t k = 0; k < free.size(); ++k)
-	{
-		const Dart d = free[k], b = made[k];
-		detail::set_beta<0>(m, b, copy.at(beta0(m, d).index));
-		detail::set_beta<1>(m, b, copy.at(beta1(m, d).index));
-		Dart x = beta2(m, d);
-		while (beta3(m, x) != x && !is_boundary(m, beta3(m, x)))
-			x = beta<3, 2>(m, x);
-		if (beta3(m, x) == x)
-			detail::set_beta<2>(m, b, copy.at(x.index));
-		else
-			detail::link_beta<2>(m, b, beta3(m, x));
-	}
-	for (std::size_t k = 0; k < free.size(); ++k)
-		detail::link_beta<3>(m, free[k], made[k]);
-	return made;
-}
-} // namespace
-
 void unsew_volumes(GMap3& m, GMap3::Face f, bool set_indices)
 {
 	assert(can_unsew_volumes(m, f));
@@ -376,7 +338,8 @@ void unsew_volumes(GMap3& m, GMap3::Face f, bool set_indices)
 		reindex.record(m, region);
 	for (std::size_t k = 0; k < half; ++k)
 		beta_unsew<3>(m, side[k]);
-	const std::vector<Dart> made = close_free_darts(m, side);
+	std::vector<Dart> made;
+	detail::close_beta3_holes(m, side, made);
 	region.insert(region.end(), made.begin(), made.end());
 	if (set_indices)
 		reindex.apply(m, region);
