@@ -2,6 +2,7 @@
 #include "mesh_info.h"
 
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
@@ -131,20 +132,28 @@ json surface_info(const GMap2& m, const io::LoadReport& r)
 	return faces_info(m, r);
 }
 
-json volume_info(const CMap3& m, const io::LoadReport& r)
+template <typename MAP>
+json cells_info3(const MAP& m, const io::LoadReport& r)
 {
+	using T = mesh_traits<MAP>;
 	json j;
 	j["dimension"] = 3;
-	j["map"] = "CMap3";
-	j["orientable"] = true; // the volume builder orients every cell by its geometry
-	const int64 v = nb_cells<CMap3::Vertex>(m), e = nb_cells<CMap3::Edge>(m), f = nb_cells<CMap3::Face>(m),
-				w = nb_cells<CMap3::Volume>(m);
+	j["map"] = is_gmap_v<MAP> ? "GMap3" : "CMap3";
+	// the io layer orients every cell by its geometry, so a CMap3 holds any
+	// mesh whose cells are glued consistently; the tool loads the others
+	// into a GMap3
+	if constexpr (is_gmap_v<MAP>)
+		j["orientable"] = is_orientable(m);
+	else
+		j["orientable"] = true;
+	const int64 v = nb_cells<typename T::Vertex>(m), e = nb_cells<typename T::Edge>(m),
+				f = nb_cells<typename T::Face>(m), w = nb_cells<typename T::Volume>(m);
 	j["vertices"] = v;
 	j["edges"] = e;
 	j["faces"] = f;
 	j["volumes"] = w;
 	uint64 boundary_faces = 0;
-	foreach_cell(m, [&](CMap3::Face x) { boundary_faces += is_incident_to_boundary(m, x); });
+	foreach_cell(m, [&](typename T::Face x) { boundary_faces += degree(m, x) < 2; });
 	j["boundary_faces"] = boundary_faces;
 	j["boundary_components"] = nb_boundary_components(m);
 	j["connected_components"] = nb_connected_components(m);
@@ -153,15 +162,15 @@ json volume_info(const CMap3& m, const io::LoadReport& r)
 	j["nonmanifold_faces"] = r.nb_nonmanifold_faces;
 	j["reoriented_cells"] = r.nb_cells_reoriented;
 	std::map<uint32, uint64> degrees;
-	foreach_cell(m, [&](CMap3::Face x) { ++degrees[codegree(m, x)]; });
+	foreach_cell(m, [&](typename T::Face x) { ++degrees[codegree(m, x)]; });
 	json h = json::object();
 	for (auto [d, n] : degrees)
 		h[std::to_string(d)] = n;
 	j["face_degrees"] = h;
 	uint64 tets = 0, pyramids = 0, prisms = 0, hexes = 0, others = 0;
-	foreach_cell(m, [&](CMap3::Volume x) {
+	foreach_cell(m, [&](typename T::Volume x) {
 		uint32 nf = 0, tri = 0, quad = 0;
-		foreach_incident_face(m, x, [&](CMap3::Face fc) {
+		foreach_incident_face(m, x, [&](typename T::Face fc) {
 			const uint32 d = codegree(m, fc);
 			++nf;
 			tri += d == 3;
@@ -182,6 +191,16 @@ json volume_info(const CMap3& m, const io::LoadReport& r)
 		{"tetrahedra", tets}, {"pyramids", pyramids}, {"prisms", prisms}, {"hexahedra", hexes}, {"other", others}};
 	geometry(m, j);
 	return j;
+}
+
+json volume_info(const CMap3& m, const io::LoadReport& r)
+{
+	return cells_info3(m, r);
+}
+
+json volume_info(const GMap3& m, const io::LoadReport& r)
+{
+	return cells_info3(m, r);
 }
 
 std::string info_text(const json& j)

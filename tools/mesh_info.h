@@ -20,6 +20,7 @@ namespace cgogn::tool
 nlohmann::json surface_info(const CMap2& m, const io::LoadReport& r);
 nlohmann::json surface_info(const GMap2& m, const io::LoadReport& r);
 nlohmann::json volume_info(const CMap3& m, const io::LoadReport& r);
+nlohmann::json volume_info(const GMap3& m, const io::LoadReport& r);
 
 /// The same information as readable text lines.
 std::string info_text(const nlohmann::json& info);

@@ -71,9 +71,11 @@ void with_loaded(const std::string& path, Progress& progress, const FUNC& f)
 	}
 }
 
-/// As with_loaded, except that a surface that cannot be oriented is loaded
-/// into a GMap2, which keeps it whole (a CMap2 cuts it): f must also take a
-/// GMap2. The file is read twice in that case.
+/// As with_loaded, except that a mesh that cannot be oriented is loaded into
+/// a G-map, which keeps it whole: a surface into a GMap2 (a CMap2 cuts it),
+/// and a volume mesh whose CMap3 left faces open into a GMap3, kept when
+/// that one is not orientable. f must also take a GMap2 and a GMap3. The file
+/// is read twice in those cases.
 template <typename FUNC>
 void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& f)
 {
@@ -85,6 +87,17 @@ void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& 
 				progress.stage("not orientable: loading " + path + " as a GMap2");
 				GMap2 g;
 				const io::LoadReport rg = io::load_surface(g, path);
+				f(g, rg);
+				return;
+			}
+		}
+		else if (r.nb_nonmanifold_faces > 0)
+		{
+			progress.stage("faces left open: loading " + path + " as a GMap3");
+			GMap3 g;
+			const io::LoadReport rg = io::load_volume(g, path);
+			if (!rg.orientable)
+			{
 				f(g, rg);
 				return;
 			}

@@ -165,6 +165,31 @@ SurfaceSoup klein_bottle_soup(uint32 nu, uint32 nv, bool triangles)
 	return s;
 }
 
+VolumeSoup solid_klein_bottle_soup(uint32 n)
+{
+	VolumeSoup s;
+	s.nb_vertices = 4 * n;
+	// the corners of the section, in cycle order; `mirrored` reflects it
+	// across the plane through the ring's axis circle (a <-> -a)
+	constexpr double a[4] = {-0.5, 0.5, 0.5, -0.5}, b[4] = {-0.5, -0.5, 0.5, 0.5};
+	constexpr uint32 mirrored[4] = {1, 0, 3, 2};
+	for (uint32 i = 0; i < n; ++i)
+	{
+		const double t = 2.0 * std::numbers::pi * i / n;
+		for (uint32 k = 0; k < 4; ++k)
+			s.positions.push_back({(2.0 + a[k]) * std::cos(t), (2.0 + a[k]) * std::sin(t), b[k]});
+	}
+	for (uint32 i = 0; i < n; ++i)
+	{
+		s.cell_sizes.push_back(8);
+		for (uint32 k = 0; k < 4; ++k)
+			s.cell_vertices.push_back(4 * i + k);
+		for (uint32 k = 0; k < 4; ++k)
+			s.cell_vertices.push_back(i + 1 < n ? 4 * (i + 1) + k : mirrored[k]);
+	}
+	return s;
+}
+
 SurfaceSoup hemi_icosahedron_soup()
 {
 	SurfaceSoup s;

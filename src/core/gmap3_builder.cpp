@@ -6,6 +6,7 @@
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/marking/marker.h>
+#include <cgogn/core/properties/gmap_properties.h>
 
 #include "builder_common.h"
 #include "cmap3_build.h"
@@ -45,41 +46,6 @@ CellFace make_face(const std::vector<uint32>& fv, uint32 first)
 	for (uint32 j = 0; j < k; ++j)
 		f.key[j] = fv[forward ? (p + j) % k : (p + k - j) % k];
 	return f;
-}
-
-// Whether the darts given can be coloured in two so that every beta joins
-// two colours (see is_orientable): the darts must be whole components.
-bool orientable(const GMap3& m, const std::vector<Dart>& darts)
-{
-	DartMarker<GMap3> seen(m), black(m);
-	std::vector<Dart> work;
-	for (Dart start : darts)
-	{
-		if (seen.is_marked(start))
-			continue;
-		seen.mark(start);
-		black.mark(start);
-		work.assign(1, start);
-		while (!work.empty())
-		{
-			const Dart d = work.back();
-			work.pop_back();
-			const bool d_black = black.is_marked(d);
-			for (const Dart e : {beta0(m, d), beta1(m, d), beta2(m, d), beta3(m, d)})
-			{
-				if (!seen.is_marked(e))
-				{
-					seen.mark(e);
-					if (!d_black)
-						black.mark(e);
-					work.push_back(e);
-				}
-				else if (black.is_marked(e) == d_black)
-					return false;
-			}
-		}
-	}
-	return true;
 }
 
 } // namespace
@@ -243,7 +209,14 @@ BuildReport build_volume(GMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	// the cells listed consistently (every shared face in opposite
 	// directions) orient the map; otherwise a two-colouring tells
 	if (glued_same_way)
-		report.orientable = orientable(m, darts);
+	{
+		DartMarker<GMap3> black(m);
+		report.orientable = detail::two_colour_from(m, black, [&](const auto& f) {
+			for (Dart d : darts)
+				if (!f(d))
+					return;
+		});
+	}
 
 	// 4. vertex lines, split of non-manifold vertices
 	detail::assign_vertex_lines<GMap3::Vertex>(m, darts, vertices, vidx, offset, nb_vertices, report);

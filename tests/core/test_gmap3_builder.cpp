@@ -106,27 +106,6 @@ std::vector<std::pair<std::string, VolumeSoup>> soups()
 			{"tets and hexes apart", side_by_side(tet_grid_soup(2, 1, 1), hex_grid_soup(1, 2, 1))}};
 }
 
-// A ring of n hexahedra whose last one is glued back to the first through a
-// reflection of the square section: the solid Klein bottle, whose boundary
-// is a Klein bottle. No 3-map holds it whole.
-VolumeSoup solid_klein_bottle(uint32 n)
-{
-	VolumeSoup s;
-	s.nb_vertices = 4 * n;
-	s.positions.resize(s.nb_vertices);
-	auto v = [&](uint32 ring, uint32 corner) { return 4 * (ring % n) + corner; };
-	for (uint32 i = 0; i < n; ++i)
-	{
-		s.cell_sizes.push_back(8);
-		for (uint32 c = 0; c < 4; ++c)
-			s.cell_vertices.push_back(v(i, c));
-		const bool last = i + 1 == n;
-		for (uint32 c : {0u, 1u, 2u, 3u})
-			s.cell_vertices.push_back(v(i + 1, last ? c ^ 1u : c));
-	}
-	return s;
-}
-
 } // namespace
 
 TEST(GMap3Builder, SameCellsAsTheCMap3BuilderAndToGmap)
@@ -343,7 +322,7 @@ TEST(GMap3Builder, AppendsWithAVertexOffset)
 TEST(GMap3Builder, ASolidKleinBottleStaysWhole)
 {
 	const uint32 n = 5;
-	const VolumeSoup s = solid_klein_bottle(n);
+	const VolumeSoup s = solid_klein_bottle_soup(n);
 	GMap3 g;
 	const BuildReport r = build_volume(g, s);
 	EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();

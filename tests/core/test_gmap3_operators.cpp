@@ -88,7 +88,7 @@ std::vector<Dart> darts_of(const CMap3& m)
 // copies, for every dart where the CMap3's predicate holds (or up to `limit`
 // of them per mesh); the counts must agree and both maps stay valid.
 template <typename OP>
-void agrees_with_cmap3(const char* name, OP&& op, std::size_t limit = 1000)
+void agrees_with_cmap3(const char* name, OP&& op, std::size_t limit = 150)
 {
 	std::size_t tried = 0;
 	for (int which = 0; which < NB_MESHES; ++which)

@@ -1,5 +1,5 @@
 // parallel_foreach_cell gives the same results as foreach_cell for every cell
-// type of CMap2 and CMap3, indexed or not, with 1, 2 and more workers than
+// type of CMap2, CMap3, GMap2 and GMap3, indexed or not, with 1, 2 and more workers than
 // cores; thread indices are dense and never shared by two running callables.
 #include <cgogn/core.h>
 
@@ -378,6 +378,43 @@ TEST_P(Parallel, FloodedOrbitsNotIndexedAfterOperators)
 	check_cells<Vertex>(m);
 	check_cells<Volume>(m);
 	check_cells<CMap3::CC>(m);
+}
+
+// The generalized maps, on surfaces and volume meshes that cannot be
+// oriented (each with a second, orientable component), and a 3-G-map after
+// operators changed it.
+TEST_P(Parallel, GeneralizedMapsAllCellTypes)
+{
+	GMap2 s;
+	build_surface(s, klein_bottle_soup(30, 20));
+	build_surface(s, mobius_soup(24));
+	check_all_cell_types(s);
+	index_all_cell_types(s);
+	check_all_cell_types(s);
+	GMap3 v;
+	build_volume(v, solid_klein_bottle_soup(40));
+	build_volume(v, hex_grid_soup(5, 4, 3));
+	check_all_cell_types(v);
+	index_all_cell_types(v);
+	check_all_cell_types(v);
+}
+
+TEST_P(Parallel, GMap3FloodedOrbitsAfterOperators)
+{
+	GMap3 m;
+	build_volume(m, tet_grid_soup(6, 5, 4));
+	drop_index<GMap3::Vertex>(m);
+	const uint32 nv = nb_cells<GMap3::Vertex>(m);
+	std::vector<GMap3::Edge> edges;
+	foreach_cell(m, [&](GMap3::Edge e) { edges.push_back(e); });
+	uint32 cut = 0;
+	for (std::size_t k = 0; k < edges.size(); k += 7, ++cut)
+		cut_edge(m, edges[k]);
+	ASSERT_TRUE(check_integrity(m).ok());
+	EXPECT_EQ(nb_cells<GMap3::Vertex>(m), nv + cut);
+	check_cells<GMap3::Vertex>(m);
+	check_cells<GMap3::Volume>(m);
+	check_cells<GMap3::CC>(m);
 }
 
 INSTANTIATE_TEST_SUITE_P(Workers, Parallel, ::testing::Values(1u, 2u, 7u),

@@ -298,21 +298,7 @@ TEST(GMap3Load, AppendsToAMapAndFailsWithoutTouchingIt)
 TEST(GMap3Load, ASolidKleinBottleRoundTrips)
 {
 	// a ring of hexahedra glued back through a reflection of its section
-	const uint32 n = 6;
-	VolumeSoup s;
-	s.nb_vertices = 4 * n;
-	for (uint32 i = 0; i < n; ++i)
-		for (uint32 c = 0; c < 4; ++c)
-			s.positions.push_back({double(i), double(c & 1u), double(c >> 1)});
-	auto v = [&](uint32 ring, uint32 corner) { return 4 * (ring % n) + corner; };
-	for (uint32 i = 0; i < n; ++i)
-	{
-		s.cell_sizes.push_back(8);
-		for (uint32 c : {0u, 1u, 3u, 2u})
-			s.cell_vertices.push_back(v(i, c));
-		for (uint32 c : {0u, 1u, 3u, 2u})
-			s.cell_vertices.push_back(v(i + 1, i + 1 == n ? c ^ 1u : c));
-	}
+	const VolumeSoup s = solid_klein_bottle_soup(6);
 	GMap3 a;
 	const BuildReport br = build_with_positions(a, s);
 	ASSERT_FALSE(br.orientable);

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
+#include <vector>
 
 using namespace cgogn;
 using namespace cgogn::io_test;
@@ -76,35 +77,82 @@ TEST(Tool, VolumeInfoAndConvert)
 	EXPECT_NE(r.err.find("surface format"), std::string::npos) << r.err;
 }
 
+namespace
+{
+// `cgogn info --json path`, which must succeed, parsed.
+nlohmann::json info_json(const std::string& path, TempDir& dir)
+{
+	const ToolRun r = run_tool("info --json '" + path + "'", dir);
+	EXPECT_EQ(r.status, 0) << r.err;
+	return nlohmann::json::parse(r.out);
+}
+
+// `cgogn convert in out flags`, then `cgogn check --json out`, parsed.
+nlohmann::json converted_and_checked(const std::string& in, const std::string& out, TempDir& dir,
+									 const std::string& flags = "")
+{
+	ToolRun r = run_tool("convert '" + in + "' '" + out + "' " + flags, dir);
+	EXPECT_EQ(r.status, 0) << r.err;
+	r = run_tool("check --json '" + out + "'", dir);
+	EXPECT_EQ(r.status, 0) << r.err;
+	return nlohmann::json::parse(r.out);
+}
+
+// vertices, edges, faces (and volumes), boundary components and Euler
+// characteristic of an info object
+void expect_counts(const nlohmann::json& j, std::vector<int> cells, int boundary, int chi)
+{
+	const char* keys[] = {"vertices", "edges", "faces", "volumes"};
+	for (std::size_t k = 0; k < cells.size(); ++k)
+		EXPECT_EQ(j[keys[k]], cells[k]) << keys[k];
+	EXPECT_EQ(j["boundary_components"], boundary);
+	EXPECT_EQ(j["euler_characteristic"], chi);
+}
+} // namespace
+
 TEST(Tool, NonOrientableSurfacesAreLoadedWhole)
 {
 	TempDir dir;
 	const std::string mobius = std::string(CGOGN_DATA_DIR) + "/surface/mobius_strip.off";
-	ToolRun r = run_tool("info --json '" + mobius + "'", dir);
-	ASSERT_EQ(r.status, 0) << r.err;
-	nlohmann::json j = nlohmann::json::parse(r.out);
+	nlohmann::json j = info_json(mobius, dir);
 	EXPECT_EQ(j["map"], "GMap2");
 	EXPECT_EQ(j["orientable"], false);
 	EXPECT_EQ(j["manifold"], true);
-	EXPECT_EQ(j["vertices"], 48);
-	EXPECT_EQ(j["edges"], 72);
-	EXPECT_EQ(j["faces"], 24);
-	EXPECT_EQ(j["boundary_components"], 1);
-	EXPECT_EQ(j["euler_characteristic"], 0);
+	expect_counts(j, {48, 72, 24}, 1, 0);
 	EXPECT_EQ(j["darts"], 288);
 	// convert keeps it whole, check finds it valid
-	r = run_tool("convert '" + mobius + "' '" + dir.file("m.ply") + "' --binary", dir);
-	ASSERT_EQ(r.status, 0) << r.err;
-	r = run_tool("check --json '" + dir.file("m.ply") + "'", dir);
-	ASSERT_EQ(r.status, 0) << r.err;
-	j = nlohmann::json::parse(r.out);
+	j = converted_and_checked(mobius, dir.file("m.ply"), dir, "--binary");
 	EXPECT_EQ(j["ok"], true);
 	EXPECT_EQ(j["orientable"], false);
 	EXPECT_EQ(j["manifold"], true);
 	// an orientable surface stays a CMap2
-	r = run_tool("info --json '" + example_mesh() + "'", dir);
-	j = nlohmann::json::parse(r.out);
+	j = info_json(example_mesh(), dir);
 	EXPECT_EQ(j["map"], "CMap2");
+	EXPECT_EQ(j["orientable"], true);
+}
+
+TEST(Tool, NonOrientableVolumeMeshesAreLoadedWhole)
+{
+	// a solid Klein bottle written by the library; the 3-map leaves its
+	// twisted face open, so the tool loads it into a GMap3
+	TempDir dir;
+	GMap3 g;
+	build_with_positions(g, solid_klein_bottle_soup(6));
+	const std::string file = dir.file("klein.mesh");
+	io::save_volume(g, file);
+	nlohmann::json j = info_json(file, dir);
+	EXPECT_EQ(j["map"], "GMap3");
+	EXPECT_EQ(j["orientable"], false);
+	expect_counts(j, {24, 48, 30, 6}, 1, 0);
+	j = converted_and_checked(file, dir.file("klein.vtu"), dir);
+	EXPECT_EQ(j["ok"], true);
+	EXPECT_EQ(j["orientable"], false);
+	// an orientable volume mesh stays a CMap3
+	CMap3 c;
+	build_with_positions(c, hex_grid_soup(2, 1, 1));
+	io::save_volume(c, dir.file("grid.mesh"));
+	j = info_json(dir.file("grid.mesh"), dir);
+	EXPECT_EQ(j["map"], "CMap3");
 	EXPECT_EQ(j["orientable"], true);
 }
 

@@ -61,6 +61,13 @@ SurfaceSoup hemi_cube_soup();
 VolumeSoup tet_grid_soup(uint32 nx, uint32 ny, uint32 nz);
 /// An nx x ny x nz grid of unit hexahedra.
 VolumeSoup hex_grid_soup(uint32 nx, uint32 ny, uint32 nz);
+/// The solid Klein bottle: a ring of n >= 2 hexahedra of square section
+/// around the z axis, the last one glued back to the first through a
+/// reflection of the section (the ring's vertices are placed on a torus, the
+/// last cell crosses itself). Not orientable, so only a GMap3 holds it whole:
+/// 4n vertices, 8n edges, 5n faces, n volumes, one boundary component (a
+/// Klein bottle), Euler characteristic 0.
+VolumeSoup solid_klein_bottle_soup(uint32 n);
 
 inline BuildReport build_surface(CMap2& m, const SurfaceSoup& s)
 {

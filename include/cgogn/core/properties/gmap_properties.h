@@ -96,18 +96,20 @@ namespace detail
 {
 
 /// The paper's two-colouring of a G-map: marks in `black` the darts of one
-/// colour, the smallest dart of each connected component black, so that
-/// every beta_i joins two colours. Returns false, with the colouring left
-/// unfinished, when some beta_i joins two darts of one colour (the map is
-/// not orientable). O(number of darts).
-template <typename MAP>
+/// colour, the first dart met of each connected component black, so that
+/// every beta_i joins two colours. The components coloured are those of the
+/// darts of `starts` (by default, every dart; then each component starts at
+/// its smallest dart). Returns false, with the colouring left unfinished,
+/// when some beta_i joins two darts of one colour (the map is not
+/// orientable). O(number of darts of those components).
+template <typename MAP, typename STARTS>
 requires std::derived_from<MAP, GMap1>
-bool two_colour(const MAP& m, DartMarker<MAP>& black)
+bool two_colour_from(const MAP& m, DartMarker<MAP>& black, const STARTS& starts)
 {
 	DartMarker<MAP> seen(m);
 	std::vector<Dart> work;
 	bool ok = true;
-	foreach_dart(m, [&](Dart start) {
+	starts([&](Dart start) {
 		if (seen.is_marked(start))
 			return true;
 		seen.mark(start);
@@ -137,6 +139,14 @@ bool two_colour(const MAP& m, DartMarker<MAP>& black)
 		return ok;
 	});
 	return ok;
+}
+
+/// two_colour_from every dart of m.
+template <typename MAP>
+requires std::derived_from<MAP, GMap1>
+bool two_colour(const MAP& m, DartMarker<MAP>& black)
+{
+	return two_colour_from(m, black, [&](const auto& f) { foreach_dart(m, f); });
 }
 
 } // namespace detail
