@@ -73,8 +73,8 @@ void with_loaded(const std::string& path, Progress& progress, const FUNC& f)
 
 /// As with_loaded, except that a mesh that cannot be oriented is loaded into
 /// a G-map, which keeps it whole: a surface into a GMap2 (a CMap2 cuts it),
-/// and a volume mesh whose CMap3 left faces open into a GMap3, kept when
-/// that one is not orientable. f must also take a GMap2 and a GMap3. The file
+/// and a volume mesh that the CMap3 reports not manifold into a GMap3, kept
+/// when that one is not orientable. f must also take a GMap2 and a GMap3. The file
 /// is read twice in those cases.
 template <typename FUNC>
 void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& f)
@@ -91,9 +91,11 @@ void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& 
 				return;
 			}
 		}
-		else if (r.nb_nonmanifold_faces > 0)
+		else if (!r.manifold())
 		{
-			progress.stage("faces left open: loading " + path + " as a GMap3");
+			// faces the CMap3 could not glue (listed the same way by two
+			// cells) split their vertices: the GMap3 glues them
+			progress.stage("not manifold as a CMap3: loading " + path + " as a GMap3");
 			GMap3 g;
 			const io::LoadReport rg = io::load_volume(g, path);
 			if (!rg.orientable)
