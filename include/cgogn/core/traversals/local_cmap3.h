@@ -303,29 +303,37 @@ void foreach_incident_face(const CMap3& m, CellParam<CMap3::Volume> w, const FUN
 	detail::foreach_cell_of_volume<CMap3::Face>(m, w.dart, f);
 }
 
-/// Generic form of the incidences above: calls f on each cell of type TARGET
-/// incident to c.
-template <typename TARGET, typename CELL, typename FUNC>
-void foreach_incident_cell3(const CMap3& m, CELL c, const FUNC& f)
+/// Generic form of the incidences above, for a CMap3 or a GMap3: calls f on
+/// each cell of type TARGET incident to c. The cost of the incidence called.
+template <typename TARGET, typename MAP, typename CELL, typename FUNC>
+requires(MAP::dimension == 3) void foreach_incident_cell3(const MAP& m, CELL c, const FUNC& f)
 {
-	if constexpr (std::is_same_v<TARGET, CMap3::Vertex>)
-		foreach_incident_vertex(m, c, [&](CMap3::Vertex x) { return call_and_continue(f, x); });
-	else if constexpr (std::is_same_v<TARGET, CMap3::Edge>)
-		foreach_incident_edge(m, c, [&](CMap3::Edge x) { return call_and_continue(f, x); });
-	else if constexpr (std::is_same_v<TARGET, CMap3::Face>)
-		foreach_incident_face(m, c, [&](CMap3::Face x) { return call_and_continue(f, x); });
+	using T = mesh_traits<MAP>;
+	if constexpr (std::is_same_v<TARGET, typename T::Vertex>)
+		foreach_incident_vertex(m, c, [&](typename T::Vertex x) { return call_and_continue(f, x); });
+	else if constexpr (std::is_same_v<TARGET, typename T::Edge>)
+		foreach_incident_edge(m, c, [&](typename T::Edge x) { return call_and_continue(f, x); });
+	else if constexpr (std::is_same_v<TARGET, typename T::Face>)
+		foreach_incident_face(m, c, [&](typename T::Face x) { return call_and_continue(f, x); });
 	else
-		foreach_incident_volume(m, c, [&](CMap3::Volume x) { return call_and_continue(f, x); });
+	{
+		static_assert(std::is_same_v<TARGET, typename T::Volume>);
+		foreach_incident_volume(m, c, [&](typename T::Volume x) { return call_and_continue(f, x); });
+	}
 }
 
 // ---- adjacencies: X adjacent to x through a common Y, each once, x excluded
 
 namespace detail
 {
-template <typename X, typename Y, typename FUNC>
-void foreach_adjacent3(const CMap3& m, X x, const FUNC& f)
+/// The X cells incident to the Y cells incident to x, each once, x excluded,
+/// on a CMap3 or a GMap3: a pooled set of the X cells met (bits in X's
+/// container when X is indexed, marks on their darts otherwise).
+/// O(sum of the sizes of the cells met).
+template <typename X, typename Y, typename MAP, typename FUNC>
+void foreach_adjacent3(const MAP& m, X x, const FUNC& f)
 {
-	LocalCellSet<CMap3, X> seen(m);
+	LocalCellSet<MAP, X> seen(m);
 	seen.insert(x);
 	bool go_on = true;
 	auto visit_y = [&](Y y) {

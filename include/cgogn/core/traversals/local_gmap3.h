@@ -217,48 +217,10 @@ void foreach_incident_face(const GMap3& m, CellParam<GMap3::Volume> w, const FUN
 	detail::foreach_cell_of_volume3<GMap3::Face>(m, w.dart, f);
 }
 
-/// Generic form of the incidences above: calls f on each cell of type TARGET
-/// incident to c. The cost of the incidence called.
-template <typename TARGET, typename CELL, typename FUNC>
-void foreach_incident_cell3(const GMap3& m, CELL c, const FUNC& f)
-{
-	if constexpr (std::is_same_v<TARGET, GMap3::Vertex>)
-		foreach_incident_vertex(m, c, [&](GMap3::Vertex x) { return call_and_continue(f, x); });
-	else if constexpr (std::is_same_v<TARGET, GMap3::Edge>)
-		foreach_incident_edge(m, c, [&](GMap3::Edge x) { return call_and_continue(f, x); });
-	else if constexpr (std::is_same_v<TARGET, GMap3::Face>)
-		foreach_incident_face(m, c, [&](GMap3::Face x) { return call_and_continue(f, x); });
-	else
-	{
-		static_assert(std::is_same_v<TARGET, GMap3::Volume>);
-		foreach_incident_volume(m, c, [&](GMap3::Volume x) { return call_and_continue(f, x); });
-	}
-}
+// foreach_incident_cell3 and detail::foreach_adjacent3 (local_cmap3.h) serve
+// both 3-maps and 3-G-maps.
 
 // ---- adjacencies: X adjacent to x through a common Y, each once, x excluded
-
-namespace detail
-{
-/// The X cells incident to the Y cells incident to x, each once, x excluded:
-/// a pooled set of the X cells met (bits in X's container when X is indexed,
-/// marks on their darts otherwise). O(sum of the sizes of the cells met).
-template <typename X, typename Y, typename FUNC>
-void foreach_adjacent3(const GMap3& m, X x, const FUNC& f)
-{
-	LocalCellSet<GMap3, X> seen(m);
-	seen.insert(x);
-	bool go_on = true;
-	auto visit_y = [&](Y y) {
-		foreach_incident_cell3<X>(m, y, [&](X x2) {
-			if (seen.insert(x2))
-				go_on = call_and_continue(f, x2);
-			return go_on;
-		});
-		return go_on;
-	};
-	foreach_incident_cell3<Y>(m, x, visit_y);
-}
-} // namespace detail
 
 /// Vertices joined to v by an edge, each once (no defined order): at beta0
 /// of the darts of v. With indexed vertices they are told apart by a mark on
