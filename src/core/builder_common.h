@@ -5,6 +5,8 @@
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/marking/marker.h>
 
+#include "cmap3_build.h"
+
 #include <algorithm>
 #include <span>
 
@@ -65,6 +67,59 @@ void foreach_buildable_face(uint32 nb_vertices, std::span<const uint32> face_siz
 		}
 		f(face, fv);
 	}
+}
+
+/// Calls f(ids, faces) on each cell of a cell list that the volume builders
+/// build, in order: a known kind (detail::cell_faces of its size, whose face
+/// list is `faces`), all vertices in [0, nb_vertices), none repeated. The
+/// others are counted in `report` (a cell running past the end of
+/// `cell_vertices`, of an unknown kind or naming a vertex out of range is
+/// invalid; one with a repeated vertex is degenerate). O(total size).
+template <typename FUNC>
+void foreach_buildable_cell(uint32 nb_vertices, std::span<const uint32> cell_sizes,
+							std::span<const uint32> cell_vertices, BuildReport& report, const FUNC& f)
+{
+	std::size_t first = 0;
+	std::vector<uint32> scratch;
+	for (uint32 n : cell_sizes)
+	{
+		if (first + n > cell_vertices.size())
+		{
+			++report.nb_cells_invalid;
+			first = cell_vertices.size();
+			continue;
+		}
+		const std::span<const uint32> cv = cell_vertices.subspan(first, n);
+		first += n;
+		const FaceList* faces = cell_faces(n);
+		if (faces == nullptr || std::any_of(cv.begin(), cv.end(), [&](uint32 v) { return v >= nb_vertices; }))
+		{
+			++report.nb_cells_invalid;
+			continue;
+		}
+		if (has_repeated_vertex(cv, scratch))
+		{
+			++report.nb_cells_degenerate;
+			continue;
+		}
+		f(cv, *faces);
+	}
+}
+
+/// The number of distinct VOLUME cells of the darts given (the boundary
+/// volumes a build closed its map with). O(size of those cells).
+template <typename VOLUME, typename MAP>
+uint32 nb_distinct_volumes(const MAP& m, const std::vector<Dart>& darts)
+{
+	DartMarker<MAP> seen(m);
+	uint32 n = 0;
+	for (Dart d : darts)
+		if (!seen.is_marked(d))
+		{
+			seen.mark_orbit(VOLUME(d));
+			++n;
+		}
+	return n;
 }
 
 /// Reserves room in m's dart container for `count` more darts (boundary

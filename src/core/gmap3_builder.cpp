@@ -48,6 +48,51 @@ CellFace make_face(const std::vector<uint32>& fv, uint32 first)
 	return f;
 }
 
+// One cell as a closed 2-G-map: 2n darts per face of n vertices (beta0
+// between the two ends of an edge side, beta1 between the two sides of a
+// corner), beta2 between the faces of the cell along each edge, dart at a
+// vertex to dart at the same vertex. The darts are appended to `darts`, with
+// their soup vertex line in vidx, and the faces to `faces`; fv is scratch.
+void add_cell(GMap3& m, std::span<const uint32> cv, const detail::FaceList& cell, AttributeArray<uint32>& vidx,
+			  uint32 offset, std::vector<Dart>& darts, std::vector<CellFace>& faces, std::vector<uint32>& fv)
+{
+	// the edge sides waiting for the other face of their edge, by their two
+	// local vertices (fewer than 8), with the local vertex of their start
+	std::array<std::pair<Dart, uint32>, 64> waiting;
+	waiting.fill({Dart(), 0});
+	for (const auto& f : cell)
+	{
+		const uint32 k = uint32(f.size());
+		const std::size_t face_start = darts.size();
+		fv.clear();
+		for (uint32 i = 0; i < k; ++i)
+		{
+			const uint32 u = f[i], w = f[(i + 1) % k];
+			const Dart a = detail::add_dart(m);
+			const Dart b = detail::add_dart(m);
+			vidx[a.index] = offset + cv[u];
+			vidx[b.index] = offset + cv[w];
+			beta_sew<0>(m, a, b);
+			if (i > 0)
+				beta_sew<1>(m, darts.back(), a);
+			darts.push_back(a);
+			darts.push_back(b);
+			fv.push_back(cv[u]);
+			auto& slot = waiting[std::min(u, w) * 8 + std::max(u, w)];
+			if (!slot.first.is_valid())
+				slot = {a, u};
+			else
+			{
+				const Dart o = slot.first;
+				beta_sew<2>(m, a, slot.second == u ? o : beta0(m, o));
+				beta_sew<2>(m, b, slot.second == u ? beta0(m, o) : o);
+			}
+		}
+		beta_sew<1>(m, darts.back(), darts[face_start]);
+		faces.push_back(make_face(fv, uint32(face_start)));
+	}
+}
+
 } // namespace
 
 BuildReport build_volume(GMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
@@ -64,79 +109,22 @@ BuildReport build_volume(GMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	report.vertex_offset = offset;
 	const auto soup = [&](Dart d) { return vidx[d.index] - offset; };
 
-	// 1. each cell as a closed 2-G-map: 2n darts per face of n vertices
-	// (beta0 between the two ends of an edge side, beta1 between the two
-	// sides of a corner), beta2 between the faces of the cell along each edge,
-	// dart at a vertex to dart at the same vertex. A cell's darts are added
+	// 1. each cell as a closed 2-G-map (add_cell). A cell's darts are added
 	// consecutively (the io layer predicts the first dart of each cell).
 	std::vector<Dart> darts;
 	std::vector<CellFace> faces;
-	std::vector<uint32> scratch, fv;
+	std::vector<uint32> fv;
 	{
 		std::size_t total = 0;
 		for (uint32 n : cell_sizes)
 			total += n;
 		detail::reserve_darts(m, 6 * std::min(total, cell_vertices.size()));
 	}
-	std::size_t first = 0;
-	for (uint32 n : cell_sizes)
-	{
-		if (first + n > cell_vertices.size())
-		{
-			++report.nb_cells_invalid;
-			first = cell_vertices.size();
-			continue;
-		}
-		const std::span<const uint32> cv = cell_vertices.subspan(first, n);
-		first += n;
-		const detail::FaceList* cell = detail::cell_faces(n);
-		if (cell == nullptr || std::any_of(cv.begin(), cv.end(), [&](uint32 v) { return v >= nb_vertices; }))
-		{
-			++report.nb_cells_invalid;
-			continue;
-		}
-		if (detail::has_repeated_vertex(cv, scratch))
-		{
-			++report.nb_cells_degenerate;
-			continue;
-		}
-		// the edge sides waiting for the other face of their edge, by their
-		// two local vertices (fewer than 8), with the local vertex of their start
-		std::array<std::pair<Dart, uint32>, 64> waiting;
-		waiting.fill({Dart(), 0});
-		for (const auto& f : *cell)
-		{
-			const uint32 k = uint32(f.size());
-			const std::size_t face_start = darts.size();
-			fv.clear();
-			for (uint32 i = 0; i < k; ++i)
-			{
-				const uint32 u = f[i], w = f[(i + 1) % k];
-				const Dart a = detail::add_dart(m);
-				const Dart b = detail::add_dart(m);
-				vidx[a.index] = offset + cv[u];
-				vidx[b.index] = offset + cv[w];
-				beta_sew<0>(m, a, b);
-				if (i > 0)
-					beta_sew<1>(m, darts.back(), a);
-				darts.push_back(a);
-				darts.push_back(b);
-				fv.push_back(cv[u]);
-				auto& slot = waiting[std::min(u, w) * 8 + std::max(u, w)];
-				if (!slot.first.is_valid())
-					slot = {a, u};
-				else
-				{
-					const Dart o = slot.first;
-					beta_sew<2>(m, a, slot.second == u ? o : beta0(m, o));
-					beta_sew<2>(m, b, slot.second == u ? beta0(m, o) : o);
-				}
-			}
-			beta_sew<1>(m, darts.back(), darts[face_start]);
-			faces.push_back(make_face(fv, uint32(face_start)));
-		}
-		++report.nb_cells_built;
-	}
+	detail::foreach_buildable_cell(nb_vertices, cell_sizes, cell_vertices, report,
+								   [&](std::span<const uint32> cv, const detail::FaceList& cell) {
+									   add_cell(m, cv, cell, vidx, offset, darts, faces, fv);
+									   ++report.nb_cells_built;
+								   });
 
 	// 2. glue the faces shared by two cells: the dart at vertex a of edge
 	// {a, b} of one face to the dart at vertex a of edge {a, b} of the other,
@@ -196,15 +184,7 @@ BuildReport build_volume(GMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	// 3. close: boundary volumes mirror the free faces
 	std::vector<Dart> boundary_darts;
 	detail::close_beta3_holes(m, darts, boundary_darts);
-	{
-		DartMarker<GMap3> seen(m);
-		for (Dart b : boundary_darts)
-			if (!seen.is_marked(b))
-			{
-				seen.mark_orbit(GMap3::Volume(b));
-				++report.nb_boundary_cells;
-			}
-	}
+	report.nb_boundary_cells = detail::nb_distinct_volumes<GMap3::Volume>(m, boundary_darts);
 	darts.insert(darts.end(), boundary_darts.begin(), boundary_darts.end());
 	// the cells listed consistently (every shared face in opposite
 	// directions) orient the map; otherwise a two-colouring tells

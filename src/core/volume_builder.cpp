@@ -30,36 +30,15 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	// 1. each cell as a closed 2-map (faces sewn by phi2)
 	std::vector<Dart> darts;
 	std::vector<uint32> labels;
-	std::vector<uint32> scratch;
-	std::size_t first = 0;
-	for (uint32 n : cell_sizes)
-	{
-		if (first + n > cell_vertices.size())
-		{
-			++report.nb_cells_invalid;
-			first = cell_vertices.size();
-			continue;
-		}
-		std::span<const uint32> cv = cell_vertices.subspan(first, n);
-		first += n;
-		const detail::FaceList* faces = detail::cell_faces(n);
-		if (faces == nullptr || std::any_of(cv.begin(), cv.end(), [&](uint32 v) { return v >= nb_vertices; }))
-		{
-			++report.nb_cells_invalid;
-			continue;
-		}
-		if (detail::has_repeated_vertex(cv, scratch))
-		{
-			++report.nb_cells_degenerate;
-			continue;
-		}
-		labels.clear();
-		std::vector<Dart> cell_darts = detail::add_volume_topology(m, *faces, cv, labels);
-		for (std::size_t i = 0; i < cell_darts.size(); ++i)
-			vidx[cell_darts[i].index] = offset + labels[i];
-		darts.insert(darts.end(), cell_darts.begin(), cell_darts.end());
-		++report.nb_cells_built;
-	}
+	detail::foreach_buildable_cell(nb_vertices, cell_sizes, cell_vertices, report,
+								   [&](std::span<const uint32> cv, const detail::FaceList& faces) {
+									   labels.clear();
+									   std::vector<Dart> cell_darts = detail::add_volume_topology(m, faces, cv, labels);
+									   for (std::size_t i = 0; i < cell_darts.size(); ++i)
+										   vidx[cell_darts[i].index] = offset + labels[i];
+									   darts.insert(darts.end(), cell_darts.begin(), cell_darts.end());
+									   ++report.nb_cells_built;
+								   });
 
 	// 2. sew faces of adjacent cells: same vertices, opposite orientation
 	std::vector<uint32> offsets(nb_vertices + 1, 0);
@@ -131,15 +110,7 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	}
 	std::vector<Dart> boundary_darts;
 	detail::close_phi3_holes(m, darts, boundary_darts);
-	{
-		DartMarker<CMap3> dm(m);
-		for (Dart b : boundary_darts)
-			if (!dm.is_marked(b))
-			{
-				dm.mark_orbit(CMap3::Volume(b));
-				++report.nb_boundary_cells;
-			}
-	}
+	report.nb_boundary_cells = detail::nb_distinct_volumes<CMap3::Volume>(m, boundary_darts);
 	darts.insert(darts.end(), boundary_darts.begin(), boundary_darts.end());
 
 	// 4. vertex lines, split of non-manifold vertices
