@@ -3,6 +3,7 @@
 // unsew volumes.
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/operators/gmap3.h>
+#include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/properties.h>
 
 #include "gmap3_close.h"
@@ -200,11 +201,11 @@ bool can_merge_incident_volumes(const GMap3& m, GMap3::Face f)
 		return false;
 	if (same_orbit(m, GMap3::Volume(d), GMap3::Volume(d3)))
 		return false;
-	const std::vector<Dart> face = detail::orbit_darts(m, f);
-	for (Dart x : face)
-		if (contains(face, beta2(m, x)))
-			return false;
-	return true;
+	DartMarkerStore<GMap3> face(m);
+	face.mark_orbit(f);
+	bool glued_to_itself = false;
+	foreach_dart_of_orbit(m, f, [&](Dart x) { return !(glued_to_itself = face.is_marked(beta2(m, x))); });
+	return !glued_to_itself;
 }
 
 GMap3::Volume merge_incident_volumes(GMap3& m, GMap3::Face f, bool set_indices)
@@ -240,7 +241,7 @@ bool can_sew_volumes(const GMap3& m, GMap3::Face f1, GMap3::Face f2)
 		return false;
 	if (same_orbit(m, GMap3::Face(d1), GMap3::Face(d2)))
 		return false;
-	return detail::orbit_darts(m, GMap3::Face2(d1)).size() == detail::orbit_darts(m, GMap3::Face2(d2)).size();
+	return codegree(m, GMap3::Face(d1)) == codegree(m, GMap3::Face(d2));
 }
 
 void sew_volumes(GMap3& m, GMap3::Face f1, GMap3::Face f2, bool set_indices)
@@ -320,18 +321,9 @@ void unsew_volumes(GMap3& m, GMap3::Face f, bool set_indices)
 	const std::size_t half = side.size();
 	for (std::size_t k = 0; k < half; ++k)
 		side.push_back(beta3(m, side[k]));
-	// the boundary darts beside the face, which the new faces get between them
+	// the cells around: those of the face's darts (the boundary darts beside
+	// it, relinked by the closing, are in the same vertices and edges)
 	std::vector<Dart> region = side;
-	for (Dart d : side)
-	{
-		// around the edge of d from beta2(d), up to the other side of the
-		// face (beta3(d)), unless a boundary volume comes first
-		Dart x = beta2(m, d);
-		while (!is_boundary(m, beta3(m, x)) && x != beta3(m, d))
-			x = beta<3, 2>(m, x);
-		if (is_boundary(m, beta3(m, x)))
-			region.push_back(beta3(m, x));
-	}
 	detail::RegionReindexer<GMap3> reindex;
 	reindex.components_may_split();
 	if (set_indices)
