@@ -370,6 +370,15 @@ bool is_boundary_cell(const MAP& m, Cell<O> c)
 		return false;
 }
 
+/// Number of darts of cell c. O(size of the orbit).
+template <typename MAP, Orbit O>
+requires std::derived_from<MAP, CMapBase> uint32 nb_darts_of_orbit(const MAP& m, Cell<O> c)
+{
+	uint32 n = 0;
+	foreach_dart_of_orbit(m, c, [&](Dart) { ++n; });
+	return n;
+}
+
 /// True when the darts of c1 and c2 are in the same orbit, by traversal (does
 /// not look at indices: operators use it while indices are being rewritten).
 /// O(size of the orbit).

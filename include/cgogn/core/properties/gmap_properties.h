@@ -15,9 +15,7 @@ namespace cgogn
 /// (one per side, a boundary side included).
 inline uint32 degree(const GMap2& m, GMap2::Vertex v)
 {
-	uint32 n = 0;
-	foreach_dart_of_orbit(m, v, [&](Dart) { ++n; });
-	return n / 2;
+	return nb_darts_of_orbit(m, v) / 2;
 }
 /// Number of faces incident to e (1 or 2, boundary faces excluded). O(1).
 inline uint32 degree(const GMap2& m, GMap2::Edge e)
@@ -27,9 +25,7 @@ inline uint32 degree(const GMap2& m, GMap2::Edge e)
 /// Number of edges of face f. O(codegree).
 inline uint32 codegree(const GMap2& m, GMap2::Face f)
 {
-	uint32 n = 0;
-	foreach_dart_of_orbit(m, f, [&](Dart) { ++n; });
-	return n / 2;
+	return nb_darts_of_orbit(m, f) / 2;
 }
 
 /// Number of edges incident to v in a 3-G-map. O(size of the vertex orbit).
@@ -43,9 +39,7 @@ inline uint32 degree(const GMap3& m, GMap3::Vertex v)
 /// darts in the edge (two ends, two sides).
 inline uint32 degree(const GMap3& m, GMap3::Edge e)
 {
-	uint32 n = 0;
-	foreach_dart_of_orbit(m, e, [&](Dart) { ++n; });
-	return n / 4;
+	return nb_darts_of_orbit(m, e) / 4;
 }
 /// Number of non-boundary volumes incident to f (1 or 2). O(1).
 inline uint32 degree(const GMap3& m, GMap3::Face f)

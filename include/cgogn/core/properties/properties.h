@@ -18,9 +18,7 @@ namespace cgogn
 /// Number of edges incident to v. O(degree).
 inline uint32 degree(const CMap2& m, CMap2::Vertex v)
 {
-	uint32 n = 0;
-	foreach_dart_of_orbit(m, v, [&](Dart) { ++n; });
-	return n;
+	return nb_darts_of_orbit(m, v);
 }
 /// Number of non-boundary faces incident to e (1 or 2). O(1).
 inline uint32 degree(const CMap2& m, CMap2::Edge e)
@@ -67,9 +65,7 @@ inline uint32 degree(const CMap3&, CMap3::Volume)
 /// Number of vertices (= edges) of a face. O(codegree).
 inline uint32 codegree(const CMap1& m, CMap1::Face f)
 {
-	uint32 n = 0;
-	foreach_dart_of_orbit(m, f, [&](Dart) { ++n; });
-	return n;
+	return nb_darts_of_orbit(m, f);
 }
 /// 2: the vertices of an edge.
 inline uint32 codegree(const CMap2&, CMap2::Edge)
