@@ -5,6 +5,7 @@
 #include <cgogn/cgogn.h>
 
 #include "cgogn_test_data.h"
+#include "volume_test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -16,40 +17,6 @@ using namespace cgogn;
 
 namespace
 {
-
-struct Counts
-{
-	uint32 darts, v, e, f, w, cc, boundary;
-	int64 chi;
-	bool operator==(const Counts&) const = default;
-};
-
-std::ostream& operator<<(std::ostream& os, const Counts& c)
-{
-	return os << "{darts " << c.darts << ", V " << c.v << ", E " << c.e << ", F " << c.f << ", W " << c.w << ", CC "
-			  << c.cc << ", boundary " << c.boundary << ", chi " << c.chi << "}";
-}
-
-template <typename MAP>
-Counts counts(const MAP& m)
-{
-	using T = mesh_traits<MAP>;
-	return {nb_darts(m),
-			nb_cells<typename T::Vertex>(m),
-			nb_cells<typename T::Edge>(m),
-			nb_cells<typename T::Face>(m),
-			nb_cells<typename T::Volume>(m),
-			nb_cells<typename T::CC>(m),
-			nb_boundary_components(m),
-			euler_characteristic(m)};
-}
-
-// The same counts with the darts of the G-map halved.
-Counts halved(Counts c)
-{
-	c.darts /= 2;
-	return c;
-}
 
 void expect_same_report(const BuildReport& g, const BuildReport& c)
 {
@@ -65,23 +32,6 @@ void expect_same_report(const BuildReport& g, const BuildReport& c)
 	EXPECT_EQ(g.nb_nonmanifold_vertices, c.nb_nonmanifold_vertices);
 	EXPECT_EQ(g.split_vertices.size(), c.split_vertices.size());
 	EXPECT_EQ(g.orientable, c.orientable);
-}
-
-// A 2x2x1 hex grid with a pyramid and a prism on top.
-VolumeSoup mixed_soup()
-{
-	VolumeSoup s = hex_grid_soup(2, 2, 1);
-	const uint32 base = s.nb_vertices;
-	auto id = [](uint32 i, uint32 j, uint32 k) { return (k * 3 + j) * 3 + i; };
-	s.cell_sizes.push_back(5);
-	for (uint32 v : {id(0, 0, 1), id(1, 0, 1), id(1, 1, 1), id(0, 1, 1), base})
-		s.cell_vertices.push_back(v);
-	s.cell_sizes.push_back(6);
-	for (uint32 v : {id(1, 0, 1), id(2, 0, 1), id(2, 1, 1), base + 1, base + 2, base + 3})
-		s.cell_vertices.push_back(v);
-	s.nb_vertices = base + 4;
-	s.positions.resize(s.nb_vertices);
-	return s;
 }
 
 // Two soups side by side, the second's vertices numbered after the first's.
@@ -102,7 +52,7 @@ std::vector<std::pair<std::string, VolumeSoup>> soups()
 			{"tet grid 3x2x2", tet_grid_soup(3, 2, 2)},
 			{"hex grid 1", hex_grid_soup(1, 1, 1)},
 			{"hex grid 2x3x2", hex_grid_soup(2, 3, 2)},
-			{"mixed", mixed_soup()},
+			{"mixed", test::mixed_volume_soup()},
 			{"tets and hexes apart", side_by_side(tet_grid_soup(2, 1, 1), hex_grid_soup(1, 2, 1))}};
 }
 
@@ -121,15 +71,15 @@ TEST(GMap3Builder, SameCellsAsTheCMap3BuilderAndToGmap)
 		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
 		EXPECT_TRUE(is_orientable(g));
 		EXPECT_EQ(nb_darts(g), 2 * nb_darts(c));
-		EXPECT_EQ(halved(counts(g)), counts(c));
-		EXPECT_EQ(counts(g), counts(to_gmap(c)));
+		EXPECT_EQ(test::halved(test::volume_counts(g)), test::volume_counts(c));
+		EXPECT_EQ(test::volume_counts(g), test::volume_counts(to_gmap(c)));
 		EXPECT_EQ(nb_cells<GMap3::Face2>(g), nb_cells<CMap3::Face2>(c));
 		EXPECT_EQ(nb_cells<GMap3::Edge2>(g), nb_cells<CMap3::Edge2>(c));
 		EXPECT_EQ(nb_cells<GMap3::Vertex2>(g), nb_cells<CMap3::Vertex2>(c));
 		// and back: the 3-map of the G-map is the 3-map built
 		const CMap3 back = to_cmap(g);
 		EXPECT_TRUE(check_integrity(back).ok());
-		EXPECT_EQ(counts(back), counts(c));
+		EXPECT_EQ(test::volume_counts(back), test::volume_counts(c));
 	}
 }
 
@@ -147,14 +97,14 @@ TEST(GMap3Builder, VolumeFilesGiveTheCellsOfTheCMap3)
 		expect_same_report(rg.build, rc.build);
 		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
 		EXPECT_TRUE(is_orientable(g));
-		EXPECT_EQ(halved(counts(g)), counts(c));
-		EXPECT_EQ(counts(g), counts(to_gmap(c)));
+		EXPECT_EQ(test::halved(test::volume_counts(g)), test::volume_counts(c));
+		EXPECT_EQ(test::volume_counts(g), test::volume_counts(to_gmap(c)));
 	}
 }
 
 TEST(GMap3Builder, DartsOfACellAreConsecutiveFromItsFirstVertex)
 {
-	const VolumeSoup s = mixed_soup();
+	const VolumeSoup s = test::mixed_volume_soup();
 	GMap3 g;
 	const BuildReport r = build_volume(g, s);
 	// the prism meets the rest at vertices only: those are split for it
@@ -198,7 +148,7 @@ TEST(GMap3Builder, CellsListedInTheOppositeOrientationAreGlued)
 		GMap3 g;
 		const BuildReport r = build_volume(g, t);
 		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
-		EXPECT_EQ(halved(counts(g)), counts(reference)) << "cell " << cell;
+		EXPECT_EQ(test::halved(test::volume_counts(g)), test::volume_counts(reference)) << "cell " << cell;
 		EXPECT_TRUE(r.orientable);
 		EXPECT_TRUE(is_orientable(g));
 		EXPECT_EQ(r.nb_nonmanifold_faces, 0u);
@@ -217,7 +167,7 @@ TEST(GMap3Builder, CellsListedInTheOppositeOrientationAreGlued)
 	GMap3 g;
 	build_volume(g, t);
 	EXPECT_TRUE(check_integrity(g).ok());
-	EXPECT_EQ(halved(counts(g)), counts(hc));
+	EXPECT_EQ(test::halved(test::volume_counts(g)), test::volume_counts(hc));
 }
 
 TEST(GMap3Builder, InvalidAndDegenerateCellsAreReportedAsForCMap3)
@@ -243,7 +193,7 @@ TEST(GMap3Builder, InvalidAndDegenerateCellsAreReportedAsForCMap3)
 	EXPECT_EQ(rg.nb_cells_degenerate, 2u);
 	EXPECT_EQ(rg.nb_cells_built, 6u);
 	EXPECT_TRUE(check_integrity(g).ok());
-	EXPECT_EQ(counts(g), counts(to_gmap(c)));
+	EXPECT_EQ(test::volume_counts(g), test::volume_counts(to_gmap(c)));
 
 	// nothing buildable: an empty map, every vertex isolated
 	GMap3 e;
@@ -271,7 +221,7 @@ TEST(GMap3Builder, NonManifoldFacesAndVerticesAsForCMap3)
 		EXPECT_EQ(rg.nb_nonmanifold_faces, 1u);
 		EXPECT_TRUE(rg.orientable);
 		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
-		EXPECT_EQ(counts(g), counts(to_gmap(c)));
+		EXPECT_EQ(test::volume_counts(g), test::volume_counts(to_gmap(c)));
 	}
 
 	// two tetrahedra sharing a vertex only, then an edge only
@@ -285,7 +235,7 @@ TEST(GMap3Builder, NonManifoldFacesAndVerticesAsForCMap3)
 		expect_same_report(r2g, r2c);
 		EXPECT_EQ(r2g.split_vertices, r2c.split_vertices);
 		EXPECT_TRUE(check_integrity(g2).ok()) << check_integrity(g2).to_string();
-		EXPECT_EQ(counts(g2), counts(to_gmap(c2)));
+		EXPECT_EQ(test::volume_counts(g2), test::volume_counts(to_gmap(c2)));
 	}
 }
 
@@ -294,12 +244,12 @@ TEST(GMap3Builder, AppendsWithAVertexOffset)
 	const VolumeSoup s = hex_grid_soup(2, 1, 1);
 	GMap3 g;
 	const BuildReport r1 = build_volume(g, s);
-	const Counts one = counts(g);
+	const test::VolumeCounts one = test::volume_counts(g);
 	const BuildReport r2 = build_volume(g, s);
 	EXPECT_EQ(r1.vertex_offset, 0u);
 	EXPECT_EQ(r2.vertex_offset, s.nb_vertices);
 	EXPECT_TRUE(check_integrity(g).ok());
-	const Counts two = counts(g);
+	const test::VolumeCounts two = test::volume_counts(g);
 	EXPECT_EQ(two.darts, 2 * one.darts);
 	EXPECT_EQ(two.v, 2 * one.v);
 	EXPECT_EQ(two.w, 2 * one.w);

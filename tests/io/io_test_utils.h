@@ -138,4 +138,29 @@ inline std::string quoted(const std::string& path)
 }
 #endif
 
+/// One volume format variant written and read back by the round-trip tests.
+struct VolumeCase
+{
+	const char* name;
+	const char* file;
+	bool binary;
+	bool attributes; // the format keeps vertex and volume attributes
+	bool tets_only;
+};
+
+inline std::string volume_case_name(const testing::TestParamInfo<VolumeCase>& i)
+{
+	return i.param.name;
+}
+
+/// Every volume format variant.
+inline std::vector<VolumeCase> volume_cases()
+{
+	return {{"medit", "m.mesh", false, false, false},     {"vtk_ascii", "m.vtk", false, true, false},
+			{"vtk_binary", "m.vtk", true, true, false},   {"vtu_ascii", "m.vtu", false, true, false},
+			{"vtu_appended", "m.vtu", true, true, false}, {"msh4_ascii", "m.msh", false, false, false},
+			{"msh4_binary", "m.msh", true, false, false}, {"tetgen", "m.ele", false, false, true},
+			{"medit_tets", "t.mesh", false, false, true}};
+}
+
 } // namespace cgogn::io_test

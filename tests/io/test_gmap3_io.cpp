@@ -6,6 +6,7 @@
 #include <cgogn/cgogn.h>
 
 #include "io_test_utils.h"
+#include "volume_test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -19,61 +20,6 @@ using GVolume = GMap3::Volume;
 
 namespace
 {
-
-struct Counts
-{
-	uint32 darts, v, e, f, w, cc, boundary;
-	int64 chi;
-	bool operator==(const Counts&) const = default;
-};
-
-template <typename MAP>
-Counts counts(const MAP& m)
-{
-	using T = mesh_traits<MAP>;
-	return {nb_darts(m),
-			nb_cells<typename T::Vertex>(m),
-			nb_cells<typename T::Edge>(m),
-			nb_cells<typename T::Face>(m),
-			nb_cells<typename T::Volume>(m),
-			nb_cells<typename T::CC>(m),
-			nb_boundary_components(m),
-			euler_characteristic(m)};
-}
-
-struct FormatCase
-{
-	const char* name;
-	const char* file;
-	bool binary;
-	bool attributes; // the format keeps vertex and volume attributes
-	bool tets_only;
-};
-
-std::string case_name(const testing::TestParamInfo<FormatCase>& i)
-{
-	return i.param.name;
-}
-
-// A 2x2x1 hex grid with a pyramid and a prism on top (positively oriented).
-VolumeSoup mixed_soup()
-{
-	VolumeSoup s = hex_grid_soup(2, 2, 1);
-	const uint32 base = s.nb_vertices;
-	auto id = [](uint32 i, uint32 j, uint32 k) { return (k * 3 + j) * 3 + i; };
-	s.positions.push_back({0.5, 0.5, 1.7});
-	s.cell_sizes.push_back(5);
-	for (uint32 v : {id(0, 0, 1), id(1, 0, 1), id(1, 1, 1), id(0, 1, 1), base})
-		s.cell_vertices.push_back(v);
-	s.positions.push_back({1.0, 0.0, 2.0});
-	s.positions.push_back({2.0, 0.0, 2.0});
-	s.positions.push_back({2.0, 1.0, 2.0});
-	s.cell_sizes.push_back(6);
-	for (uint32 v : {id(1, 0, 1), id(2, 0, 1), id(2, 1, 1), base + 1, base + 2, base + 3})
-		s.cell_vertices.push_back(v);
-	s.nb_vertices = base + 4;
-	return s;
-}
 
 // The same cells, each listed in the other orientation: a GMap3 built from
 // it has the same cells, but each volume's first darts turn inwards.
@@ -123,7 +69,7 @@ std::map<std::vector<uint32>, double> region_by_cell(const GMap3& m)
 	return out;
 }
 
-class GMap3Formats : public testing::TestWithParam<FormatCase>
+class GMap3Formats : public testing::TestWithParam<VolumeCase>
 {
 };
 
@@ -131,10 +77,10 @@ class GMap3Formats : public testing::TestWithParam<FormatCase>
 
 TEST_P(GMap3Formats, RoundTripKeepsCountsPositionsAndAttributes)
 {
-	const FormatCase& c = GetParam();
+	const VolumeCase& c = GetParam();
 	TempDir dir;
 	GMap3 a;
-	build_with_positions(a, c.tets_only ? tet_grid_soup(2, 2, 2) : mixed_soup());
+	build_with_positions(a, c.tets_only ? tet_grid_soup(2, 2, 2) : test::mixed_volume_soup());
 	add_values(a);
 	ASSERT_TRUE(check_integrity(a).ok());
 	io::SaveOptions options;
@@ -148,7 +94,7 @@ TEST_P(GMap3Formats, RoundTripKeepsCountsPositionsAndAttributes)
 	EXPECT_EQ(r.nb_cells_skipped, 0u);
 	EXPECT_TRUE(r.manifold());
 	EXPECT_TRUE(check_integrity(b).ok()) << check_integrity(b).to_string();
-	EXPECT_EQ(counts(b), counts(a));
+	EXPECT_EQ(test::volume_counts(b), test::volume_counts(a));
 	EXPECT_EQ(values_of(*get_attribute<Vec3, GVertex>(b, "position")),
 			  values_of(*get_attribute<Vec3, GVertex>(a, "position")));
 	if (c.attributes)
@@ -170,7 +116,7 @@ TEST_P(GMap3Formats, RoundTripKeepsCountsPositionsAndAttributes)
 	const io::LoadReport rc = io::load_volume(cm, path);
 	EXPECT_EQ(rc.nb_cells_reoriented, 0u);
 	const GMap3 converted = to_gmap(cm);
-	EXPECT_EQ(counts(b), counts(converted));
+	EXPECT_EQ(test::volume_counts(b), test::volume_counts(converted));
 	EXPECT_EQ(nb_darts(b), 2 * nb_darts(cm));
 	EXPECT_EQ(values_of(*get_attribute<Vec3, GVertex>(b, "position")),
 			  values_of(*get_attribute<Vec3, GVertex>(converted, "position")));
@@ -178,9 +124,9 @@ TEST_P(GMap3Formats, RoundTripKeepsCountsPositionsAndAttributes)
 
 TEST_P(GMap3Formats, CellsWithInwardDartsAreWrittenInTheFormatsOrder)
 {
-	const FormatCase& c = GetParam();
+	const VolumeCase& c = GetParam();
 	TempDir dir;
-	const VolumeSoup s = c.tets_only ? tet_grid_soup(2, 1, 2) : mixed_soup();
+	const VolumeSoup s = c.tets_only ? tet_grid_soup(2, 1, 2) : test::mixed_volume_soup();
 	GMap3 a;
 	build_with_positions(a, turned_over(s));
 	const std::string path = dir.file(c.file);
@@ -190,21 +136,11 @@ TEST_P(GMap3Formats, CellsWithInwardDartsAreWrittenInTheFormatsOrder)
 	CMap3 b;
 	const io::LoadReport r = io::load_volume(b, path);
 	EXPECT_EQ(r.nb_cells_reoriented, 0u);
-	EXPECT_EQ(counts(b), counts(reference)); // every shared face sewn
+	EXPECT_EQ(test::volume_counts(b), test::volume_counts(reference)); // every shared face sewn
 	EXPECT_TRUE(check_integrity(b).ok());
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, GMap3Formats,
-						 testing::Values(FormatCase{"medit", "m.mesh", false, false, false},
-										 FormatCase{"vtk_ascii", "m.vtk", false, true, false},
-										 FormatCase{"vtk_binary", "m.vtk", true, true, false},
-										 FormatCase{"vtu_ascii", "m.vtu", false, true, false},
-										 FormatCase{"vtu_appended", "m.vtu", true, true, false},
-										 FormatCase{"msh4_ascii", "m.msh", false, false, false},
-										 FormatCase{"msh4_binary", "m.msh", true, false, false},
-										 FormatCase{"tetgen", "m.ele", false, false, true},
-										 FormatCase{"medit_tets", "t.mesh", false, false, true}),
-						 case_name);
+INSTANTIATE_TEST_SUITE_P(Formats, GMap3Formats, testing::ValuesIn(volume_cases()), volume_case_name);
 
 TEST(GMap3Load, DataFilesGiveTheCMap3LoadConverted)
 {
@@ -217,7 +153,7 @@ TEST(GMap3Load, DataFilesGiveTheCMap3LoadConverted)
 		CMap3 c;
 		const io::LoadReport rc = io::load_volume(c, path);
 		const GMap3 converted = to_gmap(c);
-		EXPECT_EQ(counts(g), counts(converted));
+		EXPECT_EQ(test::volume_counts(g), test::volume_counts(converted));
 		EXPECT_EQ(rg.nb_cells_built, rc.nb_cells_built);
 		EXPECT_EQ(rg.nb_cells_reoriented, rc.nb_cells_reoriented);
 		EXPECT_EQ(rg.nb_holes_closed, rc.nb_holes_closed);
@@ -231,7 +167,7 @@ TEST(GMap3Load, DataFilesGiveTheCMap3LoadConverted)
 		GMap3 h;
 		const io::LoadReport rh = io::load_volume(h, dir.file("back.vtu"));
 		EXPECT_EQ(rh.nb_cells_reoriented, 0u);
-		EXPECT_EQ(counts(h), counts(g));
+		EXPECT_EQ(test::volume_counts(h), test::volume_counts(g));
 	}
 }
 
@@ -314,6 +250,6 @@ TEST(GMap3Load, ASolidKleinBottleRoundTrips)
 		EXPECT_EQ(r.summary("GMap3"), "the volume mesh is not orientable\n");
 		EXPECT_FALSE(is_orientable(b));
 		EXPECT_TRUE(check_integrity(b).ok());
-		EXPECT_EQ(counts(b), counts(a));
+		EXPECT_EQ(test::volume_counts(b), test::volume_counts(a));
 	}
 }

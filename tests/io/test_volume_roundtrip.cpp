@@ -4,6 +4,7 @@
 #include <cgogn/cgogn.h>
 
 #include "io_test_utils.h"
+#include "volume_test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -15,49 +16,12 @@ using Volume = CMap3::Volume;
 namespace
 {
 
-struct VolumeCase
-{
-	const char* name;
-	const char* file;
-	bool binary;
-	bool attributes; // the format keeps vertex and volume attributes
-	bool tets_only;
-};
-
-std::string case_name(const testing::TestParamInfo<VolumeCase>& i)
-{
-	return i.param.name;
-}
-
-// A soup of every cell kind: a 2x2x1 hex grid, plus a pyramid and a prism
-// glued to it, plus a tet grid next to them.
-VolumeSoup mixed_soup()
-{
-	VolumeSoup s = hex_grid_soup(2, 2, 1);
-	const uint32 base = s.nb_vertices;
-	// pyramid on top of the hex (0,0): its top face is z = 1, x,y in [0,1]
-	auto id = [](uint32 i, uint32 j, uint32 k) { return (k * 3 + j) * 3 + i; };
-	s.positions.push_back({0.5, 0.5, 1.7});
-	s.cell_sizes.push_back(5);
-	for (uint32 v : {id(0, 0, 1), id(1, 0, 1), id(1, 1, 1), id(0, 1, 1), base})
-		s.cell_vertices.push_back(v);
-	// prism on top of the hex (1,0): triangle (1,0,1) (2,0,1) (2,1,1) lifted
-	s.positions.push_back({1.0, 0.0, 2.0});
-	s.positions.push_back({2.0, 0.0, 2.0});
-	s.positions.push_back({2.0, 1.0, 2.0});
-	s.cell_sizes.push_back(6);
-	for (uint32 v : {id(1, 0, 1), id(2, 0, 1), id(2, 1, 1), base + 1, base + 2, base + 3})
-		s.cell_vertices.push_back(v);
-	s.nb_vertices = base + 4;
-	return s;
-}
-
 void make_mesh(CMap3& m, bool tets_only)
 {
 	if (tets_only)
 		build_with_positions(m, tet_grid_soup(2, 2, 2));
 	else
-		build_with_positions(m, mixed_soup());
+		build_with_positions(m, test::mixed_volume_soup());
 	auto t = add_attribute<double, Vertex>(m, "temperature");
 	auto f = add_attribute<Vec3, Vertex>(m, "flow");
 	auto r = add_attribute<double, Volume>(m, "region");
@@ -131,17 +95,7 @@ TEST_P(VolumeRoundTrip, SameCountsPositionsAndAttributes)
 	}
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, VolumeRoundTrip,
-						 testing::Values(VolumeCase{"medit", "m.mesh", false, false, false},
-										 VolumeCase{"vtk_ascii", "m.vtk", false, true, false},
-										 VolumeCase{"vtk_binary", "m.vtk", true, true, false},
-										 VolumeCase{"vtu_ascii", "m.vtu", false, true, false},
-										 VolumeCase{"vtu_appended", "m.vtu", true, true, false},
-										 VolumeCase{"msh4_ascii", "m.msh", false, false, false},
-										 VolumeCase{"msh4_binary", "m.msh", true, false, false},
-										 VolumeCase{"tetgen", "m.ele", false, false, true},
-										 VolumeCase{"medit_tets", "t.mesh", false, false, true}),
-						 case_name);
+INSTANTIATE_TEST_SUITE_P(Formats, VolumeRoundTrip, testing::ValuesIn(volume_cases()), volume_case_name);
 
 TEST(VolumeLoad, NegativeTetsAreTurnedOver)
 {
