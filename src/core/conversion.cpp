@@ -50,7 +50,7 @@ namespace
 {
 
 // The G-map of a combinatorial map: each dart d of m becomes A(d) = 2k at
-// its origin and B(d) = 2k + 1 at its end, beta0 between them; beta1 joins
+// its origin and B(d) = 2k + 1 at its end, a pair (beta0); beta1 joins
 // the end of d to the origin of phi1(d), beta_i (i >= 2) the origin of d to
 // the end of phi_i(d), which goes the other way.
 template <typename GMAP, typename CMAP>
@@ -59,15 +59,10 @@ GMAP gmap_of(const CMAP& m)
 	GMAP g;
 	const AttributeContainer& darts = *detail::state_of(m).darts;
 	std::vector<uint32> a(darts.end_index(), INVALID_INDEX);
-	foreach_dart(m, [&](Dart d) {
-		a[d.index] = detail::add_dart(g).index;
-		detail::add_dart(g);
-	});
+	foreach_dart(m, [&](Dart d) { a[d.index] = detail::add_dart_pair(g).index; });
 	auto A = [&](Dart d) { return Dart(a[d.index]); };
 	auto B = [&](Dart d) { return Dart(a[d.index] + 1); };
 	foreach_dart(m, [&](Dart d) {
-		detail::set_beta<0>(g, A(d), B(d));
-		detail::set_beta<0>(g, B(d), A(d));
 		detail::set_beta<1>(g, B(d), A(phi1(m, d)));
 		detail::set_beta<1>(g, A(phi1(m, d)), B(d));
 		detail::set_beta<2>(g, A(d), B(phi2(m, d)));

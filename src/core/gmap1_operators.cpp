@@ -18,14 +18,14 @@ GMap1::Face add_face(GMap1& m, uint32 n, bool set_indices)
 	assert(n >= 1);
 	std::vector<Dart> darts;
 	darts.reserve(2 * n);
-	for (uint32 i = 0; i < 2 * n; ++i)
-		darts.push_back(detail::add_dart(m));
-	// edge i is (darts[2i], darts[2i+1]); vertex i+1 joins darts[2i+1] and darts[2i+2]
 	for (uint32 i = 0; i < n; ++i)
 	{
-		beta_sew<0>(m, darts[2 * i], darts[2 * i + 1]);
-		beta_sew<1>(m, darts[2 * i + 1], darts[(2 * i + 2) % (2 * n)]);
+		const Dart d = detail::add_dart_pair(m);
+		darts.insert(darts.end(), {d, beta0(m, d)});
 	}
+	// edge i is the pair (darts[2i], darts[2i+1]); vertex i+1 joins darts[2i+1] and darts[2i+2]
+	for (uint32 i = 0; i < n; ++i)
+		beta_sew<1>(m, darts[2 * i + 1], darts[(2 * i + 2) % (2 * n)]);
 	if (set_indices)
 		detail::index_new_darts(m, darts);
 	return GMap1::Face(darts[0]);
@@ -33,18 +33,15 @@ GMap1::Face add_face(GMap1& m, uint32 n, bool set_indices)
 
 GMap1::Vertex cut_edge(GMap1& m, GMap1::Edge e, bool set_indices)
 {
-	const Dart d = e.dart, d0 = beta0(m, e.dart);
+	std::vector<Dart> region{e.dart, beta0(m, e.dart)};
 	detail::RegionReindexer<GMap1> reindex;
 	if (set_indices)
-		reindex.record(m, {d, d0});
-	const Dart x = detail::new_dart_like(m, d), y = detail::new_dart_like(m, d);
-	beta_unsew<0>(m, d);
-	beta_sew<0>(m, d, x);
-	beta_sew<0>(m, d0, y);
-	beta_sew<1>(m, x, y);
+		reindex.record(m, region);
+	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, e.dart);
+	region.insert(region.end(), added.begin(), added.end());
 	if (set_indices)
-		reindex.apply(m, {d, d0, x, y});
-	return GMap1::Vertex(y);
+		reindex.apply(m, region);
+	return GMap1::Vertex(added[0]);
 }
 
 GMap1::Vertex collapse_edge(GMap1& m, GMap1::Edge e, bool set_indices)
@@ -56,8 +53,7 @@ GMap1::Vertex collapse_edge(GMap1& m, GMap1::Edge e, bool set_indices)
 	if (set_indices)
 		reindex.record(m, {q, p, d, d0});
 	detail::link_beta<1>(m, p, q);
-	detail::remove_dart(m, d);
-	detail::remove_dart(m, d0);
+	detail::remove_dart_pair(m, d);
 	if (set_indices)
 		reindex.apply(m, {q, p}); // q first: the vertex keeps the line of the end that survives
 	return GMap1::Vertex(q);

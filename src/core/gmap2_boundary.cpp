@@ -56,18 +56,18 @@ GMap2::Face close_hole(GMap2& m, Dart d, bool mark_boundary, bool set_indices)
 	} while (it != d);
 	std::vector<Dart> created;
 	created.reserve(hole.size());
-	for (Dart h : hole)
+	for (std::size_t j = 0; j < hole.size(); j += 2)
 	{
-		const Dart b = detail::add_dart(m);
-		detail::set_boundary(m, b, mark_boundary);
-		beta_sew<2>(m, h, b);
-		created.push_back(b);
+		const Dart b = detail::add_dart_pair(m);
+		created.insert(created.end(), {b, beta0(m, b)});
+	}
+	for (std::size_t j = 0; j < hole.size(); ++j)
+	{
+		detail::set_boundary(m, created[j], mark_boundary);
+		beta_sew<2>(m, hole[j], created[j]);
 	}
 	for (std::size_t j = 0; j < created.size(); j += 2)
-	{
-		beta_sew<0>(m, created[j], created[j + 1]);
 		beta_sew<1>(m, created[j + 1], created[(j + 2) % created.size()]);
-	}
 	if (set_indices)
 	{
 		for (Dart b : created)
@@ -154,8 +154,7 @@ void sew_faces(GMap2& m, GMap2::Edge e1, GMap2::Edge e2, bool set_indices)
 		reindex.record(m, {gone.begin(), gone.end()});
 		reindex.components_may_split();
 	}
-	for (Dart b : gone)
-		detail::remove_dart(m, b);
+	detail::remove_dart_pairs(m, {gone.begin(), gone.end()});
 	for (const auto& [a, b] : links)
 		detail::link_beta<1>(m, a, b);
 	detail::link_beta<2>(m, d1, d2);
@@ -192,7 +191,7 @@ void unsew_faces(GMap2& m, GMap2::Edge e, bool set_indices)
 		reindex.components_may_split();
 	}
 	// b, b0 become beta2 of d, d0; c, c0 of d2, d20
-	const Dart b = detail::add_dart(m), b0 = detail::add_dart(m), c = detail::add_dart(m), c0 = detail::add_dart(m);
+	const Dart b = detail::add_dart_pair(m), b0 = beta0(m, b), c = detail::add_dart_pair(m), c0 = beta0(m, c);
 	for (Dart x : {b, b0, c, c0})
 		detail::set_boundary(m, x, true);
 	beta_unsew<2>(m, d);
@@ -201,8 +200,6 @@ void unsew_faces(GMap2& m, GMap2::Edge e, bool set_indices)
 	beta_sew<2>(m, d0, b0);
 	beta_sew<2>(m, d2, c);
 	beta_sew<2>(m, d20, c0);
-	beta_sew<0>(m, b, b0);
-	beta_sew<0>(m, c, c0);
 	const auto open_corner = [&](Dart u, Dart v, Dart on_d_side, Dart on_d2_side) {
 		if (!u.is_valid())
 		{

@@ -58,17 +58,19 @@ std::vector<Dart> close_holes(GMap2& m, const std::vector<Dart>& darts, Attribut
 	for (Dart d : darts)
 		if (beta2(m, d) == d)
 		{
-			const Dart b = detail::add_dart(m);
-			detail::set_boundary(m, b, true);
-			vidx[b.index] = vidx[d.index];
-			beta_sew<2>(m, d, b);
-			created.push_back(b);
+			// the pair of a free dart is free (beta0 o beta2 is an involution)
+			const Dart p = detail::add_dart_pair(m);
+			for (const auto& [x, b] : {std::pair{d, p}, std::pair{beta0(m, d), beta0(m, p)}})
+			{
+				detail::set_boundary(m, b, true);
+				vidx[b.index] = vidx[x.index];
+				beta_sew<2>(m, x, b);
+				created.push_back(b);
+			}
 		}
 	for (Dart b : created)
 	{
 		const Dart d = beta2(m, b);
-		if (beta0(m, b) == b)
-			beta_sew<0>(m, b, beta2(m, beta0(m, d)));
 		if (beta1(m, b) == b)
 		{
 			Dart e = beta1(m, d);
@@ -111,11 +113,10 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 									   const std::size_t face_start = darts.size();
 									   for (uint32 i = 0; i < n; ++i)
 									   {
-										   const Dart a = detail::add_dart(m);
-										   const Dart b = detail::add_dart(m);
+										   const Dart a = detail::add_dart_pair(m);
+										   const Dart b = beta0(m, a);
 										   vidx[a.index] = offset + fv[i];
 										   vidx[b.index] = offset + fv[(i + 1) % n];
-										   beta_sew<0>(m, a, b);
 										   if (i > 0)
 											   beta_sew<1>(m, darts.back(), a);
 										   darts.push_back(a);

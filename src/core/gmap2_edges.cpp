@@ -147,8 +147,7 @@ GMap2::Vertex collapse_edge(GMap2& m, GMap2::Edge e, bool set_indices)
 	remove_if_two_gon(m, p, q, removed);
 	remove_if_two_gon(m, r, s, removed);
 	std::erase_if(region, [&](Dart x) { return std::find(removed.begin(), removed.end(), x) != removed.end(); });
-	for (Dart x : removed)
-		detail::remove_dart(m, x);
+	detail::remove_dart_pairs(m, removed);
 	assert(!region.empty());
 	if (set_indices)
 		reindex.apply(m, region);

@@ -59,16 +59,18 @@ GMap2::Vertex triangulate_face(GMap2& m, GMap2::Face f, bool set_indices)
 	// centre, t0_i at the centre and t_i at x_i's vertex
 	std::vector<Dart> s(n), s0(n), t(n), t0(n);
 	for (std::size_t i = 0; i < n; ++i)
-		for (Dart* z : {&s[i], &s0[i], &t[i], &t0[i]})
-			*z = detail::add_dart(m);
+	{
+		s[i] = detail::add_dart_pair(m);
+		s0[i] = beta0(m, s[i]);
+		t[i] = detail::add_dart_pair(m);
+		t0[i] = beta0(m, t[i]);
+	}
 	for (std::size_t i = 0; i < n; ++i)
 	{
 		const Dart x = xs[i], y = beta0(m, x);
 		beta_unsew<1>(m, y); // y's old beta1 is x_i+1, which gets t_i+1
 		beta_sew<1>(m, y, s[i]);
-		beta_sew<0>(m, s[i], s0[i]);
 		beta_sew<1>(m, s0[i], t0[i]);
-		beta_sew<0>(m, t0[i], t[i]);
 	}
 	for (std::size_t i = 0; i < n; ++i)
 	{

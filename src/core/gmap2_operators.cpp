@@ -18,11 +18,11 @@ GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices)
 	detail::RegionReindexer<GMap2> reindex;
 	if (set_indices)
 		reindex.record(m, region);
-	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, region);
+	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, e.dart);
 	region.insert(region.end(), added.begin(), added.end());
 	if (set_indices)
 		reindex.apply(m, region);
-	return GMap2::Vertex(added[1]); // the new dart beside beta0(e.dart)
+	return GMap2::Vertex(added[0]);
 }
 
 bool detail::corners_can_be_joined(const GMap2& m, Dart d, Dart e)
@@ -58,15 +58,14 @@ detail::FaceSideCut detail::split_face_side(GMap2& m, Dart d, Dart e)
 		x = beta1(m, x);
 	}
 	const Dart g = f == e ? e1 : e;
-	const FaceSideCut c{new_dart_like(m, d), new_dart_like(m, d), new_dart_like(m, d), new_dart_like(m, d)};
+	const Dart p = new_dart_pair_like(m, d), q = new_dart_pair_like(m, d);
+	const FaceSideCut c{p, beta0(m, p), q, beta0(m, q)};
 	beta_unsew<1>(m, d);
 	beta_unsew<1>(m, e);
 	beta_sew<1>(m, d, c.p);
 	beta_sew<1>(m, f, c.p0);
 	beta_sew<1>(m, d1, c.q);
 	beta_sew<1>(m, g, c.q0);
-	beta_sew<0>(m, c.p, c.p0);
-	beta_sew<0>(m, c.q, c.q0);
 	beta_sew<2>(m, c.p, c.q);
 	beta_sew<2>(m, c.p0, c.q0);
 	return c;
@@ -117,8 +116,8 @@ GMap2::Face merge_incident_faces(GMap2& m, GMap2::Edge e, bool set_indices)
 		beta_unsew<1>(m, x);
 	beta_sew<1>(m, a, b);
 	beta_sew<1>(m, a0, b0);
-	for (Dart x : edge)
-		detail::remove_dart(m, x);
+	detail::remove_dart_pair(m, edge[0]);
+	detail::remove_dart_pair(m, edge[2]);
 	const std::vector<Dart> kept{a, b, a0, b0};
 	if (set_indices)
 		reindex.apply(m, kept);

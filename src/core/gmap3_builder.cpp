@@ -48,8 +48,8 @@ CellFace make_face(const std::vector<uint32>& fv, uint32 first)
 	return f;
 }
 
-// One cell as a closed 2-G-map: 2n darts per face of n vertices (beta0
-// between the two ends of an edge side, beta1 between the two sides of a
+// One cell as a closed 2-G-map: 2n darts per face of n vertices (a pair,
+// beta0, for the two ends of an edge side, beta1 between the two sides of a
 // corner), beta2 between the faces of the cell along each edge, dart at a
 // vertex to dart at the same vertex. The darts are appended to `darts`, with
 // their soup vertex line in vidx, and the faces to `faces`; fv is scratch.
@@ -68,11 +68,10 @@ void add_cell(GMap3& m, std::span<const uint32> cv, const detail::FaceList& cell
 		for (uint32 i = 0; i < k; ++i)
 		{
 			const uint32 u = f[i], w = f[(i + 1) % k];
-			const Dart a = detail::add_dart(m);
-			const Dart b = detail::add_dart(m);
+			const Dart a = detail::add_dart_pair(m);
+			const Dart b = beta0(m, a);
 			vidx[a.index] = offset + cv[u];
 			vidx[b.index] = offset + cv[w];
-			beta_sew<0>(m, a, b);
 			if (i > 0)
 				beta_sew<1>(m, darts.back(), a);
 			darts.push_back(a);

@@ -15,19 +15,24 @@ namespace cgogn::detail
 void close_beta3_holes(GMap3& m, const std::vector<Dart>& darts, std::vector<Dart>& created)
 {
 	const std::size_t first = created.size();
-	// 1. a boundary mirror for every free dart
+	// 1. a boundary mirror for every free dart, pair by pair (free darts come
+	// in whole faces: the pair of a free dart is free)
 	for (Dart d : darts)
 	{
 		if (beta3(m, d) != d)
 			continue;
-		const Dart b = add_dart(m);
-		set_boundary(m, b, true);
-		copy_dart_index<Orbit::BETA1_BETA2_BETA3>(m, b, d);
-		copy_dart_index<Orbit::BETA0_BETA2_BETA3>(m, b, d);
-		copy_dart_index<Orbit::BETA0_BETA1_BETA3>(m, b, d);
-		copy_dart_index<Orbit::BETA0_BETA1_BETA2_BETA3>(m, b, d);
-		link_beta<3>(m, d, b);
-		created.push_back(b);
+		assert(beta3(m, beta0(m, d)) == beta0(m, d));
+		const Dart p = add_dart_pair(m);
+		for (const auto& [x, b] : {std::pair{d, p}, std::pair{beta0(m, d), beta0(m, p)}})
+		{
+			set_boundary(m, b, true);
+			copy_dart_index<Orbit::BETA1_BETA2_BETA3>(m, b, x);
+			copy_dart_index<Orbit::BETA0_BETA2_BETA3>(m, b, x);
+			copy_dart_index<Orbit::BETA0_BETA1_BETA3>(m, b, x);
+			copy_dart_index<Orbit::BETA0_BETA1_BETA2_BETA3>(m, b, x);
+			link_beta<3>(m, x, b);
+			created.push_back(b);
+		}
 	}
 	// 2. the faces of the boundary mirror the free faces; around each edge, a
 	// boundary dart is glued to the first boundary dart met by turning from
@@ -36,9 +41,7 @@ void close_beta3_holes(GMap3& m, const std::vector<Dart>& darts, std::vector<Dar
 	{
 		const Dart b = created[i];
 		const Dart d = beta3(m, b);
-		assert(beta3(m, beta0(m, d)) != beta0(m, d) && beta3(m, beta1(m, d)) != beta1(m, d));
-		if (beta0(m, b) == b)
-			link_beta<0>(m, b, beta3(m, beta0(m, d)));
+		assert(beta3(m, beta1(m, d)) != beta1(m, d));
 		if (beta1(m, b) == b)
 			link_beta<1>(m, b, beta3(m, beta1(m, d)));
 		if (beta2(m, b) != b)

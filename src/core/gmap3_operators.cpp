@@ -38,13 +38,11 @@ GMap3::Vertex cut_edge(GMap3& m, GMap3::Edge e, bool set_indices)
 	detail::RegionReindexer<GMap3> reindex;
 	if (set_indices)
 		reindex.record(m, region);
-	const Dart end = beta0(m, e.dart);
-	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, region);
-	const Dart result = added[std::size_t(std::find(region.begin(), region.end(), end) - region.begin())];
+	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, e.dart);
 	region.insert(region.end(), added.begin(), added.end());
 	if (set_indices)
 		reindex.apply(m, region);
-	return GMap3::Vertex(result);
+	return GMap3::Vertex(added[0]);
 }
 
 bool can_cut_face(const GMap3& m, Dart d, Dart e)
@@ -105,8 +103,7 @@ GMap3::Face merge_incident_faces(GMap3& m, GMap3::Edge e, bool set_indices)
 		links.emplace_back(beta1(m, x), beta1(m, beta2(m, x)));
 	for (const auto& [a, b] : links)
 		detail::set_beta<1>(m, a, b);
-	for (Dart x : edge)
-		detail::remove_dart(m, x);
+	detail::remove_dart_pairs(m, edge);
 	if (set_indices)
 		reindex.apply(m, kept); // kept[0] = beta1(e.dart), in the face of e.dart
 	return GMap3::Face(kept.front());
@@ -171,10 +168,15 @@ GMap3::Face cut_volume(GMap3& m, const std::vector<Dart>& path, bool set_indices
 		reindex.record(m, region);
 	// the new face: a[k] glued to ps[k] (the path's side), b[k] to others[k]
 	std::vector<Dart> a(2 * n), b(2 * n);
+	for (std::size_t k = 0; k < 2 * n; k += 2)
+	{
+		a[k] = detail::add_dart_pair(m);
+		b[k] = detail::add_dart_pair(m);
+		a[k + 1] = beta0(m, a[k]);
+		b[k + 1] = beta0(m, b[k]);
+	}
 	for (std::size_t k = 0; k < 2 * n; ++k)
 	{
-		a[k] = detail::add_dart(m);
-		b[k] = detail::add_dart(m);
 		detail::link_beta<2>(m, ps[k], a[k]);
 		detail::link_beta<2>(m, others[k], b[k]);
 		beta_sew<3>(m, a[k], b[k]);
@@ -182,8 +184,6 @@ GMap3::Face cut_volume(GMap3& m, const std::vector<Dart>& path, bool set_indices
 	for (std::size_t i = 0; i < n; ++i)
 	{
 		const std::size_t k = 2 * i, next = (2 * i + 2) % (2 * n);
-		beta_sew<0>(m, a[k], a[k + 1]);
-		beta_sew<0>(m, b[k], b[k + 1]);
 		beta_sew<1>(m, a[k + 1], a[next]); // at the vertex where p_i ends and p_i+1 starts
 		beta_sew<1>(m, b[k + 1], b[next]);
 	}
@@ -205,7 +205,19 @@ bool can_merge_incident_volumes(const GMap3& m, GMap3::Face f)
 	face.mark_orbit(f);
 	bool glued_to_itself = false;
 	foreach_dart_of_orbit(m, f, [&](Dart x) { return !(glued_to_itself = face.is_marked(beta2(m, x))); });
-	return !glued_to_itself;
+	if (glued_to_itself)
+		return false;
+	// the faces that would meet across each edge of f: distinct, or the merge
+	// would fold one onto itself (walked from one dart per edge and side)
+	bool folds = false;
+	foreach_dart_of_orbit(m, GMap3::Face2(d), [&](Dart x) {
+		if (x.index % 2 == 1)
+			return true;
+		const Dart z = beta<3, 2>(m, x);
+		foreach_dart_of_orbit(m, GMap3::Face(beta2(m, x)), [&](Dart y) { return !(folds = y == z); });
+		return !folds;
+	});
+	return !folds;
 }
 
 GMap3::Volume merge_incident_volumes(GMap3& m, GMap3::Face f, bool set_indices)
@@ -227,8 +239,7 @@ GMap3::Volume merge_incident_volumes(GMap3& m, GMap3::Face f, bool set_indices)
 		links.emplace_back(beta2(m, x), beta<3, 2>(m, x));
 	for (const auto& [a, b] : links)
 		detail::set_beta<2>(m, a, b);
-	for (Dart x : face)
-		detail::remove_dart(m, x);
+	detail::remove_dart_pairs(m, face);
 	if (set_indices)
 		reindex.apply(m, kept); // kept[0] = beta2(f.dart), in the volume of f.dart
 	return GMap3::Volume(kept.front());
@@ -304,12 +315,10 @@ void sew_volumes(GMap3& m, GMap3::Face f1, GMap3::Face f2, bool set_indices)
 		detail::set_beta<2>(m, nb, t);
 		region.push_back(nb);
 	}
+	detail::remove_dart_pairs(m, b1);
+	detail::remove_dart_pairs(m, b2);
 	for (std::size_t k = 0; k < x.size(); ++k)
-	{
-		detail::remove_dart(m, b1[k]);
-		detail::remove_dart(m, b2[k]);
 		detail::link_beta<3>(m, x[k], y[k]);
-	}
 	if (set_indices)
 		reindex.apply(m, region);
 }

@@ -39,8 +39,7 @@ void contract(GMap3& m, const std::vector<Dart>& cell)
 	}
 	for (const auto& [a, b] : links)
 		detail::set_beta<uint32(I)>(m, a, b);
-	for (Dart d : cell)
-		detail::remove_dart(m, d);
+	detail::remove_dart_pairs(m, cell);
 }
 
 // The darts of the cells containing the darts of `from`, each cell once,

@@ -66,7 +66,8 @@ void check_unused_lines(const AttributeContainer& c, Orbit o,
 			}
 }
 
-// The G-map relations: fixed-point-free involutions, beta_j o beta_i an
+// The G-map relations: darts live in pairs (beta0, implicit), the stored
+// betas fixed-point-free involutions, beta_j o beta_i an
 // involution for i + 2 <= j, the boundary mark constant on faces (beta0,
 // beta1) and never on both sides of beta_n, faces of 3 edges or more.
 template <typename MAP>
@@ -75,9 +76,15 @@ void check_beta_relations(const MAP& m, Checker& ck)
 	const auto& betas = detail::state_of(m).relations;
 	bool relations_ok = true;
 	foreach_dart(m, [&](Dart d) {
+		if (!is_dart_valid(m, beta0(m, d)))
+		{
+			ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
+				   "beta0 points to a dart that is not live (the other dart of its pair)");
+			relations_ok = false;
+		}
 		for (std::size_t r = 0; r < betas.size(); ++r)
 		{
-			const std::string name = "beta" + std::to_string(r);
+			const std::string name = "beta" + std::to_string(r + 1); // beta0 is not stored
 			const Dart e((*betas[r])[d.index]);
 			if (!is_dart_valid(m, e))
 			{

@@ -68,9 +68,26 @@ void reorder_map(MAP& m, const std::function<uint64(typename MAP::Vertex)>& key)
 	std::stable_sort(vertices.begin(), vertices.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 	std::vector<uint32> dart_order;
 	dart_order.reserve(nb_darts(m));
-	for (const auto& [k, d] : vertices)
-		foreach_dart_of_orbit(m, Vertex(d), [&](Dart x) { dart_order.push_back(x.index); });
 	const uint32 nd = detail::state_of(m).darts->end_index();
+	if constexpr (is_gmap_v<MAP>)
+	{
+		// a G-map's darts move in their pairs (beta0 is implicit): each pair
+		// goes with the first vertex that reaches one of its darts
+		std::vector<bool> placed(nd / 2, false);
+		for (const auto& [k, d] : vertices)
+			foreach_dart_of_orbit(m, Vertex(d), [&](Dart x) {
+				if (placed[x.index / 2])
+					return;
+				placed[x.index / 2] = true;
+				dart_order.push_back(x.index & ~1u);
+				dart_order.push_back(x.index | 1u);
+			});
+	}
+	else
+	{
+		for (const auto& [k, d] : vertices)
+			foreach_dart_of_orbit(m, Vertex(d), [&](Dart x) { dart_order.push_back(x.index); });
+	}
 	const std::vector<uint32> dart_pos = positions_from_order(dart_order, nd);
 	detail::state_of(m).darts->permute(dart_pos);
 	remap_darts(m, dart_pos);

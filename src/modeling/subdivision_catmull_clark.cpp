@@ -138,20 +138,24 @@ SubdivisionResult catmull_clark_step(MAP& m, AttributeArray<Vec3>& pos, const Pr
 			edge_points[i] = 0.25 * (ends + face_points[face_of_dart[d.index]] + face_points[face_of_dart[d2.index]]);
 	}
 
-	// 4. the connectivity (cut_edge keeps the vertices of the existing darts,
-	// so the face snapshot still starts at old vertices)
+	// 4. the connectivity (the face snapshot's darts that cut_edge takes
+	// to edge points are replaced by darts at old vertices)
 	vertices.commit(m, pos);
+	std::vector<bool> moved(faces.size());
+	for (std::size_t i = 0; i < faces.size(); ++i)
+		moved[i] = moves_when_its_edge_is_cut(m, faces[i]);
 	const std::size_t work = edges.size() + faces.size();
 	for (std::size_t i = 0; i < edges.size(); ++i)
 	{
 		step.changing(i, work);
 		pos[index_of(m, cut_edge(m, E(edges[i])))] = edge_points[i];
 	}
+	const std::vector<Dart> corners = faces_at_old_vertices(m, faces, moved);
 	std::vector<Dart> midpoints;
-	for (std::size_t i = 0; i < faces.size(); ++i)
+	for (std::size_t i = 0; i < corners.size(); ++i)
 	{
 		step.changing(edges.size() + i, work);
-		pos[index_of(m, cut_into_quads(m, faces[i], midpoints))] = face_points[i];
+		pos[index_of(m, cut_into_quads(m, corners[i], midpoints))] = face_points[i];
 	}
 	return step.finish();
 }

@@ -65,6 +65,37 @@ Dart opposite_in_triangle(const MAP& m, Dart d)
 	return across_edge(m, next_in_face(m, d));
 }
 
+/// Whether cutting d's edge by its smallest dart (as the schemes cut the
+/// edges of edge_snapshot) takes d to the new vertex. A G-map's cut_edge
+/// moves beta0 of the darts at the vertex of e.dart to the new vertex, so
+/// the darts at the other end go; those at the vertex of the smallest dart
+/// (an even index, a pair's first) stay. Never in a 2-map, whose cut_edge
+/// keeps the origins of the existing darts. O(1).
+template <typename MAP>
+bool moves_when_its_edge_is_cut(const MAP& m, Dart d)
+{
+	if constexpr (is_gmap_v<MAP>)
+	{
+		const Dart e(std::min(d.index & ~1u, other_side(m, d).index & ~1u));
+		return d != e && d != other_side(m, e);
+	}
+	else
+		return false;
+}
+
+/// The face snapshot's darts once the edges are cut: each at an old vertex
+/// (a dart that moved to an edge point is replaced by the next one along its
+/// face, at the old vertex its edge now leads to). `moved` was computed by
+/// moves_when_its_edge_is_cut before the cuts. O(number of faces).
+template <typename MAP>
+std::vector<Dart> faces_at_old_vertices(const MAP& m, std::vector<Dart> faces, const std::vector<bool>& moved)
+{
+	for (std::size_t i = 0; i < faces.size(); ++i)
+		if (moved[i])
+			faces[i] = next_in_face(m, faces[i]);
+	return faces;
+}
+
 /// Darts of a vertex per incident edge.
 template <typename MAP>
 inline constexpr uint32 darts_per_edge_at_vertex = is_gmap_v<MAP> ? 2 : 1;

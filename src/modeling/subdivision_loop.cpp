@@ -126,19 +126,23 @@ SubdivisionResult loop_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCal
 													 position(m, pos, opposite_in_triangle(m, d2)));
 	}
 
-	// 3. the connectivity (cut_edge keeps the vertices of the existing darts,
-	// so the face snapshot still starts at old vertices)
+	// 3. the connectivity (the face snapshot's darts that cut_edge takes
+	// to edge points are replaced by darts at old vertices)
 	vertices.commit(m, pos);
+	std::vector<bool> moved(faces.size());
+	for (std::size_t i = 0; i < faces.size(); ++i)
+		moved[i] = moves_when_its_edge_is_cut(m, faces[i]);
 	const std::size_t work = edges.size() + faces.size();
 	for (std::size_t i = 0; i < edges.size(); ++i)
 	{
 		step.changing(i, work);
 		pos[index_of(m, cut_edge(m, E(edges[i])))] = edge_points[i];
 	}
-	for (std::size_t i = 0; i < faces.size(); ++i)
+	const std::vector<Dart> corners = faces_at_old_vertices(m, faces, moved);
+	for (std::size_t i = 0; i < corners.size(); ++i)
 	{
 		step.changing(edges.size() + i, work);
-		cut_hexagon(m, faces[i]);
+		cut_hexagon(m, corners[i]);
 	}
 	return step.finish();
 }

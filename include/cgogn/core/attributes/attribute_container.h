@@ -160,6 +160,35 @@ public:
 		return i;
 	}
 
+	/// Two new lines 2k and 2k + 1 (a freed aligned pair first), each keyed by
+	/// its own index; returns 2k. The generalized maps allocate their darts
+	/// so, beta0 being the other line of the pair. Precondition: every line so
+	/// far was allocated in aligned pairs (end_index() is even). O(number of
+	/// attributes).
+	uint32 new_line_pair()
+	{
+		assert(size_ % 2 == 0);
+		uint32 i;
+		const std::size_t nf = free_lines_.size();
+		if (nf >= 2 && (free_lines_[nf - 1] ^ 1u) == free_lines_[nf - 2])
+		{
+			i = std::min(free_lines_[nf - 1], free_lines_[nf - 2]);
+			free_lines_.resize(nf - 2);
+			for (auto& a : attributes_)
+			{
+				a->reset_line(i);
+				a->reset_line(i + 1);
+			}
+		}
+		else
+		{
+			i = new_lines_at_end(2);
+		}
+		(*key_)[i] = i;
+		(*key_)[i + 1] = i + 1;
+		return i;
+	}
+
 	/// `n` new consecutive lines at the end of the container (free lines are
 	/// left for later); returns the first. Their keys are INVALID_INDEX: the
 	/// caller sets them (or releases the lines it does not use).

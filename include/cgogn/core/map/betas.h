@@ -6,14 +6,18 @@
 namespace cgogn
 {
 
-// The involutions of the generalized maps. A new dart is a fixed point of
-// every beta_i until sewn; builders and operators leave no fixed point in a
-// finished map (holes are closed by boundary faces, as in the CMaps).
+// The involutions of the generalized maps. beta0 is not stored: darts are
+// allocated in pairs (2k, 2k + 1), the two ends of an edge in one face, which
+// stay each other's beta0 for their whole life (see detail::add_dart_pair).
+// A new pair is a fixed point of every other beta_i until sewn; builders and
+// operators leave no fixed point in a finished map (holes are closed by
+// boundary faces, as in the CMaps).
 
-/// The dart at the other end of the same edge, in the same face. O(1).
-CGOGN_INLINE Dart beta0(const GMap1& m, Dart d)
+/// The dart at the other end of the same edge, in the same face: the other
+/// dart of d's pair. O(1), no memory access.
+CGOGN_INLINE Dart beta0(const GMap1&, Dart d)
 {
-	return Dart((*detail::state_of(m).beta[0])[d.index]);
+	return Dart(d.index ^ 1u);
 }
 
 /// The dart of the other edge at the same vertex, in the same face. O(1).
@@ -60,10 +64,11 @@ Dart beta(const MAP& m, Dart d)
 namespace detail
 {
 
-/// Sets beta_i(d) = e (one side only). Every change of a relation drops the
-/// quick incidence caches (see drop_incidence_caches).
+/// Sets beta_i(d) = e (one side only), for i >= 1 (beta0 is fixed by the
+/// allocation of the darts). Every change of a relation drops the quick
+/// incidence caches (see drop_incidence_caches).
 template <uint32 I, typename MAP>
-requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) inline void set_beta(MAP& m, Dart d, Dart e)
+requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) inline void set_beta(MAP& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
 	(*detail::state_of(m).beta[I])[d.index] = e.index;
@@ -71,19 +76,19 @@ requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) inline void set_b
 
 } // namespace detail
 
-/// Links d and e by beta_i; both must be beta_i fixed points. Low level: the
-/// map is not closed while fixed points remain (builders use it).
+/// Links d and e by beta_i (i >= 1); both must be beta_i fixed points. Low
+/// level: the map is not closed while fixed points remain (builders use it).
 template <uint32 I, typename MAP>
-requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) void beta_sew(MAP& m, Dart d, Dart e)
+requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) void beta_sew(MAP& m, Dart d, Dart e)
 {
 	assert(beta<int(I)>(m, d) == d && beta<int(I)>(m, e) == e);
 	detail::set_beta<I>(m, d, e);
 	detail::set_beta<I>(m, e, d);
 }
 
-/// Unlinks d and beta_i(d), leaving two fixed points. Low level.
+/// Unlinks d and beta_i(d) (i >= 1), leaving two fixed points. Low level.
 template <uint32 I, typename MAP>
-requires std::derived_from<MAP, GMap1> &&(I <= MAP::dimension) void beta_unsew(MAP& m, Dart d)
+requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) void beta_unsew(MAP& m, Dart d)
 {
 	const Dart e = beta<int(I)>(m, d);
 	detail::set_beta<I>(m, d, d);

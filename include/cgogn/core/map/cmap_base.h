@@ -31,15 +31,17 @@ struct MapState
 	/// the orbit is not indexed).
 	std::array<AttributeArray<uint32>*, NB_ORBITS> cell_index{};
 	/// The key of the dart container: a dart is live when its key is valid.
-	/// phi1 in a combinatorial map, beta0 in a generalized map.
+	/// phi1 in a combinatorial map, beta1 in a generalized map.
 	AttributeArray<uint32>* phi1 = nullptr;
 	/// phi2 and phi3, for the maps of dimension 2 and 3 (nullptr below).
 	AttributeArray<uint32>* phi2 = nullptr;
 	AttributeArray<uint32>* phi3 = nullptr;
-	/// beta0, beta1, ... betan, for the generalized maps (beta0 is the key;
-	/// nullptr in a combinatorial map and above the map's dimension).
+	/// beta1, ... betan, for the generalized maps (beta1 is the key; nullptr
+	/// in a combinatorial map and above the map's dimension). beta[0] is
+	/// always nullptr: beta0 is not stored, the darts of a generalized map
+	/// being allocated in pairs (2k, 2k + 1) that are each other's beta0.
 	std::array<AttributeArray<uint32>*, 4> beta{};
-	/// phi1, phi2, ... phin (or beta0, beta1, ... betan) in this order.
+	/// phi1, phi2, ... phin (or beta1, ... betan) in this order.
 	std::vector<AttributeArray<uint32>*> relations;
 	MarkAttribute* boundary = nullptr;
 	/// Number of live darts carrying the boundary mark (kept by
@@ -83,7 +85,7 @@ public:
 
 protected:
 	/// A map whose first relation, the key of the dart container, is named
-	/// `key_name` ("__phi1" for the combinatorial maps, "__beta0" for the
+	/// `key_name` ("__phi1" for the combinatorial maps, "__beta1" for the
 	/// generalized ones).
 	explicit CMapBase(const std::string& key_name)
 	{
@@ -107,14 +109,20 @@ protected:
 		(state_.relations.size() == 2 ? state_.phi2 : state_.phi3) = a;
 	}
 
-	/// Adds the dart attribute of the next involution (beta1, then beta2, ...),
-	/// invalid on every dart until sewn; called by the constructors of the
-	/// generalized maps, whose beta0 is the key.
+	/// Makes the key beta1: called by the constructor of GMap1, whose beta0
+	/// is implicit (see MapState::beta).
+	void use_key_as_beta1()
+	{
+		state_.beta[1] = state_.phi1;
+	}
+
+	/// Adds the dart attribute of the next involution (beta2, then beta3),
+	/// invalid on every dart until sewn; called by the constructors of GMap2
+	/// and GMap3.
 	void add_beta_relation(const std::string& name)
 	{
-		state_.beta[0] = state_.phi1;
 		AttributeArray<uint32>* a = state_.darts->add_attribute<uint32>(name, INVALID_INDEX).get();
-		state_.beta[state_.relations.size()] = a;
+		state_.beta[state_.relations.size() + 1] = a;
 		state_.relations.push_back(a);
 	}
 

@@ -163,6 +163,40 @@ inline void remove_dart(CMapBase& m, Dart d)
 	detail::state_of(m).darts->release_line(d.index);
 }
 
+// A generalized map's darts come in pairs (beta0 is implicit): they are
+// added and removed by add_dart_pair and remove_dart_pair only.
+Dart add_dart(GMap1& m) = delete;
+void remove_dart(GMap1& m, Dart d) = delete;
+
+/// A new edge side of a generalized map: the darts d (even) and d + 1, each
+/// other's beta0 for their whole life, fixed points of the other betas until
+/// sewn. Returns d. O(number of dart attributes).
+inline Dart add_dart_pair(GMap1& m)
+{
+	if (!detail::state_of(m).incidence_tables.empty())
+		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
+	const uint32 i = detail::state_of(m).darts->new_line_pair();
+	for (AttributeArray<uint32>* r : detail::state_of(m).relations)
+	{
+		(*r)[i] = i;
+		(*r)[i + 1] = i + 1;
+	}
+	return Dart(i);
+}
+
+/// Removes the darts d and beta0(d) (the caller has unlinked them). O(1).
+inline void remove_dart_pair(GMap1& m, Dart d)
+{
+	if (!detail::state_of(m).incidence_tables.empty())
+		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
+	const uint32 i = d.index & ~1u;
+	for (uint32 j : {i + 1, i})
+	{
+		set_boundary(m, Dart(j), false);
+		detail::state_of(m).darts->release_line(j);
+	}
+}
+
 /// Every change of a relation goes through these: a topological change makes
 /// the quick incidence caches wrong, so they are dropped (one test of a
 /// null pointer when there are none).

@@ -21,9 +21,9 @@ public:
 	using Edge = Cell<Orbit::BETA0>;       ///< An edge: its two darts, exchanged by beta0.
 	using Face = Cell<Orbit::BETA0_BETA1>; ///< A polygon: the darts reached by beta0 and beta1.
 
-	GMap1() : CMapBase("__beta0")
+	GMap1() : CMapBase("__beta1")
 	{
-		add_beta_relation("__beta1");
+		use_key_as_beta1();
 	}
 };
 

@@ -59,11 +59,21 @@ bool foreach_dart_of_vertex3(const MAP& m, Dart d, const FUNC& f)
 	return foreach_dart_flood(m, d, f, turn, cross);
 }
 
+/// beta0 read as a relation view (see LineStorage::View): the other dart of
+/// the pair.
+struct Beta0View
+{
+	uint32 operator[](uint32 i) const
+	{
+		return i ^ 1u;
+	}
+};
+
 /// The rest of the orbit of two involutions that is a path, not a cycle:
 /// having met a fixed point going one way from d, walks the other way from d,
 /// starting with `first`, then alternating. Returns false when f stopped.
-template <typename FUNC, typename VIEW>
-bool walk_path_back(Dart d, const FUNC& f, const VIEW& first, const VIEW& second)
+template <typename FUNC, typename FIRST, typename SECOND>
+bool walk_path_back(Dart d, const FUNC& f, const FIRST& first, const SECOND& second)
 {
 	Dart it = d;
 	for (;;)
@@ -273,9 +283,13 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 		// vertex); with fixed points (an unfinished map) it is a path, walked
 		// from d in both directions.
 		static_assert(is_gmap_v<MAP>, "orbit not available in combinatorial maps");
-		constexpr uint32 A = O == Orbit::BETA0_BETA1 ? 0 : 1;
 		constexpr uint32 B = O == Orbit::BETA0_BETA1 ? 1 : 2;
-		const auto a_of = detail::state_of(m).beta[A]->view(); // see LineStorage::View
+		const auto a_of = [&] {
+			if constexpr (O == Orbit::BETA0_BETA1)
+				return detail::Beta0View{};
+			else
+				return detail::state_of(m).beta[1]->view(); // see LineStorage::View
+		}();
 		const auto b_of = detail::state_of(m).beta[B]->view();
 		Dart it = d;
 		do

@@ -23,9 +23,10 @@ namespace cgogn
 
 // ---- edges
 
-/// Inserts a vertex in the middle of edge e (its four darts, or two on the
-/// boundary, each get a new neighbour by beta0). The half containing e.dart
-/// keeps the edge's line. Returns the new vertex, whose dart lies in the
+/// Inserts a vertex in the middle of edge e: beta0 of each dart of e at the
+/// vertex of e.dart moves to the new vertex, and a new pair of darts takes
+/// its place at the other end (see docs/gmaps.md, the model). The half
+/// containing e.dart keeps the edge's line. Returns the new vertex, whose dart lies in the
 /// face of e.dart, on the half that does not contain e.dart. O(1).
 GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices = true);
 

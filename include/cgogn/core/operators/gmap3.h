@@ -25,8 +25,9 @@ namespace cgogn
 
 // ---- cuts and merges
 
-/// Inserts a vertex in the middle of edge e: every dart x of the edge gets a
-/// new dart at the new vertex as its beta0. The half holding e.dart keeps the
+/// Inserts a vertex in the middle of edge e: beta0(x) of every dart x of the
+/// edge at the vertex of e.dart moves to the new vertex, and a new pair of
+/// darts takes its place at the other end. The half holding e.dart keeps the
 /// edge's line; the new vertex and the other half get new lines; faces and
 /// volumes keep theirs. Returns the new vertex; its dart lies in the face
 /// and volume of e.dart, on the half that goes to the end of e.dart.
@@ -71,8 +72,10 @@ bool can_cut_volume(const GMap3& m, const std::vector<Dart>& path);
 /// O(size of the path).
 GMap3::Face cut_volume(GMap3& m, const std::vector<Dart>& path, bool set_indices = true);
 
-/// True when the face separates two distinct non-boundary volumes and is not
-/// glued to itself along one of its edges. O(degree of f).
+/// True when the face separates two distinct non-boundary volumes, is not
+/// glued to itself along one of its edges, and no edge of f has a single
+/// other face around it (the two volumes sharing that face too: removing f
+/// would glue it to itself). O(degree of f + sizes of the faces beside f).
 bool can_merge_incident_volumes(const GMap3& m, GMap3::Face f);
 /// Removes face f, merging its two volumes into one, which keeps the line of
 /// the volume of f.dart; the other volume's and the face's lines are

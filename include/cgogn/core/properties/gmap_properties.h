@@ -116,7 +116,7 @@ bool two_colour_from(const MAP& m, DartMarker<MAP>& black, const STARTS& starts)
 			const bool d_black = black.is_marked(d);
 			for (uint32 i = 0; i <= MAP::dimension; ++i)
 			{
-				const Dart e = Dart((*detail::state_of(m).beta[i])[d.index]);
+				const Dart e = i == 0 ? beta0(m, d) : Dart((*detail::state_of(m).beta[i])[d.index]);
 				if (e == d)
 					continue; // a free dart of an unfinished map: no constraint
 				if (!seen.is_marked(e))

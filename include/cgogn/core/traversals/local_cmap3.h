@@ -94,9 +94,17 @@ bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const
 			}
 		} guard{vertices, few, many, n};
 		MarkAttribute& seen = *guard.mark;
+		// the dart at the other end of d's edge: phi1(d) in a 3-map, beta0(d)
+		// (the other dart of d's pair) in a 3-G-map
 		const auto phi1_of = detail::state_of(m).phi1->view();
+		const auto other_end = [phi1_of](uint32 d) -> uint32 {
+			if constexpr (is_gmap_v<MAP>)
+				return d ^ 1u;
+			else
+				return phi1_of[d];
+		};
 		auto collect = [&](Dart d) {
-			const Dart e(phi1_of[d.index]);
+			const Dart e(other_end(d.index));
 			const uint32 w = line_of[e.index];
 			if (w == INVALID_INDEX)
 			{
@@ -114,22 +122,22 @@ bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const
 			return true;
 		};
 		// told by the walk which dart comes later (foreach_dart_of_vertex3),
-		// loads the vertex line of its phi1, read above, ahead of time
-		using View = decltype(phi1_of);
+		// loads the vertex line of its other end, read above, ahead of time
 		struct Collect
 		{
 			const decltype(collect)& f;
-			View lines, phi1s;
+			decltype(line_of) lines;
+			decltype(other_end) end_of;
 			CGOGN_INLINE bool operator()(Dart d) const
 			{
 				return f(d);
 			}
 			CGOGN_INLINE void prefetch_line(uint32 d) const
 			{
-				CGOGN_PREFETCH(&lines[phi1s[d]]);
+				CGOGN_PREFETCH(&lines[end_of(d)]);
 			}
 		};
-		foreach_dart_of_orbit(m, v, Collect{collect, line_of, phi1_of});
+		foreach_dart_of_orbit(m, v, Collect{collect, line_of, other_end});
 	}
 	if (!all_lines)
 		return false;

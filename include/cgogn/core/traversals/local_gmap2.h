@@ -28,15 +28,27 @@ template <uint32 A, uint32 B, typename MAP, typename FUNC>
 bool foreach_step_of(const MAP& m, Dart d, const FUNC& f)
 {
 	static_assert(std::derived_from<MAP, GMap2> && A <= MAP::dimension && B <= MAP::dimension);
-	const auto a_of = detail::state_of(m).beta[A]->view(); // see LineStorage::View
-	const auto b_of = detail::state_of(m).beta[B]->view();
+	const auto b_of = detail::state_of(m).beta[B]->view(); // see LineStorage::View
 	Dart x = d;
-	do
+	if constexpr (A == 0)
 	{
-		if (!call_and_continue(f, x))
-			return false;
-		x = Dart(b_of[a_of[x.index]]);
-	} while (x != d);
+		do
+		{
+			if (!call_and_continue(f, x))
+				return false;
+			x = Dart(b_of[x.index ^ 1u]); // beta0 is the other dart of the pair
+		} while (x != d);
+	}
+	else
+	{
+		const auto a_of = detail::state_of(m).beta[A]->view();
+		do
+		{
+			if (!call_and_continue(f, x))
+				return false;
+			x = Dart(b_of[a_of[x.index]]);
+		} while (x != d);
+	}
 	return true;
 }
 
