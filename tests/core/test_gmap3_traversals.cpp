@@ -327,6 +327,42 @@ TEST(GMap3Traversals, TheGMapReportsThe3MapsCells)
 	}
 }
 
+// Without vertex lines a 3-map finds the neighbours of a vertex through its
+// edges. Two edges may join the same two vertices (hex_dominant_11k has
+// such): the neighbour is still reported once, as the walk by lines does.
+TEST(GMap3Traversals, UnindexedAdjacentVerticesAreReportedOnce)
+{
+	for (const Mesh& s : meshes())
+	{
+		const CMap3 u = to_cmap(s.h);
+		ASSERT_FALSE(is_indexed<CMap3::Vertex>(u));
+		// each dart's vertex number, from a walk of the vertices
+		std::vector<uint32> vertex_of(container_of<Orbit::DART>(u).end_index(), INVALID_INDEX);
+		uint32 n = 0;
+		foreach_cell(u, [&](CMap3::Vertex v) {
+			foreach_dart_of_orbit(u, v, [&](Dart d) { vertex_of[d.index] = n; });
+			++n;
+		});
+		uint64 total_u = 0, total_c = 0;
+		uint32 repeats = 0, selves = 0;
+		foreach_cell(u, [&](CMap3::Vertex v) {
+			std::vector<uint32> row;
+			foreach_adjacent_vertex_through_edge(u, v,
+												 [&](CMap3::Vertex w) { row.push_back(vertex_of[w.dart.index]); });
+			selves += uint32(std::count(row.begin(), row.end(), vertex_of[v.dart.index]));
+			std::sort(row.begin(), row.end());
+			repeats += std::adjacent_find(row.begin(), row.end()) != row.end();
+			total_u += row.size();
+		});
+		foreach_cell(s.c, [&](CMap3::Vertex v) {
+			foreach_adjacent_vertex_through_edge(s.c, v, [&](CMap3::Vertex) { ++total_c; });
+		});
+		EXPECT_EQ(repeats, 0u) << s.name << ": vertices with a neighbour reported twice";
+		EXPECT_EQ(selves, 0u) << s.name;
+		EXPECT_EQ(total_u, total_c) << s.name;
+	}
+}
+
 TEST(GMap3Traversals, IncidenceCachesReportTheWalks)
 {
 	using V = GMap3::Vertex;

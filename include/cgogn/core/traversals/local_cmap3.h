@@ -363,9 +363,18 @@ void foreach_adjacent_vertex_through_edge(const CMap3& m, CellParam<CMap3::Verte
 		return;
 	if (is_indexed<CMap3::Vertex>(m) && detail::foreach_adjacent_vertex_by_line(m, v, f))
 		return;
+	// two edges may join v to the same vertex (and a loop edge to v itself):
+	// each neighbour is reported once, v never. Darts are marked, not lines:
+	// this walk also serves vertices left without a line by an operator.
+	DartMarkerStore<CMap3> seen(m);
+	seen.mark_orbit(v);
 	foreach_incident_edge(m, v, [&](CMap3::Edge e) {
 		// e.dart leaves v (see foreach_cell_around_vertex3): its phi1 starts at the other end
-		return call_and_continue(f, CMap3::Vertex(phi1(m, e.dart)));
+		const CMap3::Vertex w(phi1(m, e.dart));
+		if (seen.is_marked(w.dart))
+			return true;
+		seen.mark_orbit(w);
+		return call_and_continue(f, w);
 	});
 }
 template <typename FUNC>

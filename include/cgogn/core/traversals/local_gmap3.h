@@ -236,14 +236,18 @@ void foreach_adjacent_vertex_through_edge(const GMap3& m, CellParam<GMap3::Verte
 		return;
 	if (is_indexed<GMap3::Vertex>(m) && detail::foreach_adjacent_vertex_by_line(m, v, f))
 		return;
+	// two edges may join v to the same vertex (and a loop edge to v itself):
+	// each neighbour is reported once, v never. Darts are marked, not lines:
+	// this walk also serves vertices left without a line by an operator.
 	DartMarkerStore<GMap3> seen(m);
+	seen.mark_orbit(v);
 	foreach_incident_edge(m, v, [&](GMap3::Edge e) {
 		// e.dart is a dart of v (see foreach_cell_around_vertex3): beta0 is at the other end
-		const Dart w = beta0(m, e.dart);
-		if (seen.is_marked(w))
+		const GMap3::Vertex w(beta0(m, e.dart));
+		if (seen.is_marked(w.dart))
 			return true;
-		seen.mark_orbit(GMap3::Vertex(w));
-		return call_and_continue(f, GMap3::Vertex(w));
+		seen.mark_orbit(w);
+		return call_and_continue(f, w);
 	});
 }
 /// Vertices sharing a face with v, each once, v excluded. O(sum of the sizes
