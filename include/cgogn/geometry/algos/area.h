@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/map/betas.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/algos/normal.h>
 
@@ -43,6 +44,18 @@ inline double boundary_area(const CMap3& m, const AttributeArray<Vec3>& pos)
 	double a = 0.0;
 	foreach_cell(m, [&](CMap3::Face f) {
 		if (is_boundary(m, f.dart) || is_boundary(m, phi3(m, f.dart)))
+			a += face_area(m, f, pos);
+	});
+	return a;
+}
+
+/// Area of the boundary surface of a 3-G-map: the faces between a volume
+/// and the outside. O(number of darts).
+inline double boundary_area(const GMap3& m, const AttributeArray<Vec3>& pos)
+{
+	double a = 0.0;
+	foreach_cell(m, [&](GMap3::Face f) {
+		if (is_boundary(m, f.dart) || is_boundary(m, beta3(m, f.dart)))
 			a += face_area(m, f, pos);
 	});
 	return a;

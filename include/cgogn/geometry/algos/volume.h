@@ -2,11 +2,13 @@
 #pragma once
 
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/core/utils/error.h>
 #include <cgogn/geometry/algos/normal.h>
 
 #include <Eigen/Geometry> // cross()
 
+#include <cmath>
 #include <vector>
 
 namespace cgogn::geometry
@@ -71,6 +73,40 @@ bool foreach_oriented_face(const GMap2& m, Dart start, DartMarker<GMap2>& reache
 		do
 		{
 			if (const Dart o = oriented_phi2(m, it); !reached.is_marked(o))
+				work.push_back(o);
+			it = oriented_phi1(m, it);
+		} while (it != d);
+	}
+	return true;
+}
+/// Calls f(d) once per face of volume `start` of a 3-G-map, d the dart of
+/// the face oriented consistently with start (reached by oriented_phi1 and
+/// beta0 o beta2 inside the volume). Returns false, at the first face found
+/// in both orientations, when the volume's faces cannot be oriented. O(number
+/// of darts of the volume).
+template <typename FUNC>
+bool foreach_oriented_face_of_volume(const GMap3& m, Dart start, const FUNC& f)
+{
+	DartMarkerStore<GMap3> reached(m);
+	std::vector<Dart> work(1, start);
+	while (!work.empty())
+	{
+		const Dart d = work.back();
+		work.pop_back();
+		if (reached.is_marked(d))
+			continue;
+		if (reached.is_marked(beta0(m, d)))
+			return false;
+		Dart it = d;
+		do
+		{
+			reached.mark(it);
+			it = oriented_phi1(m, it);
+		} while (it != d);
+		f(d);
+		do
+		{
+			if (const Dart o = beta<2, 0>(m, it); !reached.is_marked(o))
 				work.push_back(o);
 			it = oriented_phi1(m, it);
 		} while (it != d);
@@ -185,6 +221,40 @@ inline double solid_volume(const CMap3& m, const AttributeArray<Vec3>& pos)
 	return v;
 }
 
+/// Volume of volume w of a 3-G-map, unsigned: a G-map gives its cells no
+/// orientation, so the faces are oriented as the face of w.dart and the
+/// magnitude is returned (the CMap3's value, on a cell that is not
+/// inverted). Throws TopologyError when the faces of w cannot be oriented
+/// (not a cell built from a polyhedron). O(number of darts of w).
+inline double volume(const GMap3& m, GMap3::Volume w, const AttributeArray<Vec3>& pos)
+{
+	const Vec3 o = origin_position(m, pos, w.dart);
+	double v = 0.0;
+	if (!detail::foreach_oriented_face_of_volume(m, w.dart,
+												 [&](Dart d) { v += detail::face_cone_volume(m, pos, d, o); }))
+		throw TopologyError("volume: the faces of the volume cannot be oriented");
+	return std::abs(v);
+}
+
+/// Writes the (unsigned) volume of every volume of a 3-G-map into the volume
+/// attribute `out`. O(number of darts).
+inline void compute_volumes(const GMap3& m, const AttributeArray<Vec3>& pos, AttributeArray<double>& out)
+{
+	foreach_cell(m, [&](GMap3::Volume w) { out[w] = volume(m, w, pos); });
+}
+
+/// Volume of the solid made by a 3-G-map: the sum of the volumes of its
+/// cells. A G-map's boundary surface may not be orientable (a solid Klein
+/// bottle), so the CMap3's reading of the boundary alone does not apply;
+/// on a 3-map without inverted cells the two agree up to rounding. O(number
+/// of darts).
+inline double solid_volume(const GMap3& m, const AttributeArray<Vec3>& pos)
+{
+	double v = 0.0;
+	foreach_cell(m, [&](GMap3::Volume w) { v += volume(m, w, pos); });
+	return v;
+}
+
 /// Centre of mass of volume w of a 3-map (uniform density), from the same
 /// decomposition into tetrahedra as volume(). The vertex centroid when the
 /// volume is zero. O(number of darts of w).
@@ -217,6 +287,51 @@ inline Vec3 mass_center(const CMap3& m, CMap3::Volume w, const AttributeArray<Ve
 	});
 	if (vol == 0.0)
 		return nb > 0 ? Vec3(vertex_sum / nb) : vertex_sum;
+	return moment / vol;
+}
+
+/// Centre of mass of volume w of a 3-G-map (uniform density), as for a
+/// 3-map: the faces oriented as the face of w.dart (the sign of the
+/// tetrahedra cancels out). Throws TopologyError when the faces of w cannot
+/// be oriented. O(number of darts of w).
+inline Vec3 mass_center(const GMap3& m, GMap3::Volume w, const AttributeArray<Vec3>& pos)
+{
+	const Vec3 o = origin_position(m, pos, w.dart);
+	double vol = 0.0;
+	Vec3 moment = Vec3::Zero();
+	const bool oriented = detail::foreach_oriented_face_of_volume(m, w.dart, [&](Dart f) {
+		Vec3 c = Vec3::Zero();
+		uint32 n = 0;
+		Dart d = f;
+		do
+		{
+			c += origin_position(m, pos, d);
+			++n;
+			d = oriented_phi1(m, d);
+		} while (d != f);
+		c /= n;
+		do
+		{
+			const Vec3& a = origin_position(m, pos, d);
+			const Vec3& b = origin_position(m, pos, oriented_phi1(m, d));
+			const double t = (c - o).dot((a - o).cross(b - o)) / 6.0;
+			vol += t;
+			moment += t * (o + c + a + b) / 4.0;
+			d = oriented_phi1(m, d);
+		} while (d != f);
+	});
+	if (!oriented)
+		throw TopologyError("mass_center: the faces of the volume cannot be oriented");
+	if (vol == 0.0)
+	{
+		Vec3 vertex_sum = Vec3::Zero();
+		uint32 nb = 0;
+		foreach_incident_vertex(m, w, [&](GMap3::Vertex v) {
+			vertex_sum += value<Vec3>(m, pos, v);
+			++nb;
+		});
+		return nb > 0 ? Vec3(vertex_sum / nb) : vertex_sum;
+	}
 	return moment / vol;
 }
 
