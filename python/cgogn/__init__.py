@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: MIT
 """cgogn: combinatorial maps for mesh processing.
 
-Surfaces are :class:`CMap2`, volume meshes :class:`CMap3`. Cells (vertices,
+Surfaces are :class:`CMap2`, volume meshes :class:`CMap3`; meshes that may
+not be orientable are :class:`GMap2` and :class:`GMap3` (``load(path,
+gmap=True)``, ``to_gmap()``, ``to_cmap()``). Cells (vertices,
 edges, faces, volumes) are named by integer *ids*: after loading, building
 from arrays or :meth:`CMap2.compact`, the ids of a kind are exactly
 0..nb_cells-1 in traversal order. Editing operators keep the ids of the
@@ -12,13 +14,15 @@ Attribute arrays (``positions``, ``attribute(...)``) have one row per id
 ``incidence()``, ``cell_ids()``) list the live cells in id order.
 """
 
-from ._cgogn import CMap2, CMap3, Error, IOError, RenderError, load, nb_workers, set_nb_workers
+from ._cgogn import CMap2, CMap3, Error, GMap2, GMap3, IOError, RenderError, load, nb_workers, set_nb_workers
 from ._arrays import laplacian
 from ._interop import from_meshio, to_meshio, to_pyvista, to_trimesh
 
 __all__ = [
     "CMap2",
     "CMap3",
+    "GMap2",
+    "GMap3",
     "Error",
     "IOError",
     "RenderError",

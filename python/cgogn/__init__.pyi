@@ -4,6 +4,8 @@ from typing import Any, Tuple, Union
 from ._cgogn import CMap2 as CMap2
 from ._cgogn import CMap3 as CMap3
 from ._cgogn import Error as Error
+from ._cgogn import GMap2 as GMap2
+from ._cgogn import GMap3 as GMap3
 from ._cgogn import IOError as IOError
 from ._cgogn import RenderError as RenderError
 from ._cgogn import load as load

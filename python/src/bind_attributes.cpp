@@ -186,6 +186,10 @@ void bind_attributes(py::module_& mod)
 	bind_attribute_methods(surface);
 	auto volume = py::class_<VolumeMesh>(mod.attr("CMap3"));
 	bind_attribute_methods(volume);
+	auto gsurface = py::class_<GSurface>(mod.attr("GMap2"));
+	bind_attribute_methods(gsurface);
+	auto gvolume = py::class_<GVolumeMesh>(mod.attr("GMap3"));
+	bind_attribute_methods(gvolume);
 }
 
 } // namespace cgogn::python

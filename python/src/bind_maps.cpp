@@ -195,9 +195,27 @@ py::tuple incidence(MAP& m, Kind from, Kind to)
 	});
 }
 
+// The next dart along d's face (phi1; beta1 o beta0 on a G-map, which walks
+// the face in the orientation of d), and the dart across d's face (phi3,
+// beta3) in a volume mesh.
+template <typename MAP>
+Dart next_in_face(const MAP& m, Dart d)
+{
+	return geometry::oriented_phi1(m, d);
+}
+template <typename MAP>
+Dart across_face(const MAP& m, Dart d)
+{
+	if constexpr (is_gmap_v<MAP>)
+		return beta3(m, d);
+	else
+		return phi3(m, d);
+}
+
 // Calls f(dart) on one dart of every face (boundary faces excluded), in
 // traversal order (see foreach_cell): the face container's line order when
-// faces are indexed; otherwise the order of the smallest dart of each face,
+// faces are indexed (always on a G-map); otherwise the order of the smallest
+// dart of each face,
 // found without the marks foreach_cell needs (a face starts at a dart whose
 // phi1 cycle holds no smaller dart), which is several times faster on a
 // freshly loaded surface.
@@ -205,19 +223,24 @@ template <typename MAP, typename F>
 void foreach_face_dart(const MAP& m, const F& f)
 {
 	using Face = typename mesh_traits<MAP>::Face;
-	if (MAP::dimension == 3 || is_indexed<Face>(m))
-	{
+	if constexpr (MAP::dimension == 3 || is_gmap_v<MAP>)
 		foreach_cell(m, [&](Face x) { return f(x.dart); });
-		return;
-	}
-	foreach_dart(m, [&](Dart d) {
-		if (is_boundary(m, d))
-			return true;
-		for (Dart x = phi1(m, d); x != d; x = phi1(m, x))
-			if (x.index < d.index)
+	else
+	{
+		if (is_indexed<Face>(m))
+		{
+			foreach_cell(m, [&](Face x) { return f(x.dart); });
+			return;
+		}
+		foreach_dart(m, [&](Dart d) {
+			if (is_boundary(m, d))
 				return true;
-		return f(d);
-	});
+			for (Dart x = phi1(m, d); x != d; x = phi1(m, x))
+				if (x.index < d.index)
+					return true;
+			return f(d);
+		});
+	}
 }
 
 // The vertex ids of the faces (surfaces) or of the boundary faces (volumes).
@@ -230,14 +253,14 @@ py::tuple faces_csr(MAP& m)
 	foreach_face_dart(m, [&](const Dart first) {
 		if constexpr (MAP::dimension == 3)
 		{
-			if (!is_boundary(m, phi3(m, first)))
+			if (!is_boundary(m, across_face(m, first)))
 				return true; // an inner face
 		}
 		Dart d = first;
 		do
 		{
 			indices.push_back(index_of(m, Vertex(d)));
-			d = phi1(m, d);
+			d = next_in_face(m, d);
 		} while (d != first);
 		offsets.push_back(uint32(indices.size()));
 		return true;
@@ -390,14 +413,14 @@ std::optional<std::vector<uint32>> walked_triangles(const MAP& m)
 	out.reserve(nb_darts(m));
 	bool polygons = false;
 	foreach_face_dart(m, [&](const Dart d) {
-		const Dart e = phi1(m, d), g = phi1(m, e);
-		if (e == d || phi1(m, g) != d)
+		const Dart e = next_in_face(m, d), g = next_in_face(m, e);
+		if (e == d || next_in_face(m, g) != d)
 		{
 			polygons = true;
 			return false;
 		}
 		if constexpr (MAP::dimension == 3)
-			if (!is_boundary(m, phi3(m, d)))
+			if (!is_boundary(m, across_face(m, d)))
 				return true;
 		out.insert(out.end(), {index_of(m, Vertex(d)), index_of(m, Vertex(e)), index_of(m, Vertex(g))});
 		return true;
@@ -413,10 +436,10 @@ constexpr const char* NOT_TRIANGLES = "the mesh has faces that are not triangles
 template <typename MAP>
 py::array_t<uint32> triangles(MAP& m)
 {
-	using Face = typename mesh_traits<MAP>::Face;
-	using Vertex = typename mesh_traits<MAP>::Vertex;
-	if constexpr (MAP::dimension == 2)
+	if constexpr (MAP::dimension == 2 && !is_gmap_v<MAP>)
 	{
+		using Face = typename mesh_traits<MAP>::Face;
+		using Vertex = typename mesh_traits<MAP>::Vertex;
 		if (!is_indexed<Face>(m) && is_indexed<Vertex>(m))
 		{
 			if (auto rows = unindexed_triangles(m))
@@ -559,7 +582,8 @@ void bind_common(py::class_<PyMap<MAP>>& c)
 			"check_integrity", [](W& w) { return integrity_report(check_integrity(w.m)); },
 			"Checks every invariant of the map; returns {'ok': bool, 'nb_errors': int, 'messages': [str]}.")
 		.def("__repr__", [](W& w) {
-			std::string s = MAP::dimension == 2 ? "<cgogn.CMap2" : "<cgogn.CMap3";
+			std::string s =
+				std::string("<cgogn.") + (is_gmap_v<MAP> ? "GMap" : "CMap") + (MAP::dimension == 2 ? "2" : "3");
 			s += " vertices=" + std::to_string(count(w.m, Kind::Vertex));
 			s += " edges=" + std::to_string(count(w.m, Kind::Edge));
 			s += " faces=" + std::to_string(count(w.m, Kind::Face));
@@ -612,6 +636,33 @@ std::unique_ptr<PyMap<MAP>> load_into(const std::string& path, const io::LoadRep
 	}
 	w->ensure_position();
 	return w;
+}
+
+// A map wrapped from a converted one: the conversion's map, its positions.
+template <typename MAP>
+std::unique_ptr<PyMap<MAP>> wrapped(MAP&& m)
+{
+	auto w = std::make_unique<PyMap<MAP>>();
+	w->m = std::move(m);
+	w->ensure_position();
+	return w;
+}
+
+// is_orientable, to_gmap and to_cmap on a pair of map classes.
+template <typename CMAP, typename GMAP>
+void bind_conversions(py::class_<PyMap<CMAP>>& c, py::class_<PyMap<GMAP>>& g)
+{
+	c.def(
+		"to_gmap", [](PyMap<CMAP>& w) { return wrapped(to_gmap(w.m)); },
+		"The generalized map of this map (twice the darts), with every attribute; the same vertex ids on a "
+		"compact map. O(darts x attributes).");
+	g.def(
+		 "is_orientable", [](PyMap<GMAP>& w) { return is_orientable(w.m); },
+		 "True when every connected component can be oriented (two-colouring of the darts). O(darts).")
+		.def(
+			"to_cmap", [](PyMap<GMAP>& w) { return wrapped(to_cmap(w.m)); },
+			"The oriented map of an orientable G-map, with every attribute; raises cgogn.Error when the map is "
+			"not orientable. O(darts x attributes).");
 }
 
 bool is_volume_format(io::Format f)
@@ -708,17 +759,67 @@ void bind_maps(py::module_& mod)
 			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension). Raises cgogn.IOError on "
 			"failure.");
 
+	py::class_<GSurface> gsurface(mod, "GMap2",
+								  "A surface that may not be orientable (a Moebius strip, a Klein bottle): a "
+								  "generalized 2-map of polygons, closed by boundary faces. Twice the darts of a "
+								  "CMap2; faces are walked in the orientation of their dart.");
+	bind_common(gsurface);
+	gsurface
+		.def_static(
+			"from_arrays",
+			[](const py::array& points, const py::object& faces) { return from_arrays<GMap2>(points, faces); },
+			py::arg("points"), py::arg("faces"),
+			"A surface from (N, 3) points and faces, as CMap2.from_arrays; faces that cannot be oriented "
+			"consistently are kept as they are. O(total size).")
+		.def(
+			"save",
+			[](GSurface& w, const std::string& path, bool binary) {
+				py::gil_scoped_release release;
+				io::SaveOptions o;
+				o.binary = binary;
+				io::save_surface(w.m, path, o);
+			},
+			py::arg("path"), py::arg("binary") = false,
+			"Writes the surface in the format of the extension (off, obj, ply, stl), each face in the "
+			"orientation of its dart. Raises cgogn.IOError on failure.");
+
+	py::class_<GVolumeMesh> gvolume(mod, "GMap3",
+									"A volume mesh that may not be orientable (a solid Klein bottle): a generalized "
+									"3-map of polyhedra, closed by boundary volumes.");
+	bind_common(gvolume);
+	gvolume
+		.def_static(
+			"from_arrays",
+			[](const py::array& points, const py::object& cells) { return from_arrays<GMap3>(points, cells); },
+			py::arg("points"), py::arg("cells"), "A volume mesh from (N, 3) points and cells, as CMap3.from_arrays.")
+		.def(
+			"save",
+			[](GVolumeMesh& w, const std::string& path, bool binary) {
+				py::gil_scoped_release release;
+				io::SaveOptions o;
+				o.binary = binary;
+				io::save_volume(w.m, path, o);
+			},
+			py::arg("path"), py::arg("binary") = false,
+			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension), each cell oriented on its own. "
+			"Raises cgogn.IOError on failure.");
+
+	// orientability and conversions, both ways, carrying every attribute
+	bind_conversions<CMap2, GMap2>(surface, gsurface);
+	bind_conversions<CMap3, GMap3>(volume, gvolume);
+
 	mod.def(
 		"load",
-		[](const std::string& path) -> py::object {
-			if (is_volume_format(io::format_from_extension(path)))
-				return py::cast(load_into<CMap3>(path));
-			return py::cast(load_into<CMap2>(path));
+		[](const std::string& path, bool gmap) -> py::object {
+			const bool volumes = is_volume_format(io::format_from_extension(path));
+			if (gmap)
+				return volumes ? py::cast(load_into<GMap3>(path)) : py::cast(load_into<GMap2>(path));
+			return volumes ? py::cast(load_into<CMap3>(path)) : py::cast(load_into<CMap2>(path));
 		},
-		py::arg("path"),
+		py::arg("path"), py::arg("gmap") = false,
 		"Loads a mesh file: a CMap2 for the surface formats (off, obj, ply, stl), a CMap3 for the volume "
-		"formats (mesh, vtk, vtu, msh, node/ele). Raises cgogn.IOError naming the file, line and problem on bad "
-		"input.");
+		"formats (mesh, vtk, vtu, msh, node/ele); with gmap=True a GMap2 or a GMap3, which keep a mesh that "
+		"cannot be oriented whole. Raises cgogn.IOError naming the file, line and problem on bad input.");
 }
 
 } // namespace cgogn::python

@@ -66,6 +66,8 @@ struct PyMap
 
 using Surface = PyMap<CMap2>;
 using VolumeMesh = PyMap<CMap3>;
+using GSurface = PyMap<GMap2>;
+using GVolumeMesh = PyMap<GMap3>;
 
 /// The cell kinds Python names.
 enum class Kind
