@@ -37,25 +37,19 @@ double surface_area(const MESH& m, const AttributeArray<Vec3>& pos)
 	return a;
 }
 
-/// Area of the boundary surface of a 3-map: the faces between a volume and
-/// the outside. O(number of darts).
-inline double boundary_area(const CMap3& m, const AttributeArray<Vec3>& pos)
+/// Area of the boundary surface of a 3-map or a 3-G-map: the faces between a
+/// volume and the outside. O(number of darts).
+template <VolumeMesh MESH>
+double boundary_area(const MESH& m, const AttributeArray<Vec3>& pos)
 {
 	double a = 0.0;
-	foreach_cell(m, [&](CMap3::Face f) {
-		if (is_boundary(m, f.dart) || is_boundary(m, phi3(m, f.dart)))
-			a += face_area(m, f, pos);
-	});
-	return a;
-}
-
-/// Area of the boundary surface of a 3-G-map: the faces between a volume
-/// and the outside. O(number of darts).
-inline double boundary_area(const GMap3& m, const AttributeArray<Vec3>& pos)
-{
-	double a = 0.0;
-	foreach_cell(m, [&](GMap3::Face f) {
-		if (is_boundary(m, f.dart) || is_boundary(m, beta3(m, f.dart)))
+	foreach_cell(m, [&](typename mesh_traits<MESH>::Face f) {
+		Dart other;
+		if constexpr (is_gmap_v<MESH>)
+			other = beta3(m, f.dart);
+		else
+			other = phi3(m, f.dart);
+		if (is_boundary(m, f.dart) || is_boundary(m, other))
 			a += face_area(m, f, pos);
 	});
 	return a;

@@ -24,10 +24,10 @@ namespace cgogn::geometry
 
 namespace detail
 {
-/// Signed volume of the cone from o over the face cycle of dart d, in the
-/// orientation of d. O(face degree).
+/// The centroid of the vertices of the face cycle of dart d (the centre of
+/// the fan the volumes use). O(face degree).
 template <GeometricMesh MESH>
-double face_cone_volume(const MESH& m, const AttributeArray<Vec3>& pos, Dart d, const Vec3& o)
+Vec3 face_fan_centre(const MESH& m, const AttributeArray<Vec3>& pos, Dart d)
 {
 	Vec3 c = Vec3::Zero();
 	uint32 n = 0;
@@ -38,19 +38,29 @@ double face_cone_volume(const MESH& m, const AttributeArray<Vec3>& pos, Dart d, 
 		++n;
 		it = oriented_phi1(m, it);
 	} while (it != d);
-	c /= n;
-	return (c - o).dot(newell_vector(m, pos, d)) / 6.0;
+	return c / n;
 }
 
-/// Calls f(d) once per face of the connected component of `start` in a
-/// 2-G-map, d the dart of the face oriented consistently with start (the
-/// darts reached from start by oriented_phi1 and oriented_phi2: the 2-map
-/// to_cmap would keep if start were the component's smallest dart).
-/// Boundary faces are reported too. Marks the reached darts in `reached`.
-/// Returns false, at the first face found in both orientations, when the
-/// component is not orientable. O(number of darts of the component).
-template <typename FUNC>
-bool foreach_oriented_face(const GMap2& m, Dart start, DartMarker<GMap2>& reached, const FUNC& f)
+/// Signed volume of the cone from o over the face cycle of dart d, in the
+/// orientation of d. O(face degree).
+template <GeometricMesh MESH>
+double face_cone_volume(const MESH& m, const AttributeArray<Vec3>& pos, Dart d, const Vec3& o)
+{
+	return (face_fan_centre(m, pos, d) - o).dot(newell_vector(m, pos, d)) / 6.0;
+}
+
+/// Calls f(d) once per face reached from `start` by oriented_phi1 and beta0
+/// o beta2 (a 2-G-map's oriented_phi2): the faces of start's connected
+/// component in a 2-G-map (boundary faces too), of start's volume in a
+/// 3-G-map. d is the dart of the face oriented consistently with start (in
+/// a 2-G-map, the 2-map to_cmap would keep if start were the component's
+/// smallest dart). Marks the reached darts in `reached` (a DartMarker or a
+/// DartMarkerStore). Returns false, at the first face found in both
+/// orientations, when those faces cannot be oriented. O(number of darts
+/// reached).
+template <typename MAP, typename MARKER, typename FUNC>
+requires is_gmap_v<MAP> &&
+	(MAP::dimension >= 2) bool foreach_oriented_face(const MAP& m, Dart start, MARKER& reached, const FUNC& f)
 {
 	std::vector<Dart> work(1, start);
 	while (!work.empty())
@@ -61,40 +71,6 @@ bool foreach_oriented_face(const GMap2& m, Dart start, DartMarker<GMap2>& reache
 			continue;
 		// the darts of a face in one orientation are marked together: the
 		// other orientation (that of beta0(d)) reached too means a twist
-		if (reached.is_marked(beta0(m, d)))
-			return false;
-		Dart it = d;
-		do
-		{
-			reached.mark(it);
-			it = oriented_phi1(m, it);
-		} while (it != d);
-		f(d);
-		do
-		{
-			if (const Dart o = oriented_phi2(m, it); !reached.is_marked(o))
-				work.push_back(o);
-			it = oriented_phi1(m, it);
-		} while (it != d);
-	}
-	return true;
-}
-/// Calls f(d) once per face of volume `start` of a 3-G-map, d the dart of
-/// the face oriented consistently with start (reached by oriented_phi1 and
-/// beta0 o beta2 inside the volume). Returns false, at the first face found
-/// in both orientations, when the volume's faces cannot be oriented. O(number
-/// of darts of the volume).
-template <typename FUNC>
-bool foreach_oriented_face_of_volume(const GMap3& m, Dart start, const FUNC& f)
-{
-	DartMarkerStore<GMap3> reached(m);
-	std::vector<Dart> work(1, start);
-	while (!work.empty())
-	{
-		const Dart d = work.back();
-		work.pop_back();
-		if (reached.is_marked(d))
-			continue;
 		if (reached.is_marked(beta0(m, d)))
 			return false;
 		Dart it = d;
@@ -230,8 +206,9 @@ inline double volume(const GMap3& m, GMap3::Volume w, const AttributeArray<Vec3>
 {
 	const Vec3 o = origin_position(m, pos, w.dart);
 	double v = 0.0;
-	if (!detail::foreach_oriented_face_of_volume(m, w.dart,
-												 [&](Dart d) { v += detail::face_cone_volume(m, pos, d, o); }))
+	DartMarkerStore<GMap3> reached(m);
+	if (!detail::foreach_oriented_face(m, w.dart, reached,
+									   [&](Dart d) { v += detail::face_cone_volume(m, pos, d, o); }))
 		throw TopologyError("volume: the faces of the volume cannot be oriented");
 	return std::abs(v);
 }
@@ -255,6 +232,45 @@ inline double solid_volume(const GMap3& m, const AttributeArray<Vec3>& pos)
 	return v;
 }
 
+namespace detail
+{
+/// Adds to vol and moment the signed volumes and first moments of the
+/// tetrahedra (o, c, p_i, p_i+1) over the face of d, in the orientation of
+/// d, with c the face's vertex centroid. O(face degree).
+template <GeometricMesh MESH>
+void add_face_cone_moment(const MESH& m, const AttributeArray<Vec3>& pos, Dart f, const Vec3& o, double& vol,
+						  Vec3& moment)
+{
+	const Vec3 c = face_fan_centre(m, pos, f);
+	Dart d = f;
+	do
+	{
+		const Vec3& a = origin_position(m, pos, d);
+		const Vec3& b = origin_position(m, pos, oriented_phi1(m, d));
+		const double t = (c - o).dot((a - o).cross(b - o)) / 6.0;
+		vol += t;
+		moment += t * (o + c + a + b) / 4.0;
+		d = oriented_phi1(m, d);
+	} while (d != f);
+}
+
+/// moment / vol, or the vertex centroid of w when its volume is zero.
+template <VolumeMesh MESH>
+Vec3 centre_of(const MESH& m, typename mesh_traits<MESH>::Volume w, const AttributeArray<Vec3>& pos, double vol,
+			   const Vec3& moment)
+{
+	if (vol != 0.0)
+		return moment / vol;
+	Vec3 vertex_sum = Vec3::Zero();
+	uint32 nb = 0;
+	foreach_incident_vertex(m, w, [&](typename mesh_traits<MESH>::Vertex v) {
+		vertex_sum += value<Vec3>(m, pos, v);
+		++nb;
+	});
+	return nb > 0 ? Vec3(vertex_sum / nb) : vertex_sum;
+}
+} // namespace detail
+
 /// Centre of mass of volume w of a 3-map (uniform density), from the same
 /// decomposition into tetrahedra as volume(). The vertex centroid when the
 /// volume is zero. O(number of darts of w).
@@ -263,31 +279,8 @@ inline Vec3 mass_center(const CMap3& m, CMap3::Volume w, const AttributeArray<Ve
 	const Vec3 o = origin_position(m, pos, w.dart);
 	double vol = 0.0;
 	Vec3 moment = Vec3::Zero();
-	Vec3 vertex_sum = Vec3::Zero();
-	uint32 nb = 0;
-	foreach_incident_face(m, w, [&](CMap3::Face f) {
-		Vec3 c = Vec3::Zero();
-		uint32 n = 0;
-		foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) {
-			c += origin_position(m, pos, d);
-			++n;
-		});
-		c /= n;
-		foreach_dart_of_orbit(m, CMap3::Face2(f.dart), [&](Dart d) {
-			const Vec3& a = origin_position(m, pos, d);
-			const Vec3& b = origin_position(m, pos, phi1(m, d));
-			const double t = (c - o).dot((a - o).cross(b - o)) / 6.0;
-			vol += t;
-			moment += t * (o + c + a + b) / 4.0;
-		});
-	});
-	foreach_incident_vertex(m, w, [&](CMap3::Vertex v) {
-		vertex_sum += value<Vec3>(m, pos, v);
-		++nb;
-	});
-	if (vol == 0.0)
-		return nb > 0 ? Vec3(vertex_sum / nb) : vertex_sum;
-	return moment / vol;
+	foreach_incident_face(m, w, [&](CMap3::Face f) { detail::add_face_cone_moment(m, pos, f.dart, o, vol, moment); });
+	return detail::centre_of(m, w, pos, vol, moment);
 }
 
 /// Centre of mass of volume w of a 3-G-map (uniform density), as for a
@@ -299,40 +292,11 @@ inline Vec3 mass_center(const GMap3& m, GMap3::Volume w, const AttributeArray<Ve
 	const Vec3 o = origin_position(m, pos, w.dart);
 	double vol = 0.0;
 	Vec3 moment = Vec3::Zero();
-	const bool oriented = detail::foreach_oriented_face_of_volume(m, w.dart, [&](Dart f) {
-		Vec3 c = Vec3::Zero();
-		uint32 n = 0;
-		Dart d = f;
-		do
-		{
-			c += origin_position(m, pos, d);
-			++n;
-			d = oriented_phi1(m, d);
-		} while (d != f);
-		c /= n;
-		do
-		{
-			const Vec3& a = origin_position(m, pos, d);
-			const Vec3& b = origin_position(m, pos, oriented_phi1(m, d));
-			const double t = (c - o).dot((a - o).cross(b - o)) / 6.0;
-			vol += t;
-			moment += t * (o + c + a + b) / 4.0;
-			d = oriented_phi1(m, d);
-		} while (d != f);
-	});
-	if (!oriented)
+	DartMarkerStore<GMap3> reached(m);
+	if (!detail::foreach_oriented_face(m, w.dart, reached,
+									   [&](Dart f) { detail::add_face_cone_moment(m, pos, f, o, vol, moment); }))
 		throw TopologyError("mass_center: the faces of the volume cannot be oriented");
-	if (vol == 0.0)
-	{
-		Vec3 vertex_sum = Vec3::Zero();
-		uint32 nb = 0;
-		foreach_incident_vertex(m, w, [&](GMap3::Vertex v) {
-			vertex_sum += value<Vec3>(m, pos, v);
-			++nb;
-		});
-		return nb > 0 ? Vec3(vertex_sum / nb) : vertex_sum;
-	}
-	return moment / vol;
+	return detail::centre_of(m, w, pos, vol, moment);
 }
 
 } // namespace cgogn::geometry
