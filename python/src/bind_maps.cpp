@@ -195,22 +195,9 @@ py::tuple incidence(MAP& m, Kind from, Kind to)
 	});
 }
 
-// The next dart along d's face (phi1; beta1 o beta0 on a G-map, which walks
-// the face in the orientation of d), and the dart across d's face (phi3,
-// beta3) in a volume mesh.
-template <typename MAP>
-Dart next_in_face(const MAP& m, Dart d)
-{
-	return geometry::oriented_phi1(m, d);
-}
-template <typename MAP>
-Dart across_face(const MAP& m, Dart d)
-{
-	if constexpr (is_gmap_v<MAP>)
-		return beta3(m, d);
-	else
-		return phi3(m, d);
-}
+// A face is walked by the geometry layer's oriented step (phi1; beta1 o beta0
+// on a G-map, in the orientation of the face's dart), which serves both models.
+using geometry::oriented_phi1;
 
 // Calls f(dart) on one dart of every face (boundary faces excluded), in
 // traversal order (see foreach_cell): the face container's line order when
@@ -253,14 +240,14 @@ py::tuple faces_csr(MAP& m)
 	foreach_face_dart(m, [&](const Dart first) {
 		if constexpr (MAP::dimension == 3)
 		{
-			if (!is_boundary(m, across_face(m, first)))
+			if (!is_incident_to_boundary(m, typename mesh_traits<MAP>::Face(first)))
 				return true; // an inner face
 		}
 		Dart d = first;
 		do
 		{
 			indices.push_back(index_of(m, Vertex(d)));
-			d = next_in_face(m, d);
+			d = oriented_phi1(m, d);
 		} while (d != first);
 		offsets.push_back(uint32(indices.size()));
 		return true;
@@ -413,14 +400,14 @@ std::optional<std::vector<uint32>> walked_triangles(const MAP& m)
 	out.reserve(nb_darts(m));
 	bool polygons = false;
 	foreach_face_dart(m, [&](const Dart d) {
-		const Dart e = next_in_face(m, d), g = next_in_face(m, e);
-		if (e == d || next_in_face(m, g) != d)
+		const Dart e = oriented_phi1(m, d), g = oriented_phi1(m, e);
+		if (e == d || oriented_phi1(m, g) != d)
 		{
 			polygons = true;
 			return false;
 		}
 		if constexpr (MAP::dimension == 3)
-			if (!is_boundary(m, across_face(m, d)))
+			if (!is_incident_to_boundary(m, typename mesh_traits<MAP>::Face(d)))
 				return true;
 		out.insert(out.end(), {index_of(m, Vertex(d)), index_of(m, Vertex(e)), index_of(m, Vertex(g))});
 		return true;

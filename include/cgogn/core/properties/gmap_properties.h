@@ -75,6 +75,13 @@ inline bool is_incident_to_boundary(const GMap2& m, GMap2::Edge e)
 	return is_boundary(m, e.dart) || is_boundary(m, beta2(m, e.dart));
 }
 
+/// True when face f of a 3-G-map is on the boundary (one side is a boundary
+/// volume). O(1).
+inline bool is_incident_to_boundary(const GMap3& m, GMap3::Face f)
+{
+	return is_boundary(m, f.dart) || is_boundary(m, beta3(m, f.dart));
+}
+
 /// Number of connected components. O(number of darts).
 inline uint32 nb_connected_components(const GMap2& m)
 {

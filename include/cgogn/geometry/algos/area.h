@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cgogn/core/map/betas.h>
+#include <cgogn/core/properties/gmap_properties.h>
+#include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/algos/normal.h>
 
@@ -44,12 +45,7 @@ double boundary_area(const MESH& m, const AttributeArray<Vec3>& pos)
 {
 	double a = 0.0;
 	foreach_cell(m, [&](typename mesh_traits<MESH>::Face f) {
-		Dart other;
-		if constexpr (is_gmap_v<MESH>)
-			other = beta3(m, f.dart);
-		else
-			other = phi3(m, f.dart);
-		if (is_boundary(m, f.dart) || is_boundary(m, other))
+		if (is_incident_to_boundary(m, f))
 			a += face_area(m, f, pos);
 	});
 	return a;
