@@ -13,14 +13,13 @@
 #include <cgogn/core.h>
 
 #include "harness.h"
+#include "row_table.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <functional>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -155,135 +154,6 @@ void build(benchmark::State& state)
 	state.counters["check"] = cells; // V + E + F
 }
 
-// ---- the rows, in the order of the table, and the table
-
-/// What a row ("workload<model>") measured: CPU ms per iteration (the
-/// fastest repetition), bytes per face, check value.
-struct Result
-{
-	double ms = 0;
-	double bytes_per_face = 0;
-	double check = 0;
-};
-std::vector<std::string> workloads, models;
-std::map<std::string, std::map<std::string, Result>> results;
-
-void add_row(const std::string& workload, const std::string& model, std::function<void(benchmark::State&)> fn)
-{
-	auto* b = benchmark::RegisterBenchmark((workload + "<" + model + ">").c_str(), fn)->Unit(benchmark::kMillisecond);
-	if (workload == "build")
-		b->Iterations(3);
-	else
-		b->MinTime(1.0);
-	if (std::find(workloads.begin(), workloads.end(), workload) == workloads.end())
-		workloads.push_back(workload);
-	if (std::find(models.begin(), models.end(), model) == models.end())
-		models.push_back(model);
-}
-
-/// The display reporter chosen by the flags, the results kept on the way.
-class Collector : public benchmark::BenchmarkReporter
-{
-public:
-	explicit Collector(benchmark::BenchmarkReporter* display) : display_(display)
-	{
-	}
-	bool ReportContext(const Context& context) override
-	{
-		return display_->ReportContext(context);
-	}
-	void ReportRuns(const std::vector<Run>& runs) override
-	{
-		display_->ReportRuns(runs);
-		for (const Run& r : runs)
-		{
-			if (r.run_type != Run::RT_Iteration || r.error_occurred)
-				continue;
-			const std::string& name = r.run_name.function_name;
-			const std::size_t open = name.find('<');
-			if (open == std::string::npos || name.back() != '>')
-				continue;
-			auto& row = results[name.substr(0, open)];
-			const std::string model = name.substr(open + 1, name.size() - open - 2);
-			const bool first = row.find(model) == row.end();
-			Result& res = row[model];
-			const double ms = r.GetAdjustedCPUTime(); // in the row's unit, ms
-			res.ms = first ? ms : std::min(res.ms, ms);
-			const auto get = [&](const char* key) {
-				const auto it = r.counters.find(key);
-				return it == r.counters.end() ? 0.0 : double(it->second);
-			};
-			res.bytes_per_face = get("bytes_per_face");
-			res.check = get("check");
-		}
-	}
-	void Finalize() override
-	{
-		display_->Finalize();
-	}
-
-private:
-	benchmark::BenchmarkReporter* display_;
-};
-
-/// Prints the table (GMap2 against every other model) and returns false when
-/// the rows of a workload disagree on their check value.
-bool print_table()
-{
-	bool same = true;
-	std::printf("\n| workload |");
-	for (const std::string& model : models)
-		std::printf(" %s |", model.c_str());
-	for (const std::string& model : models)
-		if (model != "GMap2")
-			std::printf(" GMap2 / %s |", model.c_str());
-	std::printf("\n|---|");
-	for (std::size_t i = 0; i + 1 < 2 * models.size(); ++i)
-		std::printf("---:|");
-	std::printf("\n");
-	const auto row = [&](const std::string& label, const std::map<std::string, Result>& r, const char* unit,
-						 double (*get)(const Result&)) {
-		std::printf("| %s |", label.c_str());
-		for (const std::string& model : models)
-		{
-			const auto it = r.find(model);
-			if (it == r.end())
-				std::printf(" - |");
-			else
-				std::printf(" %.1f %s |", get(it->second), unit);
-		}
-		const auto g = r.find("GMap2");
-		for (const std::string& model : models)
-		{
-			if (model == "GMap2")
-				continue;
-			const auto it = r.find(model);
-			if (g == r.end() || it == r.end() || get(it->second) == 0)
-				std::printf(" - |");
-			else
-				std::printf(" %.2f |", get(g->second) / get(it->second));
-		}
-		std::printf("\n");
-	};
-	for (const std::string& w : workloads)
-	{
-		const auto r = results.find(w);
-		if (r == results.end())
-			continue;
-		row(w, r->second, "ms", [](const Result& x) { return x.ms; });
-		if (w == "build")
-			row("memory, bytes per face", r->second, "B", [](const Result& x) { return x.bytes_per_face; });
-		for (const auto& [model, res] : r->second)
-			if (res.check != r->second.begin()->second.check)
-			{
-				std::printf("check of %s<%s>: %.0f, of %s<%s>: %.0f\n", w.c_str(), model.c_str(), res.check, w.c_str(),
-							r->second.begin()->first.c_str(), r->second.begin()->second.check);
-				same = false;
-			}
-	}
-	return same;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -291,6 +161,11 @@ int main(int argc, char** argv)
 #ifdef CGOGN_BENCH_HAS_CGAL
 	namespace peer = cgogn::bench::cgal_gmap;
 #endif
+	cgogn::bench::RowTable table("GMap2", "bytes_per_face");
+	const auto add_row = [&](const std::string& workload, const std::string& model,
+							 std::function<void(benchmark::State&)> fn) {
+		table.add(workload, model, fn, workload == "build" ? 3 : 0);
+	};
 	add_row("circulator", "CMap2", circulator<CMap2>);
 	add_row("circulator", "GMap2", circulator<GMap2>);
 #ifdef CGOGN_BENCH_HAS_CGAL
@@ -313,11 +188,5 @@ int main(int argc, char** argv)
 #ifdef CGOGN_BENCH_HAS_CGAL
 	add_row("build", "CGAL_GMap", peer::build);
 #endif
-	benchmark::Initialize(&argc, argv);
-	if (benchmark::ReportUnrecognizedArguments(argc, argv))
-		return 1;
-	Collector collector(benchmark::CreateDefaultDisplayReporter());
-	benchmark::RunSpecifiedBenchmarks(&collector);
-	benchmark::Shutdown();
-	return print_table() ? 0 : 1;
+	return table.run(argc, argv);
 }

@@ -10,6 +10,9 @@
 #include <cgogn/core/build/conversion.h>
 #include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/build/nmap_boundary.h>
+#include <cgogn/core/build/nmap_builder.h>
+#include <cgogn/core/build/nmap_generators.h>
 #include <cgogn/core/map/betas.h>
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/gmap3.h>
@@ -26,6 +29,7 @@
 #include <cgogn/core/operators/gmap2.h>
 #include <cgogn/core/operators/gmap3.h>
 #include <cgogn/core/operators/maintenance.h>
+#include <cgogn/core/operators/nmap.h>
 #include <cgogn/core/parallel/thread_pool.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/core/properties/properties.h>
@@ -33,6 +37,7 @@
 #include <cgogn/core/traversals/incidence_cache.h>
 #include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_dimension.h>
 #include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/core/traversals/local_views.h>

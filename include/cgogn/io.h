@@ -4,6 +4,7 @@
 
 #include <cgogn/geometry.h>
 #include <cgogn/io/error.h>
+#include <cgogn/io/nmap.h>
 #include <cgogn/io/options.h>
 #include <cgogn/io/surface.h>
 #include <cgogn/io/volume.h>

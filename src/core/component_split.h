@@ -19,11 +19,22 @@ void reset_reindexed_dart_count();
 void count_reindexed_darts(std::uint64_t n);
 
 /// The darts joined to d by phi1, phi2 (and phi3), or by beta0, beta1, beta2
-/// (and beta3) in a G-map: walking them from a dart visits its connected component.
+/// (and beta3) in a G-map, by every relation in the maps of any dimension:
+/// walking them from a dart visits its connected component.
 template <typename MAP>
 std::array<Dart, MAP::dimension + (is_gmap_v<MAP> ? 1 : 0)> linked_darts(const MAP& m, Dart d)
 {
-	if constexpr (is_gmap_v<MAP> && MAP::dimension >= 3)
+	if constexpr (is_nmap_v<MAP>)
+	{
+		std::array<Dart, MAP::dimension + (is_gmap_v<MAP> ? 1 : 0)> r;
+		uint32 k = 0;
+		if constexpr (is_gmap_v<MAP>)
+			r[k++] = Dart(d.index ^ 1u);
+		for (uint32 i = 1; i <= MAP::dimension; ++i)
+			r[k++] = relation(m, i, d);
+		return r;
+	}
+	else if constexpr (is_gmap_v<MAP> && MAP::dimension >= 3)
 		return {beta0(m, d), beta1(m, d), beta2(m, d), beta3(m, d)};
 	else if constexpr (is_gmap_v<MAP> && MAP::dimension == 2)
 		return {beta0(m, d), beta1(m, d), beta2(m, d)};

@@ -152,6 +152,8 @@ void check_beta_relations(const MAP& m, Checker& ck)
 
 template <typename MAP>
 void check_phi_relations(const MAP& m, Checker& ck);
+template <typename MAP>
+void check_nmap_relations(const MAP& m, Checker& ck);
 
 template <typename MAP>
 void check_relations(const MAP& m, Checker& ck)
@@ -168,7 +170,9 @@ void check_relations(const MAP& m, Checker& ck)
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
 			check_unused_lines(*detail::state_of(m).cells[o], Orbit(o), {&detail::state_of(m).cells[o]->key()}, ck);
 	}
-	if constexpr (is_gmap_v<MAP>)
+	if constexpr (is_nmap_v<MAP>)
+		check_nmap_relations(m, ck);
+	else if constexpr (is_gmap_v<MAP>)
 		check_beta_relations(m, ck);
 	else
 		check_phi_relations(m, ck);
@@ -255,6 +259,82 @@ void check_phi_relations(const MAP& m, Checker& ck)
 	}
 }
 
+// The relations of a map of any dimension D. A CMapN: phi1 a permutation,
+// phi_i (i >= 2) fixed-point-free involutions, phi1 o phi_j (j >= 3) and
+// phi_i o phi_j (2 <= i, i + 2 <= j) involutions. A GMapN: darts in pairs,
+// beta_i (i >= 1) fixed-point-free involutions, beta_i o beta_j involutions
+// for i + 2 <= j. Both: the boundary mark constant on D-cells, never on both
+// sides of the last relation. Faces of 1 or 2 edges are allowed (the
+// contraction operators of any dimension make them).
+template <typename MAP>
+void check_nmap_relations(const MAP& m, Checker& ck)
+{
+	constexpr uint32 D = MAP::dimension;
+	constexpr bool G = is_gmap_v<MAP>;
+	const std::string r = G ? "beta" : "phi";
+	std::vector<uint8> phi1_preimages(G ? 0 : detail::state_of(m).darts->end_index(), 0);
+	bool relations_ok = true;
+	foreach_dart(m, [&](Dart d) {
+		if constexpr (G)
+			if (!is_dart_valid(m, beta0(m, d)))
+			{
+				ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
+					   "beta0 points to a dart that is not live (the other dart of its pair)");
+				relations_ok = false;
+			}
+		for (uint32 i = 1; i <= D; ++i)
+		{
+			const std::string name = r + std::to_string(i);
+			const Dart e = detail::relation(m, i, d);
+			if (!is_dart_valid(m, e))
+			{
+				ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
+					   name + " points to a dart that is not live");
+				relations_ok = false;
+			}
+			else if (!G && i == 1)
+			{
+				if (phi1_preimages[e.index]++ == 1)
+					ck.add(Kind::Phi1NotPermutation, Orbit::DART, e.index, INVALID_INDEX,
+						   "phi1 is not a permutation: two darts have this dart as phi1");
+			}
+			else if (e == d)
+				ck.add(Kind::PhiFixedPoint, Orbit::DART, d.index, INVALID_INDEX,
+					   name + " has a fixed point: the map is not closed");
+			else if (detail::relation(m, i, e) != d)
+				ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX, name + " is not an involution");
+		}
+	});
+	if (!relations_ok)
+		return;
+	// relation i of d, beta0 included
+	auto rel = [&](uint32 i, Dart d) { return G && i == 0 ? Dart(d.index ^ 1u) : detail::relation(m, i, d); };
+	uint32 marked = 0;
+	foreach_dart(m, [&](Dart d) {
+		for (uint32 i = G ? 0 : 1; i + 2 <= D; ++i)
+			for (uint32 j = i + 2; j <= D; ++j)
+				if (rel(j, rel(i, rel(j, rel(i, d)))) != d)
+				{
+					const Kind k = G ? Kind::BetaCompositionNotInvolution : Kind::Phi1Phi3NotInvolution;
+					ck.add(k, Orbit::DART, d.index, INVALID_INDEX,
+						   r + std::to_string(j) + " o " + r + std::to_string(i) + " is not an involution");
+				}
+		const bool b = is_boundary(m, d);
+		marked += b;
+		if (b && is_boundary(m, rel(D, d)))
+			ck.add(Kind::BoundaryLinked, Orbit::DART, d.index, INVALID_INDEX,
+				   r + std::to_string(D) + " links two boundary darts");
+		for (uint32 i = G ? 0 : 1; i < D; ++i)
+			if (is_boundary(m, rel(i, d)) != b)
+				ck.add(Kind::BoundaryMarkNotConstant, Orbit::DART, d.index, INVALID_INDEX,
+					   "the boundary mark is not constant on a boundary cell");
+	});
+	if (marked != detail::state_of(m).nb_boundary_darts)
+		ck.add(Kind::BoundaryCountWrong, Orbit::DART, INVALID_INDEX, INVALID_INDEX,
+			   "the map counts " + std::to_string(detail::state_of(m).nb_boundary_darts) + " boundary darts, " +
+				   std::to_string(marked) + " are marked");
+}
+
 // Local generators of orbit O: if all of them keep the index, the whole orbit does.
 template <Orbit O, typename MAP, typename FUNC>
 void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
@@ -290,6 +370,11 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 		f(phi1(m, d));
 		f(phi2(m, d));
 		f(phi3(m, d));
+	}
+	else if constexpr (is_dimension_orbit(O))
+	{
+		for (const auto& next : detail::ncell_steps<MAP, dimension_of_orbit(O)>(detail::state_of(m)))
+			f(Dart(next[d.index]));
 	}
 	else if constexpr (O != Orbit::DART)
 	{
@@ -434,6 +519,28 @@ IntegrityReport check_integrity(const GMap2& m)
 {
 	return check_map<GMap2, Orbit::BETA0_BETA1, Orbit::BETA0_BETA2, Orbit::BETA1_BETA2, Orbit::BETA0_BETA1_BETA2>(m);
 }
+
+template <typename MAP>
+requires is_nmap_v<MAP> IntegrityReport check_integrity(const MAP& m)
+{
+	return [&]<std::size_t... K>(std::index_sequence<K...>)
+	{
+		return check_map<MAP, cell_orbit(K)...>(m);
+	}
+	(std::make_index_sequence<MAP::dimension + 1>{});
+}
+
+#define CGOGN_NMAP_INTEGRITY(D)                                                                                        \
+	template IntegrityReport check_integrity(const CMapN<D>&);                                                         \
+	template IntegrityReport check_integrity(const GMapN<D>&);
+CGOGN_NMAP_INTEGRITY(1)
+CGOGN_NMAP_INTEGRITY(2)
+CGOGN_NMAP_INTEGRITY(3)
+CGOGN_NMAP_INTEGRITY(4)
+CGOGN_NMAP_INTEGRITY(5)
+CGOGN_NMAP_INTEGRITY(6)
+CGOGN_NMAP_INTEGRITY(7)
+#undef CGOGN_NMAP_INTEGRITY
 
 IntegrityReport check_integrity(const GMap3& m)
 {

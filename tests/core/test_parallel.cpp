@@ -1,6 +1,7 @@
 // parallel_foreach_cell gives the same results as foreach_cell for every cell
-// type of CMap2, CMap3, GMap2 and GMap3, indexed or not, with 1, 2 and more workers than
-// cores; thread indices are dense and never shared by two running callables.
+// type of CMap2, CMap3, GMap2, GMap3 and the maps of any dimension, indexed or
+// not, with 1, 2 and more workers than cores; thread indices are dense and
+// never shared by two running callables.
 #include <cgogn/core.h>
 
 #include <gtest/gtest.h>
@@ -127,6 +128,21 @@ TEST_P(Parallel, TetVolumeAllCellTypes)
 	check_all_cell_types(m);
 	index_all_cell_types(m);
 	check_all_cell_types(m);
+}
+
+TEST_P(Parallel, MapsOfAnyDimensionAllCellTypes)
+{
+	CMapN<4> c;
+	generate_cube_grid(c, 2);
+	check_all_cell_types(c); // vertices indexed (positions), the others not
+	index_all_cell_types(c);
+	check_all_cell_types(c);
+	GMapN<3> g;
+	generate_freudenthal_grid(g, 2);
+	check_all_cell_types(g);
+	CMapN<1> path;
+	generate_cube_grid(path, 5); // its last vertex is the start of a boundary edge
+	check_all_cell_types(path);
 }
 
 TEST_P(Parallel, HexVolumeAllCellTypes)

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/nmap.h>
 
 namespace cgogn
 {
@@ -36,5 +37,36 @@ GMap3 to_gmap(const CMap3& m);
 /// beta0 o beta3). Throws TopologyError when g is not orientable.
 /// O(size of g x number of attributes).
 CMap3 to_cmap(const GMap3& g);
+
+/// The D-G-map of a D-map, as to_gmap of a 2-map: twice the darts, every
+/// cell (CellD<0> ... CellD<D>, boundary D-cells) and attribute carried.
+/// O(size of m x number of attributes).
+template <uint32 D>
+GMapN<D> to_gmap(const CMapN<D>& m);
+
+/// The D-map of an orientable D-G-map, as to_cmap of a 2-G-map: phi1 =
+/// beta1 o beta0, phi_i = beta0 o beta_i. Throws TopologyError when g is not
+/// orientable. O(size of g x number of attributes).
+template <uint32 D>
+CMapN<D> to_cmap(const GMapN<D>& g);
+
+/// The same map as a map of any dimension: the darts of m in the order of
+/// their indices (the same indices when m is compact), the same relations
+/// and boundary, and every attribute (vertices become CellD<0>, edges
+/// CellD<1>, faces CellD<2>, volumes CellD<3>; the cells of one volume of a
+/// 3-map and its connected components are not carried). O(size of m x
+/// number of attributes).
+CMapN<2> to_nmap(const CMap2& m);
+CMapN<3> to_nmap(const CMap3& m);
+GMapN<2> to_nmap(const GMap2& m);
+GMapN<3> to_nmap(const GMap3& m);
+
+/// The inverse of to_nmap: a map of dimension 2 or 3 as the tuned map of
+/// that dimension, darts, relations, boundary and attributes of the cells
+/// of each dimension carried. O(size of m x number of attributes).
+CMap2 to_fixed_map(const CMapN<2>& m);
+CMap3 to_fixed_map(const CMapN<3>& m);
+GMap2 to_fixed_map(const GMapN<2>& m);
+GMap3 to_fixed_map(const GMapN<3>& m);
 
 } // namespace cgogn

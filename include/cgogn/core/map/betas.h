@@ -38,6 +38,34 @@ CGOGN_INLINE Dart beta3(const GMap3& m, Dart d)
 	return Dart((*detail::state_of(m).beta[3])[d.index]);
 }
 
+/// beta0 of a G-map of any dimension: the other dart of d's pair. O(1).
+template <uint32 D>
+CGOGN_INLINE Dart beta0(const GMapN<D>&, Dart d)
+{
+	return Dart(d.index ^ 1u);
+}
+
+/// beta1 of a G-map of any dimension. O(1).
+template <uint32 D>
+CGOGN_INLINE Dart beta1(const GMapN<D>& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[1])[d.index]);
+}
+
+/// beta2 of a G-map of any dimension (D >= 2). O(1).
+template <uint32 D>
+requires(D >= 2) CGOGN_INLINE Dart beta2(const GMapN<D>& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[2])[d.index]);
+}
+
+/// beta3 of a G-map of any dimension (D >= 3). O(1).
+template <uint32 D>
+requires(D >= 3) CGOGN_INLINE Dart beta3(const GMapN<D>& m, Dart d)
+{
+	return Dart((*detail::state_of(m).beta[3])[d.index]);
+}
+
 /// Composition of involutions applied left to right: beta<0, 2>(m, d) is
 /// beta2(m, beta0(m, d)). O(number of relations).
 template <int... N, typename MAP>
@@ -54,8 +82,13 @@ Dart beta(const MAP& m, Dart d)
 			if constexpr (MAP::dimension >= 2)
 				d = beta2(m, d);
 		}
-		else if constexpr (MAP::dimension >= 3)
-			d = beta3(m, d);
+		else if (n == 3)
+		{
+			if constexpr (MAP::dimension >= 3)
+				d = beta3(m, d);
+		}
+		else
+			d = Dart((*detail::state_of(m).beta[n])[d.index]);
 	};
 	(apply(N), ...);
 	return d;
@@ -68,7 +101,7 @@ namespace detail
 /// allocation of the darts). Every change of a relation drops the quick
 /// incidence caches (see drop_incidence_caches).
 template <uint32 I, typename MAP>
-requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) inline void set_beta(MAP& m, Dart d, Dart e)
+requires is_gmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) inline void set_beta(MAP& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
 	(*detail::state_of(m).beta[I])[d.index] = e.index;
@@ -79,7 +112,7 @@ requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) inline 
 /// Links d and e by beta_i (i >= 1); both must be beta_i fixed points. Low
 /// level: the map is not closed while fixed points remain (builders use it).
 template <uint32 I, typename MAP>
-requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) void beta_sew(MAP& m, Dart d, Dart e)
+requires is_gmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) void beta_sew(MAP& m, Dart d, Dart e)
 {
 	assert(beta<int(I)>(m, d) == d && beta<int(I)>(m, e) == e);
 	detail::set_beta<I>(m, d, e);
@@ -88,7 +121,7 @@ requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) void be
 
 /// Unlinks d and beta_i(d) (i >= 1), leaving two fixed points. Low level.
 template <uint32 I, typename MAP>
-requires std::derived_from<MAP, GMap1> &&(I >= 1 && I <= MAP::dimension) void beta_unsew(MAP& m, Dart d)
+requires is_gmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) void beta_unsew(MAP& m, Dart d)
 {
 	const Dart e = beta<int(I)>(m, d);
 	detail::set_beta<I>(m, d, d);

@@ -33,15 +33,16 @@ struct MapState
 	/// The key of the dart container: a dart is live when its key is valid.
 	/// phi1 in a combinatorial map, beta1 in a generalized map.
 	AttributeArray<uint32>* phi1 = nullptr;
-	/// phi2 and phi3, for the maps of dimension 2 and 3 (nullptr below).
+	/// phi2 and phi3, for the combinatorial maps of dimension 2 and more
+	/// (nullptr below; phi4 ... of a CMapN are in `relations` only).
 	AttributeArray<uint32>* phi2 = nullptr;
 	AttributeArray<uint32>* phi3 = nullptr;
 	/// beta1, ... betan, for the generalized maps (beta1 is the key; nullptr
 	/// in a combinatorial map and above the map's dimension). beta[0] is
 	/// always nullptr: beta0 is not stored, the darts of a generalized map
 	/// being allocated in pairs (2k, 2k + 1) that are each other's beta0.
-	std::array<AttributeArray<uint32>*, 4> beta{};
-	/// phi1, phi2, ... phin (or beta1, ... betan) in this order.
+	std::array<AttributeArray<uint32>*, MAX_DIMENSION + 1> beta{};
+	/// phi1, phi2, ... phin (or beta1, ... betan) in this order: relations[i - 1] is phi_i (beta_i).
 	std::vector<AttributeArray<uint32>*> relations;
 	MarkAttribute* boundary = nullptr;
 	/// Number of live darts carrying the boundary mark (kept by
@@ -100,13 +101,17 @@ protected:
 		}
 	}
 
-	/// Adds the dart attribute of the next relation (phi2, then phi3), invalid
-	/// on every dart until sewn; called by the constructors of CMap2 and CMap3.
+	/// Adds the dart attribute of the next relation (phi2, then phi3, ...),
+	/// invalid on every dart until sewn; called by the constructors of CMap2,
+	/// CMap3 and CMapN.
 	void add_relation(const std::string& name)
 	{
 		AttributeArray<uint32>* a = state_.darts->add_attribute<uint32>(name, INVALID_INDEX).get();
 		state_.relations.push_back(a);
-		(state_.relations.size() == 2 ? state_.phi2 : state_.phi3) = a;
+		if (state_.relations.size() == 2)
+			state_.phi2 = a;
+		else if (state_.relations.size() == 3)
+			state_.phi3 = a;
 	}
 
 	/// Makes the key beta1: called by the constructor of GMap1, whose beta0
@@ -116,9 +121,9 @@ protected:
 		state_.beta[1] = state_.phi1;
 	}
 
-	/// Adds the dart attribute of the next involution (beta2, then beta3),
-	/// invalid on every dart until sewn; called by the constructors of GMap2
-	/// and GMap3.
+	/// Adds the dart attribute of the next involution (beta2, then beta3,
+	/// ...), invalid on every dart until sewn; called by the constructors of
+	/// GMap2, GMap3 and GMapN.
 	void add_beta_relation(const std::string& name)
 	{
 		AttributeArray<uint32>* a = state_.darts->add_attribute<uint32>(name, INVALID_INDEX).get();

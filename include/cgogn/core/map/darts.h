@@ -60,8 +60,44 @@ CGOGN_INLINE Dart phi3(const CMap3& m, Dart d)
 	return Dart((*detail::state_of(m).phi3)[d.index]);
 }
 
+/// Next dart in the face cycle of a map of any dimension. O(1).
+template <uint32 D>
+CGOGN_INLINE Dart phi1(const CMapN<D>& m, Dart d)
+{
+	return Dart((*detail::state_of(m).phi1)[d.index]);
+}
+
+/// Previous dart in the face cycle of a map of any dimension. O(degree of the
+/// face).
+template <uint32 D>
+Dart phi_1(const CMapN<D>& m, Dart d)
+{
+	Dart it = d;
+	for (Dart n = phi1(m, it); n != d; n = phi1(m, it))
+		it = n;
+	return it;
+}
+
+/// phi2 of a map of any dimension (D >= 2): the dart of the adjacent face
+/// along the same edge, opposite direction. O(1).
+template <uint32 D>
+requires(D >= 2) CGOGN_INLINE Dart phi2(const CMapN<D>& m, Dart d)
+{
+	return Dart((*detail::state_of(m).phi2)[d.index]);
+}
+
+/// phi3 of a map of any dimension (D >= 3): the dart of the adjacent volume
+/// along the same face, opposite direction. O(1).
+template <uint32 D>
+requires(D >= 3) CGOGN_INLINE Dart phi3(const CMapN<D>& m, Dart d)
+{
+	return Dart((*detail::state_of(m).phi3)[d.index]);
+}
+
 /// Composition of relations applied left to right: phi<1, 2>(m, d) is
-/// phi2(m, phi1(m, d)); -1 stands for phi_1.
+/// phi2(m, phi1(m, d)); -1 stands for phi_1. In a CMapN<D>, every phi_i,
+/// i <= D, is available: phi<4>(m, d) glues 4-cells. O(number of relations)
+/// (phi_1: O(degree of the face)).
 template <int... N, typename MAP>
 Dart phi(const MAP& m, Dart d)
 {
@@ -80,8 +116,10 @@ Dart phi(const MAP& m, Dart d)
 			if constexpr (MAP::dimension >= 3)
 				d = phi3(m, d);
 		}
+		else
+			d = Dart((*detail::state_of(m).relations[n - 1])[d.index]);
 	};
-	static_assert(((N == 1 || N == -1 || (N == 2 && MAP::dimension >= 2) || (N == 3 && MAP::dimension >= 3)) && ...),
+	static_assert(((N == 1 || N == -1 || (N >= 2 && N <= int(MAP::dimension))) && ...),
 				  "phi<...>: relation not available in this map");
 	(apply(N), ...);
 	return d;
@@ -167,11 +205,16 @@ inline void remove_dart(CMapBase& m, Dart d)
 // added and removed by add_dart_pair and remove_dart_pair only.
 Dart add_dart(GMap1& m) = delete;
 void remove_dart(GMap1& m, Dart d) = delete;
+template <uint32 D>
+Dart add_dart(GMapN<D>& m) = delete;
+template <uint32 D>
+void remove_dart(GMapN<D>& m, Dart d) = delete;
 
 /// A new edge side of a generalized map: the darts d (even) and d + 1, each
 /// other's beta0 for their whole life, fixed points of the other betas until
 /// sewn. Returns d. O(number of dart attributes).
-inline Dart add_dart_pair(GMap1& m)
+template <typename MAP>
+requires is_gmap_v<MAP> Dart add_dart_pair(MAP& m)
 {
 	if (!detail::state_of(m).incidence_tables.empty())
 		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
@@ -185,7 +228,9 @@ inline Dart add_dart_pair(GMap1& m)
 }
 
 /// Removes the darts d and beta0(d) (the caller has unlinked them). O(1).
-inline void remove_dart_pair(GMap1& m, Dart d)
+template <typename MAP>
+requires is_gmap_v<MAP>
+void remove_dart_pair(MAP& m, Dart d)
 {
 	if (!detail::state_of(m).incidence_tables.empty())
 		detail::state_of(m).incidence_tables.clear(); // see drop_incidence_caches
@@ -227,6 +272,18 @@ inline void set_phi3(CMap3& m, Dart d, Dart e)
 {
 	drop_incidence_caches(m);
 	(*detail::state_of(m).phi3)[d.index] = e.index;
+}
+/// Sets relation i (phi_i of a CMapN, beta_i of a GMapN, i >= 1) of d to e,
+/// one side only. O(1).
+inline void set_relation(CMapBase& m, uint32 i, Dart d, Dart e)
+{
+	drop_incidence_caches(m);
+	(*detail::state_of(m).relations[i - 1])[d.index] = e.index;
+}
+/// Relation i (phi_i of a CMapN, beta_i of a GMapN, i >= 1) of d. O(1).
+CGOGN_INLINE Dart relation(const CMapBase& m, uint32 i, Dart d)
+{
+	return Dart((*detail::state_of(m).relations[i - 1])[d.index]);
 }
 
 } // namespace detail
@@ -281,6 +338,36 @@ inline void phi3_unsew(CMap3& m, Dart d)
 	Dart e = phi3(m, d);
 	detail::set_phi3(m, d, d);
 	detail::set_phi3(m, e, e);
+}
+
+/// Exchanges phi1(d) and phi1(e) in a map of any dimension (see phi1_sew
+/// of a CMap1). Low level: no indexing. O(1).
+template <uint32 D>
+void phi1_sew(CMapN<D>& m, Dart d, Dart e)
+{
+	const Dart f = phi1(m, d);
+	const Dart g = phi1(m, e);
+	detail::set_relation(m, 1, d, g);
+	detail::set_relation(m, 1, e, f);
+}
+
+/// Links d and e by phi_i (2 <= i <= D); both must be phi_i fixed points.
+/// Low level: the map is not closed while fixed points remain. O(1).
+template <uint32 I, uint32 D>
+requires(I >= 2 && I <= D) void phi_sew(CMapN<D>& m, Dart d, Dart e)
+{
+	assert(phi<int(I)>(m, d) == d && phi<int(I)>(m, e) == e);
+	detail::set_relation(m, I, d, e);
+	detail::set_relation(m, I, e, d);
+}
+
+/// Unlinks d and phi_i(d) (2 <= i <= D), leaving two fixed points. Low level. O(1).
+template <uint32 I, uint32 D>
+requires(I >= 2 && I <= D) void phi_unsew(CMapN<D>& m, Dart d)
+{
+	const Dart e = phi<int(I)>(m, d);
+	detail::set_relation(m, I, d, d);
+	detail::set_relation(m, I, e, e);
 }
 
 } // namespace cgogn

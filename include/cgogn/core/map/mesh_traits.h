@@ -4,9 +4,11 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/nmap.h>
 
 #include <concepts>
 #include <tuple>
+#include <utility>
 
 namespace cgogn
 {
@@ -127,10 +129,72 @@ struct mesh_traits<GMap3>
 	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
 };
 
-/// True for the generalized maps (GMap1, GMap2, GMap3), whose relations are the
+namespace detail
+{
+template <uint32 D, typename IS>
+struct dimension_cells;
+template <uint32 D, std::size_t... I>
+struct dimension_cells<D, std::index_sequence<I...>>
+{
+	using type = std::tuple<CellD<uint32(I)>...>;
+};
+} // namespace detail
+
+/// The traits of a map of any dimension, combinatorial or generalized.
+template <typename MAP>
+requires is_nmap_v<MAP>
+struct mesh_traits<MAP>
+{
+	static constexpr uint32 dimension = MAP::dimension; ///< The dimension of the map.
+	using MapType = MAP;                                ///< The map type.
+	using Vertex = CellD<0>;                            ///< A vertex.
+	using Edge = CellD<1>;                              ///< An edge.
+	/// The cell types, CellD<0> ... CellD<D>: views keep one predicate or cell set per entry.
+	using Cells = typename detail::dimension_cells<MAP::dimension, std::make_index_sequence<MAP::dimension + 1>>::type;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
+};
+
+/// True for the generalized maps (GMap1, GMap2, GMap3, GMapN), whose relations are the
 /// involutions beta_i; false for the combinatorial maps and the views.
 template <typename M>
-inline constexpr bool is_gmap_v = std::derived_from<M, GMap1>;
+inline constexpr bool is_gmap_v = std::derived_from<M, GMap1> || is_gmapn<M>::value;
+
+namespace detail
+{
+template <typename MAP, uint32 I>
+struct cell_of_dimension;
+template <typename MAP, uint32 I>
+requires is_nmap_v<MAP>
+struct cell_of_dimension<MAP, I>
+{
+	using type = CellD<I>;
+};
+template <typename MAP, uint32 I>
+requires(!is_nmap_v<MAP> && std::derived_from<MAP, CMapBase>) struct cell_of_dimension<MAP, I>
+{
+	static_assert(I <= MAP::dimension, "no cell of this dimension in this map");
+	using type = std::tuple_element_t<
+		I, std::tuple<typename MAP::Vertex, typename MAP::Edge, typename MAP::Face, typename MAP::Volume>>;
+};
+template <typename MAP>
+requires(!is_nmap_v<MAP> && std::derived_from<MAP, CMapBase> && MAP::dimension == 1) struct cell_of_dimension<MAP, 0>
+{
+	using type = typename MAP::Vertex;
+};
+template <typename MAP>
+requires(!is_nmap_v<MAP> && std::derived_from<MAP, CMapBase> && MAP::dimension == 1) struct cell_of_dimension<MAP, 1>
+{
+	using type = typename MAP::Edge;
+};
+} // namespace detail
+
+/// The cell type of dimension I of a map: CellD<I> in a CMapN or GMapN;
+/// Vertex, Edge, Face, Volume (I = 0 ... 3) in the maps of dimension 1 to 3,
+/// up to their dimension. Generic code written with it runs on every map.
+template <typename MAP, uint32 I>
+using cell_of_dimension_t = typename detail::cell_of_dimension<MAP, I>::type;
 
 /// A type usable as a mesh by generic algorithms: a map or a view on one.
 template <typename M>

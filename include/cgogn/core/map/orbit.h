@@ -35,14 +35,47 @@ enum class Orbit : uint32
 	BETA0_BETA2_BETA3,       // 3d edge
 	BETA1_BETA2_BETA3,       // 3d vertex
 	BETA0_BETA1_BETA2_BETA3, // 3d connected component
+	// the i-cells of the maps of any dimension (CMapN, GMapN), i = 0 ... MAX_DIMENSION
+	CELL0,
+	CELL1,
+	CELL2,
+	CELL3,
+	CELL4,
+	CELL5,
+	CELL6,
+	CELL7,
 	NB_ORBITS
 };
+
+/// The largest dimension of a CMapN or GMapN: each dimension of cells has its
+/// own orbit, hence its own attribute container in every map.
+inline constexpr uint32 MAX_DIMENSION = 7;
 
 inline constexpr uint32 NB_ORBITS = static_cast<uint32>(Orbit::NB_ORBITS);
 
 constexpr uint32 orbit_index(Orbit o)
 {
 	return static_cast<uint32>(o);
+}
+
+/// The orbit of the i-cells of a map of any dimension (CMapN, GMapN): for
+/// i >= 1 the orbit of the relations phi_j, j != i (beta_j, j != i, in a
+/// G-map); for i = 0 that of the phi1 o phi_j, j >= 2 (beta_j, j >= 1).
+constexpr Orbit cell_orbit(uint32 i)
+{
+	return Orbit(orbit_index(Orbit::CELL0) + i);
+}
+
+/// True for the orbits of the maps of any dimension (CELL0 ... CELL7).
+constexpr bool is_dimension_orbit(Orbit o)
+{
+	return orbit_index(o) >= orbit_index(Orbit::CELL0) && o != Orbit::NB_ORBITS;
+}
+
+/// The dimension of the cells of an orbit of the maps of any dimension.
+constexpr uint32 dimension_of_orbit(Orbit o)
+{
+	return orbit_index(o) - orbit_index(Orbit::CELL0);
 }
 
 constexpr std::string_view orbit_name(Orbit o)
@@ -65,14 +98,26 @@ constexpr std::string_view orbit_name(Orbit o)
 															   "BETA0_BETA1_BETA3",
 															   "BETA0_BETA2_BETA3",
 															   "BETA1_BETA2_BETA3",
-															   "BETA0_BETA1_BETA2_BETA3"};
+															   "BETA0_BETA1_BETA2_BETA3",
+															   "CELL0",
+															   "CELL1",
+															   "CELL2",
+															   "CELL3",
+															   "CELL4",
+															   "CELL5",
+															   "CELL6",
+															   "CELL7"};
 	return names[orbit_index(o)];
 }
 
 /// True when the orbit uses phi_k among its generators (vertex orbits PHI21
-/// and PHI21_PHI31 use phi2, and phi2 and phi3, respectively).
+/// and PHI21_PHI31 use phi2, and phi2 and phi3, respectively; CELLi uses
+/// every phi_k but phi_i, or every phi_k for vertices). For the CELLi
+/// orbits, whose generators depend on the map's dimension, k is at most it.
 constexpr bool orbit_uses_phi(Orbit o, uint32 k)
 {
+	if (is_dimension_orbit(o))
+		return k >= 1 && (dimension_of_orbit(o) == 0 || k != dimension_of_orbit(o));
 	switch (o)
 	{
 	case Orbit::PHI1:
@@ -94,9 +139,12 @@ constexpr bool orbit_uses_phi(Orbit o, uint32 k)
 	}
 }
 
-/// True when the orbit uses beta_k among its generators (the G-map orbits).
+/// True when the orbit uses beta_k among its generators (the G-map orbits;
+/// CELLi uses every beta_k but beta_i, k at most the map's dimension).
 constexpr bool orbit_uses_beta(Orbit o, uint32 k)
 {
+	if (is_dimension_orbit(o))
+		return k != dimension_of_orbit(o);
 	switch (o)
 	{
 	case Orbit::BETA0:

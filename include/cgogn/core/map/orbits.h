@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/betas.h>
+#include <cgogn/core/map/ncell_walk.h>
 #include <cgogn/core/marking/dart_marker.h>
 
 namespace cgogn
@@ -69,35 +70,14 @@ struct Beta0View
 	}
 };
 
-/// The rest of the orbit of two involutions that is a path, not a cycle:
-/// having met a fixed point going one way from d, walks the other way from d,
-/// starting with `first`, then alternating. Returns false when f stopped.
-template <typename FUNC, typename FIRST, typename SECOND>
-bool walk_path_back(Dart d, const FUNC& f, const FIRST& first, const SECOND& second)
-{
-	Dart it = d;
-	for (;;)
-	{
-		const Dart e(first[it.index]);
-		if (e == it)
-			return true;
-		if (!call_and_continue(f, e))
-			return false;
-		const Dart g(second[e.index]);
-		if (g == e)
-			return true;
-		if (!call_and_continue(f, g))
-			return false;
-		it = g;
-	}
-}
-
 /// True for the orbits that foreach_dart_of_orbit floods with a mark and a
 /// work list (volumes, 3-D vertices, connected components); the others are
-/// walked as one or two cycles.
+/// walked as one or two cycles. The cells of the maps of any dimension count
+/// as flooded: the global traversals flood them with one mark for all, whatever
+/// their walk (see flood_orbit_keep_marks).
 constexpr bool orbit_is_flooded(Orbit o)
 {
-	return o == Orbit::PHI1_PHI2 || o == Orbit::PHI21_PHI31 || o == Orbit::PHI1_PHI2_PHI3 ||
+	return is_dimension_orbit(o) || o == Orbit::PHI1_PHI2 || o == Orbit::PHI21_PHI31 || o == Orbit::PHI1_PHI2_PHI3 ||
 		   o == Orbit::BETA0_BETA1_BETA2 || o == Orbit::BETA0_BETA1_BETA3 || o == Orbit::BETA0_BETA2_BETA3 ||
 		   o == Orbit::BETA1_BETA2_BETA3 || o == Orbit::BETA0_BETA1_BETA2_BETA3;
 }
@@ -111,6 +91,12 @@ template <Orbit O, typename MAP, typename FUNC>
 void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vector<Dart>& work, const FUNC& f)
 {
 	static_assert(orbit_is_flooded(O));
+	[[maybe_unused]] const auto steps = [&] {
+		if constexpr (is_dimension_orbit(O))
+			return ncell_steps<MAP, dimension_of_orbit(O)>(state_of(m));
+		else
+			return 0;
+	}();
 	work.clear();
 	work.push_back(d);
 	mark.set(d.index);
@@ -125,7 +111,12 @@ void flood_orbit_keep_marks(const MAP& m, Dart d, MarkAttribute& mark, std::vect
 	{
 		const Dart x = work[i];
 		f(x);
-		if constexpr (O == Orbit::PHI1_PHI2)
+		if constexpr (is_dimension_orbit(O))
+		{
+			for (const auto& next : steps)
+				visit(Dart(next[x.index]));
+		}
+		else if constexpr (O == Orbit::PHI1_PHI2)
 		{
 			visit(phi1(m, x));
 			visit(phi2(m, x));
@@ -358,6 +349,12 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
 			[&](Dart x) { return beta2(m, x); }, [&](Dart x) { return beta3(m, x); });
 	}
+	else if constexpr (is_dimension_orbit(O))
+	{
+		static_assert(is_nmap_v<MAP> && dimension_of_orbit(O) <= MAP::dimension,
+					  "CellD<I>: the cells of the maps of any dimension (CMapN, GMapN), I <= dimension");
+		return detail::foreach_dart_of_ncell<dimension_of_orbit(O)>(m, d, f);
+	}
 	else
 	{
 		static_assert(O == Orbit::DART, "orbit not available in combinatorial maps");
@@ -378,11 +375,30 @@ template <typename MAP, Orbit O>
 requires std::derived_from<MAP, CMapBase>
 bool is_boundary_cell(const MAP& m, Cell<O> c)
 {
-	if constexpr (MAP::dimension >= 2 && orbit_inside_top_cell_v<MAP, O>)
+	if constexpr ((MAP::dimension >= 2 || is_nmap_v<MAP>)&&orbit_inside_top_cell_v<MAP, O>)
 		return is_boundary(m, c.dart);
 	else
 		return false;
 }
+
+namespace detail
+{
+
+/// Whether the global traversals that look for the cells of orbit O among
+/// the darts pass over dart d. In the maps of dimension 1 to 3, the boundary
+/// darts: each real cell has a dart that is not one. In the maps of any
+/// dimension, the darts of boundary cells: a vertex of a CMapN<1> is a single
+/// dart, and the last vertex of a path is the start of its boundary edge. O(1).
+template <Orbit O, typename MAP>
+CGOGN_INLINE bool passed_over_by_traversals(const MAP& m, Dart d)
+{
+	if constexpr (is_nmap_v<MAP>)
+		return is_boundary_cell(m, Cell<O>(d));
+	else
+		return is_boundary(m, d);
+}
+
+} // namespace detail
 
 /// Number of darts of cell c. O(size of the orbit).
 template <typename MAP, Orbit O>

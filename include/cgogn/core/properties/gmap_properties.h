@@ -9,7 +9,7 @@ namespace cgogn
 {
 
 // Properties of the cells of a GMap2 (as properties.h gives them for CMap2),
-// orientability, and the Euler characteristic of any map.
+// and orientability.
 
 /// Number of edges incident to v. O(degree): each edge has two darts at v
 /// (one per side, a boundary side included).
@@ -104,7 +104,7 @@ namespace detail
 /// when some beta_i joins two darts of one colour (the map is not
 /// orientable). O(number of darts of those components).
 template <typename MAP, typename STARTS>
-requires std::derived_from<MAP, GMap1>
+requires is_gmap_v<MAP>
 bool two_colour_from(const MAP& m, DartMarker<MAP>& black, const STARTS& starts)
 {
 	DartMarker<MAP> seen(m);
@@ -144,7 +144,7 @@ bool two_colour_from(const MAP& m, DartMarker<MAP>& black, const STARTS& starts)
 
 /// two_colour_from every dart of m.
 template <typename MAP>
-requires std::derived_from<MAP, GMap1>
+requires is_gmap_v<MAP>
 bool two_colour(const MAP& m, DartMarker<MAP>& black)
 {
 	return two_colour_from(m, black, [&](const auto& f) { foreach_dart(m, f); });
@@ -158,26 +158,11 @@ bool two_colour(const MAP& m, DartMarker<MAP>& black)
 /// A boundary face is a face like the others: a Möbius strip stays
 /// non-orientable once closed. O(number of darts).
 template <typename MAP>
-requires std::derived_from<MAP, GMap1>
+requires is_gmap_v<MAP>
 bool is_orientable(const MAP& m)
 {
 	DartMarker<MAP> black(m);
 	return detail::two_colour(m, black);
-}
-
-/// The Euler characteristic of the mesh: V - E + F for a surface (a 2-map
-/// or 2-G-map), V - E + F - W for a volume mesh, counting only real cells
-/// (boundary faces and volumes excluded, so a disk gives 1). O(1) for the
-/// indexed orbits, O(number of darts) for each other one.
-template <typename MAP>
-requires std::derived_from<MAP, CMapBase> &&(MAP::dimension >= 2) int64 euler_characteristic(const MAP& m)
-{
-	using T = mesh_traits<MAP>;
-	int64 chi = int64(nb_cells<typename T::Vertex>(m)) - int64(nb_cells<typename T::Edge>(m)) +
-				int64(nb_cells<typename T::Face>(m));
-	if constexpr (MAP::dimension == 3)
-		chi -= int64(nb_cells<typename T::Volume>(m));
-	return chi;
 }
 
 } // namespace cgogn

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/mesh_traits.h>
 
 #include <string>
 #include <vector>
@@ -16,11 +17,11 @@ struct IntegrityError
 	/// Which invariant is violated.
 	enum class Kind
 	{
-		DeadRelation,                 ///< a relation points to a dart that is not live
-		Phi1NotPermutation,           ///< two darts have the same phi1
-		PhiNotInvolution,             ///< phi_i(phi_i(d)) != d for i >= 2 (beta_i(beta_i(d)) != d in a G-map)
-		PhiFixedPoint,                ///< phi_i(d) == d for i >= 2 (beta_i(d) == d in a G-map): the map is not closed
-		Phi1Phi3NotInvolution,        ///< phi3 o phi1 is not an involution (3-maps)
+		DeadRelation,          ///< a relation points to a dart that is not live
+		Phi1NotPermutation,    ///< two darts have the same phi1
+		PhiNotInvolution,      ///< phi_i(phi_i(d)) != d for i >= 2 (beta_i(beta_i(d)) != d in a G-map)
+		PhiFixedPoint,         ///< phi_i(d) == d for i >= 2 (beta_i(d) == d in a G-map): the map is not closed
+		Phi1Phi3NotInvolution, ///< phi3 o phi1 is not an involution (3-maps; phi_j o phi_i, i + 2 <= j, in a CMapN)
 		BetaCompositionNotInvolution, ///< beta_j o beta_i is not an involution for i + 2 <= j (G-maps)
 		BoundaryLinked,               ///< phi_n links two boundary darts
 		BoundaryMarkNotConstant,      ///< a boundary cell is only partly marked
@@ -94,5 +95,15 @@ IntegrityReport check_integrity(const GMap1& m);
 IntegrityReport check_integrity(const GMap2& m);
 /// The same for a 3-G-map, with beta3 o beta0 and beta3 o beta1 involutions and boundary volumes.
 IntegrityReport check_integrity(const GMap3& m);
+/// The same checks for a map of any dimension D (CMapN, GMapN): phi1 a
+/// permutation, phi_i (i >= 2) and beta_i (i >= 1) fixed-point-free
+/// involutions between live darts, the darts of a G-map in pairs, phi1 o
+/// phi_j (j >= 3), phi_i o phi_j and beta_i o beta_j (i + 2 <= j)
+/// involutions, the boundary mark constant on D-cells and never on both
+/// sides of the last relation, and the indexing of every indexed CellD<i>
+/// orbit. No rule on the number of edges of a face (a contraction may make
+/// a digon). O(D^2 x number of darts x number of indexed orbits + lines).
+template <typename MAP>
+requires is_nmap_v<MAP> IntegrityReport check_integrity(const MAP& m);
 
 } // namespace cgogn

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/properties/dimension_properties.h>
 #include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/traversals/local_cmap3.h>
 

@@ -53,17 +53,32 @@ bool represents_unindexed_gmap_edge(const MAP& m, Dart d)
 /// Says which darts of a map without an index for the orbit O start a new
 /// cell: the walk of foreach_cell_of_map when the cells have no container to
 /// walk. Asked in increasing dart order, it reports each cell from its
-/// smallest non-boundary dart, and marks the cells it reported in one dart
+/// smallest dart not passed over (see passed_over_by_traversals), and marks the cells it reported in one dart
 /// mark (none for edges); floods share one work list.
 template <Orbit O, typename MAP>
 class UnindexedCellStarts
 {
+	// The cells of the maps of any dimension: a pair (an edge of a 2-map, ...)
+	// needs no mark, a cycle is walked, the others flooded.
+	static constexpr bool pair = [] {
+		if constexpr (is_dimension_orbit(O))
+			return ncell_is_pair<MAP, dimension_of_orbit(O)>();
+		else
+			return false;
+	}();
+	static constexpr bool flooded = [] {
+		if constexpr (is_dimension_orbit(O))
+			return ncell_is_flooded<MAP, dimension_of_orbit(O)>();
+		else
+			return orbit_is_flooded(O);
+	}();
+
 public:
 	explicit UnindexedCellStarts(const MAP& m) : m_(m)
 	{
-		if constexpr (O != Orbit::PHI2 && O != Orbit::BETA0_BETA2)
+		if constexpr (O != Orbit::PHI2 && O != Orbit::BETA0_BETA2 && !pair)
 			mark_.emplace(m);
-		if constexpr (orbit_is_flooded(O))
+		if constexpr (flooded)
 			work_.emplace();
 	}
 
@@ -75,12 +90,18 @@ public:
 			return represents_unindexed_edge(m_, d);
 		else if constexpr (O == Orbit::BETA0_BETA2)
 			return represents_unindexed_gmap_edge(m_, d);
+		else if constexpr (pair)
+		{
+			// the smaller dart of the pair
+			const Dart e(ncell_steps<MAP, dimension_of_orbit(O)>(state_of(m_))[0][d.index]);
+			return d.index <= e.index && !passed_over_by_traversals<O>(m_, d);
+		}
 		else
 		{
 			MarkAttribute& mark = **mark_;
-			if (is_boundary(m_, d) || mark.test(d.index))
+			if (passed_over_by_traversals<O>(m_, d) || mark.test(d.index))
 				return false;
-			if constexpr (orbit_is_flooded(O))
+			if constexpr (flooded)
 				flood_orbit_keep_marks<O>(m_, d, mark, **work_, [](Dart) {});
 			else
 				foreach_dart_of_orbit(m_, Cell<O>(d), [&](Dart x) { mark.set(x.index); });

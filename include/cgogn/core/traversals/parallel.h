@@ -39,7 +39,9 @@ struct alignas(64) FloodWorker
 
 /// Parallel traversal of the cells of a non-indexed orbit. The dart range is
 /// cut into chunks of whole 64-dart blocks, scheduled by work stealing. A cell
-/// is reported from its smallest non-boundary dart (its owner); no thread
+/// is reported from its smallest dart not passed over (its owner, see
+/// passed_over_by_traversals: a non-boundary dart in the maps of dimension 1
+/// to 3); no thread
 /// waits for another or for a sequential pass.
 /// - Cyclic orbits (see orbit_is_cyclic): from each non-boundary dart d, walk
 ///   the orbit until a smaller non-boundary dart shows up (d is not the owner:
@@ -113,36 +115,36 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 		};
 		try
 		{
-			parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-									held_callable_t<FUNC> fc = f; // see held_callable_t
-									FloodWorker& w = workers[current_thread_index()];
-									if (w.flooded == nullptr)
-										w.flooded = detail::state_of(m).darts->acquire_mark();
-									const uint32 b = bb * 64, e = std::min(be * 64, end);
-									for (uint32 i = b; i < e; ++i)
-									{
-										if (key[i] == INVALID_INDEX || w.flooded->test(i) || seen.atomic_test(i) ||
-											is_boundary(m, Dart(i)))
-											continue;
-										uint32 owner = i;
-										bool inside = true; // all the cell's darts in [b, e)
-										flood_orbit_keep_marks<CELL::ORBIT>(
-											m, Dart(i), *w.flooded, w.work, [&](Dart x) {
-												// the darts of [b, e) are scanned by this worker only:
-												// its own mark is enough to skip them
-												if (x.index < b || x.index >= e)
-												{
-													seen.atomic_set_lossy(x.index);
-													inside = false;
-												}
-												if (x.index < owner && !is_boundary(m, x))
-													owner = x.index;
-											});
-										// a cell inside [b, e) is flooded by no other worker: no race
-										if (inside || reported.atomic_test_and_set(owner))
-											fc(CELL(Dart(owner)));
-									}
-								}));
+			parallel_for_chunks(
+				nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+					held_callable_t<FUNC> fc = f; // see held_callable_t
+					FloodWorker& w = workers[current_thread_index()];
+					if (w.flooded == nullptr)
+						w.flooded = detail::state_of(m).darts->acquire_mark();
+					const uint32 b = bb * 64, e = std::min(be * 64, end);
+					for (uint32 i = b; i < e; ++i)
+					{
+						if (key[i] == INVALID_INDEX || w.flooded->test(i) || seen.atomic_test(i) ||
+							detail::passed_over_by_traversals<CELL::ORBIT>(m, Dart(i)))
+							continue;
+						uint32 owner = i;
+						bool inside = true; // all the cell's darts in [b, e)
+						flood_orbit_keep_marks<CELL::ORBIT>(m, Dart(i), *w.flooded, w.work, [&](Dart x) {
+							// the darts of [b, e) are scanned by this worker only:
+							// its own mark is enough to skip them
+							if (x.index < b || x.index >= e)
+							{
+								seen.atomic_set_lossy(x.index);
+								inside = false;
+							}
+							if (x.index < owner && !detail::passed_over_by_traversals<CELL::ORBIT>(m, x))
+								owner = x.index;
+						});
+						// a cell inside [b, e) is flooded by no other worker: no race
+						if (inside || reported.atomic_test_and_set(owner))
+							fc(CELL(Dart(owner)));
+					}
+				}));
 		}
 		catch (...)
 		{
