@@ -122,6 +122,27 @@ bool commute_on(const MAP& m, const std::vector<Dart>& darts, int a, int b)
 	return true;
 }
 
+// Each dart x outside the cell C (marked in in_c) whose relation i leads
+// into it (phi1 leads into it from phi_1 of a dart of C), with the first
+// dart z outside C from rel_i(x) on along `next`: x's new relation i.
+template <typename MAP, typename NEXT>
+std::vector<std::pair<Dart, Dart>> links_around(const MAP& m, uint32 i, const std::vector<Dart>& C,
+												const DartMarkerStore<MAP>& in_c, const NEXT& next)
+{
+	std::vector<std::pair<Dart, Dart>> links;
+	for (Dart d : C)
+	{
+		const Dart x = rel(m, !G<MAP> && i == 1 ? -1 : int(i), d);
+		if (in_c.is_marked(x))
+			continue;
+		Dart z = rel(m, int(i), x);
+		while (in_c.is_marked(z))
+			z = next(z);
+		links.emplace_back(x, z);
+	}
+	return links;
+}
+
 // Links each x to its z by relation i (one side: each z is an x too, or
 // relation i is a permutation), removes the darts C of the cell, and keeps
 // the indexing of the cells of the x and z (a combinatorial vertex is where
@@ -542,17 +563,7 @@ requires is_nmap_v<MAP> &&(I < MAP::dimension) void remove_cell(MAP& m, CellD<I>
 	{
 		// each dart x outside c whose relation I enters c: linked to the first
 		// dart outside c along rel_I (rel_{I+1} rel_I)^k
-		std::vector<std::pair<Dart, Dart>> links;
-		for (Dart d : C)
-		{
-			const Dart x = rel(m, !G<MAP> && I == 1 ? -1 : int(I), d);
-			if (in_c.is_marked(x))
-				continue;
-			Dart z = rel(m, int(I), x);
-			while (in_c.is_marked(z))
-				z = rel(m, int(I), rel(m, int(I) + 1, z));
-			links.emplace_back(x, z);
-		}
+		const auto links = links_around(m, I, C, in_c, [&](Dart z) { return rel(m, int(I), rel(m, int(I) + 1, z)); });
 		relink_and_remove(m, I, C, links, set_indices);
 		return;
 	}
@@ -638,19 +649,11 @@ requires is_nmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) void contract_cell(MAP
 	for (Dart d : C)
 		in_c.mark(d);
 	// each dart x outside c whose relation I enters c: linked to the first dart
-	// outside c along rel_I (rel_{I-1} rel_I)^k, phi1 inverted in a combinatorial map
+	// outside c along rel_I (rel_{I-1} rel_I)^k, phi1 inverted in a
+	// combinatorial map (around an edge: the next dart of the face)
 	const int before = !G<MAP> && I == 2 ? -1 : int(I) - 1;
-	std::vector<std::pair<Dart, Dart>> links;
-	for (Dart d : C)
-	{
-		const Dart x = rel(m, !G<MAP> && I == 1 ? -1 : int(I), d);
-		if (in_c.is_marked(x))
-			continue;
-		Dart z = rel(m, int(I), x);
-		while (in_c.is_marked(z))
-			z = !G<MAP> && I == 1 ? rel(m, 1, z) : rel(m, int(I), rel(m, before, z));
-		links.emplace_back(x, z);
-	}
+	const auto links = links_around(
+		m, I, C, in_c, [&](Dart z) { return !G<MAP> && I == 1 ? rel(m, 1, z) : rel(m, int(I), rel(m, before, z)); });
 	relink_and_remove(m, I, C, links, set_indices);
 }
 
