@@ -126,7 +126,16 @@ public:
 	}
 	[[noreturn]] void fail(const std::string& cause) const
 	{
-		throw Error(path_, Error::Where::Line, number_, cause);
+		fail_at(number_, cause);
+	}
+	[[noreturn]] void fail_at(uint64 line, const std::string& cause) const
+	{
+		throw Error(path_, Error::Where::Line, line, cause);
+	}
+	/// The number of the line read last.
+	uint64 line() const
+	{
+		return number_;
 	}
 	template <typename T>
 	T number(std::string_view token, const char* what) const
@@ -156,19 +165,27 @@ private:
 	uint64 number_ = 0;
 };
 
-template <typename MAP, typename T, uint32 K>
-void read_attribute(MAP& m, Lines& lines, const std::string& name, uint32 count, uint32 nb_darts)
+// The values of an attribute as the file gives them: each with its dart and
+// its line (for the errors found once the cells are known). Depends on the
+// value type only: the map and the cell dimension are handled apart.
+template <typename T>
+struct ParsedValues
 {
-	auto attr = add_attribute<T, CellD<K>>(m, name);
-	if (!attr)
-		lines.fail("attribute '" + name + "' is defined twice on the cells of dimension " + std::to_string(K) +
-				   " (or its name is reserved)");
+	std::vector<uint32> darts;
+	std::vector<T> values;
+	std::vector<uint64> lines;
+};
+
+template <typename T>
+ParsedValues<T> parse_values(Lines& lines, uint32 count, uint32 nb_darts)
+{
 	constexpr std::size_t nb = [] {
 		if constexpr (requires { Scalar<T>::name; })
 			return std::size_t(1);
 		else
 			return std::tuple_size_v<T>;
 	}();
+	ParsedValues<T> p;
 	for (uint32 i = 0; i < count; ++i)
 	{
 		const auto t = lines.next("a value");
@@ -177,15 +194,29 @@ void read_attribute(MAP& m, Lines& lines, const std::string& name, uint32 count,
 		const uint32 d = lines.number<uint32>(t[0], "the dart");
 		if (d >= nb_darts)
 			lines.fail("dart " + std::to_string(d) + " out of range (" + std::to_string(nb_darts) + " darts)");
-		if (is_boundary_cell(m, CellD<K>(Dart(d))))
-			lines.fail("dart " + std::to_string(d) + " is in a boundary cell, which has no attribute");
-		T& v = (*attr)[CellD<K>(Dart(d))];
+		T v{};
 		if constexpr (requires { Scalar<T>::name; })
 			v = lines.number<T>(t[1], "the value");
 		else
 			for (std::size_t k = 0; k < nb; ++k)
 				v[k] = lines.number<double>(t[1 + k], "the value");
+		p.darts.push_back(d);
+		p.values.push_back(v);
+		p.lines.push_back(lines.line());
 	}
+	return p;
+}
+
+// Gives the values to the K-cells of their darts (checked: none is a boundary cell).
+template <typename MAP, typename T, uint32 K>
+void read_attribute(MAP& m, Lines& lines, const std::string& name, const ParsedValues<T>& p)
+{
+	auto attr = add_attribute<T, CellD<K>>(m, name);
+	if (!attr)
+		lines.fail("attribute '" + name + "' is defined twice on the cells of dimension " + std::to_string(K) +
+				   " (or its name is reserved)");
+	for (std::size_t i = 0; i < p.darts.size(); ++i)
+		(*attr)[CellD<K>(Dart(p.darts[i]))] = p.values[i];
 }
 
 // Writes attribute a of the K-cells when its values have type T.
@@ -231,10 +262,10 @@ void write_attributes(const MAP& m, std::string& s, const std::vector<uint32>& n
 }
 
 template <typename MAP, typename T, std::size_t... K>
-void read_attribute_of_dimension(MAP& m, Lines& lines, uint32 k, const std::string& name, uint32 count, uint32 nb_darts,
+void read_attribute_of_dimension(MAP& m, Lines& lines, uint32 k, const std::string& name, const ParsedValues<T>& p,
 								 std::index_sequence<K...>)
 {
-	((k == K ? read_attribute<MAP, T, uint32(K)>(m, lines, name, count, nb_darts) : void()), ...);
+	((k == K ? read_attribute<MAP, T, uint32(K)>(m, lines, name, p) : void()), ...);
 }
 
 // Reads an attribute whose type is named `type` (false when no type has this name).
@@ -242,12 +273,17 @@ template <typename MAP, typename... T>
 bool read_typed_attribute(MAP& m, Lines& lines, std::string_view type, uint32 k, const std::string& name, uint32 count,
 						  uint32 nb_darts, std::tuple<T...>*)
 {
-	return ((type == type_name<T>()
-				 ? (read_attribute_of_dimension<MAP, T>(m, lines, k, name, count, nb_darts,
-														std::make_index_sequence<MAP::dimension + 1>{}),
-					true)
-				 : false) ||
-			...);
+	const auto read = [&]<typename V>(V*) {
+		const ParsedValues<V> p = parse_values<V>(lines, count, nb_darts);
+		// only the D-cells can be boundary cells
+		for (std::size_t i = 0; i < p.darts.size(); ++i)
+			if (k == MAP::dimension && is_boundary(m, Dart(p.darts[i])))
+				lines.fail_at(p.lines[i],
+							  "dart " + std::to_string(p.darts[i]) + " is in a boundary cell, which has no attribute");
+		read_attribute_of_dimension<MAP, V>(m, lines, k, name, p, std::make_index_sequence<MAP::dimension + 1>{});
+		return true;
+	};
+	return ((type == type_name<T>() && read(static_cast<T*>(nullptr))) || ...);
 }
 
 } // namespace
