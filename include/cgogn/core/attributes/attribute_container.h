@@ -9,6 +9,7 @@
 #include <bit>
 #include <mutex>
 #include <type_traits>
+#include <utility>
 
 namespace cgogn
 {
@@ -525,6 +526,23 @@ std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContain
 	if constexpr (P != O)
 		if (to.orbit() == P)
 			return to.add_attribute<T, CellAttribute<T, P>>(this->name(), this->default_value());
+	// and so does a container of the cells of the same dimension in a map of
+	// any dimension, or in a map of dimension 2 or 3 (to_nmap, to_fixed_map)
+	std::shared_ptr<AttributeBase> same_dimension;
+	[&]<std::size_t... K>(std::index_sequence<K...>)
+	{
+		(
+			[&] {
+				constexpr Orbit X = Orbit(K);
+				if constexpr (X != O && (dimension_counterpart(X) == O || dimension_counterpart(O) == X))
+					if (to.orbit() == X)
+						same_dimension = to.add_attribute<T, CellAttribute<T, X>>(this->name(), this->default_value());
+			}(),
+			...);
+	}
+	(std::make_index_sequence<NB_ORBITS>{});
+	if (same_dimension)
+		return same_dimension;
 	assert(to.orbit() == O && "clone into a container of another orbit");
 	return to.add_attribute<T, CellAttribute<T, O>>(this->name(), this->default_value());
 }

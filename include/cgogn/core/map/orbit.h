@@ -172,6 +172,39 @@ constexpr bool orbit_uses_beta(Orbit o, uint32 k)
 	}
 }
 
+/// The orbit of the cells of the same dimension in the maps of any
+/// dimension (CELL0 ... CELL3) of an orbit of the maps of dimension 2 and 3:
+/// vertices, edges, faces and volumes of both models (a 2-map's faces are
+/// CELL2, a 3-map's volumes CELL3); NB_ORBITS for the others (darts, the
+/// cells of one volume of a 3-map, connected components, CELLi themselves).
+/// to_nmap and to_fixed_map move attributes along it.
+constexpr Orbit dimension_counterpart(Orbit o)
+{
+	switch (o)
+	{
+	case Orbit::PHI21:
+	case Orbit::PHI21_PHI31:
+	case Orbit::BETA1_BETA2:
+	case Orbit::BETA1_BETA2_BETA3:
+		return Orbit::CELL0;
+	case Orbit::PHI2:
+	case Orbit::PHI2_PHI3:
+	case Orbit::BETA0_BETA2:
+	case Orbit::BETA0_BETA2_BETA3:
+		return Orbit::CELL1;
+	case Orbit::PHI1:
+	case Orbit::PHI1_PHI3:
+	case Orbit::BETA0_BETA1:
+	case Orbit::BETA0_BETA1_BETA3:
+		return Orbit::CELL2;
+	case Orbit::PHI1_PHI2:
+	case Orbit::BETA0_BETA1_BETA2:
+		return Orbit::CELL3;
+	default:
+		return Orbit::NB_ORBITS;
+	}
+}
+
 /// The orbit of the same cell kind in the other model of maps: a CMap2
 /// vertex (PHI21) is a GMap2 vertex (BETA1_BETA2), and so for edges (PHI2,
 /// BETA0_BETA2), faces (PHI1, BETA0_BETA1) and components (PHI1_PHI2,
