@@ -16,7 +16,8 @@ namespace cgogn::detail
 
 /// A new pair of darts (an edge side, see add_dart_pair) with the boundary
 /// mark of `like` (the face it joins). Returns its first dart. O(1).
-inline Dart new_dart_pair_like(GMap1& m, Dart like)
+template <typename MAP>
+requires is_gmap_v<MAP> Dart new_dart_pair_like(MAP& m, Dart like)
 {
 	const Dart d = add_dart_pair(m);
 	if (is_boundary(m, like))
@@ -29,7 +30,9 @@ inline Dart new_dart_pair_like(GMap1& m, Dart like)
 
 /// Removes darts listed with their pairs (every dart's beta0 is listed too:
 /// whole edges, faces or volumes), each pair once. O(number of darts).
-inline void remove_dart_pairs(GMap1& m, const std::vector<Dart>& darts)
+template <typename MAP>
+requires is_gmap_v<MAP>
+void remove_dart_pairs(MAP& m, const std::vector<Dart>& darts)
 {
 	for (Dart x : darts)
 		if (x.index % 2 == 0)

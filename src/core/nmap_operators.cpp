@@ -11,6 +11,7 @@
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/operators/nmap.h>
 
+#include "gmap_darts.h"
 #include "reindex.h"
 
 #include <array>
@@ -50,42 +51,27 @@ void link(MAP& m, uint32 i, Dart a, Dart b)
 	detail::set_relation(m, i, b, a);
 }
 
-template <typename MAP, Orbit O>
-std::vector<Dart> darts_of(const MAP& m, Cell<O> c)
-{
-	std::vector<Dart> v;
-	foreach_dart_of_orbit(m, c, [&](Dart d) { v.push_back(d); });
-	return v;
-}
-
-// A dart that a new dart or pair mirrors: same boundary mark.
+// A new dart (pair of darts in a G-map) with the boundary mark of `like`.
 template <typename MAP>
 Dart new_dart_like(MAP& m, Dart like)
 {
-	Dart d;
 	if constexpr (G<MAP>)
-	{
-		d = detail::add_dart_pair(m);
-		if (is_boundary(m, like))
-			detail::set_boundary(m, Dart(d.index + 1), true);
-	}
+		return detail::new_dart_pair_like(m, like);
 	else
-		d = detail::add_dart(m);
-	if (is_boundary(m, like))
-		detail::set_boundary(m, d, true);
-	return d;
+	{
+		const Dart d = detail::add_dart(m);
+		detail::set_boundary(m, d, is_boundary(m, like));
+		return d;
+	}
 }
 
 template <typename MAP>
 void remove_darts(MAP& m, const std::vector<Dart>& darts)
 {
-	for (Dart d : darts)
-		if constexpr (G<MAP>)
-		{
-			if (d.index % 2 == 0)
-				detail::remove_dart_pair(m, d);
-		}
-		else
+	if constexpr (G<MAP>)
+		detail::remove_dart_pairs(m, darts);
+	else
+		for (Dart d : darts)
 			detail::remove_dart(m, d);
 }
 
@@ -180,7 +166,7 @@ requires is_nmap_v<MAP> CellD<0> insert_vertex_in_edge(MAP& m, CellD<1> e, bool 
 	detail::RegionReindexer<MAP> reindexer;
 	if constexpr (!G<MAP>)
 	{
-		const std::vector<Dart> E = darts_of(m, e);
+		const std::vector<Dart> E = detail::orbit_darts(m, e);
 		if (set_indices)
 			reindexer.record(m, E);
 		std::unordered_map<uint32, Dart> n;
@@ -277,7 +263,7 @@ template <typename MAP>
 std::vector<Dart> side_of(const MAP& m, Dart d)
 {
 	if constexpr (G<MAP>)
-		return darts_of(m, Cell<Orbit::BETA0_BETA1>(d));
+		return detail::orbit_darts(m, Cell<Orbit::BETA0_BETA1>(d));
 	else
 	{
 		std::vector<Dart> v;
@@ -433,7 +419,7 @@ requires is_nmap_v<MAP> &&(I < MAP::dimension) bool can_remove_cell(const MAP& m
 	constexpr uint32 D = MAP::dimension;
 	if (!is_dart_valid(m, c.dart))
 		return false;
-	const std::vector<Dart> C = darts_of(m, c);
+	const std::vector<Dart> C = detail::orbit_darts(m, c);
 	// a (D-1)-cell on the boundary would merge a D-cell with the outside
 	if (I == D - 1 && has_boundary_dart(m, C))
 		return false;
@@ -477,7 +463,7 @@ requires is_nmap_v<MAP> &&(I < MAP::dimension) void remove_cell(MAP& m, CellD<I>
 {
 	constexpr uint32 D = MAP::dimension;
 	assert((can_remove_cell<I>(m, c)));
-	const std::vector<Dart> C = darts_of(m, c);
+	const std::vector<Dart> C = detail::orbit_darts(m, c);
 	DartMarkerStore<MAP> in_c(m);
 	for (Dart d : C)
 		in_c.mark(d);
@@ -578,7 +564,7 @@ requires is_nmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) bool can_contract_cell
 {
 	if (!is_dart_valid(m, c.dart))
 		return false;
-	const std::vector<Dart> C = darts_of(m, c);
+	const std::vector<Dart> C = detail::orbit_darts(m, c);
 	if (I == MAP::dimension && has_boundary_dart(m, C))
 		return false;
 	if constexpr (I >= 2)
@@ -644,7 +630,7 @@ template <uint32 I, typename MAP>
 requires is_nmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) void contract_cell(MAP& m, CellD<I> c, bool set_indices)
 {
 	assert((can_contract_cell<I>(m, c)));
-	const std::vector<Dart> C = darts_of(m, c);
+	const std::vector<Dart> C = detail::orbit_darts(m, c);
 	DartMarkerStore<MAP> in_c(m);
 	for (Dart d : C)
 		in_c.mark(d);

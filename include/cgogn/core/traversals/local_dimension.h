@@ -4,9 +4,6 @@
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/traversals/local_cell_set.h>
 
-#include <array>
-#include <optional>
-
 namespace cgogn
 {
 
@@ -19,69 +16,16 @@ namespace cgogn
 /// Calls f on each J-cell incident to cell c (the J-cells that share a dart
 /// with c: for J below c's dimension its faces, above it the cells it lies
 /// in), each once, boundary cells excluded; f may return false to stop.
-/// Cost: O(size of c's orbit) when the J-cells are indexed (their lines
-/// are kept: in a small array while there are at most 32, else as bits in the
-/// container), otherwise O(size of c's orbit + size of the J-cells met), each
+/// Cost: O(size of c's orbit) when the J-cells are indexed (a bit per cell
+/// in the container), otherwise O(size of c's orbit + size of the J-cells met), each
 /// walked once to mark its darts; marks are cleared in O(marks set) (pooled:
 /// no allocation once warm).
-namespace detail
-{
-
-/// The cells met by a local traversal (see LocalCellSet), kept in a small
-/// array of lines while the orbit is indexed and they are few (a linear
-/// search: no pooled mark reserved and cleared per traversal), in a
-/// LocalCellSet otherwise.
-template <typename MAP, typename CELL>
-class SmallCellSet
-{
-public:
-	explicit SmallCellSet(const MAP& m) : map_(m), indexed_(is_indexed<CELL>(m))
-	{
-	}
-	/// Adds c; true when it was not in the set.
-	bool insert(CELL c)
-	{
-		if (!indexed_ || large_)
-			return large().insert(c);
-		const uint32 line = index_of(map_, c);
-		for (uint32 i = 0; i < n_; ++i)
-			if (lines_[i] == line)
-				return false;
-		if (n_ < SMALL)
-		{
-			darts_[n_] = c.dart;
-			lines_[n_++] = line;
-			return true;
-		}
-		for (uint32 i = 0; i < n_; ++i)
-			large().insert(CELL(darts_[i]));
-		return large().insert(c);
-	}
-
-private:
-	static constexpr uint32 SMALL = 32;
-	LocalCellSet<MAP, CELL>& large()
-	{
-		if (!large_)
-			large_.emplace(map_);
-		return *large_;
-	}
-	const MAP& map_;
-	bool indexed_;
-	uint32 n_ = 0;
-	std::array<uint32, SMALL> lines_;
-	std::array<Dart, SMALL> darts_;
-	std::optional<LocalCellSet<MAP, CELL>> large_;
-};
-
-} // namespace detail
-
 template <uint32 J, typename MAP, Orbit O, typename FUNC>
 requires std::derived_from<MAP, CMapBase>
 void foreach_incident_cell(const MAP& m, Cell<O> c, const FUNC& f)
 {
 	using CJ = cell_of_dimension_t<MAP, J>;
-	detail::SmallCellSet<MAP, CJ> met(m);
+	detail::LocalCellSet<MAP, CJ> met(m);
 	foreach_dart_of_orbit(m, c, [&](Dart d) {
 		const CJ x(d);
 		return is_boundary_cell(m, x) || !met.insert(x) || call_and_continue(f, x);
@@ -101,7 +45,7 @@ void foreach_adjacent_cell(const MAP& m, Cell<O> c, const FUNC& f)
 {
 	using CI = Cell<O>;
 	static_assert(!std::is_same_v<CI, cell_of_dimension_t<MAP, K>>, "adjacency through the cells themselves");
-	detail::SmallCellSet<MAP, CI> met(m);
+	detail::LocalCellSet<MAP, CI> met(m);
 	if (!is_boundary_cell(m, c))
 		met.insert(c);
 	bool go_on = true;
