@@ -12,6 +12,7 @@
 #include <cgogn/core/operators/nmap.h>
 
 #include "gmap_darts.h"
+#include "nmap_darts.h"
 #include "reindex.h"
 
 #include <array>
@@ -25,55 +26,12 @@ namespace cgogn
 namespace
 {
 
-template <typename MAP>
-constexpr bool G = is_gmap_v<MAP>;
-
-// relation i of d: beta0 included in a G-map; phi1 for i = 1 and phi_-1 for
-// i = -1 in a combinatorial map
-template <typename MAP>
-Dart rel(const MAP& m, int i, Dart d)
-{
-	if constexpr (G<MAP>)
-	{
-		if (i == 0)
-			return Dart(d.index ^ 1u);
-	}
-	else if (i == -1)
-		return phi_1(m, d);
-	return detail::relation(m, uint32(i), d);
-}
-
-// links a and b by relation i >= 2 (beta_i, i >= 1), both ways
-template <typename MAP>
-void link(MAP& m, uint32 i, Dart a, Dart b)
-{
-	detail::set_relation(m, i, a, b);
-	detail::set_relation(m, i, b, a);
-}
-
-// A new dart (pair of darts in a G-map) with the boundary mark of `like`.
-template <typename MAP>
-Dart new_dart_like(MAP& m, Dart like)
-{
-	if constexpr (G<MAP>)
-		return detail::new_dart_pair_like(m, like);
-	else
-	{
-		const Dart d = detail::add_dart(m);
-		detail::set_boundary(m, d, is_boundary(m, like));
-		return d;
-	}
-}
-
-template <typename MAP>
-void remove_darts(MAP& m, const std::vector<Dart>& darts)
-{
-	if constexpr (G<MAP>)
-		detail::remove_dart_pairs(m, darts);
-	else
-		for (Dart d : darts)
-			detail::remove_dart(m, d);
-}
+using detail::nmap::G;
+using detail::nmap::link;
+using detail::nmap::links_around;
+using detail::nmap::new_dart_like;
+using detail::nmap::rel;
+using detail::nmap::remove_darts;
 
 // Copies every line of `from` onto `to`: `to` takes the place of `from` in its cells.
 void take_lines(CMapBase& m, Dart from, Dart to)
@@ -106,27 +64,6 @@ bool commute_on(const MAP& m, const std::vector<Dart>& darts, int a, int b)
 		if (rel(m, a, rel(m, b, d)) != rel(m, b, rel(m, a, d)))
 			return false;
 	return true;
-}
-
-// Each dart x outside the cell C (marked in in_c) whose relation i leads
-// into it (phi1 leads into it from phi_1 of a dart of C), with the first
-// dart z outside C from rel_i(x) on along `next`: x's new relation i.
-template <typename MAP, typename NEXT>
-std::vector<std::pair<Dart, Dart>> links_around(const MAP& m, uint32 i, const std::vector<Dart>& C,
-												const DartMarkerStore<MAP>& in_c, const NEXT& next)
-{
-	std::vector<std::pair<Dart, Dart>> links;
-	for (Dart d : C)
-	{
-		const Dart x = rel(m, !G<MAP> && i == 1 ? -1 : int(i), d);
-		if (in_c.is_marked(x))
-			continue;
-		Dart z = rel(m, int(i), x);
-		while (in_c.is_marked(z))
-			z = next(z);
-		links.emplace_back(x, z);
-	}
-	return links;
 }
 
 // Links each x to its z by relation i (one side: each z is an x too, or

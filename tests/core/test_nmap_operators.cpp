@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The operators of the maps of any dimension: exact f-vectors on known
-// objects, inverse pairs, and randomized sequences with check_integrity after
-// every step, for D = 2 ... 4, on CMapN and GMapN, with every orbit indexed.
+// objects, inverse pairs, the sewing of D-cells, and randomized sequences with
+// check_integrity after every step, for D = 2 ... 4, on CMapN and GMapN, with
+// every orbit indexed.
 #include <cgogn/core.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -221,6 +223,113 @@ void random_editing(uint32 steps, uint32 seed)
 		EXPECT_GT(done[op], 0u) << "operation " << op;
 }
 
+// Relation D of d: beta_D or phi_D.
+template <typename MAP>
+Dart across(const MAP& m, Dart d)
+{
+	if constexpr (is_gmap_v<MAP>)
+		return beta<MAP::dimension>(m, d);
+	else
+		return phi<MAP::dimension>(m, d);
+}
+
+uint64 binomial(uint32 n, uint32 k)
+{
+	uint64 r = 1;
+	for (uint32 i = 1; i <= k; ++i)
+		r = r * (n - k + i) / i;
+	return r;
+}
+
+// Unsewing every inner facet of the grid 2^D leaves 2^D separate cubes;
+// sewing the same darts back gives the grid again.
+template <typename MAP>
+void check_unsew_all_and_sew_back()
+{
+	constexpr uint32 D = MAP::dimension;
+	SCOPED_TRACE(std::string(is_gmap_v<MAP> ? "GMapN<" : "CMapN<") + std::to_string(D) + ">");
+	MAP m;
+	generate_cube_grid(m, 2);
+	index_every_dimension(m);
+	const std::vector<uint32> grid = f_vector(m);
+	std::vector<std::pair<Dart, Dart>> glued;
+	for (const CellD<D - 1> f : cells_of<D - 1>(m))
+		if (can_unsew_facets(m, f))
+			glued.emplace_back(f.dart, across(m, f.dart));
+	ASSERT_EQ(glued.size(), D * (1u << (D - 1))); // D directions, 2^(D-1) facets each
+	for (const auto& [x, y] : glued)
+	{
+		ASSERT_TRUE(can_unsew_facets(m, CellD<D - 1>(x)));
+		unsew_facets(m, CellD<D - 1>(x));
+		expect_ok(m);
+		ASSERT_TRUE(is_boundary(m, across(m, x)));
+		ASSERT_TRUE(is_boundary(m, across(m, y)));
+	}
+	const uint32 nb_cubes = 1u << D;
+	std::vector<uint32> cubes(D + 1);
+	for (uint32 k = 0; k <= D; ++k)
+		cubes[k] = nb_cubes * uint32(binomial(D, k) << (D - k));
+	EXPECT_EQ(f_vector(m), cubes);
+	EXPECT_EQ(nb_connected_components(m), nb_cubes);
+	EXPECT_EQ(euler_characteristic(m), int64(nb_cubes));
+	for (const auto& [x, y] : glued)
+	{
+		ASSERT_TRUE(can_sew_facets(m, CellD<D - 1>(x), CellD<D - 1>(y)));
+		sew_facets(m, CellD<D - 1>(x), CellD<D - 1>(y));
+		expect_ok(m);
+		ASSERT_EQ(across(m, x), y);
+	}
+	EXPECT_EQ(f_vector(m), grid);
+	EXPECT_EQ(nb_connected_components(m), 1u);
+}
+
+// Random unsewing of inner facets and sewing of boundary facets, in any
+// alignment their sides allow, with check_integrity after every step.
+template <typename MAP>
+void random_sewing(uint32 steps, uint32 seed)
+{
+	constexpr uint32 D = MAP::dimension;
+	SCOPED_TRACE(std::string(is_gmap_v<MAP> ? "GMapN<" : "CMapN<") + std::to_string(D) + ">");
+	std::mt19937 rng(seed);
+	MAP m;
+	generate_cube_grid(m, 2);
+	index_every_dimension(m);
+	std::array<uint32, 2> done{};
+	for (uint32 step = 0; step < steps; ++step)
+	{
+		SCOPED_TRACE("step " + std::to_string(step));
+		const bool sew = rng() % 2 == 0;
+		if (sew)
+		{
+			std::vector<Dart> open;
+			foreach_dart(m, [&](Dart d) {
+				if (!is_boundary(m, d) && is_boundary(m, across(m, d)))
+					open.push_back(d);
+			});
+			if (open.empty())
+				continue; // everything is sewn: the map is closed
+			const CellD<D - 1> f1(open[rng() % open.size()]), f2(open[rng() % open.size()]);
+			if (!can_sew_facets(m, f1, f2))
+				continue;
+			sew_facets(m, f1, f2);
+			ASSERT_EQ(across(m, f1.dart), f2.dart);
+		}
+		else
+		{
+			const CellD<D - 1> f = random_cell<D - 1>(m, rng);
+			if (!can_unsew_facets(m, f))
+				continue;
+			unsew_facets(m, f);
+			ASSERT_TRUE(is_boundary(m, across(m, f.dart)));
+		}
+		++done[sew];
+		const IntegrityReport r = check_integrity(m);
+		ASSERT_TRUE(r.ok()) << (sew ? "after a sew:\n" : "after an unsew:\n") << r.to_string();
+	}
+	EXPECT_GT(done[0], 0u);
+	EXPECT_GT(done[1], 0u);
+}
+
 } // namespace
 
 TEST(NMapOperators, InsertionsAreUndoneByRemovalAndContraction)
@@ -258,4 +367,53 @@ TEST(NMapOperators, ImpossibleOperationsAreRefused)
 	const Dart d = cells_of<2>(m)[0].dart;
 	EXPECT_FALSE(can_insert_edge_in_face(m, d, d));
 	EXPECT_FALSE(can_insert_edge_in_face(m, d, phi<2>(m, d)));
+}
+
+TEST(NMapOperators, UnsewingEveryInnerFacetAndSewingBackRestoresTheGrid)
+{
+	check_unsew_all_and_sew_back<CMapN<2>>();
+	check_unsew_all_and_sew_back<GMapN<2>>();
+	check_unsew_all_and_sew_back<CMapN<3>>();
+	check_unsew_all_and_sew_back<GMapN<3>>();
+	check_unsew_all_and_sew_back<CMapN<4>>();
+	check_unsew_all_and_sew_back<GMapN<4>>();
+}
+
+TEST(NMapOperators, RandomSewingKeepsTheMapValid)
+{
+	random_sewing<CMapN<2>>(200, 7);
+	random_sewing<GMapN<2>>(200, 8);
+	random_sewing<CMapN<3>>(150, 9);
+	random_sewing<GMapN<3>>(150, 10);
+	random_sewing<CMapN<4>>(80, 11);
+	random_sewing<GMapN<4>>(80, 12);
+}
+
+TEST(NMapOperators, ImpossibleSewsAreRefused)
+{
+	GMapN<3> m;
+	generate_cube_grid(m, 2);
+	Dart inner, open;
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			return;
+		(is_boundary(m, beta<3>(m, d)) ? open : inner) = d;
+	});
+	// an inner facet is not sewn again, a boundary facet is not unsewn, a
+	// facet is not sewn to itself, a boundary dart is not sewn
+	EXPECT_FALSE(can_sew_facets(m, CellD<2>(inner), CellD<2>(open)));
+	EXPECT_FALSE(can_unsew_facets(m, CellD<2>(open)));
+	EXPECT_FALSE(can_sew_facets(m, CellD<2>(open), CellD<2>(beta<0>(m, open))));
+	EXPECT_FALSE(can_sew_facets(m, CellD<2>(open), CellD<2>(beta<3>(m, open))));
+	EXPECT_TRUE(can_unsew_facets(m, CellD<2>(inner)));
+	// a triangle does not face a square: a diagonal cuts a boundary square
+	Dart square;
+	foreach_dart(m, [&](Dart d) {
+		if (!is_boundary(m, d) && is_boundary(m, beta<3>(m, d)) && !same_orbit(m, CellD<2>(d), CellD<2>(open)))
+			square = d;
+	});
+	EXPECT_TRUE(can_sew_facets(m, CellD<2>(open), CellD<2>(square)));
+	const CellD<1> diagonal = insert_edge_in_face(m, open, next_corner(m, open, 2));
+	ASSERT_FALSE(is_boundary(m, diagonal.dart));
+	EXPECT_FALSE(can_sew_facets(m, CellD<2>(diagonal.dart), CellD<2>(square)));
 }

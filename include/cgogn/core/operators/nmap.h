@@ -7,8 +7,9 @@ namespace cgogn
 {
 
 // The operators of the maps of any dimension (CMapN, GMapN): insertion of a
-// vertex in an edge and of an edge in a face, and Damiand and Lienhardt's
-// removal and contraction of an i-cell, with their can_* predicates. Each
+// vertex in an edge and of an edge in a face, Damiand and Lienhardt's
+// removal and contraction of an i-cell, and the sewing of two D-cells along
+// (D - 1)-cells (facets), with their can_* predicates. Each
 // keeps every indexed orbit indexed (set_indices = false: pure topology,
 // see index_cells): the cells an operator merges keep one of their lines,
 // the cells it makes get new ones (attribute values of a new line are the
@@ -71,5 +72,46 @@ requires is_nmap_v<MAP> &&(I >= 1 && I <= MAP::dimension) bool can_contract_cell
 template <uint32 I, typename MAP>
 requires is_nmap_v<MAP> &&
 	(I >= 1 && I <= MAP::dimension) void contract_cell(MAP& m, CellD<I> c, bool set_indices = true);
+
+/// Whether sew_facets(m, f1, f2) is possible: f1.dart and f2.dart are darts
+/// of inner D-cells whose facets lie on the boundary (relation D leads to a
+/// boundary cell), the facets are distinct, and their sides are isomorphic
+/// with f1.dart facing f2.dart (in a G-map beta_i(x) faces beta_i(y) for
+/// i <= D - 2; in a combinatorial map phi1(x) faces phi_1(y), the sides
+/// facing each other, and phi_i(x) faces phi_i(y) for 2 <= i <= D - 2).
+/// O(size of the facets).
+template <typename MAP>
+requires is_nmap_v<MAP> &&
+	(MAP::dimension >= 2) bool can_sew_facets(const MAP& m, CellD<MAP::dimension - 1> f1, CellD<MAP::dimension - 1> f2);
+
+/// Glues the D-cells of f1 and f2 along those facets, f1.dart facing
+/// f2.dart: relation D links the facing darts, and the boundary facets in
+/// between disappear (each boundary dart beside them is linked by relation
+/// D - 1 to the dart its (D - 2)-cell leads to across them). The cells
+/// brought together merge (the vertices, edges, ... of the two facets, and
+/// the facets themselves) and keep one of their lines; the others are
+/// released. Precondition: can_sew_facets(m, f1, f2). O(size of the facets
+/// and of the merged cells; in a CMapN<2>, plus the size of the two boundary
+/// faces, walked for phi_1).
+template <typename MAP>
+requires is_nmap_v<MAP> &&(MAP::dimension >= 2) void sew_facets(MAP& m, CellD<MAP::dimension - 1> f1,
+																CellD<MAP::dimension - 1> f2, bool set_indices = true);
+
+/// Whether unsew_facets(m, f) is possible: f separates two inner D-cells
+/// (neither side is a boundary cell). O(1).
+template <typename MAP>
+requires is_nmap_v<MAP> &&(MAP::dimension >= 2) bool can_unsew_facets(const MAP& m, CellD<MAP::dimension - 1> f);
+
+/// Separates the two D-cells of facet f (sew_facets undone): each side gets
+/// a boundary facet, glued into the boundary cells around it (or making a
+/// new boundary cell where the facet's (D - 2)-cells were inner). The side
+/// of f.dart keeps the facet's line, the other gets a new one; the vertices,
+/// edges, ... that no longer meet split (new lines for the parts without
+/// f.dart). Precondition: can_unsew_facets(m, f). O(size of the facet and of
+/// the cells around its (D - 2)-cells; in a CMapN<2>, of the faces around
+/// its two vertices, walked for phi_1).
+template <typename MAP>
+requires is_nmap_v<MAP> &&
+	(MAP::dimension >= 2) void unsew_facets(MAP& m, CellD<MAP::dimension - 1> f, bool set_indices = true);
 
 } // namespace cgogn
