@@ -5,8 +5,9 @@
 // and CMapN<4> against CGAL's Linear_cell_complex_for_combinatorial_map<4>
 // on the same hypercube grid (peers/cgal_lcc4.cpp, when CGAL is found):
 // vertex stars, adjacency of 4-cells through 3-cells, the f-vector, and the
-// bytes per dart. Targets: the generic maps within 1.5x of the tuned ones;
-// at D = 4 at least 2x faster than CGAL, with no more bytes per dart. Each
+// bytes per dart, with the 4-cells indexed (cgogn_indexed) and without.
+// Targets: the generic maps within 1.5x of the tuned ones; at D = 4 at least
+// 2x faster than CGAL, with no more bytes per dart. Each
 // row has a check value that every model of its workload must share; the
 // table of times and ratios follows the run.
 #include "nmap_bench.h"
@@ -132,12 +133,23 @@ void count(benchmark::State& state, const MAP& m)
 	state.counters["check"] = n;
 }
 
-// ---- D = 4: the grid of 8^4 hypercubes, only its vertices indexed (positions)
+// ---- D = 4: the grid of 8^4 hypercubes, its vertices indexed (positions),
+// and the same grid with its 4-cells indexed too
+
+const CMapN<4>& grid4_indexed()
+{
+	static const CMapN<4> m = [] {
+		CMapN<4> g;
+		generate_cube_grid(g, 8);
+		index_cells<CellD<4>>(g);
+		return g;
+	}();
+	return m;
+}
 
 // every vertex's 4-cells
-void star4(benchmark::State& state)
+void star4(benchmark::State& state, const CMapN<4>& m)
 {
-	const CMapN<4>& m = cgogn::bench::grid4();
 	int64 c = 0;
 	for (auto _ : state)
 	{
@@ -149,9 +161,8 @@ void star4(benchmark::State& state)
 }
 
 // every 4-cell's neighbours through its 3-cells
-void adjacency4(benchmark::State& state)
+void adjacency4(benchmark::State& state, const CMapN<4>& m)
 {
-	const CMapN<4>& m = cgogn::bench::grid4();
 	int64 c = 0;
 	for (auto _ : state)
 	{
@@ -163,9 +174,9 @@ void adjacency4(benchmark::State& state)
 }
 
 // the bytes of a copy of the grid (relations, marks, vertex indices and
-// positions), per dart of its cells (not counting the boundary darts, which
-// CGAL's open map does not have)
-void memory4(benchmark::State& state)
+// positions, and the 4-cell indices when asked), per dart of its cells (not
+// counting the boundary darts, which CGAL's open map does not have)
+void memory4(benchmark::State& state, bool index_4_cells)
 {
 	double bytes = 0, darts = 0;
 	for (auto _ : state)
@@ -173,6 +184,8 @@ void memory4(benchmark::State& state)
 		const std::size_t before = cgogn_bench::heap_bytes();
 		CMapN<4> m;
 		generate_cube_grid(m, 8);
+		if (index_4_cells)
+			index_cells<CellD<4>>(m);
 		bytes = double(cgogn_bench::heap_bytes() - before);
 		darts = 0;
 		foreach_dart(m, [&](Dart d) { darts += !is_boundary(m, d); });
@@ -209,9 +222,16 @@ int main(int argc, char** argv)
 	table.add("3d_neighbours", "cgogn", [](benchmark::State& s) { neighbours(s, volume_n()); });
 	table.add("3d_f_vector", "tuned", [](benchmark::State& s) { count(s, volume()); });
 	table.add("3d_f_vector", "cgogn", [](benchmark::State& s) { count(s, volume_n()); });
-	table.add("4d_vertex_star", "cgogn", star4);
-	table.add("4d_adjacency_through_3_cells", "cgogn", adjacency4);
-	table.add("4d_memory", "cgogn", memory4, 1);
+	table.add("4d_vertex_star", "cgogn", [](benchmark::State& s) { star4(s, cgogn::bench::grid4()); });
+	table.add("4d_vertex_star", "cgogn_indexed", [](benchmark::State& s) { star4(s, grid4_indexed()); });
+	table.add("4d_adjacency_through_3_cells", "cgogn",
+			  [](benchmark::State& s) { adjacency4(s, cgogn::bench::grid4()); });
+	table.add("4d_adjacency_through_3_cells", "cgogn_indexed",
+			  [](benchmark::State& s) { adjacency4(s, grid4_indexed()); });
+	table.add(
+		"4d_memory", "cgogn", [](benchmark::State& s) { memory4(s, false); }, 1);
+	table.add(
+		"4d_memory", "cgogn_indexed", [](benchmark::State& s) { memory4(s, true); }, 1);
 #ifdef CGOGN_BENCH_HAS_CGAL
 	namespace peer = cgogn::bench::cgal_lcc4;
 	table.add("4d_vertex_star", "CGAL_LCC", peer::vertex_star);
@@ -220,5 +240,6 @@ int main(int argc, char** argv)
 	table.add("4d_memory", "CGAL_LCC", peer::memory, 1);
 #endif
 	table.add("4d_f_vector", "cgogn", [](benchmark::State& s) { count(s, cgogn::bench::grid4()); });
+	table.add("4d_f_vector", "cgogn_indexed", [](benchmark::State& s) { count(s, grid4_indexed()); });
 	return table.run(argc, argv);
 }

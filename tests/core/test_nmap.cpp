@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <utility>
 #include <vector>
@@ -296,4 +297,69 @@ TEST(NMapCells, AttributesMarkersAndViewsWorkOnEveryDimension)
 	CellCache<GMapN<4>> inner(m);
 	inner.build<CellD<0>>([&](CellD<0> v) { return !is_incident_to_boundary(m, v); });
 	EXPECT_EQ(nb_cells<CellD<0>>(inner), 1u); // the centre of the grid
+}
+
+namespace
+{
+
+// The smallest dart of the cell: a key that does not depend on indexing.
+template <typename MAP, typename CELL>
+uint32 smallest_dart(const MAP& m, CELL c)
+{
+	uint32 k = c.dart.index;
+	foreach_dart_of_orbit(m, c, [&](Dart d) { k = std::min(k, d.index); });
+	return k;
+}
+
+// Each vertex's 4-cells and each 4-cell's neighbours through 3-cells, as
+// sorted keys per cell, with the total count of each.
+template <typename MAP>
+std::pair<std::set<std::vector<uint32>>, std::set<std::vector<uint32>>> stars_and_neighbours(const MAP& m)
+{
+	std::set<std::vector<uint32>> stars, neighbours;
+	foreach_cell(m, [&](CellD<0> v) {
+		std::vector<uint32> row{smallest_dart(m, v)};
+		foreach_incident_cell<4>(m, v, [&](CellD<4> h) { row.push_back(smallest_dart(m, h)); });
+		std::sort(row.begin() + 1, row.end());
+		stars.insert(row);
+	});
+	foreach_cell(m, [&](CellD<4> h) {
+		std::vector<uint32> row{smallest_dart(m, h)};
+		foreach_adjacent_cell<3>(m, h, [&](CellD<4> n) { row.push_back(smallest_dart(m, n)); });
+		std::sort(row.begin() + 1, row.end());
+		neighbours.insert(row);
+	});
+	return {stars, neighbours};
+}
+
+template <typename MAP>
+void check_stars_indexed_or_not()
+{
+	SCOPED_TRACE(is_gmap_v<MAP> ? "GMapN<4>" : "CMapN<4>");
+	MAP m;
+	generate_freudenthal_grid(m, 2);
+	const auto plain = stars_and_neighbours(m);
+	// the centre of the grid lies in 5! simplices (a corner with k of its 4
+	// coordinates at 1 is in k! (4 - k)! simplices of its hypercube): more
+	// than the small array of lines a star starts with
+	std::size_t largest = 0, sides = 0;
+	for (const auto& row : plain.first)
+		largest = std::max(largest, row.size() - 1);
+	for (const auto& row : plain.second)
+		sides += row.size() - 1;
+	EXPECT_EQ(largest, 120u);
+	// every inner tetrahedron has a 4-simplex on each side
+	const std::vector<uint32> f = f_vector(m);
+	const uint32 boundary_facets = nb_cells<3>(extract_boundary(m));
+	EXPECT_EQ(sides, 2u * (f[3] - boundary_facets));
+	index_cells<CellD<4>>(m);
+	EXPECT_EQ(stars_and_neighbours(m), plain);
+}
+
+} // namespace
+
+TEST(NMapTraversals, StarsAndNeighboursAreTheSameIndexedOrNot)
+{
+	check_stars_indexed_or_not<CMapN<4>>();
+	check_stars_indexed_or_not<GMapN<4>>();
 }

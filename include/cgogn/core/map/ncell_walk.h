@@ -98,13 +98,28 @@ constexpr bool ncell_is_pair()
 	return gens.size() == 1 && (is_gmap_v<MAP> || (I != 0 && gens[0] != 1));
 }
 
+/// Whether the I-cells of a combinatorial MAP are two phi1 cycles exchanged
+/// by an involution phi_j, j >= 3 (the faces of a 3-map): phi1 o phi_j is
+/// an involution, so phi_j maps the cycle of d onto the reversed cycle of
+/// phi_j(d).
+template <typename MAP, uint32 I>
+constexpr bool ncell_is_two_cycles()
+{
+	constexpr auto gens = ncell_generators<is_gmap_v<MAP>, MAP::dimension, I>();
+	if constexpr (gens.size() == 2 && !is_gmap_v<MAP> && I != 0)
+		return gens[0] == 1 && gens[1] >= 3;
+	else
+		return false;
+}
+
 /// Whether foreach_dart_of_ncell floods the I-cells of MAP (with a mark and
-/// a work list) rather than walking them as a cycle or a pair.
+/// a work list) rather than walking them as a cycle, a pair or two cycles.
 template <typename MAP, uint32 I>
 constexpr bool ncell_is_flooded()
 {
 	constexpr auto gens = ncell_generators<is_gmap_v<MAP>, MAP::dimension, I>();
-	return gens.size() > 2 || (gens.size() == 2 && !is_gmap_v<MAP> && (I == 0 || gens[0] == 1));
+	return gens.size() > 2 ||
+		   (gens.size() == 2 && !is_gmap_v<MAP> && (I == 0 || gens[0] == 1) && !ncell_is_two_cycles<MAP, I>());
 }
 
 /// Calls f on each dart of the I-cell of d in a CMapN or GMapN (see
@@ -113,7 +128,8 @@ constexpr bool ncell_is_flooded()
 /// cycle (phi1 in a face of a 2-map, phi1 o phi2 around its vertex) or a pair
 /// (an involution); that of two involutions (edges of a 3-map, every cell of
 /// a 2-G-map) as one cycle alternating them, or a path in a map not closed
-/// yet; the others are flooded with a pooled mark (no allocation once warm).
+/// yet; that of phi1 and phi_j, j >= 3 (faces of a 3-map) as two phi1
+/// cycles; the others are flooded with a pooled mark (no allocation once warm).
 template <uint32 I, typename MAP, typename FUNC>
 bool foreach_dart_of_ncell(const MAP& m, Dart d, const FUNC& f)
 {
@@ -142,6 +158,31 @@ bool foreach_dart_of_ncell(const MAP& m, Dart d, const FUNC& f)
 			const Dart e(next[d.index]);
 			return call_and_continue(f, d) && (e == d || call_and_continue(f, e));
 		}
+	}
+	else if constexpr (ncell_is_two_cycles<MAP, I>())
+	{
+		// the phi1 cycle of d, then that of phi_j(d) unless it is the same
+		const NCellStep<MAP, I>&next = steps[0], &across = steps[1];
+		const Dart e(across[d.index]);
+		bool e_met = false;
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			e_met |= it == e;
+			it = Dart(next[it.index]);
+		} while (it != d);
+		if (e_met)
+			return true;
+		it = e;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			it = Dart(next[it.index]);
+		} while (it != e);
+		return true;
 	}
 	else if constexpr (!ncell_is_flooded<MAP, I>())
 	{
