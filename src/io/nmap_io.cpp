@@ -207,19 +207,46 @@ ParsedValues<T> parse_values(Lines& lines, uint32 count, uint32 nb_darts)
 	return p;
 }
 
-// Gives the values to the K-cells of their darts (checked: none is a boundary cell).
-template <typename MAP, typename T, uint32 K>
-void read_attribute(MAP& m, Lines& lines, const std::string& name, const ParsedValues<T>& p)
+// The container of the cells of dimension k (0 <= k <= MAX_DIMENSION).
+const AttributeContainer& cells_of_dimension(const CMapBase& m, uint32 k)
 {
-	auto attr = add_attribute<T, CellD<K>>(m, name);
-	if (!attr)
-		lines.fail("attribute '" + name + "' is defined twice on the cells of dimension " + std::to_string(K) +
-				   " (or its name is reserved)");
-	for (std::size_t i = 0; i < p.darts.size(); ++i)
-		(*attr)[CellD<K>(Dart(p.darts[i]))] = p.values[i];
+	return *cgogn::detail::state_of(m).cells[orbit_index(cell_orbit(k))];
 }
 
-// Writes attribute a of the K-cells when its values have type T.
+// A new attribute of type T on the cells of dimension k, of the class
+// add_attribute<T, CellD<k>> makes; nullptr when the name is taken or
+// reserved. The k-cells must be indexed.
+template <typename T, std::size_t... K>
+std::shared_ptr<AttributeArray<T>> new_cell_attribute(CMapBase& m, uint32 k, const std::string& name,
+													  std::index_sequence<K...>)
+{
+	if (cgogn::detail::is_reserved_name(name))
+		return nullptr;
+	std::shared_ptr<AttributeArray<T>> attr;
+	((k == K ? void(attr = container_of<cell_orbit(K)>(m).template add_attribute<T, CellAttribute<T, cell_orbit(K)>>(
+						name, cgogn::detail::default_attribute_value<T>()))
+			 : void()),
+	 ...);
+	return attr;
+}
+
+// Gives the values to the k-cells of their darts (checked: none is a
+// boundary cell; the k-cells are indexed). Depends on the value type only,
+// not on the map: the lines are read from the darts' cell indices.
+template <typename T>
+void read_attribute(CMapBase& m, Lines& lines, uint32 k, const std::string& name, const ParsedValues<T>& p)
+{
+	const std::shared_ptr<AttributeArray<T>> attr =
+		new_cell_attribute<T>(m, k, name, std::make_index_sequence<MAX_DIMENSION + 1>{});
+	if (!attr)
+		lines.fail("attribute '" + name + "' is defined twice on the cells of dimension " + std::to_string(k) +
+				   " (or its name is reserved)");
+	const AttributeArray<uint32>& line_of = *cgogn::detail::state_of(m).cell_index[orbit_index(cell_orbit(k))];
+	for (std::size_t i = 0; i < p.darts.size(); ++i)
+		(*attr)[line_of[p.darts[i]]] = p.values[i];
+}
+
+// Writes attribute a of the k-cells when its values have type T.
 template <typename T>
 bool write_attribute_if(std::string& s, const AttributeBase& a, uint32 k, const AttributeContainer& cells,
 						const std::vector<uint32>& number)
@@ -247,43 +274,45 @@ bool write_attribute(std::string& s, const AttributeBase& a, uint32 k, const Att
 	return (write_attribute_if<T>(s, a, k, cells, number) || ...);
 }
 
-// The attributes of the cells of each dimension K (names of those not written in skipped).
-template <typename MAP, std::size_t... K>
-void write_attributes(const MAP& m, std::string& s, const std::vector<uint32>& number,
-					  std::vector<std::string>& skipped, std::index_sequence<K...>)
+// The attributes of the cells of each dimension k <= D (names of those not
+// written in skipped).
+void write_attributes(const CMapBase& m, uint32 D, std::string& s, const std::vector<uint32>& number,
+					  std::vector<std::string>& skipped)
 {
-	auto write_dimension = [&](uint32 k, const AttributeContainer& cells) {
+	for (uint32 k = 0; k <= D; ++k)
+	{
+		const AttributeContainer& cells = cells_of_dimension(m, k);
 		for (const auto& a : cells.attributes())
 			if (a.get() != &cells.key() && a->name().rfind("__", 0) != 0 &&
 				!write_attribute(s, *a, k, cells, number, static_cast<ValueTypes*>(nullptr)))
 				skipped.push_back(a->name());
-	};
-	(write_dimension(uint32(K), container_of<cell_orbit(K)>(m)), ...);
+	}
 }
 
-template <typename MAP, typename T, std::size_t... K>
-void read_attribute_of_dimension(MAP& m, Lines& lines, uint32 k, const std::string& name, const ParsedValues<T>& p,
-								 std::index_sequence<K...>)
-{
-	((k == K ? read_attribute<MAP, T, uint32(K)>(m, lines, name, p) : void()), ...);
-}
-
-// Reads an attribute whose type is named `type` (false when no type has this name).
-template <typename MAP, typename... T>
-bool read_typed_attribute(MAP& m, Lines& lines, std::string_view type, uint32 k, const std::string& name, uint32 count,
-						  uint32 nb_darts, std::tuple<T...>*)
+// Reads an attribute of the k-cells of a map of dimension D whose type is
+// named `type` (false when no type has this name). The k-cells are indexed.
+template <typename... T>
+bool read_typed_attribute(CMapBase& m, uint32 D, Lines& lines, std::string_view type, uint32 k, const std::string& name,
+						  uint32 count, uint32 nb_darts, std::tuple<T...>*)
 {
 	const auto read = [&]<typename V>(V*) {
 		const ParsedValues<V> p = parse_values<V>(lines, count, nb_darts);
 		// only the D-cells can be boundary cells
 		for (std::size_t i = 0; i < p.darts.size(); ++i)
-			if (k == MAP::dimension && is_boundary(m, Dart(p.darts[i])))
+			if (k == D && is_boundary(m, Dart(p.darts[i])))
 				lines.fail_at(p.lines[i],
 							  "dart " + std::to_string(p.darts[i]) + " is in a boundary cell, which has no attribute");
-		read_attribute_of_dimension<MAP, V>(m, lines, k, name, p, std::make_index_sequence<MAP::dimension + 1>{});
+		read_attribute<V>(m, lines, k, name, p);
 		return true;
 	};
 	return ((type == type_name<T>() && read(static_cast<T*>(nullptr))) || ...);
+}
+
+// Indexes the k-cells of m (k <= D) if they are not.
+template <typename MAP, std::size_t... K>
+void index_dimension(MAP& m, uint32 k, std::index_sequence<K...>)
+{
+	((k == K && !is_indexed<CellD<uint32(K)>>(m) ? index_cells<CellD<uint32(K)>>(m) : void()), ...);
 }
 
 } // namespace
@@ -308,7 +337,7 @@ requires is_nmap_v<MAP> std::vector<std::string> save_nmap(const MAP& m, const s
 		s += is_boundary(m, d) ? "1\n" : "0\n";
 	});
 	std::vector<std::string> skipped;
-	write_attributes(m, s, number, skipped, std::make_index_sequence<D + 1>{});
+	write_attributes(m, D, s, number, skipped);
 	s += "end\n";
 	detail::write_file(path, s);
 	return skipped;
@@ -378,8 +407,9 @@ void load_nmap(MAP& m, const std::string& path)
 			lines.fail("no cell of dimension " + std::to_string(k) + " in a map of dimension " + std::to_string(D));
 		const std::string name(t[2]);
 		const uint32 count = lines.number<uint32>(t[4], "the number of values");
+		index_dimension(local, k, std::make_index_sequence<D + 1>{});
 		const bool known =
-			read_typed_attribute(local, lines, t[3], k, name, count, n, static_cast<ValueTypes*>(nullptr));
+			read_typed_attribute(local, D, lines, t[3], k, name, count, n, static_cast<ValueTypes*>(nullptr));
 		if (!known)
 			lines.fail("unknown value type '" + std::string(t[3]) + "'");
 	}
