@@ -85,7 +85,7 @@ private:
 	const MAP& map_;
 	bool indexed_;
 	uint32 nb_few_ = 0;
-	std::array<uint32, 16> few_; // the first lines met, while there are few
+	std::array<uint32, 16> few_{}; // the first lines met, while there are few
 	std::optional<ReservedMark> mark_;
 	std::optional<DartBuffer> marked_;
 };
