@@ -4,7 +4,7 @@
 # there runs 10-15% slower, and whether it does depends on where unrelated
 # code happened to move it. Padding keeps jumps off those boundaries, so that
 # a traversal's speed does not change from one build to the next for no
-# reason in its own code (the code grows by about 1%).
+# reason in its own code (the machine code grows by about 3%).
 option(CGOGN_ALIGN_BRANCHES "Keep jumps off 32-byte boundaries on x86-64 (stable loop speed on Intel CPUs with the JCC erratum fix)" ON)
 if(CGOGN_ALIGN_BRANCHES AND CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64|amd64")
   include(CheckCXXCompilerFlag)
