@@ -65,9 +65,10 @@ const CMap3& volume()
 }
 
 // every vertex's I-cells, then every I-cell's vertices: tuned circulators
-// (CMap2, CMap3) or the generic foreach_incident_cell (CMapN)
+// (CMap2, CMap3) or the generic foreach_incident_cell (CMapN, or the tuned
+// maps when `generic` is set: the same functions on both models)
 template <uint32 I, typename MAP>
-void star(benchmark::State& state, const MAP& m)
+void star(benchmark::State& state, const MAP& m, bool generic = false)
 {
 	using Vertex = cell_of_dimension_t<MAP, 0>;
 	using Top = cell_of_dimension_t<MAP, I>;
@@ -75,12 +76,15 @@ void star(benchmark::State& state, const MAP& m)
 	for (auto _ : state)
 	{
 		int64 c = 0;
-		if constexpr (is_nmap_v<MAP>)
-		{
+		const auto generic_star = [&] {
 			foreach_cell(m, [&](Vertex v) { foreach_incident_cell<I>(m, v, [&](Top) { ++c; }); });
 			up = c;
 			foreach_cell(m, [&](Top t) { foreach_incident_cell<0>(m, t, [&](Vertex) { --c; }); });
-		}
+		};
+		if constexpr (is_nmap_v<MAP>)
+			generic_star();
+		else if (generic)
+			generic_star();
 		else if constexpr (I == 2)
 		{
 			foreach_cell(m, [&](Vertex v) { foreach_incident_face(m, v, [&](Top) { ++c; }); });
@@ -100,17 +104,22 @@ void star(benchmark::State& state, const MAP& m)
 	state.counters["check"] = double(up);
 }
 
-// every vertex's neighbours through its edges
+// every vertex's neighbours through its edges (as star: tuned or generic)
 template <typename MAP>
-void neighbours(benchmark::State& state, const MAP& m)
+void neighbours(benchmark::State& state, const MAP& m, bool generic = false)
 {
 	using Vertex = cell_of_dimension_t<MAP, 0>;
 	int64 c = 0;
 	for (auto _ : state)
 	{
 		c = 0;
-		if constexpr (is_nmap_v<MAP>)
+		const auto generic_neighbours = [&] {
 			foreach_cell(m, [&](Vertex v) { foreach_adjacent_cell<1>(m, v, [&](Vertex) { ++c; }); });
+		};
+		if constexpr (is_nmap_v<MAP>)
+			generic_neighbours();
+		else if (generic)
+			generic_neighbours();
 		else
 			foreach_cell(m, [&](Vertex v) { foreach_adjacent_vertex_through_edge(m, v, [&](Vertex) { ++c; }); });
 		benchmark::DoNotOptimize(c);
@@ -212,14 +221,18 @@ int main(int argc, char** argv)
 	cgogn::bench::RowTable table("cgogn", "bytes_per_dart");
 	table.add("2d_vertex_faces", "tuned", [](benchmark::State& s) { star<2>(s, surface()); });
 	table.add("2d_vertex_faces", "cgogn", [](benchmark::State& s) { star<2>(s, surface_n()); });
+	table.add("2d_vertex_faces", "tuned_generic", [](benchmark::State& s) { star<2>(s, surface(), true); });
 	table.add("2d_neighbours", "tuned", [](benchmark::State& s) { neighbours(s, surface()); });
 	table.add("2d_neighbours", "cgogn", [](benchmark::State& s) { neighbours(s, surface_n()); });
+	table.add("2d_neighbours", "tuned_generic", [](benchmark::State& s) { neighbours(s, surface(), true); });
 	table.add("2d_f_vector", "tuned", [](benchmark::State& s) { count(s, surface()); });
 	table.add("2d_f_vector", "cgogn", [](benchmark::State& s) { count(s, surface_n()); });
 	table.add("3d_vertex_volumes", "tuned", [](benchmark::State& s) { star<3>(s, volume()); });
 	table.add("3d_vertex_volumes", "cgogn", [](benchmark::State& s) { star<3>(s, volume_n()); });
+	table.add("3d_vertex_volumes", "tuned_generic", [](benchmark::State& s) { star<3>(s, volume(), true); });
 	table.add("3d_neighbours", "tuned", [](benchmark::State& s) { neighbours(s, volume()); });
 	table.add("3d_neighbours", "cgogn", [](benchmark::State& s) { neighbours(s, volume_n()); });
+	table.add("3d_neighbours", "tuned_generic", [](benchmark::State& s) { neighbours(s, volume(), true); });
 	table.add("3d_f_vector", "tuned", [](benchmark::State& s) { count(s, volume()); });
 	table.add("3d_f_vector", "cgogn", [](benchmark::State& s) { count(s, volume_n()); });
 	table.add("4d_vertex_star", "cgogn", [](benchmark::State& s) { star4(s, cgogn::bench::grid4()); });
