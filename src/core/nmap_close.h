@@ -4,6 +4,8 @@
 
 #include <cgogn/core/map/betas.h>
 
+#include "nmap_darts.h"
+
 #include <vector>
 
 namespace cgogn::detail
@@ -29,12 +31,7 @@ void close_free_facets(GMapN<D>& g)
 		set_relation(g, i, a, b);
 		set_relation(g, i, b, a);
 	};
-	auto new_boundary_pair = [&] {
-		const Dart b = add_dart_pair(g);
-		set_boundary(g, b, true);
-		set_boundary(g, beta0(g, b), true);
-		return b;
-	};
+	auto new_boundary_pair = [&] { return nmap::new_dart(g, true); };
 	if constexpr (D == 1)
 	{
 		for (Dart d : free)
@@ -64,10 +61,7 @@ void close_free_facets(GMapN<D>& g)
 			const Dart b = relation(g, D, d);
 			for (uint32 i = 1; i + 2 <= D; ++i)
 				set_relation(g, i, b, relation(g, D, relation(g, i, d)));
-			Dart e = relation(g, D - 1, d);
-			while (!is_boundary(g, relation(g, D, e)))
-				e = relation(g, D - 1, relation(g, D, e));
-			set_relation(g, D - 1, b, relation(g, D, e));
+			set_relation(g, D - 1, b, nmap::boundary_beside(g, d));
 		}
 	}
 }

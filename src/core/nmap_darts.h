@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The dart-level steps shared by the operators of the maps of any dimension
-// (nmap_operators.cpp, nmap_sew.cpp): one relation by its number, new and
+// (nmap_operators.cpp, nmap_sew.cpp, nmap_close.h): one relation by its number, new and
 // removed darts for both models, and the relinking around a vanishing cell.
 #pragma once
 
@@ -41,18 +41,30 @@ void link(MAP& m, uint32 i, Dart a, Dart b)
 	set_relation(m, i, b, a);
 }
 
+// A new dart (a pair of darts in a G-map), with the boundary mark or not.
+template <typename MAP>
+Dart new_dart(MAP& m, bool boundary)
+{
+	if constexpr (G<MAP>)
+	{
+		const Dart d = add_dart_pair(m);
+		set_boundary(m, d, boundary);
+		set_boundary(m, beta0(m, d), boundary);
+		return d;
+	}
+	else
+	{
+		const Dart d = add_dart(m);
+		set_boundary(m, d, boundary);
+		return d;
+	}
+}
+
 // A new dart (pair of darts in a G-map) with the boundary mark of `like`.
 template <typename MAP>
 Dart new_dart_like(MAP& m, Dart like)
 {
-	if constexpr (G<MAP>)
-		return new_dart_pair_like(m, like);
-	else
-	{
-		const Dart d = add_dart(m);
-		set_boundary(m, d, is_boundary(m, like));
-		return d;
-	}
+	return new_dart(m, is_boundary(m, like));
 }
 
 template <typename MAP>
@@ -84,6 +96,21 @@ std::vector<std::pair<Dart, Dart>> links_around(const MAP& m, uint32 i, const st
 		links.emplace_back(x, z);
 	}
 	return links;
+}
+
+// The dart of the boundary cells beside x's (D - 2)-cell, found by turning
+// around that cell from x, away from x's facet, through the inner D-cells
+// (relation D - 1 in a cell, relation D across a facet) until relation D
+// leads out of them. Precondition: x's facet has a boundary side (relation
+// D of x is a boundary dart). O(number of D-cells around the (D - 2)-cell).
+template <typename MAP>
+Dart boundary_beside(const MAP& m, Dart x)
+{
+	constexpr int D = int(MAP::dimension);
+	Dart e = rel(m, D - 1, x);
+	while (!is_boundary(m, rel(m, D, e)))
+		e = rel(m, D - 1, rel(m, D, e));
+	return rel(m, D, e);
 }
 
 } // namespace cgogn::detail::nmap

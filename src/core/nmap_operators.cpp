@@ -26,12 +26,7 @@ namespace cgogn
 namespace
 {
 
-using detail::nmap::G;
-using detail::nmap::link;
-using detail::nmap::links_around;
-using detail::nmap::new_dart_like;
-using detail::nmap::rel;
-using detail::nmap::remove_darts;
+using namespace detail::nmap;
 
 // Copies every line of `from` onto `to`: `to` takes the place of `from` in its cells.
 void take_lines(CMapBase& m, Dart from, Dart to)

@@ -23,11 +23,7 @@ namespace cgogn
 namespace
 {
 
-using detail::nmap::G;
-using detail::nmap::link;
-using detail::nmap::links_around;
-using detail::nmap::rel;
-using detail::nmap::remove_darts;
+using namespace detail::nmap;
 
 // The inverse of phi1 on the faces met, each face walked once: phi_1 of a
 // CMapN walks the whole face, which would make a side's matching quadratic.
@@ -108,40 +104,6 @@ std::vector<Dart> facet_side(const MAP& m, Dart d)
 	for (const auto& [x, y] : facing_sides(m, d, d))
 		side.push_back(x);
 	return side;
-}
-
-// A new boundary dart (pair of darts in a G-map) facing x across the facet.
-template <typename MAP>
-Dart new_boundary_dart(MAP& m)
-{
-	if constexpr (G<MAP>)
-	{
-		const Dart b = add_dart_pair(m);
-		detail::set_boundary(m, b, true);
-		detail::set_boundary(m, beta0(m, b), true);
-		return b;
-	}
-	else
-	{
-		const Dart b = detail::add_dart(m);
-		detail::set_boundary(m, b, true);
-		return b;
-	}
-}
-
-// The dart of the boundary cells beside x's (D - 2)-cell, found by turning
-// around that cell from x, away from x's facet, through the inner D-cells
-// (beta_{D-1} in a cell, beta_D across a facet) until beta_D leads out of
-// them. Precondition: x's facet has its boundary side (beta_D(x) boundary).
-// O(number of D-cells around the (D - 2)-cell).
-template <typename MAP>
-Dart boundary_beside(const MAP& m, Dart x)
-{
-	constexpr uint32 D = MAP::dimension;
-	Dart e = rel(m, int(D - 1), x);
-	while (!is_boundary(m, rel(m, int(D), e)))
-		e = rel(m, int(D - 1), rel(m, int(D), e));
-	return rel(m, int(D), e);
 }
 
 // In a 2-map the boundary darts beside a new boundary edge b are the ones
@@ -271,10 +233,10 @@ requires is_nmap_v<MAP> &&(MAP::dimension >= 2) void unsew_facets(MAP& m, CellD<
 			if (const auto it = made_for.find(beta0(m, x).index); it != made_for.end())
 				made[k] = beta0(m, it->second);
 			else
-				made[k] = new_boundary_dart(m);
+				made[k] = new_dart(m, true);
 		}
 		else
-			made[k] = new_boundary_dart(m);
+			made[k] = new_dart(m, true);
 		made_for[x.index] = made[k];
 	}
 	for (std::size_t k = 0; k < inner.size(); ++k)
