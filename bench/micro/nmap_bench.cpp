@@ -6,6 +6,9 @@
 // on the same hypercube grid (peers/cgal_lcc4.cpp, when CGAL is found):
 // vertex stars, adjacency of 4-cells through 3-cells, the f-vector, and the
 // bytes per dart, with the 4-cells indexed (cgogn_indexed) and without.
+// The generic traversals run in both forms: once per incidence (cgogn), the
+// contract of the tuned circulators and of CGAL's adjacency loop, and each
+// cell once (cgogn_each_once, cgogn_indexed).
 // Targets: the generic maps within 1.5x of the tuned ones; at D = 4 at least
 // 2x faster than CGAL, with no more bytes per dart. Each
 // row has a check value that every model of its workload must share; the
@@ -64,11 +67,20 @@ const CMap3& volume()
 	return m;
 }
 
-// every vertex's I-cells, then every I-cell's vertices: tuned circulators
-// (CMap2, CMap3) or the generic foreach_incident_cell (CMapN, or the tuned
-// maps when `generic` is set: the same functions on both models)
+// How a workload walks the cells: the tuned circulators of CMap2 and CMap3,
+// which report a cell once per incidence; the generic functions with
+// `each_incidence`, the same contract; or the generic functions that report
+// each cell once.
+enum class Walk
+{
+	tuned,
+	each_incidence,
+	each_once
+};
+
+// every vertex's I-cells, then every I-cell's vertices
 template <uint32 I, typename MAP>
-void star(benchmark::State& state, const MAP& m, bool generic = false)
+void star(benchmark::State& state, const MAP& m, Walk walk)
 {
 	using Vertex = cell_of_dimension_t<MAP, 0>;
 	using Top = cell_of_dimension_t<MAP, I>;
@@ -76,15 +88,26 @@ void star(benchmark::State& state, const MAP& m, bool generic = false)
 	for (auto _ : state)
 	{
 		int64 c = 0;
-		const auto generic_star = [&] {
+		if (walk == Walk::each_incidence)
+		{
+			foreach_cell(m, [&](Vertex v) {
+				foreach_incident_cell<I>(
+					m, v, [&](Top) { ++c; }, each_incidence);
+			});
+			up = c;
+			foreach_cell(m, [&](Top t) {
+				foreach_incident_cell<0>(
+					m, t, [&](Vertex) { --c; }, each_incidence);
+			});
+		}
+		else if (walk == Walk::each_once)
+		{
 			foreach_cell(m, [&](Vertex v) { foreach_incident_cell<I>(m, v, [&](Top) { ++c; }); });
 			up = c;
 			foreach_cell(m, [&](Top t) { foreach_incident_cell<0>(m, t, [&](Vertex) { --c; }); });
-		};
-		if constexpr (is_nmap_v<MAP>)
-			generic_star();
-		else if (generic)
-			generic_star();
+		}
+		else if constexpr (is_nmap_v<MAP>)
+			state.SkipWithError("no tuned circulators");
 		else if constexpr (I == 2)
 		{
 			foreach_cell(m, [&](Vertex v) { foreach_incident_face(m, v, [&](Top) { ++c; }); });
@@ -104,22 +127,24 @@ void star(benchmark::State& state, const MAP& m, bool generic = false)
 	state.counters["check"] = double(up);
 }
 
-// every vertex's neighbours through its edges (as star: tuned or generic)
+// every vertex's neighbours through its edges (walked as in star)
 template <typename MAP>
-void neighbours(benchmark::State& state, const MAP& m, bool generic = false)
+void neighbours(benchmark::State& state, const MAP& m, Walk walk)
 {
 	using Vertex = cell_of_dimension_t<MAP, 0>;
 	int64 c = 0;
 	for (auto _ : state)
 	{
 		c = 0;
-		const auto generic_neighbours = [&] {
+		if (walk == Walk::each_incidence)
+			foreach_cell(m, [&](Vertex v) {
+				foreach_adjacent_cell<1>(
+					m, v, [&](Vertex) { ++c; }, each_incidence);
+			});
+		else if (walk == Walk::each_once)
 			foreach_cell(m, [&](Vertex v) { foreach_adjacent_cell<1>(m, v, [&](Vertex) { ++c; }); });
-		};
-		if constexpr (is_nmap_v<MAP>)
-			generic_neighbours();
-		else if (generic)
-			generic_neighbours();
+		else if constexpr (is_nmap_v<MAP>)
+			state.SkipWithError("no tuned circulators");
 		else
 			foreach_cell(m, [&](Vertex v) { foreach_adjacent_vertex_through_edge(m, v, [&](Vertex) { ++c; }); });
 		benchmark::DoNotOptimize(c);
@@ -156,27 +181,40 @@ const CMapN<4>& grid4_indexed()
 	return m;
 }
 
-// every vertex's 4-cells
-void star4(benchmark::State& state, const CMapN<4>& m)
+// every vertex's 4-cells (each once, or once per incidence)
+void star4(benchmark::State& state, const CMapN<4>& m, Walk walk = Walk::each_once)
 {
 	int64 c = 0;
 	for (auto _ : state)
 	{
 		c = 0;
-		foreach_cell(m, [&](CellD<0> v) { foreach_incident_cell<4>(m, v, [&](CellD<4>) { ++c; }); });
+		if (walk == Walk::each_incidence)
+			foreach_cell(m, [&](CellD<0> v) {
+				foreach_incident_cell<4>(
+					m, v, [&](CellD<4>) { ++c; }, each_incidence);
+			});
+		else
+			foreach_cell(m, [&](CellD<0> v) { foreach_incident_cell<4>(m, v, [&](CellD<4>) { ++c; }); });
 		benchmark::DoNotOptimize(c);
 	}
 	state.counters["check"] = double(c);
 }
 
-// every 4-cell's neighbours through its 3-cells
-void adjacency4(benchmark::State& state, const CMapN<4>& m)
+// every 4-cell's neighbours through its 3-cells (each once, or once per
+// shared 3-cell)
+void adjacency4(benchmark::State& state, const CMapN<4>& m, Walk walk = Walk::each_once)
 {
 	int64 c = 0;
 	for (auto _ : state)
 	{
 		c = 0;
-		foreach_cell(m, [&](CellD<4> h) { foreach_adjacent_cell<3>(m, h, [&](CellD<4>) { ++c; }); });
+		if (walk == Walk::each_incidence)
+			foreach_cell(m, [&](CellD<4> h) {
+				foreach_adjacent_cell<3>(
+					m, h, [&](CellD<4>) { ++c; }, each_incidence);
+			});
+		else
+			foreach_cell(m, [&](CellD<4> h) { foreach_adjacent_cell<3>(m, h, [&](CellD<4>) { ++c; }); });
 		benchmark::DoNotOptimize(c);
 	}
 	state.counters["check"] = double(c);
@@ -219,25 +257,37 @@ const CMapN<4>& cgogn::bench::grid4()
 int main(int argc, char** argv)
 {
 	cgogn::bench::RowTable table("cgogn", "bytes_per_dart");
-	table.add("2d_vertex_faces", "tuned", [](benchmark::State& s) { star<2>(s, surface()); });
-	table.add("2d_vertex_faces", "cgogn", [](benchmark::State& s) { star<2>(s, surface_n()); });
-	table.add("2d_vertex_faces", "tuned_generic", [](benchmark::State& s) { star<2>(s, surface(), true); });
-	table.add("2d_neighbours", "tuned", [](benchmark::State& s) { neighbours(s, surface()); });
-	table.add("2d_neighbours", "cgogn", [](benchmark::State& s) { neighbours(s, surface_n()); });
-	table.add("2d_neighbours", "tuned_generic", [](benchmark::State& s) { neighbours(s, surface(), true); });
+	// D = 2 and 3: the generic map, each incidence as the tuned circulators
+	// (cgogn) or each once (cgogn_each_once), against the tuned one (tuned,
+	// and the generic functions on it: tuned_generic); the meshes are built
+	// when a benchmark first asks for them
+	const auto models = [&](const std::string& workload, auto run, auto fixed, auto generic) {
+		table.add(workload, "tuned", [=](benchmark::State& s) { run(s, fixed(), Walk::tuned); });
+		table.add(workload, "cgogn", [=](benchmark::State& s) { run(s, generic(), Walk::each_incidence); });
+		table.add(workload, "cgogn_each_once", [=](benchmark::State& s) { run(s, generic(), Walk::each_once); });
+		table.add(workload, "tuned_generic", [=](benchmark::State& s) { run(s, fixed(), Walk::each_incidence); });
+	};
+	models(
+		"2d_vertex_faces", [](benchmark::State& s, const auto& m, Walk w) { star<2>(s, m, w); }, surface, surface_n);
+	models(
+		"2d_neighbours", [](benchmark::State& s, const auto& m, Walk w) { neighbours(s, m, w); }, surface, surface_n);
 	table.add("2d_f_vector", "tuned", [](benchmark::State& s) { count(s, surface()); });
 	table.add("2d_f_vector", "cgogn", [](benchmark::State& s) { count(s, surface_n()); });
-	table.add("3d_vertex_volumes", "tuned", [](benchmark::State& s) { star<3>(s, volume()); });
-	table.add("3d_vertex_volumes", "cgogn", [](benchmark::State& s) { star<3>(s, volume_n()); });
-	table.add("3d_vertex_volumes", "tuned_generic", [](benchmark::State& s) { star<3>(s, volume(), true); });
-	table.add("3d_neighbours", "tuned", [](benchmark::State& s) { neighbours(s, volume()); });
-	table.add("3d_neighbours", "cgogn", [](benchmark::State& s) { neighbours(s, volume_n()); });
-	table.add("3d_neighbours", "tuned_generic", [](benchmark::State& s) { neighbours(s, volume(), true); });
+	models(
+		"3d_vertex_volumes", [](benchmark::State& s, const auto& m, Walk w) { star<3>(s, m, w); }, volume, volume_n);
+	models(
+		"3d_neighbours", [](benchmark::State& s, const auto& m, Walk w) { neighbours(s, m, w); }, volume, volume_n);
 	table.add("3d_f_vector", "tuned", [](benchmark::State& s) { count(s, volume()); });
 	table.add("3d_f_vector", "cgogn", [](benchmark::State& s) { count(s, volume_n()); });
-	table.add("4d_vertex_star", "cgogn", [](benchmark::State& s) { star4(s, cgogn::bench::grid4()); });
+	// D = 4: the generic map, each incidence (cgogn) or each once, with its
+	// 4-cells indexed (cgogn_indexed) or not (cgogn_each_once)
+	table.add("4d_vertex_star", "cgogn",
+			  [](benchmark::State& s) { star4(s, cgogn::bench::grid4(), Walk::each_incidence); });
+	table.add("4d_vertex_star", "cgogn_each_once", [](benchmark::State& s) { star4(s, cgogn::bench::grid4()); });
 	table.add("4d_vertex_star", "cgogn_indexed", [](benchmark::State& s) { star4(s, grid4_indexed()); });
 	table.add("4d_adjacency_through_3_cells", "cgogn",
+			  [](benchmark::State& s) { adjacency4(s, cgogn::bench::grid4(), Walk::each_incidence); });
+	table.add("4d_adjacency_through_3_cells", "cgogn_each_once",
 			  [](benchmark::State& s) { adjacency4(s, cgogn::bench::grid4()); });
 	table.add("4d_adjacency_through_3_cells", "cgogn_indexed",
 			  [](benchmark::State& s) { adjacency4(s, grid4_indexed()); });

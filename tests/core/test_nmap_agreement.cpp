@@ -43,18 +43,23 @@ std::map<uint32, std::vector<uint32>> relation(const MAP& m, const AROUND& aroun
 }
 
 // Incidence I -> J and adjacency of I-cells through K-cells, by the generic
-// functions, on any map.
-template <uint32 I, uint32 J, typename MAP>
-std::map<uint32, std::vector<uint32>> incidence(const MAP& m)
+// functions, on any map, each cell once or (given each_incidence) once per
+// incidence.
+template <uint32 I, uint32 J, typename MAP, typename... EACH>
+std::map<uint32, std::vector<uint32>> incidence(const MAP& m, EACH... each)
 {
-	return relation<cell_of_dimension_t<MAP, I>>(
-		m, [&](auto c, const auto& put) { foreach_incident_cell<J>(m, c, [&](auto x) { put(x); }); });
+	return relation<cell_of_dimension_t<MAP, I>>(m, [&](auto c, const auto& put) {
+		foreach_incident_cell<J>(
+			m, c, [&](auto x) { put(x); }, each...);
+	});
 }
-template <uint32 I, uint32 K, typename MAP>
-std::map<uint32, std::vector<uint32>> adjacency(const MAP& m)
+template <uint32 I, uint32 K, typename MAP, typename... EACH>
+std::map<uint32, std::vector<uint32>> adjacency(const MAP& m, EACH... each)
 {
-	return relation<cell_of_dimension_t<MAP, I>>(
-		m, [&](auto c, const auto& put) { foreach_adjacent_cell<K>(m, c, [&](auto x) { put(x); }); });
+	return relation<cell_of_dimension_t<MAP, I>>(m, [&](auto c, const auto& put) {
+		foreach_adjacent_cell<K>(
+			m, c, [&](auto x) { put(x); }, each...);
+	});
 }
 
 template <typename MAP>
@@ -98,6 +103,19 @@ TEST(NMapAgreement, SurfacesGiveTheCellsAndNeighboursOfTheCMap2)
 		EXPECT_EQ((adjacency<2, 1>(n)), face_neighbours);
 		EXPECT_EQ((incidence<1, 0>(n)), (incidence<1, 0>(m)));
 		EXPECT_EQ((incidence<2, 1>(n)), (incidence<2, 1>(m)));
+		// once per incidence: the contract of the tuned circulators
+		EXPECT_EQ((incidence<0, 2>(n, each_incidence)), faces_of_vertices);
+		EXPECT_EQ((incidence<0, 2>(m, each_incidence)), faces_of_vertices);
+		EXPECT_EQ((incidence<2, 0>(n, each_incidence)), relation<CMap2::Face>(m, [&](CMap2::Face f, const auto& put) {
+					  foreach_incident_vertex(m, f, [&](CMap2::Vertex v) { put(v); });
+				  }));
+		EXPECT_EQ((incidence<0, 1>(n, each_incidence)),
+				  relation<CMap2::Vertex>(m, [&](CMap2::Vertex v, const auto& put) {
+					  foreach_incident_edge(m, v, [&](CMap2::Edge e) { put(e); });
+				  }));
+		EXPECT_EQ((adjacency<0, 1>(n, each_incidence)), vertex_neighbours);
+		EXPECT_EQ((adjacency<2, 1>(n, each_incidence)), face_neighbours);
+		EXPECT_EQ((adjacency<0, 2>(n, each_incidence)), (adjacency<0, 2>(m, each_incidence)));
 		// and back: the same map
 		const CMap2 back = to_fixed_map(n);
 		EXPECT_TRUE(check_integrity(back).ok());
@@ -135,6 +153,24 @@ TEST(NMapAgreement, VolumesGiveTheCellsAndNeighboursOfTheCMap3)
 			foreach_adjacent_vertex_through_edge(m, v, [&](CMap3::Vertex w) { put(w); });
 		});
 		EXPECT_EQ((adjacency<0, 1>(n)), vertex_neighbours);
+		// once per incidence: the contract of the tuned circulators
+		EXPECT_EQ((incidence<0, 3>(n, each_incidence)), volumes_of_vertices);
+		EXPECT_EQ((incidence<0, 3>(m, each_incidence)), volumes_of_vertices);
+		EXPECT_EQ((incidence<1, 2>(n, each_incidence)), faces_of_edges);
+		EXPECT_EQ((incidence<0, 2>(n, each_incidence)),
+				  relation<CMap3::Vertex>(m, [&](CMap3::Vertex v, const auto& put) {
+					  foreach_incident_face(m, v, [&](CMap3::Face f) { put(f); });
+				  }));
+		EXPECT_EQ((incidence<0, 1>(n, each_incidence)),
+				  relation<CMap3::Vertex>(m, [&](CMap3::Vertex v, const auto& put) {
+					  foreach_incident_edge(m, v, [&](CMap3::Edge e) { put(e); });
+				  }));
+		EXPECT_EQ((incidence<3, 0>(n, each_incidence)),
+				  relation<CMap3::Volume>(m, [&](CMap3::Volume w, const auto& put) {
+					  foreach_incident_vertex(m, w, [&](CMap3::Vertex v) { put(v); });
+				  }));
+		EXPECT_EQ((adjacency<3, 2>(n, each_incidence)), volume_neighbours);
+		EXPECT_EQ((adjacency<0, 1>(n, each_incidence)), vertex_neighbours);
 		// the boundary surface, extracted, is the CMap2 of the boundary
 		const CMapN<2> b = extract_boundary(n);
 		EXPECT_TRUE(check_integrity(b).ok()) << check_integrity(b).to_string();
@@ -159,5 +195,14 @@ TEST(NMapAgreement, NonOrientableSurfacesGiveTheCellsOfTheGMap2)
 		EXPECT_FALSE(is_orientable(n));
 		EXPECT_EQ((incidence<0, 2>(n)), (incidence<0, 2>(m)));
 		EXPECT_EQ((adjacency<0, 1>(n)), (adjacency<0, 1>(m)));
+		EXPECT_EQ((incidence<0, 2>(n, each_incidence)),
+				  relation<GMap2::Vertex>(m, [&](GMap2::Vertex v, const auto& put) {
+					  foreach_incident_face(m, v, [&](GMap2::Face f) { put(f); });
+				  }));
+		EXPECT_EQ((adjacency<0, 1>(n, each_incidence)),
+				  relation<GMap2::Vertex>(m, [&](GMap2::Vertex v, const auto& put) {
+					  foreach_adjacent_vertex_through_edge(m, v, [&](GMap2::Vertex w) { put(w); });
+				  }));
+		EXPECT_EQ((incidence<2, 0>(n, each_incidence)), (incidence<2, 0>(m, each_incidence)));
 	}
 }

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/detail/incidence_lookup.h>
 #include <cgogn/core/map/betas.h>
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/mesh_traits.h>
+#include <cgogn/core/traversals/incidence_classes.h>
 #include <cgogn/core/traversals/local_cell_set.h>
 
 namespace cgogn
@@ -15,6 +17,22 @@ namespace cgogn
 // dimension J are cell_of_dimension_t<MAP, J>. One generic family; the maps
 // of dimension 2 and 3 keep their tuned circulators (foreach_incident_edge,
 // foreach_adjacent_vertex_through_edge, ...), which give the same cells.
+//
+// Each function reports each cell once, or, given `each_incidence`, once
+// per incidence: the incidences of an I-cell with its J-cells split its
+// darts by the relations both orbits share (see detail::incidence_generators):
+// the corners of a face, the sides of a facet, one dart per corner around
+// a vertex of a surface. On a manifold mesh every cell meets another at most
+// once, and both give the same cells; where a face passes twice by a vertex
+// (or an edge is a loop), each_incidence reports it twice, as the tuned
+// circulators of the surfaces do, and costs no deduplication.
+
+/// Selects the traversals that report a cell once per incidence.
+struct EachIncidence
+{
+};
+/// See EachIncidence.
+inline constexpr EachIncidence each_incidence{};
 
 /// Calls f on each J-cell incident to cell c (the J-cells that share a dart
 /// with c: for J below c's dimension its faces, above it the cells it lies
@@ -85,6 +103,101 @@ void foreach_adjacent_cell(const MAP& m, Cell<O> c, const FUNC& f)
 			});
 			return go_on;
 		});
+	}
+}
+
+/// Calls f on the J-cell of each incidence of cell c with J-cells (see
+/// EachIncidence), boundary cells excluded, the J-cell of c.dart first; f
+/// may return false to stop. c is a cell of a dimension of the map
+/// (cell_of_dimension_t), J another one.
+/// Cost: O(size of c's orbit), without any mark, where each dart is its own
+/// incidence (the vertices, edges and faces of a combinatorial 2-map);
+/// otherwise c is walked incidence by incidence, each dart marked once
+/// (pooled marks: no allocation once warm).
+template <uint32 J, typename MAP, Orbit O, typename FUNC>
+requires std::derived_from<MAP, CMapBase>
+void foreach_incident_cell(const MAP& m, Cell<O> c, const FUNC& f, EachIncidence)
+{
+	constexpr uint32 I = detail::dimension_of_cell<MAP, Cell<O>, J>();
+	static_assert(I <= MAP::dimension, "c is not a cell of one of the map's dimensions other than J");
+	using CJ = cell_of_dimension_t<MAP, J>;
+	using Incidences = detail::Incidences<MAP, I, J>;
+	if constexpr (Incidences::single_darts)
+	{
+		if (!has_boundary(m)) // a closed map: no bit to read per dart
+			detail::report_with_lines<CJ>(
+				m, [&](const auto& report) { foreach_dart_of_orbit(m, c, report); }, f);
+		else
+			detail::report_with_lines<CJ>(
+				m,
+				[&](const auto& report) {
+					foreach_dart_of_orbit(m, c, [&](Dart d) { return is_boundary_cell(m, CJ(d)) || report(d); });
+				},
+				f);
+	}
+	else
+		detail::foreach_incidence_dart<I, J>(
+			m, c.dart, [&](Dart d) { return is_boundary_cell(m, CJ(d)) || call_and_continue(f, CJ(d)); });
+}
+
+/// Calls f on the cells of c's type met through each incidence of c with
+/// K-cells (see EachIncidence): for each K-cell k at c, once per incidence
+/// of k with cells of c's type other than the one c meets k by, boundary
+/// cells excluded; c itself when a K-cell meets it twice (the far end of a
+/// loop edge). f may return false to stop. On a manifold mesh, the cells of
+/// foreach_adjacent_cell<K>, each once per K-cell it shares with c (once
+/// through edges or facets). c is a cell of a dimension of the map, K
+/// another one.
+/// Cost: the incidences of c with K-cells (see above), then each K-cell met
+/// is walked, its incidences with cells of c's type marked as in
+/// foreach_incident_cell. Two cases take a shortcut, with no walk of the
+/// K-cells: the D-cells through their facets (relation D of each side) and
+/// the vertices through edges (the other end of each dart's edge), each
+/// O(size of c's orbit) without any mark in a combinatorial 2-map.
+template <uint32 K, typename MAP, Orbit O, typename FUNC>
+requires std::derived_from<MAP, CMapBase>
+void foreach_adjacent_cell(const MAP& m, Cell<O> c, const FUNC& f, EachIncidence)
+{
+	using CI = Cell<O>;
+	using CK = cell_of_dimension_t<MAP, K>;
+	constexpr uint32 I = detail::dimension_of_cell<MAP, CI, K>();
+	constexpr uint32 D = MAP::dimension;
+	static_assert(!std::is_same_v<CI, CK>, "adjacency through the cells themselves");
+	static_assert(I <= D, "c is not a cell of one of the map's dimensions");
+	const auto report = [&](CI x) { return is_boundary_cell(m, x) || call_and_continue(f, x); };
+	if constexpr (D >= 2 && I == D && K + 1 == D)
+	{
+		// a facet has two sides, relation D apart
+		foreach_incident_cell<K>(
+			m, c, [&](CK k) { return report(CI(detail::relation(m, D, k.dart))); }, each_incidence);
+	}
+	else if constexpr (D >= 2 && I == 0 && K == 1)
+	{
+		// an edge has two ends: beta0 (a G-map) or phi2 (a combinatorial
+		// map) leaves the other one
+		foreach_incident_cell<K>(
+			m, c,
+			[&](CK k) {
+				if constexpr (is_gmap_v<MAP>)
+					return report(CI(Dart(k.dart.index ^ 1u)));
+				else
+					return report(CI(detail::relation(m, 2, k.dart)));
+			},
+			each_incidence);
+	}
+	else
+	{
+		foreach_incident_cell<K>(
+			m, c,
+			[&](CK k) {
+				// k's incidences with cells of c's type but the one of c's dart
+				if constexpr (detail::Incidences<MAP, K, I>::single_darts)
+					return foreach_dart_of_orbit(m, k, [&](Dart x) { return x == k.dart || report(CI(x)); });
+				else
+					return detail::foreach_incidence_dart<K, I>(m, k.dart,
+																[&](Dart x) { return x == k.dart || report(CI(x)); });
+			},
+			each_incidence);
 	}
 }
 
