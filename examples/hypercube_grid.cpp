@@ -37,6 +37,11 @@ int main(int argc, char** argv)
 	foreach_incident_cell<1>(m, center, [&](Edge) { ++edges; });
 	foreach_incident_cell<4>(m, center, [&](Hypercube) { ++hypercubes; });
 	std::cout << "an inner vertex has " << edges << " edges and " << hypercubes << " hypercubes around it\n";
+	// once per incidence (a corner of each hypercube): the same count on a
+	// grid, where a hypercube meets a vertex once, and no set of the cells met
+	uint32 corners = 0;
+	foreach_incident_cell<4>(m, center, [&](Hypercube) { ++corners; }, each_incidence);
+	std::cout << "and " << corners << " hypercube corners\n";
 
 	// the neighbours of each hypercube through its cubes (3-cells)
 	uint32 most = 0;
