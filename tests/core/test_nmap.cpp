@@ -7,22 +7,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <nmap_test_support.h>
 #include <set>
 #include <utility>
 #include <vector>
 
 using namespace cgogn;
+using cgogn::test::binomial;
 
 namespace
 {
-
-uint64 binomial(uint32 n, uint32 k)
-{
-	uint64 r = 1;
-	for (uint32 i = 1; i <= k; ++i)
-		r = r * (n - k + i) / i;
-	return r;
-}
 
 uint64 power(uint64 b, uint32 e)
 {

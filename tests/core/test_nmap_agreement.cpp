@@ -11,36 +11,16 @@
 #include <algorithm>
 #include <cgogn_test_data.h>
 #include <map>
+#include <nmap_test_support.h>
 #include <string>
 #include <vector>
 
 using namespace cgogn;
+using cgogn::test::key_of;
+using cgogn::test::relation;
 
 namespace
 {
-
-// A cell by the smallest index of its darts: the same in two maps whose
-// darts have the same indices.
-template <typename MAP, typename CELL>
-uint32 key_of(const MAP& m, CELL c)
-{
-	uint32 k = INVALID_INDEX;
-	foreach_dart_of_orbit(m, c, [&](Dart d) { k = std::min(k, d.index); });
-	return k;
-}
-
-// The cells of type CELL, each with the sorted keys of what `around` reports for it.
-template <typename CELL, typename MAP, typename AROUND>
-std::map<uint32, std::vector<uint32>> relation(const MAP& m, const AROUND& around)
-{
-	std::map<uint32, std::vector<uint32>> r;
-	foreach_cell(m, [&](CELL c) {
-		std::vector<uint32>& row = r[key_of(m, c)];
-		around(c, [&](auto x) { row.push_back(key_of(m, x)); });
-		std::sort(row.begin(), row.end());
-	});
-	return r;
-}
 
 // Incidence I -> J and adjacency of I-cells through K-cells, by the generic
 // functions, on any map, each cell once or (given each_incidence) once per

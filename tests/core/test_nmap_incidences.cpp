@@ -11,23 +11,19 @@
 
 #include <algorithm>
 #include <map>
+#include <nmap_test_support.h>
 #include <numeric>
 #include <set>
 #include <string>
 #include <vector>
 
 using namespace cgogn;
+using cgogn::test::binomial;
+using cgogn::test::key_of;
+using cgogn::test::relation;
 
 namespace
 {
-
-uint64 binomial(uint32 n, uint32 k)
-{
-	uint64 r = 1;
-	for (uint32 i = 1; i <= k; ++i)
-		r = r * (n - k + i) / i;
-	return r;
-}
 
 template <typename MAP>
 std::string name_of()
@@ -35,32 +31,10 @@ std::string name_of()
 	return std::string(is_gmap_v<MAP> ? "GMapN<" : "CMapN<") + std::to_string(MAP::dimension) + ">";
 }
 
-// A cell by the smallest index of its darts.
-template <typename MAP, typename CELL>
-uint32 key_of(const MAP& m, CELL c)
-{
-	uint32 k = INVALID_INDEX;
-	foreach_dart_of_orbit(m, c, [&](Dart d) { k = std::min(k, d.index); });
-	return k;
-}
-
-// For each I-cell, the sorted keys of what `around` reports for it.
-template <uint32 I, typename MAP, typename AROUND>
-std::map<uint32, std::vector<uint32>> relation(const MAP& m, const AROUND& around)
-{
-	std::map<uint32, std::vector<uint32>> r;
-	foreach_cell(m, [&](CellD<I> c) {
-		std::vector<uint32>& row = r[key_of(m, c)];
-		around(c, [&](auto x) { row.push_back(key_of(m, x)); });
-		std::sort(row.begin(), row.end());
-	});
-	return r;
-}
-
 template <uint32 I, uint32 J, typename MAP, typename... EACH>
 std::map<uint32, std::vector<uint32>> incidence(const MAP& m, EACH... each)
 {
-	return relation<I>(m, [&](auto c, const auto& put) {
+	return relation<CellD<I>>(m, [&](auto c, const auto& put) {
 		foreach_incident_cell<J>(
 			m, c, [&](CellD<J> x) { put(x); }, each...);
 	});
@@ -69,7 +43,7 @@ std::map<uint32, std::vector<uint32>> incidence(const MAP& m, EACH... each)
 template <uint32 I, uint32 K, typename MAP, typename... EACH>
 std::map<uint32, std::vector<uint32>> adjacency(const MAP& m, EACH... each)
 {
-	return relation<I>(m, [&](auto c, const auto& put) {
+	return relation<CellD<I>>(m, [&](auto c, const auto& put) {
 		foreach_adjacent_cell<K>(
 			m, c, [&](CellD<I> x) { put(x); }, each...);
 	});

@@ -8,11 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <nmap_test_support.h>
 #include <random>
 #include <string>
 #include <vector>
 
 using namespace cgogn;
+using cgogn::test::binomial;
 
 namespace
 {
@@ -231,14 +233,6 @@ Dart across(const MAP& m, Dart d)
 		return beta<MAP::dimension>(m, d);
 	else
 		return phi<MAP::dimension>(m, d);
-}
-
-uint64 binomial(uint32 n, uint32 k)
-{
-	uint64 r = 1;
-	for (uint32 i = 1; i <= k; ++i)
-		r = r * (n - k + i) / i;
-	return r;
 }
 
 // Unsewing every inner facet of the grid 2^D leaves 2^D separate cubes;
