@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "mesh_info.h"
+#include "nmap_files.h"
 
 #include <nlohmann/json.hpp>
 
@@ -21,13 +22,19 @@ int run_info(const std::string& path, bool as_json)
 {
 	Progress progress;
 	json j;
-	with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
-		progress.stage("measuring");
-		if constexpr (std::decay_t<decltype(m)>::dimension == 3)
-			j = tool::volume_info(m, r);
-		else
-			j = tool::surface_info(m, r);
-	});
+	if (is_nmap_file(path))
+		with_loaded_nmap(path, progress, [&](const auto& m) {
+			progress.stage("measuring");
+			j = tool::nmap_info(m);
+		});
+	else
+		with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
+			progress.stage("measuring");
+			if constexpr (std::decay_t<decltype(m)>::dimension == 3)
+				j = tool::volume_info(m, r);
+			else
+				j = tool::surface_info(m, r);
+		});
 	j["file"] = path;
 	progress.stage("done");
 	if (as_json)
@@ -42,11 +49,17 @@ int run_check(const std::string& path, bool as_json)
 	Progress progress;
 	IntegrityReport report;
 	io::LoadReport load;
-	with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
-		progress.stage("checking");
-		report = check_integrity(m);
-		load = r;
-	});
+	if (is_nmap_file(path))
+		with_loaded_nmap(path, progress, [&](const auto& m) {
+			progress.stage("checking");
+			report = check_integrity(m);
+		});
+	else
+		with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
+			progress.stage("checking");
+			report = check_integrity(m);
+			load = r;
+		});
 	progress.stage("done");
 	if (as_json)
 	{
@@ -73,9 +86,50 @@ int run_check(const std::string& path, bool as_json)
 	return report.ok() ? 0 : EXIT_BROKEN;
 }
 
-int run_convert(const std::string& in, const std::string& out, bool binary, bool attributes)
+// A map of any dimension to a .nmap file, or its cells of dimension
+// min(D, 3) (of its boundary with `boundary`) to a .vtu file.
+template <typename MAP>
+void save_nmap_as(const MAP& m, const std::string& out, bool boundary)
+{
+	constexpr uint32 D = MAP::dimension;
+	if (is_nmap_file(out))
+	{
+		if (boundary)
+			throw io::Error(out, "--boundary writes the boundary's cells to a .vtu file");
+		io::save_nmap(m, out);
+		return;
+	}
+	if (io::format_from_extension(out) != io::Format::Vtu)
+		throw io::Error(out, "a map of any dimension is written to a .nmap or a .vtu file");
+	if (!boundary)
+		io::save_vtu(m, out, {std::min(D, 3u)});
+	else if constexpr (D >= 2)
+		io::save_vtu(extract_boundary(m), out, {std::min(D - 1, 3u)});
+	else
+		throw io::Error(out, "a map of dimension 1 has no boundary cells to write");
+}
+
+int run_convert(const std::string& in, const std::string& out, bool binary, bool attributes, bool boundary)
 {
 	Progress progress;
+	if (is_nmap_file(in))
+	{
+		with_loaded_nmap(in, progress, [&](const auto& m) {
+			progress.stage("writing " + out);
+			save_nmap_as(m, out, boundary);
+		});
+		return 0;
+	}
+	if (boundary)
+		throw io::Error(in, "--boundary applies to the maps of any dimension (.nmap files)");
+	if (is_nmap_file(out))
+	{
+		with_loaded_whole(in, progress, [&](const auto& m, const io::LoadReport&) {
+			progress.stage("writing " + out);
+			io::save_nmap(mesh_as_nmap(m), out);
+		});
+		return 0;
+	}
 	const bool volume_out = is_volume_format(format_of(out));
 	io::SaveOptions options;
 	options.binary = binary;
@@ -105,7 +159,7 @@ Command add_info_command(CLI::App& app)
 	auto* sub = app.add_subcommand("info", "Counts, topology, geometry summary of a mesh file");
 	auto file = std::make_shared<std::string>();
 	auto as_json = std::make_shared<bool>(false);
-	sub->add_option("FILE", *file, "mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele)")->required();
+	sub->add_option("FILE", *file, "mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap)")->required();
 	sub->add_flag("--json", *as_json, "print one JSON object");
 	return {sub, [=] { return run_info(*file, *as_json); }};
 }
@@ -125,11 +179,13 @@ Command add_convert_command(CLI::App& app)
 	auto* sub = app.add_subcommand("convert", "Convert a mesh file to another format (by extension)");
 	auto files = std::make_shared<EditFiles>();
 	auto no_attributes = std::make_shared<bool>(false);
-	sub->add_option("IN", files->in, "input mesh file")->required();
-	sub->add_option("OUT", files->out, "output mesh file")->required();
+	auto boundary = std::make_shared<bool>(false);
+	sub->add_option("IN", files->in, "input mesh file (or .nmap: a map of any dimension)")->required();
+	sub->add_option("OUT", files->out, "output mesh file (or .nmap)")->required();
 	sub->add_flag("--binary", files->binary, "write binary where the format allows it (PLY, STL, VTK, VTU, msh)");
 	sub->add_flag("--no-attributes", *no_attributes, "write positions and connectivity only");
-	return {sub, [=] { return run_convert(files->in, files->out, files->binary, !*no_attributes); }};
+	sub->add_flag("--boundary", *boundary, "a .nmap to .vtu: write the cells of the map's boundary");
+	return {sub, [=] { return run_convert(files->in, files->out, files->binary, !*no_attributes, *boundary); }};
 }
 
 } // namespace cgogn::tool

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tool_common.h"
 
+#include <cctype>
 #include <cstdio>
 #include <unistd.h>
 
@@ -44,12 +45,22 @@ bool is_volume_format(io::Format f)
 		   f == io::Format::TetGen;
 }
 
+bool is_nmap_file(const std::string& path)
+{
+	if (path.size() < 5)
+		return false;
+	std::string ext = path.substr(path.size() - 5);
+	for (char& c : ext)
+		c = char(std::tolower(static_cast<unsigned char>(c)));
+	return ext == ".nmap";
+}
+
 io::Format format_of(const std::string& path)
 {
 	const io::Format f = io::format_from_extension(path);
 	if (f == io::Format::Auto)
 		throw io::Error(path, "unknown file extension (surfaces: .off .obj .ply .stl; volumes: .mesh .vtk .vtu "
-							  ".msh .node/.ele)");
+							  ".msh .node/.ele; maps of any dimension: .nmap)");
 	return f;
 }
 

@@ -49,6 +49,10 @@ private:
 
 bool is_volume_format(io::Format f);
 
+/// Whether path names a .nmap file, a map of any dimension (by its
+/// extension, any case).
+bool is_nmap_file(const std::string& path);
+
 /// The format of path by its extension; throws io::Error when unknown.
 io::Format format_of(const std::string& path);
 

@@ -315,6 +315,36 @@ void index_dimension(MAP& m, uint32 k, std::index_sequence<K...>)
 	((k == K && !is_indexed<CellD<uint32(K)>>(m) ? index_cells<CellD<uint32(K)>>(m) : void()), ...);
 }
 
+// The header lines: the version, the model and the dimension, with the
+// numbers of the lines of the last two (for the errors of a load).
+struct HeaderLines
+{
+	NMapHeader header;
+	uint64 model_line = 0;
+	uint64 dimension_line = 0;
+};
+
+HeaderLines read_header(Lines& lines)
+{
+	{
+		const auto t = lines.next("the header");
+		if (t.size() != 2 || t[0] != "cgogn_nmap" || t[1] != "1")
+			lines.fail("not a .nmap file of version 1 (the first line must be 'cgogn_nmap 1')");
+	}
+	HeaderLines h;
+	const std::string_view model = lines.keyword("model");
+	h.model_line = lines.line();
+	if (model != "cmap" && model != "gmap")
+		lines.fail("unknown model '" + std::string(model) + "' (cmap or gmap)");
+	h.header.gmap = model == "gmap";
+	h.header.dimension = lines.number<uint32>(lines.keyword("dimension"), "the dimension");
+	h.dimension_line = lines.line();
+	if (h.header.dimension < 1 || h.header.dimension > MAX_DIMENSION)
+		lines.fail("the dimension " + std::to_string(h.header.dimension) + " is out of 1 ... " +
+				   std::to_string(MAX_DIMENSION));
+	return h;
+}
+
 } // namespace
 
 template <typename MAP>
@@ -343,6 +373,13 @@ requires is_nmap_v<MAP> std::vector<std::string> save_nmap(const MAP& m, const s
 	return skipped;
 }
 
+NMapHeader read_nmap_header(const std::string& path)
+{
+	const std::string text = detail::read_file(path);
+	Lines lines(path, text);
+	return read_header(lines).header;
+}
+
 template <typename MAP>
 requires is_nmap_v<MAP>
 void load_nmap(MAP& m, const std::string& path)
@@ -352,18 +389,13 @@ void load_nmap(MAP& m, const std::string& path)
 		throw Error(path, "load_nmap: the map is not empty");
 	const std::string text = detail::read_file(path);
 	Lines lines(path, text);
-	{
-		const auto t = lines.next("the header");
-		if (t.size() != 2 || t[0] != "cgogn_nmap" || t[1] != "1")
-			lines.fail("not a .nmap file of version 1 (the first line must be 'cgogn_nmap 1')");
-	}
-	const std::string_view model = lines.keyword("model");
-	if (model != (is_gmap_v<MAP> ? "gmap" : "cmap"))
-		lines.fail("the file holds a " + std::string(model) + ", the map is a " + (is_gmap_v<MAP> ? "gmap" : "cmap"));
-	const uint32 dim = lines.number<uint32>(lines.keyword("dimension"), "the dimension");
-	if (dim != D)
-		lines.fail("the file holds a map of dimension " + std::to_string(dim) + ", the map has dimension " +
-				   std::to_string(D));
+	const HeaderLines h = read_header(lines);
+	if (h.header.gmap != is_gmap_v<MAP>)
+		lines.fail_at(h.model_line, std::string("the file holds a ") + (h.header.gmap ? "gmap" : "cmap") +
+										", the map is a " + (is_gmap_v<MAP> ? "gmap" : "cmap"));
+	if (h.header.dimension != D)
+		lines.fail_at(h.dimension_line, "the file holds a map of dimension " + std::to_string(h.header.dimension) +
+											", the map has dimension " + std::to_string(D));
 	const uint32 n = lines.number<uint32>(lines.keyword("darts"), "the number of darts");
 	if (is_gmap_v<MAP> && n % 2 != 0)
 		lines.fail("a G-map has an even number of darts (beta0 pairs darts 2k and 2k + 1)");

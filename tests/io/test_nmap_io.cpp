@@ -111,6 +111,36 @@ TEST(NMapFiles, MalformedFilesNameTheLineAndTheProblem)
 			  std::string::npos);
 }
 
+TEST(NMapFiles, TheHeaderNamesTheMapType)
+{
+	TempDir dir;
+	GMapN<5> g;
+	generate_simplex(g);
+	io::save_nmap(g, dir.file("s.nmap"));
+	const io::NMapHeader h = io::read_nmap_header(dir.file("s.nmap"));
+	EXPECT_TRUE(h.gmap);
+	EXPECT_EQ(h.dimension, 5u);
+	const auto header_error = [&](const std::string& text) {
+		io_test::write_text(dir.file("bad.nmap"), text);
+		try
+		{
+			io::read_nmap_header(dir.file("bad.nmap"));
+		}
+		catch (const io::Error& e)
+		{
+			return std::string(e.what());
+		}
+		return std::string();
+	};
+	EXPECT_EQ(header_error("# a comment\ncgogn_nmap 1\nmodel cmap\ndimension 7\n"), "");
+	EXPECT_NE(header_error("cgogn_nmap 2\n").find("bad.nmap:1: not a .nmap file of version 1"), std::string::npos);
+	EXPECT_NE(header_error("cgogn_nmap 1\nmodel map\n").find("bad.nmap:2: unknown model 'map'"), std::string::npos);
+	EXPECT_NE(header_error("cgogn_nmap 1\nmodel gmap\ndimension 0\n").find(":3: the dimension 0 is out of"),
+			  std::string::npos);
+	EXPECT_NE(header_error("cgogn_nmap 1\nmodel gmap\n").find(":2: the file ends where dimension is expected"),
+			  std::string::npos);
+}
+
 TEST(NMapFiles, TheExampleOfTheFormatsPageLoads)
 {
 	TempDir dir;

@@ -216,3 +216,62 @@ TEST(Tool, InfoOnEveryMalformedFileExitsTwoWithAMessage)
 	}
 	EXPECT_GE(files, 50u);
 }
+
+TEST(Tool, MapsOfAnyDimensionAreInspectedCheckedAndConverted)
+{
+	TempDir dir;
+	CMapN<4> grid;
+	generate_cube_grid(grid, 2);
+	io::save_nmap(grid, dir.file("grid.nmap"));
+	ToolRun r = run_tool("info --json '" + dir.file("grid.nmap") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "CMapN<4>");
+	EXPECT_EQ(j["dimension"], 4);
+	EXPECT_EQ(j["f_vector"], (std::vector<uint32>{81, 216, 216, 96, 16}));
+	EXPECT_EQ(j["euler_characteristic"], 1);
+	EXPECT_EQ(j["boundary"], true);
+	EXPECT_EQ(j["boundary_f_vector"], (std::vector<uint32>{80, 208, 192, 64})); // a 3-sphere of 64 cubes
+	r = run_tool("check '" + dir.file("grid.nmap") + "'", dir);
+	EXPECT_EQ(r.status, 0) << r.err;
+	// the boundary's cubes as polyhedra, the map itself copied
+	r = run_tool("convert '" + dir.file("grid.nmap") + "' '" + dir.file("b.vtu") + "' --boundary", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(read_text(dir.file("b.vtu")).find("NumberOfCells=\"64\""), std::string::npos);
+	r = run_tool("convert '" + dir.file("grid.nmap") + "' '" + dir.file("copy.nmap") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	CMapN<4> copy;
+	io::load_nmap(copy, dir.file("copy.nmap"));
+	EXPECT_EQ(f_vector(copy), f_vector(grid));
+	// a G-map that cannot be oriented: the Klein bottle, from a surface file
+	r = run_tool("convert '" + std::string(CGOGN_DATA_DIR) + "/surface/klein_bottle.off' '" + dir.file("k.nmap") + "'",
+				 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("info --json '" + dir.file("k.nmap") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "GMapN<2>");
+	EXPECT_EQ(j["orientable"], false);
+	EXPECT_EQ(j["euler_characteristic"], 0);
+	GMapN<2> klein;
+	io::load_nmap(klein, dir.file("k.nmap"));
+	EXPECT_TRUE((get_attribute<PointD<3>, CellD<0>>(klein, "position"))) << "the positions are carried";
+	// a surface to a .nmap and on to a .vtu of its faces
+	r = run_tool("convert '" + example_mesh() + "' '" + dir.file("spot.nmap") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("convert '" + dir.file("spot.nmap") + "' '" + dir.file("spot.vtu") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(read_text(dir.file("spot.vtu")).find("NumberOfCells=\"180\""), std::string::npos);
+	// errors: a bad header, a format the maps of any dimension are not written in
+	write_text(dir.file("bad.nmap"), "cgogn_nmap 1\nmodel xmap\ndimension 2\n");
+	r = run_tool("info '" + dir.file("bad.nmap") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("bad.nmap:2: unknown model 'xmap'"), std::string::npos) << r.err;
+	write_text(dir.file("deep.nmap"), "cgogn_nmap 1\nmodel cmap\ndimension 9\n");
+	r = run_tool("check '" + dir.file("deep.nmap") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("deep.nmap:3: the dimension 9 is out of 1 ... 7"), std::string::npos) << r.err;
+	r = run_tool("convert '" + dir.file("grid.nmap") + "' '" + dir.file("g.off") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find(".nmap or a .vtu"), std::string::npos) << r.err;
+}

@@ -23,6 +23,20 @@ namespace cgogn::io
 // (cell dimension, name, value type) and one line per cell: a dart of the
 // cell and the value. Lines starting with # are comments.
 
+/// What the header of a .nmap file says: the model and the dimension of its map.
+struct NMapHeader
+{
+	bool gmap = false;  ///< a GMapN (model gmap), else a CMapN (model cmap)
+	uint32 dimension{}; ///< D, 1 ... MAX_DIMENSION
+};
+
+/// Reads the header of a .nmap file: the map type a program needs to load
+/// it (GMapN<D> or CMapN<D>). Throws io::Error naming the file and the line
+/// for a file that is not a .nmap file of version 1, an unknown model or a
+/// dimension out of 1 ... MAX_DIMENSION. O(size of the file): it is read
+/// whole.
+NMapHeader read_nmap_header(const std::string& path);
+
 /// Writes m to path in the .nmap format: its darts, relations and boundary,
 /// and the attributes of its cells (CellD<0> ... CellD<D>) whose values are
 /// double, float, int32, uint32, int64, uint64 or std::array<double, K> (K
