@@ -40,7 +40,8 @@ int main(int argc, char** argv)
 	// once per incidence (a corner of each hypercube): the same count on a
 	// grid, where a hypercube meets a vertex once, and no set of the cells met
 	uint32 corners = 0;
-	foreach_incident_cell<4>(m, center, [&](Hypercube) { ++corners; }, each_incidence);
+	foreach_incident_cell<4>(
+		m, center, [&](Hypercube) { ++corners; }, each_incidence);
 	std::cout << "and " << corners << " hypercube corners\n";
 
 	// the neighbours of each hypercube through its cubes (3-cells)
