@@ -27,6 +27,32 @@ namespace cgogn
 // (or an edge is a loop), each_incidence reports it twice, as the tuned
 // circulators of the surfaces do, and costs no deduplication.
 
+namespace detail
+{
+
+/// The two shortcuts of foreach_adjacent_cell, in both its forms.
+/// A dart of the vertex at the other end of d's edge, in a map of dimension
+/// 2 or more: beta0 in a G-map, phi2 in a combinatorial map (d leaves its
+/// vertex, phi2(d) the other end; the walk around a vertex has just read it,
+/// where phi1(d) would be one more load). O(1).
+template <typename MAP>
+CGOGN_INLINE Dart far_end_of_edge(const MAP& m, Dart d)
+{
+	if constexpr (is_gmap_v<MAP>)
+		return beta0(m, d);
+	else
+		return phi2(m, d);
+}
+/// The dart facing d across its facet, in the D-cell on the other side:
+/// relation D (a facet has two sides). O(1).
+template <typename MAP>
+CGOGN_INLINE Dart across_facet(const MAP& m, Dart d)
+{
+	return relation(m, MAP::dimension, d);
+}
+
+} // namespace detail
+
 /// Selects the traversals that report a cell once per incidence.
 struct EachIncidence
 {
@@ -77,22 +103,11 @@ void foreach_adjacent_cell(const MAP& m, Cell<O> c, const FUNC& f)
 	const auto report = [&](CI x) { return is_boundary_cell(m, x) || !met.insert(x) || call_and_continue(f, x); };
 	if constexpr (is_nmap_v<MAP> && MAP::dimension >= 2 && std::is_same_v<CI, CellD<MAP::dimension>> &&
 				  K + 1 == MAP::dimension)
-	{
-		// a facet has two sides, relation D apart: the D-cells beyond the
-		// facets of c are those of relation D of c's darts
-		foreach_dart_of_orbit(m, c, [&](Dart d) { return report(CI(detail::relation(m, MAP::dimension, d))); });
-	}
+		// the D-cells beyond the facets of c are across c's darts
+		foreach_dart_of_orbit(m, c, [&](Dart d) { return report(CI(detail::across_facet(m, d))); });
 	else if constexpr (is_nmap_v<MAP> && MAP::dimension >= 2 && std::is_same_v<CI, CellD<0>> && K == 1)
-	{
-		// every edge at c has a dart of c, whose other end is beta0 (a G-map)
-		// or the start of phi1 (a combinatorial map: c's darts leave it)
-		foreach_dart_of_orbit(m, c, [&](Dart d) {
-			if constexpr (is_gmap_v<MAP>)
-				return report(CI(beta0(m, d)));
-			else
-				return report(CI(phi1(m, d)));
-		});
-	}
+		// every edge at c has a dart of c
+		foreach_dart_of_orbit(m, c, [&](Dart d) { return report(CI(detail::far_end_of_edge(m, d))); });
 	else
 	{
 		bool go_on = true;
@@ -124,7 +139,8 @@ void foreach_incident_cell(const MAP& m, Cell<O> c, const FUNC& f, EachIncidence
 	using Incidences = detail::Incidences<MAP, I, J>;
 	if constexpr (Incidences::single_darts)
 	{
-		if (!has_boundary(m)) // a closed map: no bit to read per dart
+		// only the D-cells can be boundary cells, and only in a map with a boundary
+		if (J < MAP::dimension || !has_boundary(m))
 			detail::report_with_lines<CJ>(
 				m, [&](const auto& report) { foreach_dart_of_orbit(m, c, report); }, f);
 		else
@@ -166,25 +182,11 @@ void foreach_adjacent_cell(const MAP& m, Cell<O> c, const FUNC& f, EachIncidence
 	static_assert(I <= D, "c is not a cell of one of the map's dimensions");
 	const auto report = [&](CI x) { return is_boundary_cell(m, x) || call_and_continue(f, x); };
 	if constexpr (D >= 2 && I == D && K + 1 == D)
-	{
-		// a facet has two sides, relation D apart
 		foreach_incident_cell<K>(
-			m, c, [&](CK k) { return report(CI(detail::relation(m, D, k.dart))); }, each_incidence);
-	}
+			m, c, [&](CK k) { return report(CI(detail::across_facet(m, k.dart))); }, each_incidence);
 	else if constexpr (D >= 2 && I == 0 && K == 1)
-	{
-		// an edge has two ends: beta0 (a G-map) or phi2 (a combinatorial
-		// map) leaves the other one
 		foreach_incident_cell<K>(
-			m, c,
-			[&](CK k) {
-				if constexpr (is_gmap_v<MAP>)
-					return report(CI(Dart(k.dart.index ^ 1u)));
-				else
-					return report(CI(detail::relation(m, 2, k.dart)));
-			},
-			each_incidence);
-	}
+			m, c, [&](CK k) { return report(CI(detail::far_end_of_edge(m, k.dart))); }, each_incidence);
 	else
 	{
 		foreach_incident_cell<K>(
