@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Installs what cgogn needs to build, test and benchmark on Debian 12 (as root),
-# and the viewer's npm packages (three.js and esbuild, pinned in
-# viewer/package-lock.json) into viewer/node_modules.
-# Does nothing when everything is there already.
+# Installs the Debian 12 packages that cgogn needs to build, test and
+# benchmark (as root). Does nothing when everything is there already.
+# Node and npm are not among them: the viewer's script is bundled in the
+# repository (viewer/dist); scripts/bundle-viewer.sh rebuilds it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(cmake ninja-build g++ clang libclang-rt-14-dev clang-format doxygen pkgconf python3
@@ -12,8 +12,6 @@ packages=(cmake ninja-build g++ clang libclang-rt-14-dev clang-format doxygen pk
           pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-meshio
           python3-venv python3-pip python3-setuptools python3-wheel python3-build
           chromium)
-# node and npm bundle the viewer's script; Debian's when there is none
-command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
@@ -26,9 +24,4 @@ if [ ${#missing[@]} -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
-# npm ci installs exactly the lock file's versions (integrity-checked)
-if [ ! -f viewer/node_modules/.package-lock.json ] ||
-   [ viewer/package-lock.json -nt viewer/node_modules/.package-lock.json ]; then
-  (cd viewer && npm ci --no-audit --no-fund)
 fi
