@@ -12,17 +12,72 @@ so ids may then have gaps until ``compact()`` renumbers them densely.
 Attribute arrays (``positions``, ``attribute(...)``) have one row per id
 (``id_bound(kind)`` rows); arrays that list cells (``faces()``,
 ``incidence()``, ``cell_ids()``) list the live cells in id order.
+
+The maps of any dimension D = 1 to 4 are :func:`CMapN` and :func:`GMapN`
+(instances of ``CMapN1`` ... ``GMapN4``, all :class:`NMap`), made by the
+generators (:func:`simplex`, :func:`cube`, :func:`cube_grid`,
+:func:`freudenthal_grid`), the builders (:func:`simplicial_complex`,
+:func:`cubical_complex`) or ``load`` of a ``.nmap`` file; their cells are
+named by dimension k = 0 ... D.
 """
 
-from ._cgogn import CMap2, CMap3, Error, GMap2, GMap3, IOError, RenderError, load, nb_workers, set_nb_workers
+from ._cgogn import (
+    CMap2,
+    CMap3,
+    CMapN1,
+    CMapN2,
+    CMapN3,
+    CMapN4,
+    Error,
+    GMap2,
+    GMap3,
+    GMapN1,
+    GMapN2,
+    GMapN3,
+    GMapN4,
+    IOError,
+    NMap,
+    RenderError,
+    load,
+    nb_workers,
+    set_nb_workers,
+)
 from ._arrays import laplacian
 from ._interop import from_meshio, to_meshio, to_pyvista, to_trimesh
+from ._nmaps import (
+    CMapN,
+    GMapN,
+    cube,
+    cube_grid,
+    cubical_complex,
+    freudenthal_grid,
+    incidence as _nmap_incidence,
+    simplex,
+    simplicial_complex,
+)
 
 __all__ = [
     "CMap2",
     "CMap3",
     "GMap2",
     "GMap3",
+    "CMapN",
+    "GMapN",
+    "NMap",
+    "CMapN1",
+    "CMapN2",
+    "CMapN3",
+    "CMapN4",
+    "GMapN1",
+    "GMapN2",
+    "GMapN3",
+    "GMapN4",
+    "simplex",
+    "cube",
+    "cube_grid",
+    "freudenthal_grid",
+    "simplicial_complex",
+    "cubical_complex",
     "Error",
     "IOError",
     "RenderError",
@@ -43,3 +98,4 @@ def _laplacian_method(self, kind="cotan"):
 
 CMap2.laplacian = _laplacian_method
 CMap2.laplacian.__doc__ = laplacian.__doc__
+NMap.incidence = _nmap_incidence

@@ -4,6 +4,7 @@
 #include <cgogn/io.h>
 
 #include "py_map.h"
+#include "py_nmap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -798,6 +799,8 @@ void bind_maps(py::module_& mod)
 	mod.def(
 		"load",
 		[](const std::string& path, bool gmap) -> py::object {
+			if (has_nmap_extension(path))
+				return load_nmap_file(path, gmap);
 			const bool volumes = is_volume_format(io::format_from_extension(path));
 			if (gmap)
 				return volumes ? py::cast(load_into<GMap3>(path)) : py::cast(load_into<GMap2>(path));
@@ -806,7 +809,9 @@ void bind_maps(py::module_& mod)
 		py::arg("path"), py::arg("gmap") = false,
 		"Loads a mesh file: a CMap2 for the surface formats (off, obj, ply, stl), a CMap3 for the volume "
 		"formats (mesh, vtk, vtu, msh, node/ele); with gmap=True a GMap2 or a GMap3, which keep a mesh that "
-		"cannot be oriented whole. Raises cgogn.IOError naming the file, line and problem on bad input.");
+		"cannot be oriented whole. A .nmap file gives the map of any dimension it holds (CMapN1 ... CMapN4, "
+		"GMapN1 ... GMapN4; with gmap=True a GMapN also for a CMapN file). Raises cgogn.IOError naming the "
+		"file, line and problem on bad input.");
 }
 
 } // namespace cgogn::python

@@ -5,6 +5,7 @@
 #include <cgogn/render.h>
 
 #include "py_map.h"
+#include "py_nmap.h"
 
 PYBIND11_MODULE(_cgogn, m)
 {
@@ -35,4 +36,5 @@ PYBIND11_MODULE(_cgogn, m)
 	cgogn::python::bind_attributes(m);
 	cgogn::python::bind_operators(m);
 	cgogn::python::bind_algorithms(m);
+	cgogn::python::bind_nmaps(m);
 }
