@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target for one reader (chosen by CGOGN_FUZZ_FORMAT at compile
-// time): any input must either throw io::Error or give data that builds into
-// a map passing check_integrity (a surface into both a CMap2 and a GMap2, a
-// volume mesh into both a CMap3 and a GMap3).
+// The body of the libFuzzer targets of the readers, compiled once for all of
+// them (fuzz_target.cpp chooses the reader of each target): any input must
+// either throw io::Error or give data that builds into a map passing
+// check_integrity (a surface into both a CMap2 and a GMap2, a volume mesh into
+// both a CMap3 and a GMap3).
 // Crashes, leaks and sanitizer reports are bugs.
 //
-// With CGOGN_FUZZ_APPEND the first byte of the input chooses the reader and
-// the rest is the file, loaded into a map that already holds a mesh and
-// attributes whose names the formats use, with other types: a load that
-// throws must leave that map exactly as it was, and one that succeeds must
-// give a map passing check_integrity.
+// In append mode the first byte of the input chooses the reader and the rest
+// is the file, loaded into a map that already holds a mesh and attributes
+// whose names the formats use, with other types: a load that throws must
+// leave that map exactly as it was, and one that succeeds must give a map
+// passing check_integrity.
+#include "fuzz_reader.h"
+
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
@@ -152,18 +155,19 @@ void load_into_non_empty_map(const io::detail::MeshData& d, const SOUP& soup, co
 
 } // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+int cgogn_fuzz::run_one_input(int format, const std::uint8_t* data, std::size_t size)
 {
 	const std::string path = "fuzz-input";
 	std::string_view in(reinterpret_cast<const char*>(data), size);
-#ifdef CGOGN_FUZZ_APPEND
-	if (in.empty())
-		return 0;
-	const int kind = int(uint8_t(in[0])) % (TETGEN + 1);
-	in.remove_prefix(1);
-#else
-	const int kind = CGOGN_FUZZ_FORMAT;
-#endif
+	const bool append = format == append_mode;
+	int kind = format;
+	if (append)
+	{
+		if (in.empty())
+			return 0;
+		kind = int(uint8_t(in[0])) % (TETGEN + 1);
+		in.remove_prefix(1);
+	}
 	io::detail::MeshData d;
 	try
 	{
@@ -177,18 +181,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	const bool volume = kind >= MEDIT;
 	if (volume)
 		io::detail::orient_cells(d);
-#ifdef CGOGN_FUZZ_APPEND
-	if (volume)
+	if (append)
 	{
-		load_into_non_empty_map<CMap3>(d, tet_grid_soup(1, 1, 1), path);
-		load_into_non_empty_map<GMap3>(d, hex_grid_soup(1, 1, 1), path);
+		if (volume)
+		{
+			load_into_non_empty_map<CMap3>(d, tet_grid_soup(1, 1, 1), path);
+			load_into_non_empty_map<GMap3>(d, hex_grid_soup(1, 1, 1), path);
+		}
+		else
+		{
+			load_into_non_empty_map<CMap2>(d, grid_soup(2, 1, true), path);
+			load_into_non_empty_map<GMap2>(d, mobius_soup(3), path);
+		}
+		return 0;
 	}
-	else
-	{
-		load_into_non_empty_map<CMap2>(d, grid_soup(2, 1, true), path);
-		load_into_non_empty_map<GMap2>(d, mobius_soup(3), path);
-	}
-#else
 	try
 	{
 		if (volume)
@@ -220,6 +226,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	{
 		// e.g. too large for 32-bit indices
 	}
-#endif
 	return 0;
 }

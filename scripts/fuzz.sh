@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of the io readers with clang (ASan + UBSan) and
-# runs each for a bounded time: FUZZ_SECONDS in total (default 300), split
-# evenly over the targets (one per reader, and fuzz_append, which loads any
+# Builds the libFuzzer targets of the io readers with clang (ASan + UBSan, at
+# -O1 -gline-tables-only as OSS-Fuzz builds its targets) and runs each for a
+# bounded time: FUZZ_SECONDS in total (default 300), split evenly over the
+# targets (one per reader, and fuzz_append, which loads any
 # format into a map that already holds a mesh and attributes). Fails on any
 # crash, leak, timeout or sanitizer report.
 #
@@ -25,6 +26,7 @@ per=$(( total / ${#targets[@]} ))
 
 build=build/fuzz
 cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
   -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCGOGN_BUILD_FUZZERS=ON -DCGOGN_BUILD_TESTS=OFF -DCGOGN_BUILD_EXAMPLES=OFF -DCGOGN_BUILD_BENCHMARKS=OFF \

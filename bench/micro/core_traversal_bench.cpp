@@ -12,7 +12,7 @@
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Face = CMap2::Face;
-using Vec3 = std::array<double, 3>;
+using Point3 = std::array<double, 3>;
 
 namespace
 {
@@ -20,13 +20,13 @@ namespace
 struct Mesh
 {
 	CMap2 map;
-	std::shared_ptr<AttributeArray<Vec3>> position;
+	std::shared_ptr<AttributeArray<Point3>> position;
 	uint64 nb_incidences = 0; // vertex-face incidences = 3F
 	Mesh()
 	{
 		SurfaceSoup soup = torus_soup(1000, 500, true); // 1,000,000 triangles, closed
 		BuildReport r = build_surface(map, soup);
-		position = add_attribute<Vec3, Vertex>(map, "position");
+		position = add_attribute<Point3, Vertex>(map, "position");
 		for (uint32 i = 0; i < soup.nb_vertices; ++i)
 			(*position)[r.vertex_offset + i] = soup.positions[i];
 		nb_incidences = 3ull * soup.face_sizes.size();
@@ -89,7 +89,7 @@ void smoothing(benchmark::State& state, bool indexed)
 {
 	Mesh& me = mesh(indexed);
 	const CMap2& m = me.map;
-	AttributeArray<Vec3>& pos = *me.position;
+	AttributeArray<Point3>& pos = *me.position;
 	uint64 incidences = 0;
 	for (auto _ : state)
 	{
@@ -98,14 +98,14 @@ void smoothing(benchmark::State& state, bool indexed)
 		auto smooth = [&](Vertex v) {
 			if (is_incident_to_boundary(m, v))
 				return;
-			Vec3 sum = {0, 0, 0};
+			Point3 sum = {0, 0, 0};
 			uint32 n = 0;
 			foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
-				const Vec3& q = value<Vec3>(m, pos, w);
+				const Point3& q = value<Point3>(m, pos, w);
 				sum[0] += q[0], sum[1] += q[1], sum[2] += q[2];
 				++n;
 			});
-			Vec3& p = pos[v];
+			Point3& p = pos[v];
 			p = {sum[0] / n, sum[1] / n, sum[2] / n};
 			incidences += n;
 		};
@@ -127,7 +127,7 @@ void attribute_read(benchmark::State& state, bool by_cell)
 {
 	Mesh& me = mesh(true);
 	const CMap2& m = me.map;
-	const AttributeArray<Vec3>& pos = *me.position;
+	const AttributeArray<Point3>& pos = *me.position;
 	double s = 0.0;
 	uint64 reads = 0;
 	for (auto _ : state)
@@ -140,7 +140,7 @@ void attribute_read(benchmark::State& state, bool by_cell)
 			});
 		else
 			foreach_dart(m, [&](Dart d) {
-				s += value<Vec3>(m, pos, Vertex(d))[0];
+				s += value<Point3>(m, pos, Vertex(d))[0];
 				++reads;
 			});
 		benchmark::DoNotOptimize(s);

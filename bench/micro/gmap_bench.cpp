@@ -24,7 +24,7 @@
 #include <vector>
 
 using namespace cgogn;
-using Vec3 = std::array<double, 3>;
+using Point3 = std::array<double, 3>;
 
 const SurfaceSoup& cgogn::bench::gmap_soup()
 {
@@ -46,11 +46,11 @@ struct Mesh
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	using Face = typename mesh_traits<MAP>::Face;
 	MAP map;
-	std::shared_ptr<AttributeArray<Vec3>> position;
+	std::shared_ptr<AttributeArray<Point3>> position;
 	Mesh()
 	{
 		const BuildReport r = build_surface(map, soup());
-		position = add_attribute<Vec3, Vertex>(map, "position");
+		position = add_attribute<Point3, Vertex>(map, "position");
 		for (uint32 i = 0; i < soup().nb_vertices; ++i)
 			(*position)[r.vertex_offset + i] = soup().positions[i];
 		add_attribute<double, Face>(map, "face_data"); // faces indexed, as in the suite
@@ -93,16 +93,16 @@ void smoothing(benchmark::State& state)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	const MAP& m = mesh<MAP>().map;
-	AttributeArray<Vec3>& pos = *mesh<MAP>().position;
+	AttributeArray<Point3>& pos = *mesh<MAP>().position;
 	uint64 incidences = 0;
 	for (auto _ : state)
 	{
 		incidences = 0;
 		foreach_cell(m, [&](Vertex v) {
-			Vec3 sum = {0, 0, 0};
+			Point3 sum = {0, 0, 0};
 			uint32 n = 0;
 			foreach_adjacent_vertex_through_edge(m, v, [&](Vertex w) {
-				const Vec3& q = value<Vec3>(m, pos, w);
+				const Point3& q = value<Point3>(m, pos, w);
 				sum[0] += q[0], sum[1] += q[1], sum[2] += q[2];
 				++n;
 			});

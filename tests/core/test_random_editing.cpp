@@ -20,7 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <optional>
+#include <memory>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -562,7 +562,7 @@ public:
 	explicit TagWatches(MAP& m) : v_(m, "vtag"), e_(m, "etag"), f_(m, "ftag"), w_(m, "wtag")
 	{
 		if constexpr (MAP::dimension == 3)
-			sub_.emplace(m);
+			sub_ = std::make_unique<Sub3>(m);
 	}
 	void snapshot()
 	{
@@ -640,7 +640,8 @@ private:
 	TagWatch<E, MAP> e_;
 	TagWatch<F, MAP> f_;
 	TagWatch<W, MAP> w_;
-	std::optional<Sub3> sub_;
+	// on the heap: GCC 12 reports a std::optional of it as maybe-uninitialized
+	std::unique_ptr<Sub3> sub_;
 };
 
 // Applies `steps` random edits (`edit` returns the operator's name, or nullptr
