@@ -14,25 +14,6 @@ namespace
 // The value types Python can use, with their NumPy names.
 using Types = std::tuple<double, float, int32, int64, uint32, bool, Vec2, Vec3, Vec4>;
 
-template <typename T>
-std::string dtype_name()
-{
-	if constexpr (std::is_same_v<T, double>)
-		return "float64";
-	else if constexpr (std::is_same_v<T, float>)
-		return "float32";
-	else if constexpr (std::is_same_v<T, int32>)
-		return "int32";
-	else if constexpr (std::is_same_v<T, int64>)
-		return "int64";
-	else if constexpr (std::is_same_v<T, uint32>)
-		return "uint32";
-	else if constexpr (std::is_same_v<T, bool>)
-		return "bool";
-	else
-		return "float64";
-}
-
 // Calls f.template operator()<T>() for the value type of (dtype, components);
 // ValueError when there is none.
 template <typename F>

@@ -445,18 +445,6 @@ py::array_t<uint32> triangles(MAP& m)
 							   {py::ssize_t(3 * sizeof(uint32)), py::ssize_t(sizeof(uint32))}, heap->data(), owner);
 }
 
-py::dict integrity_report(const IntegrityReport& r)
-{
-	py::list messages;
-	for (const auto& e : r.errors)
-		messages.append(e.message);
-	py::dict d;
-	d["ok"] = r.ok();
-	d["nb_errors"] = r.nb_errors;
-	d["messages"] = messages;
-	return d;
-}
-
 template <typename MAP>
 void bind_common(py::class_<PyMap<MAP>>& c)
 {

@@ -118,23 +118,6 @@ using Types = std::tuple<double, float, int32, uint32, int64, uint64, std::array
 						 std::array<double, 3>, std::array<double, 4>, std::array<double, 5>, std::array<double, 6>,
 						 std::array<double, 7>, std::array<double, 8>>;
 
-template <typename T>
-const char* dtype_name()
-{
-	if constexpr (std::is_same_v<T, float>)
-		return "float32";
-	else if constexpr (std::is_same_v<T, int32>)
-		return "int32";
-	else if constexpr (std::is_same_v<T, uint32>)
-		return "uint32";
-	else if constexpr (std::is_same_v<T, int64>)
-		return "int64";
-	else if constexpr (std::is_same_v<T, uint64>)
-		return "uint64";
-	else
-		return "float64";
-}
-
 // The attributes Python creates have fewer value types than those it reads
 // (Types): each value type made on the cells of each dimension costs a
 // class (CellAttribute<T, O>) to compile.
@@ -279,18 +262,6 @@ std::vector<uint32> f_vector(const NMap& w)
 	for (uint32 k = 0; k <= w.dimension(); ++k)
 		f.push_back(w.nb_cells(k));
 	return f;
-}
-
-py::dict integrity_report(const IntegrityReport& r)
-{
-	py::list messages;
-	for (const auto& e : r.errors)
-		messages.append(e.message);
-	py::dict d;
-	d["ok"] = r.ok();
-	d["nb_errors"] = r.nb_errors;
-	d["messages"] = messages;
-	return d;
 }
 
 } // namespace

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // NumPy arrays over the library's attributes and vectors, for every binding:
 // the dtype and row shape of a value type, attribute values as (aliasing)
-// arrays, values written back, and vectors moved into arrays.
+// arrays, values written back, and vectors moved into arrays; and the dict
+// of an integrity report, which every map class returns.
 #pragma once
 
 #include <cgogn/core/attributes/attribute.h>
+#include <cgogn/core/properties/integrity.h>
 
 #include <algorithm>
 #include <array>
@@ -13,6 +15,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace py = pybind11;
@@ -118,6 +121,40 @@ py::array_t<T> to_numpy(std::vector<T>&& v)
 	auto* heap = new std::vector<T>(std::move(v));
 	py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
 	return py::array_t<T>({py::ssize_t(heap->size())}, {py::ssize_t(sizeof(T))}, heap->data(), owner);
+}
+
+/// The NumPy dtype name of the values of an attribute of type T (a vector
+/// type: its components' dtype, float64).
+template <typename T>
+const char* dtype_name()
+{
+	if constexpr (std::is_same_v<T, float>)
+		return "float32";
+	else if constexpr (std::is_same_v<T, int32>)
+		return "int32";
+	else if constexpr (std::is_same_v<T, uint32>)
+		return "uint32";
+	else if constexpr (std::is_same_v<T, int64>)
+		return "int64";
+	else if constexpr (std::is_same_v<T, uint64>)
+		return "uint64";
+	else if constexpr (std::is_same_v<T, bool>)
+		return "bool";
+	else
+		return "float64";
+}
+
+/// A check_integrity report as a dict: ok, nb_errors and the messages.
+inline py::dict integrity_report(const IntegrityReport& r)
+{
+	py::list messages;
+	for (const auto& e : r.errors)
+		messages.append(e.message);
+	py::dict d;
+	d["ok"] = r.ok();
+	d["nb_errors"] = r.nb_errors;
+	d["messages"] = messages;
+	return d;
 }
 
 } // namespace cgogn::python
