@@ -20,10 +20,11 @@ set(CGOGN_TEST_OPTIMIZATION "-O1" CACHE STRING
 set(_cgogn_pch_headers <cgogn/cgogn.h> <algorithm> <array> <cmath> <cstdint> <filesystem> <functional> <map>
                        <memory> <numeric> <random> <set> <string> <unordered_map> <utility> <vector>)
 
-# cgogn_optimize_as_test(target): the tests' optimization level in Release builds.
+# cgogn_optimize_as_test(target): the tests' optimization level in optimized
+# builds (Release, RelWithDebInfo, MinSizeRel; Debug keeps its own).
 function(cgogn_optimize_as_test target)
   if(CGOGN_TEST_OPTIMIZATION)
-    target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:${CGOGN_TEST_OPTIMIZATION}>)
+    target_compile_options(${target} PRIVATE $<$<NOT:$<CONFIG:Debug>>:${CGOGN_TEST_OPTIMIZATION}>)
   endif()
 endfunction()
 

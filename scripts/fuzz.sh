@@ -6,12 +6,16 @@
 # format into a map that already holds a mesh and attributes). Fails on any
 # crash, leak, timeout or sanitizer report.
 #
+# FUZZ_BUILD_DIR names the build folder: by default build/fuzz, configured
+# here. An existing clang sanitizer build with CGOGN_BUILD_FUZZERS=ON is used
+# as it is: the asan preset's (build/asan) saves compiling the library again.
+#
 # Each target starts from its corpus in fuzz/corpus/<target> (kept in the
 # repository, minimized: each run starts from the coverage reached before),
 # plus seeds made here: the malformed corpus of tests/io/bad, the shipped
 # example mesh and small valid files written by the cgogn tool. Each target
 # uses the dictionary fuzz/dict/<format>.dict (fuzz_append: all of them).
-# New inputs go to build/fuzz/corpus/<target>. With FUZZ_MERGE=1, each
+# New inputs go to <build folder>/corpus/<target>. With FUZZ_MERGE=1, each
 # committed corpus is then replaced by the minimized merge (libFuzzer
 # -merge=1) of itself and the new inputs, those under 4 KB.
 set -euo pipefail
@@ -24,13 +28,18 @@ targets+=(append)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
-build=build/fuzz
-cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-  -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCGOGN_BUILD_FUZZERS=ON -DCGOGN_BUILD_TESTS=OFF -DCGOGN_BUILD_EXAMPLES=OFF -DCGOGN_BUILD_BENCHMARKS=OFF \
-  -DCGOGN_BUILD_TOOLS=OFF -DCGOGN_WERROR=ON >/dev/null
+build=${FUZZ_BUILD_DIR:-build/fuzz}
+if [ -z "${FUZZ_BUILD_DIR:-}" ]; then
+  cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
+    -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DCGOGN_BUILD_FUZZERS=ON -DCGOGN_BUILD_TESTS=OFF -DCGOGN_BUILD_EXAMPLES=OFF -DCGOGN_BUILD_BENCHMARKS=OFF \
+    -DCGOGN_BUILD_TOOLS=OFF -DCGOGN_BUILD_PYTHON=OFF -DCGOGN_WERROR=ON >/dev/null
+elif ! grep -q '^CGOGN_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "fuzz.sh: $build is not configured with CGOGN_BUILD_FUZZERS=ON (clang)" >&2
+  exit 1
+fi
 build_targets=()
 for t in "${targets[@]}"; do build_targets+=("fuzz_$t"); done
 cmake --build "$build" -j 2 --target "${build_targets[@]}"
