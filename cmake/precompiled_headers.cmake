@@ -14,6 +14,12 @@
 # for the template-heavy test bodies) and call the library compiled at -O3.
 # The benchmarks and the tool keep the build type's flags.
 option(CGOGN_PRECOMPILED_HEADERS "Precompile <cgogn/cgogn.h> (and gtest) for the tests, examples, benchmarks and tool" ON)
+# The test files of one executable are compiled eight at a time, as one unit:
+# the traversals, operators and checks they share are instantiated and
+# optimized once per unit instead of once per file (four core test files:
+# 7.6 s as one unit, 12.7 s apart). Each test file keeps its names in a
+# namespace of its own (cgogn_<file name>) so that they do not collide.
+option(CGOGN_UNITY_BUILD_TESTS "Compile the test files of each test executable in batches (unity build)" ON)
 set(CGOGN_TEST_OPTIMIZATION "-O1" CACHE STRING
     "Optimization flag of the tests and examples in Release builds (empty: the build type's)")
 
@@ -37,6 +43,9 @@ function(cgogn_use_precompiled_headers target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "GTEST;TEST" "" "")
   if(arg_TEST)
     cgogn_optimize_as_test(${target})
+  endif()
+  if(arg_TEST AND arg_GTEST AND CGOGN_UNITY_BUILD_TESTS)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   endif()
   if(NOT CGOGN_PRECOMPILED_HEADERS)
     return()

@@ -8,6 +8,9 @@
 #include <type_traits>
 #include <utility>
 
+namespace cgogn_test_attribute_cells
+{
+
 using namespace cgogn;
 
 namespace
@@ -134,3 +137,5 @@ TEST(AttributeCells, ThreeMapCells)
 	foreach_cell(m, [&](CMap3::Vertex2 v) { threes += (*v2)[v]; });
 	EXPECT_EQ(threes, 3u * nb_cells<CMap3::Vertex2>(m));
 }
+
+} // namespace cgogn_test_attribute_cells

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_attributes
+{
+
 using namespace cgogn;
 
 namespace
@@ -111,3 +114,5 @@ TEST(Attributes, ValuesOfVerticesFollowSoupIds)
 	});
 	EXPECT_TRUE(checked);
 }
+
+} // namespace cgogn_test_attributes

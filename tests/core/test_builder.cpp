@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_builder
+{
+
 using namespace cgogn;
 
 namespace
@@ -284,3 +287,5 @@ TEST(Builder, LeavesNoIdleMarkAllocated)
 	held -= cgogn::detail::state_of(m).cells[orbit_index(Orbit::PHI21)]->free_lines().capacity() * sizeof(uint32);
 	EXPECT_EQ(held, expected);
 }
+
+} // namespace cgogn_test_builder

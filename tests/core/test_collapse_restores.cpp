@@ -13,6 +13,9 @@
 #include <filesystem>
 #include <random>
 
+namespace cgogn_test_collapse_restores
+{
+
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
@@ -255,3 +258,5 @@ TEST(CollapseRestores, ATriangleSharingTwoEdgesWithTheOtherFace)
 		EXPECT_INTEGRITY(m);
 	}
 }
+
+} // namespace cgogn_test_collapse_restores

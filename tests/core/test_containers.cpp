@@ -12,6 +12,9 @@
 #include <utility>
 #include <vector>
 
+namespace cgogn_test_containers
+{
+
 using namespace cgogn;
 
 // The container tests that walk many lines run with the attributes' values in
@@ -282,3 +285,5 @@ TEST(AttributeContainer, MarkReservationIsThreadSafe)
 		th.join();
 	EXPECT_EQ(clashes.load(), 0);
 }
+
+} // namespace cgogn_test_containers

@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_dimension_guards
+{
+
 using namespace cgogn;
 
 namespace
@@ -107,3 +110,5 @@ TEST(DimensionGuards, ThreeMapOperatorsStillApply)
 	EXPECT_EQ(nb_cells<CMap3::Vertex>(m), nv + 1);
 	EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
 }
+
+} // namespace cgogn_test_dimension_guards

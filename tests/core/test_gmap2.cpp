@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <map>
 
+namespace cgogn_test_gmap2
+{
+
 using namespace cgogn;
 
 namespace
@@ -469,3 +472,5 @@ TEST(GMap2, LocalTraversalsGiveTheCMap2sNeighbours)
 	foreach_incident_face(g, GMap2::Volume(Dart(0)), [&](GMap2::Face) { ++n; });
 	EXPECT_EQ(n, 8u);
 }
+
+} // namespace cgogn_test_gmap2

@@ -10,6 +10,9 @@
 #include <random>
 #include <set>
 
+namespace cgogn_test_gmap2_editing
+{
+
 using namespace cgogn;
 
 namespace
@@ -480,3 +483,5 @@ TEST(GMap2Editing, CompactAndReorderKeepCellsAndValues)
 		EXPECT_LE((*id)[l - 1], (*id)[l]);
 	EXPECT_FALSE(is_orientable(m));
 }
+
+} // namespace cgogn_test_gmap2_editing

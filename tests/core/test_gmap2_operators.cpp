@@ -7,6 +7,9 @@
 
 #include <random>
 
+namespace cgogn_test_gmap2_operators
+{
+
 using namespace cgogn;
 
 namespace
@@ -155,3 +158,5 @@ TEST(GMap2Operators, RandomSequencesKeepTheMapValid)
 			EXPECT_GT(done[op], 100u) << "operator " << op;
 	}
 }
+
+} // namespace cgogn_test_gmap2_operators

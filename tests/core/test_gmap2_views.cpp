@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <vector>
 
+namespace cgogn_test_gmap2_views
+{
+
 using namespace cgogn;
 
 namespace
@@ -123,3 +126,5 @@ TEST(GMap2Views, FilterAndCacheTraverseTheCMap2sCells)
 	});
 	EXPECT_EQ(n, 4u * 20u); // 20 quads: 80 edge-face incidences
 }
+
+} // namespace cgogn_test_gmap2_views

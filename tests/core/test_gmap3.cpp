@@ -11,6 +11,9 @@
 #include <atomic>
 #include <vector>
 
+namespace cgogn_test_gmap3
+{
+
 using namespace cgogn;
 
 namespace
@@ -165,3 +168,5 @@ TEST(GMap3, IntegrityFindsBrokenRelations)
 	beta_unsew<3>(h, Dart(0));
 	EXPECT_TRUE(check_integrity(h).has(IntegrityError::Kind::PhiFixedPoint));
 }
+
+} // namespace cgogn_test_gmap3

@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_gmap3_builder
+{
+
 using namespace cgogn;
 
 namespace
@@ -292,3 +295,5 @@ TEST(GMap3Builder, ASolidKleinBottleStaysWhole)
 	build_volume(c, s);
 	EXPECT_EQ(nb_cells<CMap3::Face>(c), 5 * n + 1);
 }
+
+} // namespace cgogn_test_gmap3_builder

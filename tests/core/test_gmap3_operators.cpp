@@ -14,6 +14,9 @@
 #include <unordered_map>
 #include <vector>
 
+namespace cgogn_test_gmap3_operators
+{
+
 using namespace cgogn;
 
 namespace
@@ -638,3 +641,5 @@ TEST(GMap3Operators, CollapsingEdgesUntilNoneCan)
 	}
 	EXPECT_GT(collapses, 50);
 }
+
+} // namespace cgogn_test_gmap3_operators

@@ -15,6 +15,9 @@
 #include <unordered_map>
 #include <vector>
 
+namespace cgogn_test_gmap3_traversals
+{
+
 using namespace cgogn;
 
 namespace
@@ -460,3 +463,5 @@ TEST(GMap3Traversals, TheSurfaceTraversalsServeTheCellsOfOneVolume)
 	});
 	EXPECT_EQ(volumes, 8u);
 }
+
+} // namespace cgogn_test_gmap3_traversals

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <vector>
 
+namespace cgogn_test_incidence_cache
+{
+
 using namespace cgogn;
 
 namespace
@@ -377,3 +380,5 @@ TEST(IncidenceCache, TablesAreFoundByKeyAndReplacedPerKey)
 	static_assert(detail::incidence_key<CMap3::Volume, CMap3::Volume, CMap3::Vertex>() < NB_INCIDENCE_KEYS);
 	static_assert(detail::incidence_key<CMap3::Vertex, CMap3::Vertex, void>() < NB_INCIDENCE_KEYS);
 }
+
+} // namespace cgogn_test_incidence_cache

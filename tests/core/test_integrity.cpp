@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_integrity
+{
+
 using namespace cgogn;
 using Kind = IntegrityError::Kind;
 
@@ -296,3 +299,5 @@ TEST(Integrity, FacesOfOneOrTwoEdges)
 		EXPECT_TRUE(check_integrity(m).ok());
 	}
 }
+
+} // namespace cgogn_test_integrity

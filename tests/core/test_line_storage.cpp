@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_line_storage
+{
+
 using namespace cgogn;
 
 namespace
@@ -172,3 +175,5 @@ TEST(LineStorage, ReservedRangesStartAtStaggeredOffsets)
 		detail::release_address_space(p, bytes);
 	}
 }
+
+} // namespace cgogn_test_line_storage

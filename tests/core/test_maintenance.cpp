@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <random>
 
+namespace cgogn_test_maintenance
+{
+
 using namespace cgogn;
 using P = std::array<double, 3>;
 
@@ -109,3 +112,5 @@ TEST(Maintenance, CompactAndReorderAVolumeMesh)
 	EXPECT_EQ(neighbourhoods(m, *pos), before);
 	EXPECT_EQ(nb_cells<CMap3::Volume>(m), 48u);
 }
+
+} // namespace cgogn_test_maintenance

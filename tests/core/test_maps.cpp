@@ -5,6 +5,9 @@
 #include <sstream>
 #include <unordered_set>
 
+namespace cgogn_test_maps
+{
+
 using namespace cgogn;
 
 TEST(Dart, ValidityPrintingHashing)
@@ -153,3 +156,5 @@ TEST(CMap3, CellTypesOfATetrahedron)
 	});
 	EXPECT_TRUE(check_integrity(m).ok());
 }
+
+} // namespace cgogn_test_maps

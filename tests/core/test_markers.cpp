@@ -5,6 +5,9 @@
 #include <memory>
 #include <type_traits>
 
+namespace cgogn_test_markers
+{
+
 using namespace cgogn;
 
 namespace
@@ -138,3 +141,5 @@ static_assert(!std::is_copy_constructible_v<DartMarker<CMap2>> && !std::is_copy_
 static_assert(!std::is_copy_constructible_v<DartMarkerStore<CMap2>>);
 static_assert(!std::is_copy_constructible_v<CellMarker<CMap2, CMap2::Vertex>>);
 static_assert(!std::is_copy_constructible_v<CellMarkerStore<CMap3, CMap3::Volume>>);
+
+} // namespace cgogn_test_markers

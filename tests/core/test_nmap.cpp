@@ -12,6 +12,9 @@
 #include <utility>
 #include <vector>
 
+namespace cgogn_test_nmap
+{
+
 using namespace cgogn;
 using cgogn::test::binomial;
 
@@ -357,3 +360,5 @@ TEST(NMapTraversals, StarsAndNeighboursAreTheSameIndexedOrNot)
 	check_stars_indexed_or_not<CMapN<4>>();
 	check_stars_indexed_or_not<GMapN<4>>();
 }
+
+} // namespace cgogn_test_nmap

@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_nmap_agreement
+{
+
 using namespace cgogn;
 using cgogn::test::key_of;
 using cgogn::test::relation;
@@ -186,3 +189,5 @@ TEST(NMapAgreement, NonOrientableSurfacesGiveTheCellsOfTheGMap2)
 		EXPECT_EQ((incidence<2, 0>(n, each_incidence)), (incidence<2, 0>(m, each_incidence)));
 	}
 }
+
+} // namespace cgogn_test_nmap_agreement

@@ -17,6 +17,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_nmap_incidences
+{
+
 using namespace cgogn;
 using cgogn::test::binomial;
 using cgogn::test::key_of;
@@ -279,3 +282,5 @@ TEST(NMapIncidences, TraversalsStopWhenAsked)
 	check_stop<CMapN<3>>();
 	check_stop<GMapN<4>>();
 }
+
+} // namespace cgogn_test_nmap_incidences

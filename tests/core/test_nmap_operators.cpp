@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_nmap_operators
+{
+
 using namespace cgogn;
 using cgogn::test::binomial;
 
@@ -411,3 +414,5 @@ TEST(NMapOperators, ImpossibleSewsAreRefused)
 	ASSERT_FALSE(is_boundary(m, diagonal.dart));
 	EXPECT_FALSE(can_sew_facets(m, CellD<2>(diagonal.dart), CellD<2>(square)));
 }
+
+} // namespace cgogn_test_nmap_operators

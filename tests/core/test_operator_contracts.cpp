@@ -11,6 +11,9 @@
 #include <algorithm>
 #include <vector>
 
+namespace cgogn_test_operator_contracts
+{
+
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
@@ -288,3 +291,5 @@ TEST(OperatorContracts, MergeIndexesTheOrbitsOfTheOtherMap)
 	EXPECT_EQ(nb_cells<Face>(m), 2u);
 	EXPECT_INTEGRITY(m);
 }
+
+} // namespace cgogn_test_operator_contracts

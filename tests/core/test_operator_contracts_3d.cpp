@@ -12,6 +12,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_operator_contracts_3d
+{
+
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Edge = CMap3::Edge;
@@ -392,3 +395,5 @@ TEST(OperatorContracts3, TetPredicatesRefuseASphereWithADoubleEdge)
 	});
 	EXPECT_THROW(split_tetra(m, sphere), TopologyError);
 }
+
+} // namespace cgogn_test_operator_contracts_3d

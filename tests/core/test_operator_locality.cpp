@@ -17,6 +17,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_operator_locality
+{
+
 using namespace cgogn;
 using test::index_everything;
 
@@ -216,3 +219,5 @@ TEST(OperatorLocality, ASplitComponentWalksOnlyItsSmallerPart)
 	EXPECT_EQ(index_of(m, CMap2::Volume(d)), line);
 	EXPECT_NE(index_of(m, CMap2::Volume(t)), line);
 }
+
+} // namespace cgogn_test_operator_locality

@@ -6,6 +6,9 @@
 
 #include <random>
 
+namespace cgogn_test_operators_2d
+{
+
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
@@ -609,3 +612,5 @@ TEST(Operators2, FormerNamesAnswerAsTheNewOnes)
 	EXPECT_INTEGRITY(m);
 }
 #pragma GCC diagnostic pop
+
+} // namespace cgogn_test_operators_2d

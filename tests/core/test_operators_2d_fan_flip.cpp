@@ -10,6 +10,9 @@
 
 #include <set>
 
+namespace cgogn_test_operators_2d_fan_flip
+{
+
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
@@ -200,3 +203,5 @@ TEST(Operators2FanFlip, EdgeCanFlipOnAnIndexedMapEditedWithoutIndices)
 	EXPECT_GT(total.allowed, 0u);
 	EXPECT_GT(total.refused, 0u);
 }
+
+} // namespace cgogn_test_operators_2d_fan_flip

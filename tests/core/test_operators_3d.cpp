@@ -6,6 +6,9 @@
 
 #include <random>
 
+namespace cgogn_test_operators_3d
+{
+
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Edge = CMap3::Edge;
@@ -363,3 +366,5 @@ TEST(Operators3Random, TetrahedralEditing)
 	}
 	EXPECT_GT(applied, 100u);
 }
+
+} // namespace cgogn_test_operators_3d

@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <random>
 
+namespace cgogn_test_operators_data
+{
+
 using namespace cgogn;
 
 namespace
@@ -133,3 +136,5 @@ TEST(OperatorsOnData, TetMeshWithANonManifoldVertex)
 		}
 	});
 }
+
+} // namespace cgogn_test_operators_data

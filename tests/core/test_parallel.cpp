@@ -12,10 +12,10 @@
 #include <tuple>
 #include <vector>
 
-using namespace cgogn;
-
-namespace
+namespace cgogn_test_parallel
 {
+
+using namespace cgogn;
 
 // The smallest dart of c's orbit: a name for the cell independent of its
 // representative dart.
@@ -99,8 +99,6 @@ protected:
 		}(static_cast<typename mesh_traits<MAP>::Cells*>(nullptr));
 	}
 };
-
-} // namespace
 
 TEST_P(Parallel, SurfaceWithBoundaryAllCellTypes)
 {
@@ -242,9 +240,6 @@ TEST_P(Parallel, ParallelIncidenceCacheBuildMatchesTraversal)
 	EXPECT_TRUE(check_integrity(m).ok());
 }
 
-namespace
-{
-
 // Removes the index of orbit O from m, as if no attribute had ever been added
 // on it (builders index 3-D vertices): the traversals then take the
 // non-indexed path.
@@ -256,8 +251,6 @@ void drop_index(MAP& m)
 	ASSERT_TRUE(cgogn::detail::state_of(m).darts->remove_attribute(idx));
 	idx = nullptr;
 }
-
-} // namespace
 
 // The flooded orbits (3-D vertices, volumes, connected components), not
 // indexed, on maps large enough to be split among the workers (hundreds of
@@ -445,3 +438,5 @@ TEST(ThreadPool, IndexOutsideTraversalsIsZeroAndDefaultRestored)
 	EXPECT_EQ(thread_pool()->nb_workers(), ThreadPool::default_nb_workers());
 	EXPECT_GE(thread_pool()->nb_workers(), 1u);
 }
+
+} // namespace cgogn_test_parallel

@@ -4,6 +4,9 @@
 
 #include <utility>
 
+namespace cgogn_test_properties
+{
+
 using namespace cgogn;
 
 TEST(Properties, DegreesAndBoundaryOnAGrid)
@@ -125,3 +128,5 @@ TEST(Properties, DegreeAndCodegreeOfEveryCellTypeOfAVolume)
 	EXPECT_EQ(degree_sums<CMap3::Face>(m), P(12, 4 * nf));
 	EXPECT_EQ(degree_sums<CMap3::Volume>(m), P(0, 12));
 }
+
+} // namespace cgogn_test_properties

@@ -26,6 +26,9 @@
 #include <type_traits>
 #include <vector>
 
+namespace cgogn_test_random_editing
+{
+
 using namespace cgogn;
 
 namespace
@@ -767,3 +770,5 @@ TEST(RandomEditing, TetCollapseKeepsTheSurvivorsLine)
 	}
 	EXPECT_GT(collapsed, 10u);
 }
+
+} // namespace cgogn_test_random_editing

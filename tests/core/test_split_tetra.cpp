@@ -14,6 +14,9 @@
 #include <numeric>
 #include <random>
 
+namespace cgogn_test_split_tetra
+{
+
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Edge = CMap3::Edge;
@@ -307,3 +310,5 @@ TEST(SplitTetra, RealMeshEveryTet)
 	EXPECT_NEAR(sum, solid, 1e-9 * solid);
 	EXPECT_NEAR(geometry::solid_volume(m, *pos), solid, 1e-9 * solid);
 }
+
+} // namespace cgogn_test_split_tetra

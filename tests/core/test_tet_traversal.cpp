@@ -11,6 +11,9 @@
 #include <algorithm>
 #include <filesystem>
 
+namespace cgogn_test_tet_traversal
+{
+
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Face = CMap3::Face;
@@ -164,3 +167,5 @@ TEST(TetTraversal, MixedRealMesh)
 	EXPECT_GE(c.tets, 4442u); // boundary volumes made of 4 triangles count too
 	EXPECT_GE(c.others, 5520u + 908u + 317u);
 }
+
+} // namespace cgogn_test_tet_traversal

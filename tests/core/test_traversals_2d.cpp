@@ -7,14 +7,15 @@
 #include <set>
 #include <vector>
 
+namespace cgogn_test_traversals_2d
+{
+
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
 using Face = CMap2::Face;
 using Volume = CMap2::Volume;
 
-namespace
-{
 // 3x3 quads, vertex (i, j) has id 4j + i.
 struct Grid : ::testing::Test
 {
@@ -72,7 +73,6 @@ struct Grid : ::testing::Test
 		return s;
 	}
 };
-} // namespace
 
 TEST_F(Grid, GlobalCounts)
 {
@@ -289,8 +289,6 @@ TEST(Traversals2D, IncidentFacesOfVerticesClosedAndOpen)
 	EXPECT_TRUE(check_integrity(m).ok());
 }
 
-namespace
-{
 // What `traversal(v, f)` reports from every vertex v: the darts given to a
 // callable taking TO, the darts given to a callable taking `auto` as a
 // LocatedCell (whose line is checked against index_of), and how many cells
@@ -318,7 +316,6 @@ Reported reported(const CMap2& m, const TRAVERSAL& traversal)
 	});
 	return r;
 }
-} // namespace
 
 // Without caches, the traversals around a vertex and of a face give a callable
 // taking `auto` each neighbour with its line (LocatedCell) when the
@@ -359,8 +356,6 @@ TEST(Traversals2D, UncachedTraversalsGiveLinesToAutoCallables)
 	}
 }
 
-namespace
-{
 // What foreach_cell reports for CELL on m: every dart must lie in exactly one
 // reported cell (none for the boundary darts when CELL is Face), and located
 // cells must carry their line (or INVALID_INDEX when the orbit has no index).
@@ -389,7 +384,6 @@ void expect_each_cell_once(const CMap2& m)
 	EXPECT_EQ(visited, std::min(cells, 2u));
 	EXPECT_EQ(nb_cells<CELL>(m), cells);
 }
-} // namespace
 
 // foreach_cell finds the cells in the cell container when the orbit is
 // indexed, by a scan of the darts otherwise (a mark, a flood, or the smaller
@@ -416,8 +410,6 @@ TEST(Traversals2D, EveryCellOnceIndexedOrNot)
 	}
 }
 
-namespace
-{
 // A callable that counts its copies (so it is not trivially copyable) and its calls.
 template <typename CELL>
 struct CopyCounting
@@ -451,7 +443,6 @@ struct LargeTrivial
 	{
 	}
 };
-} // namespace
 
 // The global traversals hold a small trivially copyable callable by value (its
 // captures stay in registers) and any other one by reference: a callable
@@ -495,3 +486,5 @@ TEST(Traversals2D, CallablesCopiedOnlyWhenSmallAndTrivial)
 	parallel_foreach_cell(m, count_vertex);
 	EXPECT_EQ(function_calls, 2 * nv);
 }
+
+} // namespace cgogn_test_traversals_2d

@@ -12,14 +12,15 @@
 #include <type_traits>
 #include <vector>
 
+namespace cgogn_test_traversals_3d
+{
+
 using namespace cgogn;
 using Vertex = CMap3::Vertex;
 using Edge = CMap3::Edge;
 using Face = CMap3::Face;
 using Volume = CMap3::Volume;
 
-namespace
-{
 // 2x2x2 hexahedra; vertex (i, j, k) has id 9k + 3j + i; the centre is 13.
 struct HexGrid : ::testing::Test
 {
@@ -51,7 +52,6 @@ struct HexGrid : ::testing::Test
 		return n;
 	}
 };
-} // namespace
 
 TEST_F(HexGrid, GlobalCounts)
 {
@@ -372,3 +372,5 @@ TEST(Traversals3D, ThrowingCallableLeavesNoMark)
 	EXPECT_EQ(w, volume_darts);
 	EXPECT_GT(most, 12u);
 }
+
+} // namespace cgogn_test_traversals_3d

@@ -4,13 +4,14 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_views
+{
+
 using namespace cgogn;
 using Vertex = CMap2::Vertex;
 using Edge = CMap2::Edge;
 using Face = CMap2::Face;
 
-namespace
-{
 // 4 x 3 quads: 20 vertices (6 inner of degree 4, 10 border of degree 3, 4
 // corners of degree 2), 31 edges (14 on the border), 12 faces.
 struct ViewGrid : ::testing::Test
@@ -34,7 +35,6 @@ uint32 count_vertices_and_faces(const MESH& m)
 	using F = typename mesh_traits<MESH>::Face;
 	return nb_cells<V>(m) * 100 + nb_cells<F>(m);
 }
-} // namespace
 
 TEST_F(ViewGrid, FilterWithoutPredicateTraversesEverything)
 {
@@ -184,8 +184,6 @@ TEST(CacheVolume, DegreeFiveLikeSelection)
 	EXPECT_EQ(nb_cells<CMap3::Face>(cf), 36u);
 }
 
-namespace
-{
 // generic code that asks topological questions: works on maps and views
 template <typename MESH>
 uint32 sum_of_vertex_degrees(const MESH& m)
@@ -194,7 +192,6 @@ uint32 sum_of_vertex_degrees(const MESH& m)
 	foreach_cell(m, [&](typename mesh_traits<MESH>::Vertex v) { s += degree(m, v); });
 	return s;
 }
-} // namespace
 
 // A view hides cells from traversals, not from the topology: phi, degree,
 // codegree, is_boundary, is_incident_to_boundary and same_cell answer for the
@@ -265,3 +262,5 @@ TEST(CacheVolume, TopologicalQueriesPassThroughViews)
 	});
 	EXPECT_EQ(nb_cells<W3>(cf), 0u);
 }
+
+} // namespace cgogn_test_views

@@ -5,6 +5,9 @@
 
 #include <numbers>
 
+namespace cgogn_test_curvature
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -176,3 +179,5 @@ TEST(Curvature, TorusSignsAndValues)
 	// at the outer equator the direction of kmax goes around the tube (along z)
 	EXPECT_NEAR(std::abs(value<Vec3>(m, dmax, outer).z()), 1.0, 1e-2);
 }
+
+} // namespace cgogn_test_curvature

@@ -15,6 +15,9 @@
 #include <utility>
 #include <vector>
 
+namespace cgogn_test_geometry_gmap
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::Pos;
@@ -721,3 +724,5 @@ TEST(GeometryGMap, NonOrientableSurfaces)
 		foreach_cell(g, [&](GMap2::Vertex v) { EXPECT_TRUE(value<Vec3>(g, *pos, v).allFinite()); });
 	}
 }
+
+} // namespace cgogn_test_geometry_gmap

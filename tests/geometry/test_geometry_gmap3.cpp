@@ -14,6 +14,9 @@
 #include <string>
 #include <vector>
 
+namespace cgogn_test_geometry_gmap3
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 
@@ -154,3 +157,5 @@ TEST(GeometryGMap3, SolidKleinBottle)
 	EXPECT_LT(relative(solid_volume(g, *pos), sum), 1e-12);
 	EXPECT_GT(sum, 0.0);
 }
+
+} // namespace cgogn_test_geometry_gmap3

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_laplacian
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -201,3 +204,5 @@ TEST(Laplacian, PolygonsGiveTheSameAsTheirRefinement)
 	for (uint32 v = 0; v < s.nb_vertices; ++v)
 		EXPECT_NEAR(ex(qn[v]), lz(tn[v]), 1e-12);
 }
+
+} // namespace cgogn_test_laplacian

@@ -5,6 +5,9 @@
 
 #include <numbers>
 
+namespace cgogn_test_measures
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -233,3 +236,5 @@ TEST(Measures, MeanPositionOfAVolumeMeshAndOfAnEmptyMap)
 	auto epos = add_attribute<Vec3, Vertex>(empty, "position");
 	EXPECT_EQ(mean_position(empty, *epos), Vec3::Zero());
 }
+
+} // namespace cgogn_test_measures

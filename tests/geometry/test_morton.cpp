@@ -7,6 +7,9 @@
 #include <cmath>
 #include <set>
 
+namespace cgogn_test_morton
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -73,3 +76,5 @@ TEST(Morton, VolumeMeshVertices)
 	foreach_cell(m, [&](CMap3::Volume w) { vkeys.insert(morton_key(m, w, *pos, bb)); });
 	EXPECT_EQ(vkeys.size(), 27u);
 }
+
+} // namespace cgogn_test_morton

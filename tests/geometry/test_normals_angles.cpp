@@ -5,6 +5,9 @@
 
 #include <numbers>
 
+namespace cgogn_test_normals_angles
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -143,3 +146,5 @@ TEST(Angles, DihedralAnglesOfABoxAndATent)
 	});
 	EXPECT_EQ(inner, 1u);
 }
+
+} // namespace cgogn_test_normals_angles

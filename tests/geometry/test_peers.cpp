@@ -18,6 +18,9 @@
 #include <map>
 #include <vector>
 
+namespace cgogn_test_peers
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -194,3 +197,5 @@ TEST(PeerCGAL, AreasAndVolumesAgree)
 }
 
 #endif
+
+} // namespace cgogn_test_peers

@@ -8,6 +8,9 @@
 #include <functional>
 #include <map>
 
+namespace cgogn_test_smoothing
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -201,3 +204,5 @@ TEST(Smoothing, ImplicitReportsASingularSystem)
 		p = Vec3(1, 2, 3); // collapsed: no area, no weights
 	EXPECT_THROW(implicit_smoothing(m, *pos, 1.0), Error);
 }
+
+} // namespace cgogn_test_smoothing

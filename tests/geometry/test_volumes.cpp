@@ -5,6 +5,9 @@
 
 #include <numbers>
 
+namespace cgogn_test_volumes
+{
+
 using namespace cgogn;
 using namespace cgogn::geometry;
 using cgogn::test::build_with_positions;
@@ -151,3 +154,5 @@ TEST(Volumes, PyramidAndPrismCells)
 		}
 	});
 }
+
+} // namespace cgogn_test_volumes

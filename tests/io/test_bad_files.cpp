@@ -11,12 +11,12 @@
 
 #include <cstring>
 
+namespace cgogn_test_bad_files
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using Where = io::Error::Where;
-
-namespace
-{
 
 std::string bytes_of(std::initializer_list<float> v)
 {
@@ -87,8 +87,6 @@ bool is_volume(const std::string& file)
 class BadFile : public testing::TestWithParam<BadCase>
 {
 };
-
-} // namespace
 
 TEST_P(BadFile, ThrowsAndLeavesTheMapUntouched)
 {
@@ -289,3 +287,5 @@ TEST(BadFile, MissingFileAndUnknownExtension)
 	EXPECT_THROW(io::load_volume(v, "mesh.off"), io::Error);
 	EXPECT_EQ(nb_darts(m), 0u);
 }
+
+} // namespace cgogn_test_bad_files

@@ -12,10 +12,10 @@
 #include <optional>
 #include <set>
 
-using namespace cgogn;
-
-namespace
+namespace cgogn_test_data_files
 {
+
+using namespace cgogn;
 
 std::string data_file(const std::string& name)
 {
@@ -58,8 +58,6 @@ std::string surface_name(const testing::TestParamInfo<SurfaceFile>& i)
 class DataSurface : public testing::TestWithParam<SurfaceFile>
 {
 };
-
-} // namespace
 
 TEST_P(DataSurface, InfoMatchesTheReadme)
 {
@@ -154,9 +152,6 @@ TEST(DataSurfaceDetails, BoundaryEdgeCountsMatchTheReadme)
 	}
 }
 
-namespace
-{
-
 struct VolumeFile
 {
 	const char* file;
@@ -176,8 +171,6 @@ std::string volume_name(const testing::TestParamInfo<VolumeFile>& i)
 class DataVolume : public testing::TestWithParam<VolumeFile>
 {
 };
-
-} // namespace
 
 TEST_P(DataVolume, InfoMatchesTheReadme)
 {
@@ -374,3 +367,5 @@ TEST(DataFolder, EveryMeshFileIsCoveredAboveOrNamedHere)
 		}
 	}
 }
+
+} // namespace cgogn_test_data_files

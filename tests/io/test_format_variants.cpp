@@ -11,6 +11,9 @@
 
 #ifdef CGOGN_TEST_HAS_ZLIB
 #include <zlib.h>
+
+namespace cgogn_test_format_variants
+{
 #endif
 
 using namespace cgogn;
@@ -418,3 +421,5 @@ TEST(MeditVariants, SkippedSectionsMixedCellsAndDimensionOnItsOwnLine)
 	EXPECT_EQ(nb_cells<CMap3::Face>(m), 5u);
 	EXPECT_EQ(nb_cells<CMap3::Edge>(m), 9u);
 }
+
+} // namespace cgogn_test_format_variants

@@ -13,13 +13,13 @@
 #include <algorithm>
 #include <map>
 
+namespace cgogn_test_gmap3_io
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using GVertex = GMap3::Vertex;
 using GVolume = GMap3::Volume;
-
-namespace
-{
 
 // The same cells, each listed in the other orientation: a GMap3 built from
 // it has the same cells, but each volume's first darts turn inwards.
@@ -72,8 +72,6 @@ std::map<std::vector<uint32>, double> region_by_cell(const GMap3& m)
 class GMap3Formats : public testing::TestWithParam<VolumeCase>
 {
 };
-
-} // namespace
 
 TEST_P(GMap3Formats, RoundTripKeepsCountsPositionsAndAttributes)
 {
@@ -253,3 +251,5 @@ TEST(GMap3Load, ASolidKleinBottleRoundTrips)
 		EXPECT_EQ(test::volume_counts(b), test::volume_counts(a));
 	}
 }
+
+} // namespace cgogn_test_gmap3_io

@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_name_collisions
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
-
-namespace
-{
 
 struct Collision
 {
@@ -51,8 +51,6 @@ constexpr const char* tet_vtu =
 // two triangles that share only vertex 0: the builder splits it and records
 // the file's ids in `original_vertex`
 constexpr const char* bowtie_off = "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n";
-
-} // namespace
 
 TEST_P(NameCollision, ThrowsNamingTheDataAndLeavesTheMapUntouched)
 {
@@ -212,3 +210,5 @@ TEST(NameCollision, CellDataNamedPositionIsOrdinaryData)
 	ASSERT_NE(p, nullptr);
 	foreach_cell(m, [&](CMap3::Volume w) { EXPECT_EQ((*p)[w], Vec2(7, 8)); });
 }
+
+} // namespace cgogn_test_name_collisions

@@ -10,6 +10,9 @@
 
 #include <regex>
 
+namespace cgogn_test_nmap_io
+{
+
 using namespace cgogn;
 using io_test::TempDir;
 
@@ -187,3 +190,5 @@ TEST(NMapFiles, TheBoundaryOfA4DGridIsAVTUOfPolyhedra)
 	GMapN<2> g;
 	EXPECT_THROW(io::save_vtu(g, path, {2}), io::Error); // no position
 }
+
+} // namespace cgogn_test_nmap_io

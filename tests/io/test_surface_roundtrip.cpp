@@ -9,13 +9,13 @@
 
 #include <algorithm>
 
+namespace cgogn_test_surface_roundtrip
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using Vertex = CMap2::Vertex;
 using Face = CMap2::Face;
-
-namespace
-{
 
 struct SurfaceCase
 {
@@ -65,8 +65,6 @@ std::vector<Vec3> positions(const CMap2& m)
 	foreach_cell(m, [&](Vertex v) { out.push_back(value<Vec3>(m, *pos, v)); });
 	return out;
 }
-
-} // namespace
 
 TEST_P(SurfaceRoundTrip, SameCountsPositionsAndAttributes)
 {
@@ -212,3 +210,5 @@ TEST(SurfaceRoundTrip, PolygonsAndBoundariesSurvive)
 	EXPECT_EQ(nb_cells<Face>(b), 42u);
 	EXPECT_EQ(nb_cells<Vertex>(b), 28u);
 }
+
+} // namespace cgogn_test_surface_roundtrip

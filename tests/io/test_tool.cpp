@@ -13,6 +13,9 @@
 #include <sys/wait.h>
 #include <vector>
 
+namespace cgogn_test_tool
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 
@@ -275,3 +278,5 @@ TEST(Tool, MapsOfAnyDimensionAreInspectedCheckedAndConverted)
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find(".nmap or a .vtu"), std::string::npos) << r.err;
 }
+
+} // namespace cgogn_test_tool

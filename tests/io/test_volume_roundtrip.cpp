@@ -8,13 +8,13 @@
 
 #include <gtest/gtest.h>
 
+namespace cgogn_test_volume_roundtrip
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using Vertex = CMap3::Vertex;
 using Volume = CMap3::Volume;
-
-namespace
-{
 
 void make_mesh(CMap3& m, bool tets_only)
 {
@@ -49,8 +49,6 @@ int64 euler(const CMap3& m)
 class VolumeRoundTrip : public testing::TestWithParam<VolumeCase>
 {
 };
-
-} // namespace
 
 TEST_P(VolumeRoundTrip, SameCountsPositionsAndAttributes)
 {
@@ -121,3 +119,5 @@ TEST(VolumeSave, RefusesCellsTheFormatCannotHold)
 	build_volume(empty, hex_grid_soup(1, 1, 1));
 	EXPECT_THROW(io::save_volume(empty, dir.file("h.mesh")), io::Error); // no position
 }
+
+} // namespace cgogn_test_volume_roundtrip

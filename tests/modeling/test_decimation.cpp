@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <map>
 
+namespace cgogn_test_decimation
+{
+
 using namespace cgogn;
 using namespace cgogn::modeling_test;
 
@@ -234,3 +237,5 @@ TEST(Decimation, BunnyWithHolesKeepsItsFiveBoundaryLoops)
 	foreach_cell(m, [&](Vertex v) { boundary_after += is_incident_to_boundary(m, v) ? 1 : 0; });
 	EXPECT_EQ(boundary_after, boundary_before);
 }
+
+} // namespace cgogn_test_decimation

@@ -13,15 +13,18 @@
 #include <ctime>
 #include <filesystem>
 
-using namespace cgogn;
-using cgogn_bench::TriangleSoup;
-
 double cgogn_bench::modeling_thread_seconds()
 {
 	timespec t{};
 	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
 	return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
+
+namespace cgogn_test_decimation_peers
+{
+
+using namespace cgogn;
+using cgogn_bench::TriangleSoup;
 
 namespace
 {
@@ -138,3 +141,5 @@ TEST_F(DecimationPeers, ComparableToCgalGarlandHeckbert)
 	EXPECT_LE(ours.to_input.mean, 1.5 * peer.to_input.mean);
 }
 #endif
+
+} // namespace cgogn_test_decimation_peers

@@ -2,6 +2,9 @@
 #include "../geometry/geometry_test_meshes.h"
 #include "modeling_test_utils.h"
 
+namespace cgogn_test_dual
+{
+
 using namespace cgogn;
 using namespace cgogn::modeling_test;
 
@@ -121,3 +124,5 @@ TEST(Dual, OutputWithANonVec3PositionIsRejectedBeforeAnythingIsAppended)
 	EXPECT_THROW(modeling::dual(cube, *pos, out), Error);
 	EXPECT_EQ(nb_darts(out), 0u);
 }
+
+} // namespace cgogn_test_dual

@@ -4,6 +4,9 @@
 
 #include <set>
 
+namespace cgogn_test_hole_filling
+{
+
 using namespace cgogn;
 using namespace cgogn::modeling_test;
 
@@ -306,3 +309,5 @@ TEST(HoleFilling, AvoidsDiagonalsThatExistOutside)
 		foreach_cell(m, [&](CMap2::Vertex v) { EXPECT_EQ(degree(m, v), 3u) << "a tetrahedron"; });
 	}
 }
+
+} // namespace cgogn_test_hole_filling

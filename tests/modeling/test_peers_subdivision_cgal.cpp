@@ -9,6 +9,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
 
+namespace cgogn_test_peers_subdivision_cgal
+{
+
 using namespace cgogn;
 using namespace cgogn::peer_test;
 
@@ -91,3 +94,5 @@ TEST(CgalPeer, LoopOnClosedMeshes)
 	modeling::loop_subdivision(m, *pos);
 	expect_same_counts_and_positions(m, *pos, sm);
 }
+
+} // namespace cgogn_test_peers_subdivision_cgal

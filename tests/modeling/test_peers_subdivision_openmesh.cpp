@@ -12,6 +12,9 @@
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
+namespace cgogn_test_peers_subdivision_openmesh
+{
+
 using namespace cgogn;
 using namespace cgogn::peer_test;
 
@@ -135,3 +138,5 @@ TEST(OpenMeshPeer, CatmullClarkOnClosedPolygonMeshes)
 														modeling::SurfaceScheme::CatmullClark, 2);
 	}
 }
+
+} // namespace cgogn_test_peers_subdivision_openmesh

@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <set>
 
+namespace cgogn_test_remeshing
+{
+
 using namespace cgogn;
 using namespace cgogn::modeling_test;
 
@@ -206,3 +209,5 @@ TEST(Remeshing, NefertitiAtItsMeanEdgeLength)
 	EXPECT_GT(v.regular, v.total * 7 / 10) << v.regular << " of " << v.total;
 	EXPECT_LT(modeling::vertex_distance_to_surface(m, *pos, input).max, 1e-9);
 }
+
+} // namespace cgogn_test_remeshing

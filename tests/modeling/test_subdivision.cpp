@@ -12,6 +12,9 @@
 #include <numbers>
 #include <vector>
 
+namespace cgogn_test_subdivision
+{
+
 using namespace cgogn;
 using namespace cgogn::modeling_test;
 using test::polygon_soup;
@@ -524,3 +527,5 @@ TEST(Subdivision, FacesWithFewerThanThreeEdgesAreRejected)
 	EXPECT_THROW(modeling::loop_subdivision(m, *pos), modeling::SubdivisionError);
 	EXPECT_EQ(nb_darts(m), darts);
 }
+
+} // namespace cgogn_test_subdivision

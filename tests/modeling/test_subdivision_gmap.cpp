@@ -11,6 +11,9 @@
 #include <cmath>
 #include <vector>
 
+namespace cgogn_test_subdivision_gmap
+{
+
 using namespace cgogn;
 using modeling::SurfaceScheme;
 
@@ -210,3 +213,5 @@ TEST(SubdivisionGMap, RejectsWhatTheSchemeCannotTake)
 	EXPECT_THROW(modeling::sqrt3_subdivision(q.map, *q.pos), modeling::SubdivisionError);
 	EXPECT_EQ(nb_darts(q.map), darts);
 }
+
+} // namespace cgogn_test_subdivision_gmap

@@ -9,6 +9,9 @@
 
 #include <sys/wait.h>
 
+namespace cgogn_test_tool_decimate_remesh
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 
@@ -92,3 +95,5 @@ TEST(ModelingTool, RemeshToAnEdgeLength)
 	EXPECT_TRUE(check_integrity(m).ok());
 	EXPECT_NEAR(geometry::mean_edge_length(m, *pos), 0.15, 0.015);
 }
+
+} // namespace cgogn_test_tool_decimate_remesh

@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <sys/wait.h>
 
+namespace cgogn_test_tool_edit
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using namespace cgogn::modeling_test;
@@ -220,3 +223,5 @@ TEST(ToolModeling, DualErrors)
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("volume"), std::string::npos) << r.err;
 }
+
+} // namespace cgogn_test_tool_edit

@@ -10,6 +10,9 @@
 #include <cstdlib>
 #include <sys/wait.h>
 
+namespace cgogn_test_tool_subdivide
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 
@@ -161,3 +164,5 @@ TEST(ToolSubdivide, NonOrientableSurfacesStayWhole)
 		EXPECT_GT(moved, 1e-3) << method;
 	}
 }
+
+} // namespace cgogn_test_tool_subdivide

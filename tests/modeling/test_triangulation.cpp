@@ -8,6 +8,9 @@
 
 #include <filesystem>
 
+namespace cgogn_test_triangulation
+{
+
 using namespace cgogn;
 using test::polygon_soup;
 
@@ -106,3 +109,5 @@ TEST(EarClipping, PolygonalDataMeshes)
 		EXPECT_TRUE(check_integrity(m).ok()) << name;
 	}
 }
+
+} // namespace cgogn_test_triangulation

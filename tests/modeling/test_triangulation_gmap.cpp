@@ -10,6 +10,9 @@
 #include <cmath>
 #include <set>
 
+namespace cgogn_test_triangulation_gmap
+{
+
 using namespace cgogn;
 
 namespace
@@ -89,3 +92,5 @@ TEST(TriangulationGMap, KleinBottleTriangulatedWhole)
 	EXPECT_EQ(nb_cells<GMap2::Face>(h), 4u);
 	EXPECT_EQ(nb_cells<GMap2::Vertex>(h), 6u);
 }
+
+} // namespace cgogn_test_triangulation_gmap

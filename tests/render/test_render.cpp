@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <set>
 
+namespace cgogn_test_render
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using namespace cgogn::render_test;
@@ -549,3 +552,5 @@ TEST(Render, WritePngFailsCleanly)
 	EXPECT_EQ(back.width, 1u);
 	EXPECT_EQ(back.rgb, one.rgb);
 }
+
+} // namespace cgogn_test_render

@@ -6,6 +6,9 @@
 
 #include <cgogn_test_data.h>
 
+namespace cgogn_test_tool_render
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using namespace cgogn::render_test;
@@ -110,3 +113,5 @@ TEST(ToolRender, BadInputExits2AndWritesNothing)
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("dir.png"), std::string::npos) << r.err;
 }
+
+} // namespace cgogn_test_tool_render

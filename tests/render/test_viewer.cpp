@@ -9,6 +9,9 @@
 #include <cstring>
 #include <filesystem>
 
+namespace cgogn_test_viewer
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 
@@ -250,3 +253,5 @@ TEST(ToolView, WritesAPageAndRejectsBadInput)
 	EXPECT_FALSE(std::filesystem::exists(bad));
 }
 #endif
+
+} // namespace cgogn_test_viewer

@@ -11,6 +11,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+namespace cgogn_test_viewer_browser
+{
+
 using namespace cgogn;
 using namespace cgogn::io_test;
 using namespace cgogn::render_test;
@@ -141,3 +144,5 @@ TEST(ViewerBrowser, TheClippingPlaneShowsTheCellsItCuts)
 							 dir.file("dom.html"), "#clip=x:0.6:flip"));
 	EXPECT_NE(read_text(dir.file("dom.html")).find("256 of 768 triangles"), std::string::npos);
 }
+
+} // namespace cgogn_test_viewer_browser
