@@ -9,9 +9,10 @@
 # same flags (REUSE_FROM). A target with other code-generation flags (-fPIC,
 # the peers' -frounding-math) gets none.
 #
-# The tests and examples check results, not speed: in a Release build they are
-# compiled at CGOGN_TEST_OPTIMIZATION (-O1: a third less compile time than -O3
-# for the template-heavy test bodies) and call the library compiled at -O3.
+# The tests and examples check results, not speed: in every build type but
+# Debug they are compiled at CGOGN_TEST_OPTIMIZATION (-O1: a third less compile
+# time than -O3 for the template-heavy test bodies; the asan preset sets -O0)
+# and call the library compiled with the build type's flags.
 # The benchmarks and the tool keep the build type's flags.
 option(CGOGN_PRECOMPILED_HEADERS "Precompile <cgogn/cgogn.h> (and gtest) for the tests, examples, benchmarks and tool" ON)
 # The test files of one executable are compiled eight at a time, as one unit:
@@ -21,7 +22,7 @@ option(CGOGN_PRECOMPILED_HEADERS "Precompile <cgogn/cgogn.h> (and gtest) for the
 # namespace of its own (cgogn_<file name>) so that they do not collide.
 option(CGOGN_UNITY_BUILD_TESTS "Compile the test files of each test executable in batches (unity build)" ON)
 set(CGOGN_TEST_OPTIMIZATION "-O1" CACHE STRING
-    "Optimization flag of the tests and examples in Release builds (empty: the build type's)")
+    "Optimization flag of the tests and examples in every build type but Debug (empty: the build type's)")
 
 set(_cgogn_pch_headers <cgogn/cgogn.h> <algorithm> <array> <cmath> <cstdint> <filesystem> <functional> <map>
                        <memory> <numeric> <random> <set> <string> <unordered_map> <utility> <vector>)

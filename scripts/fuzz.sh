@@ -1,14 +1,11 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of the io readers with clang (ASan + UBSan, at
-# -O1 -gline-tables-only as OSS-Fuzz builds its targets) and runs each for a
+# Builds the libFuzzer targets of the io readers in the asan preset's build
+# (build/asan: clang, ASan + UBSan, the library at -O1 with assertions on and
+# libFuzzer's coverage instrumentation) and runs each for a
 # bounded time: FUZZ_SECONDS in total (default 300), split evenly over the
 # targets (one per reader, and fuzz_append, which loads any
 # format into a map that already holds a mesh and attributes). Fails on any
 # crash, leak, timeout or sanitizer report.
-#
-# FUZZ_BUILD_DIR names the build folder: by default build/fuzz, configured
-# here. An existing clang sanitizer build with CGOGN_BUILD_FUZZERS=ON is used
-# as it is: the asan preset's (build/asan) saves compiling the library again.
 #
 # Each target starts from its corpus in fuzz/corpus/<target> (kept in the
 # repository, minimized: each run starts from the coverage reached before),
@@ -28,21 +25,11 @@ targets+=(append)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
-build=${FUZZ_BUILD_DIR:-build/fuzz}
-if [ -z "${FUZZ_BUILD_DIR:-}" ]; then
-  cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-    -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DCGOGN_BUILD_FUZZERS=ON -DCGOGN_BUILD_TESTS=OFF -DCGOGN_BUILD_EXAMPLES=OFF -DCGOGN_BUILD_BENCHMARKS=OFF \
-    -DCGOGN_BUILD_TOOLS=OFF -DCGOGN_BUILD_PYTHON=OFF -DCGOGN_WERROR=ON >/dev/null
-elif ! grep -q '^CGOGN_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
-  echo "fuzz.sh: $build is not configured with CGOGN_BUILD_FUZZERS=ON (clang)" >&2
-  exit 1
-fi
+build=build/asan
+[ -f "$build/CMakeCache.txt" ] || cmake --preset asan >/dev/null
 build_targets=()
 for t in "${targets[@]}"; do build_targets+=("fuzz_$t"); done
-cmake --build "$build" -j 2 --target "${build_targets[@]}"
+cmake --build --preset asan -j 2 --target "${build_targets[@]}"
 
 # seed corpora: valid files written by a release build of the tool when there
 # is one, plus every malformed file of the test corpus with a matching extension
