@@ -24,7 +24,7 @@ option(CGOGN_PRECOMPILED_HEADERS "Precompile <cgogn/cgogn.h> (and gtest) for the
 #   in a namespace of its own (cgogn_<file name>) so that they do not collide;
 # - the tool's commands, all in one unit (79 s of compiler time apart, 23 s
 #   together: each command instantiates the same readers and writers);
-# - the Python module's bindings, four files per unit (117 s apart, 80 s).
+# - the Python module's bindings, in two units (117 s apart, 80 s in two units of four).
 option(CGOGN_UNITY_BUILD "Compile the tests, the tool and the Python module in batches (unity builds)" ON)
 set(CGOGN_TEST_OPTIMIZATION "-O1" CACHE STRING
     "Optimization flag of the tests and examples in every build type but Debug (empty: the build type's)")

@@ -4,7 +4,8 @@
 # libFuzzer's coverage instrumentation) and runs each for a
 # bounded time: FUZZ_SECONDS in total (default 300), split evenly over the
 # targets (one per reader, and fuzz_append, which loads any
-# format into a map that already holds a mesh and attributes). Fails on any
+# format into a map that already holds a mesh and attributes, and
+# fuzz_graph, the graph readers). Fails on any
 # crash, leak, timeout or sanitizer report.
 #
 # Each target starts from its corpus in fuzz/corpus/<target> (kept in the
@@ -21,7 +22,7 @@ total=${FUZZ_SECONDS:-300}
 formats=(off obj ply stl medit vtk vtu gmsh tetgen)
 targets=()
 for f in "${formats[@]}"; do targets+=("$f"); done
-targets+=(append)
+targets+=(append graph)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
@@ -77,6 +78,12 @@ for f in "${formats[@]}"; do
   done
   k=$((k + 1))
 done
+# fuzz_graph: the first byte chooses the format (0 .cg, 1 .cgr, 2 .skel; +3:
+# indices from 1)
+printf '\x00# D:3 NV:4 NE:4\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n# tree\ne 0 1\ne 1 2\ne 1 3\ne 3 3\n' > "$seeds/graph/tree.cg"
+printf '\x01# D:3 NV:3 NE:2\nv 0 0 0 0.5\nv 1 0 0 0.25\nv 2 0 0 1e-3\ne 0 1\ne 1 2\n' > "$seeds/graph/path.cgr"
+printf '\x02ID Cx Cy Cz RADIUS #NEIGHBORS NEIGHBORS_LIST\n3\n0 0 0 0 1 1 1\n1 1 0 0 1 2 0 2\n2 2 0 0 1 0\n' > "$seeds/graph/path.skel"
+printf '\x03# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg"
 cat fuzz/dict/*.dict > "$build/append.dict"
 
 dict_of() {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `cgogn info`, `cgogn check`, `cgogn convert`: inspect and convert mesh files.
+#include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
+#include <cgogn/io/graph.h>
 
 #include "commands.h"
 #include "mesh_info.h"
@@ -18,11 +20,27 @@ using nlohmann::json;
 namespace
 {
 
+// Loads a graph file into a graph (see io::load_graph).
+Graph load_graph_file(const std::string& path, Progress& progress, io::GraphLoadReport& report)
+{
+	progress.stage("loading " + path);
+	Graph g;
+	report = io::load_graph(g, path);
+	return g;
+}
+
 int run_info(const std::string& path, bool as_json)
 {
 	Progress progress;
 	json j;
-	if (is_nmap_file(path))
+	if (is_graph_file(path))
+	{
+		io::GraphLoadReport r;
+		const Graph g = load_graph_file(path, progress, r);
+		progress.stage("measuring");
+		j = tool::graph_info(g, r);
+	}
+	else if (is_nmap_file(path))
 		with_loaded_nmap(path, progress, [&](const auto& m) {
 			progress.stage("measuring");
 			j = tool::nmap_info(m);
@@ -49,7 +67,14 @@ int run_check(const std::string& path, bool as_json)
 	Progress progress;
 	IntegrityReport report;
 	io::LoadReport load;
-	if (is_nmap_file(path))
+	if (is_graph_file(path))
+	{
+		io::GraphLoadReport r;
+		const Graph g = load_graph_file(path, progress, r);
+		progress.stage("checking");
+		report = check_integrity(g);
+	}
+	else if (is_nmap_file(path))
 		with_loaded_nmap(path, progress, [&](const auto& m) {
 			progress.stage("checking");
 			report = check_integrity(m);
@@ -112,6 +137,18 @@ void save_nmap_as(const MAP& m, const std::string& out, bool boundary)
 int run_convert(const std::string& in, const std::string& out, bool binary, bool attributes, bool boundary)
 {
 	Progress progress;
+	if (is_graph_file(in) || is_graph_file(out))
+	{
+		if (!is_graph_file(in) || !is_graph_file(out))
+			throw io::Error(is_graph_file(in) ? out : in, "a graph file converts to a graph file (.cg, .cgr)");
+		if (boundary)
+			throw io::Error(in, "--boundary applies to the maps of any dimension (.nmap files)");
+		io::GraphLoadReport r;
+		const Graph g = load_graph_file(in, progress, r);
+		progress.stage("writing " + out);
+		io::save_graph(g, out);
+		return 0;
+	}
 	if (is_nmap_file(in))
 	{
 		with_loaded_nmap(in, progress, [&](const auto& m) {
@@ -159,7 +196,9 @@ Command add_info_command(CLI::App& app)
 	auto* sub = app.add_subcommand("info", "Counts, topology, geometry summary of a mesh file");
 	auto file = std::make_shared<std::string>();
 	auto as_json = std::make_shared<bool>(false);
-	sub->add_option("FILE", *file, "mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap)")->required();
+	sub->add_option("FILE", *file,
+					"mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap), or graph (.cg .cgr .skel)")
+		->required();
 	sub->add_flag("--json", *as_json, "print one JSON object");
 	return {sub, [=] { return run_info(*file, *as_json); }};
 }
@@ -180,8 +219,9 @@ Command add_convert_command(CLI::App& app)
 	auto files = std::make_shared<EditFiles>();
 	auto no_attributes = std::make_shared<bool>(false);
 	auto boundary = std::make_shared<bool>(false);
-	sub->add_option("IN", files->in, "input mesh file (or .nmap: a map of any dimension)")->required();
-	sub->add_option("OUT", files->out, "output mesh file (or .nmap)")->required();
+	sub->add_option("IN", files->in, "input mesh file (or .nmap: a map of any dimension; .cg .cgr .skel: a graph)")
+		->required();
+	sub->add_option("OUT", files->out, "output mesh file (or .nmap; .cg .cgr for a graph)")->required();
 	sub->add_flag("--binary", files->binary, "write binary where the format allows it (PLY, STL, VTK, VTU, msh)");
 	sub->add_flag("--no-attributes", *no_attributes, "write positions and connectivity only");
 	sub->add_flag("--boundary", *boundary, "a .nmap to .vtu: write the cells of the map's boundary");

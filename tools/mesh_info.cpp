@@ -3,6 +3,7 @@
 
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/properties/gmap_properties.h>
+#include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
@@ -45,6 +46,8 @@ void geometry(const MAP& m, json& j)
 		Dart other;
 		if constexpr (is_gmap_v<MAP>)
 			other = beta0(m, e.dart);
+		else if constexpr (std::is_same_v<MAP, Graph>)
+			other = alpha0(m, e.dart);
 		else
 			other = phi1(m, e.dart);
 		const double l = ((*pos)[index_of(m, Vertex(e.dart))] - (*pos)[index_of(m, Vertex(other))]).norm();
@@ -203,6 +206,42 @@ json volume_info(const GMap3& m, const io::LoadReport& r)
 	return cells_info3(m, r);
 }
 
+json graph_info(const Graph& g, const io::GraphLoadReport& r)
+{
+	json j;
+	j["dimension"] = 1;
+	j["map"] = "Graph";
+	const int64 v = nb_cells<Graph::Vertex>(g), e = nb_cells<Graph::Edge>(g);
+	j["vertices"] = v;
+	j["edges"] = e;
+	j["connected_components"] = nb_connected_components(g);
+	j["euler_characteristic"] = v - e;
+	j["cycle_rank"] = cycle_rank(g);
+	uint64 isolated = 0, loops = 0;
+	std::map<uint32, uint64> degrees;
+	foreach_cell(g, [&](Graph::Vertex x) {
+		const uint32 d = degree(g, x);
+		isolated += d == 0;
+		++degrees[d];
+	});
+	foreach_cell(
+		g, [&](Graph::Edge x) { loops += same_cell(g, Graph::Vertex(x.dart), Graph::Vertex(alpha0(g, x.dart))); });
+	j["isolated_vertices"] = isolated;
+	j["self_loops"] = loops;
+	uint64 open = 0, closed = 0;
+	for (const GraphBranch& b : branches(g))
+		(b.closed ? closed : open) += 1;
+	j["branches"] = {{"open", open}, {"closed", closed}};
+	json h = json::object();
+	for (auto [d, n] : degrees)
+		h[std::to_string(d)] = n;
+	j["vertex_degrees"] = h;
+	j["radius"] = r.radius;
+	j["one_sided_edges"] = r.nb_one_sided_edges;
+	geometry(g, j);
+	return j;
+}
+
 std::string info_text(const json& j)
 {
 	std::ostringstream s;
@@ -235,6 +274,12 @@ std::string info_text(const json& j)
 						  "connected_components",
 						  "euler_characteristic",
 						  "genus",
+						  "cycle_rank",
+						  "self_loops",
+						  "branches",
+						  "vertex_degrees",
+						  "radius",
+						  "one_sided_edges",
 						  "orientable",
 						  "manifold",
 						  "isolated_vertices",

@@ -4,6 +4,8 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
+#include <cgogn/core/map/graph.h>
+#include <cgogn/io/graph.h>
 #include <cgogn/io/options.h>
 
 #include <nlohmann/json.hpp>
@@ -21,6 +23,12 @@ nlohmann::json surface_info(const CMap2& m, const io::LoadReport& r);
 nlohmann::json surface_info(const GMap2& m, const io::LoadReport& r);
 nlohmann::json volume_info(const CMap3& m, const io::LoadReport& r);
 nlohmann::json volume_info(const GMap3& m, const io::LoadReport& r);
+
+/// A graph's counts (vertices, edges, components, Euler characteristic V -
+/// E, cycle rank, isolated vertices, self-loops, open and closed branches,
+/// the degree histogram), whether the file had radii and one-sided .skel
+/// edges, bounding box and edge lengths. O(size of g).
+nlohmann::json graph_info(const Graph& g, const io::GraphLoadReport& r);
 
 /// The same information as readable text lines.
 std::string info_text(const nlohmann::json& info);

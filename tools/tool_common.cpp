@@ -55,6 +55,17 @@ bool is_nmap_file(const std::string& path)
 	return ext == ".nmap";
 }
 
+bool is_graph_file(const std::string& path)
+{
+	const std::size_t dot = path.find_last_of('.');
+	if (dot == std::string::npos)
+		return false;
+	std::string ext = path.substr(dot);
+	for (char& c : ext)
+		c = char(std::tolower(static_cast<unsigned char>(c)));
+	return ext == ".cg" || ext == ".cgr" || ext == ".skel";
+}
+
 io::Format format_of(const std::string& path)
 {
 	const io::Format f = io::format_from_extension(path);

@@ -53,6 +53,9 @@ bool is_volume_format(io::Format f);
 /// extension, any case).
 bool is_nmap_file(const std::string& path);
 
+/// Whether path names a graph file (.cg, .cgr, .skel; any case).
+bool is_graph_file(const std::string& path);
+
 /// The format of path by its extension; throws io::Error when unknown.
 io::Format format_of(const std::string& path);
 

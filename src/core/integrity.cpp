@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/map/orbits.h>
+#include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
 
+#include <array>
 #include <sstream>
 
 namespace cgogn
@@ -150,6 +152,39 @@ void check_beta_relations(const MAP& m, Checker& ck)
 	}
 }
 
+// The graph relations: alpha0 an involution (a fixed point is a dart without
+// edge, alone around its vertex), alpha1 a permutation and alpha_1 its
+// inverse.
+void check_graph_relations(const Graph& g, Checker& ck)
+{
+	const auto& st = detail::state_of(g);
+	const std::array<std::pair<const AttributeArray<uint32>*, const char*>, 3> relations = {
+		{{st.phi1, "alpha1"}, {st.phi2, "alpha0"}, {st.phi3, "alpha_1"}}};
+	bool relations_ok = true;
+	foreach_dart(g, [&](Dart d) {
+		for (const auto& [r, name] : relations)
+			if (!is_dart_valid(g, Dart((*r)[d.index])))
+			{
+				ck.add(Kind::DeadRelation, Orbit::DART, d.index, INVALID_INDEX,
+					   std::string(name) + " points to a dart that is not live");
+				relations_ok = false;
+			}
+	});
+	if (!relations_ok)
+		return;
+	foreach_dart(g, [&](Dart d) {
+		const Dart e = alpha0(g, d);
+		if (alpha0(g, e) != d)
+			ck.add(Kind::PhiNotInvolution, Orbit::DART, d.index, INVALID_INDEX, "alpha0 is not an involution");
+		if (alpha_1(g, alpha1(g, d)) != d || alpha1(g, alpha_1(g, d)) != d)
+			ck.add(Kind::InverseRelationWrong, Orbit::DART, d.index, INVALID_INDEX,
+				   "alpha_1 is not the inverse of alpha1");
+		if (e == d && alpha1(g, d) != d)
+			ck.add(Kind::EdgelessDartNotAlone, Orbit::DART, d.index, INVALID_INDEX,
+				   "a dart without edge (an isolated vertex) shares its vertex with other darts");
+	});
+}
+
 template <typename MAP>
 void check_phi_relations(const MAP& m, Checker& ck);
 template <typename MAP>
@@ -170,7 +205,9 @@ void check_relations(const MAP& m, Checker& ck)
 		for (uint32 o = 0; o < NB_ORBITS; ++o)
 			check_unused_lines(*detail::state_of(m).cells[o], Orbit(o), {&detail::state_of(m).cells[o]->key()}, ck);
 	}
-	if constexpr (is_nmap_v<MAP>)
+	if constexpr (std::is_same_v<MAP, Graph>)
+		check_graph_relations(m, ck);
+	else if constexpr (is_nmap_v<MAP>)
 		check_nmap_relations(m, ck);
 	else if constexpr (is_gmap_v<MAP>)
 		check_beta_relations(m, ck);
@@ -371,6 +408,10 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 		f(phi2(m, d));
 		f(phi3(m, d));
 	}
+	else if constexpr (O == Orbit::ALPHA0)
+		f(alpha0(m, d));
+	else if constexpr (O == Orbit::ALPHA1)
+		f(alpha1(m, d));
 	else if constexpr (is_dimension_orbit(O))
 	{
 		for (const auto& next : detail::ncell_steps<MAP, dimension_of_orbit(O)>(detail::state_of(m)))
@@ -508,6 +549,11 @@ IntegrityReport check_integrity(const CMap3& m)
 {
 	return check_map<CMap3, Orbit::PHI1, Orbit::PHI2, Orbit::PHI21, Orbit::PHI1_PHI2, Orbit::PHI1_PHI3,
 					 Orbit::PHI2_PHI3, Orbit::PHI21_PHI31, Orbit::PHI1_PHI2_PHI3>(m);
+}
+
+IntegrityReport check_integrity(const Graph& g)
+{
+	return check_map<Graph, Orbit::ALPHA0, Orbit::ALPHA1>(g);
 }
 
 IntegrityReport check_integrity(const GMap1& m)

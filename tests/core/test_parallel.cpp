@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
+#include <random>
 #include <tuple>
 #include <vector>
 
@@ -141,6 +142,23 @@ TEST_P(Parallel, MapsOfAnyDimensionAllCellTypes)
 	CMapN<1> path;
 	generate_cube_grid(path, 5); // its last vertex is the start of a boundary edge
 	check_all_cell_types(path);
+}
+
+TEST_P(Parallel, GraphAllCellTypes)
+{
+	// a random multigraph with self-loops and isolated vertices (passed over
+	// by the edge traversals)
+	Graph g;
+	std::mt19937 rng(3);
+	std::vector<Graph::Vertex> v;
+	for (uint32 i = 0; i < 3000; ++i)
+		v.push_back(add_vertex(g));
+	std::uniform_int_distribution<std::size_t> any(0, 2499);
+	for (uint32 i = 0; i < 5000; ++i)
+		connect_vertices(g, v[any(rng)], v[any(rng)]);
+	check_all_cell_types(g);
+	index_all_cell_types(g);
+	check_all_cell_types(g);
 }
 
 TEST_P(Parallel, HexVolumeAllCellTypes)

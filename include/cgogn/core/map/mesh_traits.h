@@ -4,6 +4,7 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/nmap.h>
 
 #include <concepts>
@@ -124,6 +125,21 @@ struct mesh_traits<GMap3>
 	using CC = GMap3::CC;                  ///< See GMap3::CC.
 	/// The cell types: views keep one predicate or cell set per entry.
 	using Cells = std::tuple<Vertex, Vertex2, Edge, Edge2, Face, Face2, Volume, CC>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
+};
+
+/// The traits of a graph.
+template <>
+struct mesh_traits<Graph>
+{
+	static constexpr uint32 dimension = 1; ///< The dimension of the map.
+	using MapType = Graph;                 ///< The map type.
+	using Vertex = Graph::Vertex;          ///< See Graph::Vertex.
+	using Edge = Graph::Edge;              ///< See Graph::Edge.
+	/// The cell types: views keep one predicate or cell set per entry.
+	using Cells = std::tuple<Vertex, Edge>;
 	template <typename T>
 	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
 	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).

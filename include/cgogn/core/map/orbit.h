@@ -35,6 +35,9 @@ enum class Orbit : uint32
 	BETA0_BETA2_BETA3,       // 3d edge
 	BETA1_BETA2_BETA3,       // 3d vertex
 	BETA0_BETA1_BETA2_BETA3, // 3d connected component
+	// graphs
+	ALPHA0, // graph edge: its two half-edges (none for an isolated vertex)
+	ALPHA1, // graph vertex: the half-edges around it
 	// the i-cells of the maps of any dimension (CMapN, GMapN), i = 0 ... MAX_DIMENSION
 	CELL0,
 	CELL1,
@@ -99,6 +102,8 @@ constexpr std::string_view orbit_name(Orbit o)
 															   "BETA0_BETA2_BETA3",
 															   "BETA1_BETA2_BETA3",
 															   "BETA0_BETA1_BETA2_BETA3",
+															   "ALPHA0",
+															   "ALPHA1",
 															   "CELL0",
 															   "CELL1",
 															   "CELL2",

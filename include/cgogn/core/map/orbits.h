@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cgogn/core/map/betas.h>
+#include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/ncell_walk.h>
 #include <cgogn/core/marking/dart_marker.h>
 
@@ -349,6 +350,27 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
 			[&](Dart x) { return beta2(m, x); }, [&](Dart x) { return beta3(m, x); });
 	}
+	else if constexpr (O == Orbit::ALPHA1)
+	{
+		// the half-edges around a graph vertex, in alpha1 order
+		static_assert(std::derived_from<MAP, Graph>, "orbit of the graphs only");
+		const auto alpha1_of = detail::state_of(m).phi1->view(); // see LineStorage::View
+		Dart it = d;
+		do
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			it = Dart(alpha1_of[it.index]);
+		} while (it != d);
+		return true;
+	}
+	else if constexpr (O == Orbit::ALPHA0)
+	{
+		// a graph edge; the dart alone for an isolated vertex (no edge)
+		static_assert(std::derived_from<MAP, Graph>, "orbit of the graphs only");
+		const Dart e = alpha0(m, d);
+		return call_and_continue(f, d) && (e == d || call_and_continue(f, e));
+	}
 	else if constexpr (is_dimension_orbit(O))
 	{
 		static_assert(is_nmap_v<MAP> && dimension_of_orbit(O) <= MAP::dimension,
@@ -370,12 +392,15 @@ template <typename MAP, Orbit O>
 inline constexpr bool orbit_inside_top_cell_v =
 	!orbit_uses_phi(O, MAP::dimension) && !orbit_uses_beta(O, MAP::dimension);
 
-/// True when c is a boundary cell (not part of the mesh; skipped by traversals). O(1).
+/// True when c is a boundary cell (not part of the mesh; skipped by
+/// traversals); in a graph, the "edge" of an isolated vertex's dart. O(1).
 template <typename MAP, Orbit O>
 requires std::derived_from<MAP, CMapBase>
 bool is_boundary_cell(const MAP& m, Cell<O> c)
 {
-	if constexpr ((MAP::dimension >= 2 || is_nmap_v<MAP>)&&orbit_inside_top_cell_v<MAP, O>)
+	if constexpr (O == Orbit::ALPHA0)
+		return is_isolated(m, c.dart); // an isolated graph vertex's dart: no edge
+	else if constexpr ((MAP::dimension >= 2 || is_nmap_v<MAP>)&&orbit_inside_top_cell_v<MAP, O>)
 		return is_boundary(m, c.dart);
 	else
 		return false;
@@ -388,11 +413,12 @@ namespace detail
 /// the darts pass over dart d. In the maps of dimension 1 to 3, the boundary
 /// darts: each real cell has a dart that is not one. In the maps of any
 /// dimension, the darts of boundary cells: a vertex of a CMapN<1> is a single
-/// dart, and the last vertex of a path is the start of its boundary edge. O(1).
+/// dart, and the last vertex of a path is the start of its boundary edge. In
+/// a graph, an isolated vertex's dart for the edges (it has none). O(1).
 template <Orbit O, typename MAP>
 CGOGN_INLINE bool passed_over_by_traversals(const MAP& m, Dart d)
 {
-	if constexpr (is_nmap_v<MAP>)
+	if constexpr (is_nmap_v<MAP> || std::derived_from<MAP, Graph>)
 		return is_boundary_cell(m, Cell<O>(d));
 	else
 		return is_boundary(m, d);

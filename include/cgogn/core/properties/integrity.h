@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/mesh_traits.h>
 
 #include <string>
@@ -37,6 +38,8 @@ struct IntegrityError
 		StaleUnusedLine,              ///< a line never handed out since the last compaction holds an old index
 		ShortFace,                    ///< a non-boundary face of a 2- or 3-map has 1 or 2 edges
 		IncidenceCacheStale,          ///< a quick incidence cache disagrees with the map (see IncidenceCache)
+		InverseRelationWrong,         ///< a stored inverse (a graph's alpha_1) is not the relation's inverse
+		EdgelessDartNotAlone,         ///< a graph dart without edge shares its vertex with other darts
 	};
 	Kind kind;                   ///< The violated invariant.
 	Orbit orbit = Orbit::DART;   ///< The orbit of the cell or line at fault; DART for errors of the relations.

@@ -76,7 +76,7 @@ class UnindexedCellStarts
 public:
 	explicit UnindexedCellStarts(const MAP& m) : m_(m)
 	{
-		if constexpr (O != Orbit::PHI2 && O != Orbit::BETA0_BETA2 && !pair)
+		if constexpr (O != Orbit::PHI2 && O != Orbit::BETA0_BETA2 && O != Orbit::ALPHA0 && !pair)
 			mark_.emplace(m);
 		if constexpr (flooded)
 			work_.emplace();
@@ -90,6 +90,12 @@ public:
 			return represents_unindexed_edge(m_, d);
 		else if constexpr (O == Orbit::BETA0_BETA2)
 			return represents_unindexed_gmap_edge(m_, d);
+		else if constexpr (O == Orbit::ALPHA0)
+		{
+			// a graph edge from its smaller half-edge; an isolated vertex has none
+			const Dart e = alpha0(m_, d);
+			return d.index < e.index;
+		}
 		else if constexpr (pair)
 		{
 			// the smaller dart of the pair

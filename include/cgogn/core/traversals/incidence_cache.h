@@ -118,7 +118,7 @@ constexpr bool incidence_cache_supported()
 /// when TO is indexed at build time): a callable taking `auto` reads their
 /// attributes at flat-array cost; one taking TO gets the plain cell.
 /// Memory: 4 bytes per FROM container line + 4 bytes per stored neighbour
-/// (8 with the lines), and 170 KB per map holding any cache (the lookup array
+/// (8 with the lines), and 200 KB per map holding any cache (the lookup array
 /// of IncidenceTables).
 /// Supported: every local traversal of 2- and 3-maps and of 2- and 3-G-maps
 /// but the O(1) ones (2-D edge -> vertex/face/volume, 3-D edge -> vertex,

@@ -57,7 +57,7 @@ inline constexpr uint32 NB_INCIDENCE_KEYS = NB_ORBITS * (NB_ORBITS + 1) * (NB_OR
 
 /// The quick incidence caches a map holds. Each local traversal of a map with
 /// caches asks for its relation once per cell: find() answers with one array
-/// read (a table of NB_INCIDENCE_KEYS pointers, 170 KB, exists while at least
+/// read (a table of NB_INCIDENCE_KEYS pointers, 200 KB, exists while at least
 /// one cache is built), where a search of the list costs a pair of dependent
 /// loads per table before it.
 class IncidenceTables

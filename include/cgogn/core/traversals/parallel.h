@@ -25,7 +25,7 @@ constexpr bool orbit_is_cyclic(Orbit o)
 {
 	return o == Orbit::PHI1 || o == Orbit::PHI2 || o == Orbit::PHI21 || o == Orbit::PHI1_PHI3 ||
 		   o == Orbit::PHI2_PHI3 || o == Orbit::BETA0 || o == Orbit::BETA1 || o == Orbit::BETA0_BETA1 ||
-		   o == Orbit::BETA0_BETA2 || o == Orbit::BETA1_BETA2;
+		   o == Orbit::BETA0_BETA2 || o == Orbit::BETA1_BETA2 || o == Orbit::ALPHA0 || o == Orbit::ALPHA1;
 }
 
 /// What one worker of a flooded traversal keeps from chunk to chunk: a mark
@@ -76,18 +76,19 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	const AttributeArray<uint32>& key = detail::state_of(m).darts->key();
 	if constexpr (orbit_is_cyclic(CELL::ORBIT))
 	{
-		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-								held_callable_t<FUNC> fc = f; // see held_callable_t
-								for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
-								{
-									if (key[i] == INVALID_INDEX || is_boundary(m, Dart(i)))
-										continue;
-									const bool owner = foreach_dart_of_orbit(
-										m, CELL(Dart(i)), [&](Dart x) { return x.index >= i || is_boundary(m, x); });
-									if (owner)
-										fc(CELL(Dart(i)));
-								}
-							}));
+		parallel_for_chunks(
+			nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+				held_callable_t<FUNC> fc = f; // see held_callable_t
+				for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+				{
+					if (key[i] == INVALID_INDEX || detail::passed_over_by_traversals<CELL::ORBIT>(m, Dart(i)))
+						continue;
+					const bool owner = foreach_dart_of_orbit(m, CELL(Dart(i)),
+															 [&](Dart x) { return x.index >= i || is_boundary(m, x); });
+					if (owner)
+						fc(CELL(Dart(i)));
+				}
+			}));
 		return;
 	}
 	else
