@@ -37,4 +37,5 @@ PYBIND11_MODULE(_cgogn, m)
 	cgogn::python::bind_operators(m);
 	cgogn::python::bind_algorithms(m);
 	cgogn::python::bind_nmaps(m);
+	cgogn::python::bind_graph(m);
 }

@@ -142,5 +142,6 @@ void bind_maps(py::module_& m);
 void bind_attributes(py::module_& m);
 void bind_operators(py::module_& m);
 void bind_algorithms(py::module_& m);
+void bind_graph(py::module_& m);
 
 } // namespace cgogn::python
