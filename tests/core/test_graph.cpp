@@ -230,6 +230,52 @@ TEST(Graph, BrokenRelationsAreReported)
 	EXPECT_TRUE(check_integrity(h).has(IntegrityError::Kind::InverseRelationWrong));
 }
 
+TEST(Graph, SkeletonOfMapsCarriesVertexAndEdgeAttributes)
+{
+	CMap2 m;
+	build_surface(m, torus_soup(6, 4));
+	auto id = add_attribute<double, CMap2::Vertex>(m, "id");
+	auto sum = add_attribute<double, CMap2::Edge>(m, "sum");
+	double next = 1.0;
+	foreach_cell(m, [&](CMap2::Vertex v) { value<double>(m, id, v) = (next *= 1.5); });
+	foreach_cell(m, [&](CMap2::Edge e) {
+		value<double>(m, sum, e) =
+			value<double>(m, id, CMap2::Vertex(e.dart)) + value<double>(m, id, CMap2::Vertex(phi2(m, e.dart)));
+	});
+	const Graph g = to_graph(m);
+	expect_valid(g);
+	EXPECT_EQ(nb_cells<Vertex>(g), nb_cells<CMap2::Vertex>(m));
+	EXPECT_EQ(nb_cells<Edge>(g), nb_cells<CMap2::Edge>(m));
+	EXPECT_EQ(nb_connected_components(g), 1u);
+	EXPECT_EQ(cycle_rank(g), nb_cells<CMap2::Edge>(m) - nb_cells<CMap2::Vertex>(m) + 1);
+	auto gid = get_attribute<double, Vertex>(g, "id");
+	auto gsum = get_attribute<double, Edge>(g, "sum");
+	ASSERT_TRUE(gid && gsum);
+	// each edge's value is the sum of its ends' values: the attributes came
+	// to the right vertices and edges
+	foreach_cell(g, [&](Edge e) {
+		EXPECT_EQ(value<double>(g, gsum, e),
+				  value<double>(g, gid, Vertex(e.dart)) + value<double>(g, gid, Vertex(alpha0(g, e.dart))));
+	});
+	std::multiset<uint32> map_degrees, graph_degrees;
+	foreach_cell(m, [&](CMap2::Vertex v) { map_degrees.insert(degree(m, v)); });
+	foreach_cell(g, [&](Vertex v) { graph_degrees.insert(degree(g, v)); });
+	EXPECT_EQ(map_degrees, graph_degrees);
+
+	GMap2 gm;
+	build_surface(gm, grid_soup(3, 2)); // 4 x 3 vertices, 9 + 8 edges
+	const Graph gg = to_graph(gm);
+	expect_valid(gg);
+	EXPECT_EQ(nb_cells<Vertex>(gg), 12u);
+	EXPECT_EQ(nb_cells<Edge>(gg), 17u);
+	CMap3 v;
+	build_volume(v, tet_grid_soup(2, 2, 2));
+	const Graph gv = to_graph(v);
+	expect_valid(gv);
+	EXPECT_EQ(nb_cells<Vertex>(gv), nb_cells<CMap3::Vertex>(v));
+	EXPECT_EQ(nb_cells<Edge>(gv), nb_cells<CMap3::Edge>(v));
+}
+
 // ---- randomized editing against a plain adjacency-list model
 
 struct Model

@@ -526,8 +526,17 @@ std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContain
 	if constexpr (P != O)
 		if (to.orbit() == P)
 			return to.add_attribute<T, CellAttribute<T, P>>(this->name(), this->default_value());
-	// and so does a container of the cells of the same dimension in a map of
-	// any dimension, or in a map of dimension 2 or 3 (to_nmap, to_fixed_map)
+	// and so do a graph's vertices and edges, from the vertices and edges of
+	// any map (to_graph: its 1-skeleton)
+	constexpr Orbit K = is_dimension_orbit(O) ? O : dimension_counterpart(O);
+	if constexpr (K == Orbit::CELL0)
+		if (to.orbit() == Orbit::ALPHA1)
+			return to.add_attribute<T, CellAttribute<T, Orbit::ALPHA1>>(this->name(), this->default_value());
+	if constexpr (K == Orbit::CELL1)
+		if (to.orbit() == Orbit::ALPHA0)
+			return to.add_attribute<T, CellAttribute<T, Orbit::ALPHA0>>(this->name(), this->default_value());
+	// and a container of the cells of the same dimension in a map of any
+	// dimension, or in a map of dimension 2 or 3 (to_nmap, to_fixed_map)
 	std::shared_ptr<AttributeBase> same_dimension;
 	[&]<std::size_t... K>(std::index_sequence<K...>)
 	{

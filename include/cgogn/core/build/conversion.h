@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/nmap.h>
 
 namespace cgogn
@@ -68,5 +69,15 @@ CMap2 to_fixed_map(const CMapN<2>& m);
 CMap3 to_fixed_map(const CMapN<3>& m);
 GMap2 to_fixed_map(const GMapN<2>& m);
 GMap3 to_fixed_map(const GMapN<3>& m);
+
+/// The 1-skeleton of m as a graph: a vertex per vertex of m and an edge per
+/// edge of m (boundary cells excluded), each edge joining the two ends of
+/// the map's edge, and the vertex and edge attributes of m carried (lines
+/// renumbered in the order of the traversals; the graph's vertices and
+/// edges are indexed). O(size of m x number of attributes).
+Graph to_graph(const CMap2& m);
+Graph to_graph(const GMap2& m);
+Graph to_graph(const CMap3& m);
+Graph to_graph(const GMap3& m);
 
 } // namespace cgogn
