@@ -78,12 +78,13 @@ for f in "${formats[@]}"; do
   done
   k=$((k + 1))
 done
-# fuzz_graph: the first byte chooses the format (0 .cg, 1 .cgr, 2 .skel; +3:
-# indices from 1)
+# fuzz_graph: the first byte chooses the format (0 .cg, 1 .cgr, 2 .skel,
+# 3 .obj; +4: indices from 1)
 printf '\x00# D:3 NV:4 NE:4\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n# tree\ne 0 1\ne 1 2\ne 1 3\ne 3 3\n' > "$seeds/graph/tree.cg"
 printf '\x01# D:3 NV:3 NE:2\nv 0 0 0 0.5\nv 1 0 0 0.25\nv 2 0 0 1e-3\ne 0 1\ne 1 2\n' > "$seeds/graph/path.cgr"
 printf '\x02ID Cx Cy Cz RADIUS #NEIGHBORS NEIGHBORS_LIST\n3\n0 0 0 0 1 1 1\n1 1 0 0 1 2 0 2\n2 2 0 0 1 0\n' > "$seeds/graph/path.skel"
-printf '\x03# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg"
+printf '\x03v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3 1\nl -1 -2\nf 1 2 3\n' > "$seeds/graph/lines.obj"
+printf '\x04# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg"
 cat fuzz/dict/*.dict > "$build/append.dict"
 
 dict_of() {

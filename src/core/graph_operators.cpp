@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/operators/graph.h>
+#include <cgogn/core/utils/error.h>
 
 #include "index_lines.h"
 
@@ -159,7 +160,8 @@ bool can_merge_vertices(const Graph& g, Graph::Vertex v1, Graph::Vertex v2)
 
 Graph::Vertex merge_vertices(Graph& g, Graph::Vertex v1, Graph::Vertex v2, bool set_indices)
 {
-	assert(can_merge_vertices(g, v1, v2));
+	if (!can_merge_vertices(g, v1, v2))
+		return v1; // a vertex merged with itself: nothing to do
 	const Dart d1 = v1.dart, d2 = v2.dart;
 	const uint32 line1 = detail::index_or_invalid<Orbit::ALPHA1>(g, d1);
 	const uint32 line2 = detail::index_or_invalid<Orbit::ALPHA1>(g, d2);
@@ -193,12 +195,12 @@ Graph::Vertex cut_edge(Graph& g, Graph::Edge e, bool set_indices)
 	link_alpha1(g, y, x);
 	link_alpha0(g, a, x);
 	link_alpha0(g, y, b);
-	// a keeps the edge line (and represents it), {y, b} is a new edge
+	// {a, x} keeps the edge line (a represents it), {y, b} is a new edge
 	detail::set_representative<Orbit::ALPHA0>(g, a);
+	detail::copy_dart_index<Orbit::ALPHA0>(g, x, a);
 	detail::set_dart_index<Orbit::ALPHA0>(g, b, INVALID_INDEX);
 	if (set_indices)
 	{
-		detail::copy_dart_index<Orbit::ALPHA0>(g, x, a);
 		detail::index_new_cell(g, Edge(y));
 		detail::index_new_cell(g, Vertex(x));
 	}
@@ -214,7 +216,8 @@ bool can_collapse_edge(const Graph& g, Graph::Edge e)
 
 Graph::Vertex collapse_edge(Graph& g, Graph::Edge e, bool set_indices)
 {
-	assert(can_collapse_edge(g, e));
+	if (!can_collapse_edge(g, e))
+		throw TopologyError("collapse_edge: a self-loop cannot be collapsed (its two ends are one vertex)");
 	const Dart a = e.dart;
 	const Dart b = alpha0(g, a);
 	const Dart next_a = alpha1(g, a), next_b = alpha1(g, b);

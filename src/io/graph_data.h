@@ -22,13 +22,15 @@ struct GraphData
 	std::vector<double> radii; ///< empty without radius
 	std::vector<std::pair<uint32, uint32>> edges;
 	uint32 nb_one_sided_edges = 0; ///< .skel: edges listed by one end only
+	uint32 nb_faces_ignored = 0;   ///< .obj: faces (`f`), not part of a graph
 };
 
 enum class GraphFormat
 {
 	Cg,
 	Cgr,
-	Skel
+	Skel,
+	Obj
 };
 
 /// Parses a whole graph file (see <cgogn/io/graph.h> for the formats).

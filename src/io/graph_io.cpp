@@ -54,6 +54,8 @@ CgHeader read_cg_header(detail::TextReader& in)
 		const int k = key == "D" ? 0 : key == "NV" ? 1 : key == "NE" ? 2 : -1;
 		if (k < 0)
 			header.fail("unknown header key '" + detail::TextReader::printable(key) + "' (expected D, NV and NE)");
+		if (seen[k])
+			header.fail("header key '" + std::string(key) + "' given twice");
 		uint32& v = k == 0 ? h.dimension : k == 1 ? h.nb_vertices : h.nb_edges;
 		v = header.read_uint(k == 0 ? "dimension" : k == 1 ? "number of vertices" : "number of edges");
 		seen[k] = true;
@@ -116,8 +118,9 @@ detail::GraphData read_cg(std::string_view text, const std::string& path, bool w
 						std::to_string(h.nb_vertices) + " vertices, indexed from " + std::to_string(base) + ")");
 			v = uint32(x - base);
 		}
-		if (!in.at_eol())
-			in.fail("unexpected '" + detail::TextReader::printable(in.token_in_line()) + "' after an edge");
+		// a comment may end the line
+		if (const std::string_view rest = in.token_in_line(); !rest.empty() && rest[0] != '#')
+			in.fail("unexpected '" + detail::TextReader::printable(rest) + "' after an edge");
 		d.edges.emplace_back(ends[0], ends[1]);
 		in.next_line();
 	}
@@ -181,6 +184,54 @@ detail::GraphData read_skel(std::string_view text, const std::string& path)
 	return d;
 }
 
+// An OBJ polyline index: 1-based, or negative (relative to the last vertex
+// defined so far); `v/vt` keeps the vertex.
+uint32 obj_index(detail::TextReader& in, std::string_view t, uint32 nb_vertices)
+{
+	const std::size_t slash = t.find('/');
+	const int64 i = in.to_int(t.substr(0, slash), "a vertex index");
+	const int64 k = i < 0 ? int64(nb_vertices) + i : i - 1;
+	if (i == 0 || k < 0 || k >= int64(nb_vertices))
+		in.fail("vertex index " + std::to_string(i) + " out of range (" + std::to_string(nb_vertices) +
+				" vertices defined so far)");
+	return uint32(k);
+}
+
+detail::GraphData read_obj(std::string_view text, const std::string& path)
+{
+	detail::TextReader in(text, path, '#');
+	detail::GraphData d;
+	std::vector<uint32> polyline;
+	while (!in.at_end())
+	{
+		const std::string_view t = in.token_in_line();
+		if (t == "v")
+		{
+			Vec3 p;
+			for (uint32 k = 0; k < 3; ++k)
+				p[k] = in.to_double(in.token_in_line(), "a coordinate");
+			d.positions.push_back(p);
+		}
+		else if (t == "l")
+		{
+			polyline.clear();
+			for (std::string_view x = in.token_in_line(); !x.empty(); x = in.token_in_line())
+				polyline.push_back(obj_index(in, x, uint32(d.positions.size())));
+			if (polyline.size() < 2)
+				in.fail("a line ('l') needs at least 2 vertices");
+			for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
+				d.edges.emplace_back(polyline[i], polyline[i + 1]);
+		}
+		else if (t == "f")
+			++d.nb_faces_ignored;
+		else if (t != "vt" && t != "vn" && t != "vp" && t != "o" && t != "g" && t != "s" && t != "usemtl" &&
+				 t != "mtllib")
+			in.fail("unknown OBJ statement '" + detail::TextReader::printable(t) + "'");
+		in.next_line();
+	}
+	return d;
+}
+
 } // namespace
 
 namespace detail
@@ -194,6 +245,8 @@ GraphData read_graph(std::string_view text, const std::string& path, GraphFormat
 		return read_cg(text, path, false, index_base);
 	case GraphFormat::Cgr:
 		return read_cg(text, path, true, index_base);
+	case GraphFormat::Obj:
+		return read_obj(text, path);
 	default:
 		return read_skel(text, path);
 	}
@@ -254,6 +307,7 @@ GraphLoadReport build_graph(Graph& g, const GraphData& d, const std::string& pat
 	r.nb_edges_read = uint32(d.edges.size());
 	r.radius = !d.radii.empty();
 	r.nb_one_sided_edges = d.nb_one_sided_edges;
+	r.nb_faces_ignored = d.nb_faces_ignored;
 	return r;
 }
 
@@ -262,22 +316,24 @@ GraphLoadReport build_graph(Graph& g, const GraphData& d, const std::string& pat
 GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOptions& options)
 {
 	const std::string ext = extension_of(path);
-	if (ext != "cg" && ext != "cgr" && ext != "skel")
-		throw Error(path, "unknown graph format '." + ext + "' (.cg, .cgr and .skel are read)");
+	if (ext != "cg" && ext != "cgr" && ext != "skel" && ext != "obj")
+		throw Error(path, "unknown graph format '." + ext + "' (.cg, .cgr, .skel and .obj are read)");
 	if (options.index_base > 1)
 		throw Error(path, "index_base must be 0 or 1");
 	const std::string text = detail::read_file(path);
-	const detail::GraphFormat format = ext == "cg"    ? detail::GraphFormat::Cg
-									   : ext == "cgr" ? detail::GraphFormat::Cgr
-													  : detail::GraphFormat::Skel;
+	const detail::GraphFormat format = ext == "cg"     ? detail::GraphFormat::Cg
+									   : ext == "cgr"  ? detail::GraphFormat::Cgr
+									   : ext == "skel" ? detail::GraphFormat::Skel
+													   : detail::GraphFormat::Obj;
 	return detail::build_graph(g, detail::read_graph(text, path, format, options.index_base), path);
 }
 
 void save_graph(const Graph& g, const std::string& path)
 {
 	const std::string ext = extension_of(path);
-	if (ext != "cg" && ext != "cgr")
-		throw Error(path, "cannot write graph format '." + ext + "' (.cg and .cgr are written)");
+	if (ext != "cg" && ext != "cgr" && ext != "obj")
+		throw Error(path, "cannot write graph format '." + ext + "' (.cg, .cgr and .obj are written)");
+	const bool obj = ext == "obj";
 	const auto position = get_attribute<Vec3, Graph::Vertex>(g, "position");
 	if (!position)
 		throw Error(path, "the graph has no Vec3 vertex attribute 'position'");
@@ -289,14 +345,21 @@ void save_graph(const Graph& g, const std::string& path)
 			throw Error(path, "a .cgr file needs the double vertex attribute 'radius'");
 	}
 	// vertices numbered in the order of their lines (the graph is indexed:
-	// it has a vertex attribute)
+	// it has a vertex attribute), every vertex with one
+	foreach_dart(g, [&](Dart d) {
+		if (index_of(g, Graph::Vertex(d)) == INVALID_INDEX)
+			throw Error(path, "a vertex has no index (made with set_indices = false: call index_cells)");
+	});
 	const AttributeContainer& lines = container_of<Orbit::ALPHA1>(g);
 	std::vector<uint32> number(lines.end_index(), INVALID_INDEX);
-	std::string s = "# D:3 NV:" + std::to_string(nb_cells<Graph::Vertex>(g)) +
-					" NE:" + std::to_string(nb_cells<Graph::Edge>(g)) + "\n";
+	std::string s = obj ? std::string("# a graph: its vertices, and one line (l) per edge\n")
+						: "# D:3 NV:" + std::to_string(nb_cells<Graph::Vertex>(g)) +
+							  " NE:" + std::to_string(nb_cells<Graph::Edge>(g)) + "\n";
+	// OBJ indices start at 1
+	const uint32 first = obj ? 1 : 0;
 	uint32 n = 0;
 	foreach_cell(g, [&](Graph::Vertex v) {
-		number[index_of(g, v)] = n++;
+		number[index_of(g, v)] = first + n++;
 		const Vec3& p = value<Vec3>(g, position, v);
 		s += 'v';
 		for (uint32 k = 0; k < 3; ++k)
@@ -311,14 +374,9 @@ void save_graph(const Graph& g, const std::string& path)
 		}
 		s += '\n';
 	});
-	auto number_of = [&](Dart d) {
-		const uint32 line = index_of(g, Graph::Vertex(d));
-		if (line == INVALID_INDEX)
-			throw Error(path, "a vertex has no index (made with set_indices = false: call index_cells)");
-		return number[line];
-	};
+	auto number_of = [&](Dart d) { return number[index_of(g, Graph::Vertex(d))]; };
 	foreach_cell(g, [&](Graph::Edge e) {
-		s += "e ";
+		s += obj ? "l " : "e ";
 		detail::append_uint(s, number_of(e.dart));
 		s += ' ';
 		detail::append_uint(s, number_of(alpha0(g, e.dart)));

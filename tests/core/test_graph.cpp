@@ -170,6 +170,35 @@ TEST(Graph, OperatorsKeepTheLinesOfWhatSurvives)
 	EXPECT_EQ(nb_cells<Edge>(g), 0u);
 }
 
+TEST(Graph, MisuseLeavesTheGraphValid)
+{
+	Graph g;
+	auto vid = add_attribute<int, Vertex>(g, "vid");
+	const Vertex lone = add_vertex(g);
+	const std::vector<Vertex> v = add_vertices(g, 2);
+	const Edge e = connect_vertices(g, v[0], v[1]);
+	const Edge loop = connect_vertices(g, v[0], v[0]);
+	// a vertex merged with itself is left as it is
+	EXPECT_EQ(merge_vertices(g, lone, lone), lone);
+	EXPECT_EQ(merge_vertices(g, v[0], Vertex(alpha1(g, v[0].dart))), v[0]);
+	expect_valid(g);
+	EXPECT_EQ(nb_cells<Vertex>(g), 3u);
+	EXPECT_EQ(degree(g, v[0]), 3u);
+	// a self-loop is not collapsed
+	EXPECT_THROW(collapse_edge(g, loop), TopologyError);
+	expect_valid(g);
+	EXPECT_EQ(nb_cells<Edge>(g), 2u);
+	// cut_edge without indices keeps e's line on both its darts
+	auto eid = add_attribute<int, Edge>(g, "eid");
+	value<int>(g, eid, e) = 5;
+	const Vertex m = cut_edge(g, e, false);
+	index_cells<Vertex>(g);
+	index_cells<Edge>(g);
+	expect_valid(g);
+	EXPECT_EQ(value<int>(g, eid, e), 5);
+	EXPECT_EQ(degree(g, m), 2u);
+}
+
 TEST(Graph, MarkersAndGlobalTraversals)
 {
 	Graph g;

@@ -98,7 +98,8 @@ TEST(GraphFiles, CgKeepsIsolatedVerticesAndAppends)
 {
 	TempDir dir;
 	const std::string path = dir.file("g.cg");
-	write_text(path, "# D:3 NV:4 NE:2\nv 0 0 0\nv 1 0 0\nv 2 0 0 extra tokens\n# a comment\nv 3 0 0\ne 0 1\ne 1 1\n");
+	write_text(path,
+			   "# D:3 NV:4 NE:2\nv 0 0 0\nv 1 0 0\nv 2 0 0 extra tokens\n# a comment\nv 3 0 0\ne 0 1 # first\ne 1 1\n");
 	Graph g;
 	const io::GraphLoadReport r = io::load_graph(g, path);
 	EXPECT_FALSE(r.radius);
@@ -148,6 +149,52 @@ TEST(GraphFiles, SkelListsAreSymmetrised)
 	EXPECT_EQ(c.positions[2], Vec3(2, 0, 0));
 }
 
+TEST(GraphFiles, ObjPolylines)
+{
+	TempDir dir;
+	const std::string path = dir.file("lines.obj");
+	// a triangle as one closed polyline, a tail by relative indices, a face
+	write_text(path, "# lines\nv 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3 1\nv 2 2 0 1.0\nl -1 -2\nvt 0 0\nf 1 2 3\no x\n");
+	Graph g;
+	const io::GraphLoadReport r = io::load_graph(g, path);
+	EXPECT_EQ(r.nb_vertices_read, 4u);
+	EXPECT_EQ(r.nb_edges_read, 4u);
+	EXPECT_EQ(r.nb_faces_ignored, 1u);
+	EXPECT_EQ(cycle_rank(g), 1u);
+	EXPECT_EQ(nb_connected_components(g), 1u);
+	// written one `l` per edge, and read back the same
+	io::save_graph(g, dir.file("out.obj"));
+	Graph h;
+	io::load_graph(h, dir.file("out.obj"));
+	const Content a = content_of(g), b = content_of(h);
+	EXPECT_EQ(a.positions, b.positions);
+	EXPECT_EQ(a.edges, b.edges);
+	io::save_graph(h, dir.file("again.obj"));
+	EXPECT_EQ(read_text(dir.file("out.obj")), read_text(dir.file("again.obj")));
+	for (const auto& [text, cause] :
+		 std::vector<std::pair<std::string, std::string>>{{"v 0 0 0\nl 1\n", "at least 2"},
+														  {"v 0 0 0\nv 1 0 0\nl 0 1\n", "out of range"},
+														  {"v 0 0 0\nl 1 -2\n", "out of range"},
+														  {"v 0 0 0\nv 1 0 0\nl 1 3\n", "out of range"},
+														  {"v 0 0 0\ncurv 1 2\n", "unknown OBJ statement"},
+														  {"v 0 nan 0\n", "not finite"}})
+	{
+		write_text(dir.file("bad.obj"), text);
+		Graph x;
+		try
+		{
+			io::load_graph(x, dir.file("bad.obj"));
+			ADD_FAILURE() << text;
+		}
+		catch (const io::Error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(cause), std::string::npos) << e.what();
+			EXPECT_EQ(e.where(), io::Error::Where::Line);
+		}
+		EXPECT_EQ(nb_darts(x), 0u);
+	}
+}
+
 TEST(GraphFiles, MalformedFilesGiveTypedErrorsAndLeaveTheGraph)
 {
 	TempDir dir;
@@ -161,6 +208,7 @@ TEST(GraphFiles, MalformedFilesGiveTypedErrorsAndLeaveTheGraph)
 	const std::vector<Case> cases = {
 		{"no_header.cg", "v 0 0 0\n", "header", 1},
 		{"missing_key.cg", "# D:3 NV:1\nv 0 0 0\n", "D, NV and NE", 1},
+		{"twice_key.cg", "# D:3 NV:1 NE:0 NV:2\nv 0 0 0\n", "given twice", 1},
 		{"bad_dim.cg", "# D:4 NV:1 NE:0\nv 0 0 0 0\n", "dimension", 1},
 		{"few_vertices.cg", "# D:3 NV:3 NE:1\nv 0.0 0.0 0.0\nv 1.0 0.0 0.0\ne 0 1\n", "expected vertex 2", 4},
 		{"out_of_range.cg", "# D:3 NV:2 NE:1\nv 0 0 0\nv 1 0 0\ne 0 2\n", "out of range", 4},
@@ -198,11 +246,22 @@ TEST(GraphFiles, MalformedFilesGiveTypedErrorsAndLeaveTheGraph)
 	Graph g;
 	EXPECT_THROW(io::load_graph(g, dir.file("missing.cg")), io::Error);
 	EXPECT_THROW(io::load_graph(g, dir.file("x.graph")), io::Error);
+	EXPECT_THROW(io::save_graph(g, dir.file("x.off")), io::Error);
 	add_attribute<double, Vertex>(g, "position");
 	write_text(dir.file("ok.cg"), "# D:3 NV:1 NE:0\nv 0 0 0\n");
 	EXPECT_THROW(io::load_graph(g, dir.file("ok.cg")), io::Error);
 	EXPECT_THROW(io::save_graph(g, dir.file("out.cg")), io::Error);
 	EXPECT_EQ(nb_darts(g), 0u);
+	// a vertex without index (set_indices = false) is not silently left out
+	Graph h;
+	add_attribute<Vec3, Vertex>(h, "position");
+	add_vertex(h);
+	add_vertex(h, false);
+	EXPECT_THROW(io::save_graph(h, dir.file("h.cg")), io::Error);
+	index_cells<Vertex>(h);
+	io::save_graph(h, dir.file("h.cg"));
+	Graph back;
+	EXPECT_EQ(io::load_graph(back, dir.file("h.cg")).nb_vertices_read, 2u);
 }
 
 } // namespace cgogn_test_graph_io

@@ -107,6 +107,8 @@ TEST(GraphResampling, BadSpacingOrOutputAttributeAppendsNothing)
 	Graph out;
 	for (double s : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()})
 		EXPECT_THROW(modeling::resample_graph(in.g, *in.pos, s, out), Error);
+	EXPECT_THROW(modeling::resample_graph(in.g, *in.pos, 1e-12, out), Error); // 10^12 edges
+	EXPECT_EQ(nb_darts(out), 0u);
 	add_attribute<double, Vertex>(out, "position");
 	EXPECT_THROW(modeling::resample_graph(in.g, *in.pos, 0.5, out), Error);
 	EXPECT_EQ(nb_darts(out), 0u);

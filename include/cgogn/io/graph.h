@@ -21,6 +21,10 @@ namespace cgogn::io
 //   vertex `id x y z radius k n_1 ... n_k`, its neighbours' ids (0-based).
 //   An edge listed by one end only is kept, and counted in
 //   GraphLoadReport::nb_one_sided_edges.
+// - `.obj`: the vertices (`v x y z`) and the polylines (`l a b c ...`, each
+//   pair of consecutive vertices an edge; indices from 1, or negative:
+//   relative to the last vertex). Faces are not part of a graph: they are
+//   counted in GraphLoadReport::nb_faces_ignored. Written as one `l` per edge.
 
 /// How load_graph reads a file.
 struct GraphLoadOptions
@@ -38,9 +42,11 @@ struct GraphLoadReport
 	bool radius = false;         ///< Whether the file has radii (`.cgr`, `.skel`): the vertex attribute `radius`.
 	/// `.skel`: edges listed by one of their ends only (added all the same).
 	uint32 nb_one_sided_edges = 0;
+	/// `.obj`: faces (`f` lines), which a graph does not hold: not loaded.
+	uint32 nb_faces_ignored = 0;
 };
 
-/// Reads a graph file (.cg, .cgr, .skel) and appends its vertices and edges
+/// Reads a graph file (.cg, .cgr, .skel, .obj) and appends its vertices and edges
 /// to g: positions go to the Vec3 vertex attribute `position`, radii to the
 /// double vertex attribute `radius` (created if missing). Edges are indexed,
 /// so that save_graph writes the vertices and edges of a loaded file back in
@@ -52,7 +58,7 @@ struct GraphLoadReport
 /// or `radius` attribute of another type. O(size of the file).
 GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOptions& options = {});
 
-/// Writes g as a .cg file, or as a .cgr file with the double vertex
+/// Writes g as a .cg or .obj file, or as a .cgr file with the double vertex
 /// attribute `radius`: vertices in the order of their container, edges in
 /// the order of theirs when they are indexed (from the vertex of their dart),
 /// in the order of their darts otherwise; positions

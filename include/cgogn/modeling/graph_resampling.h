@@ -19,8 +19,9 @@ namespace cgogn::modeling
 /// the double vertex attribute "radius", out gets it too, interpolated
 /// linearly along the arc length. Returns the "position" attribute of out
 /// (created if out has none), filled for the new vertices. Throws Error
-/// (nothing appended) when spacing is not a positive finite number, or when
-/// out has a vertex attribute "position" (or "radius") of another type.
+/// (nothing appended) when spacing is not a positive finite number, when a
+/// branch would need more than 2^26 edges (a spacing far too small), or
+/// when out has a vertex attribute "position" (or "radius") of another type.
 /// O(size of g + size of the result).
 std::shared_ptr<AttributeArray<Vec3>> resample_graph(const Graph& g, const AttributeArray<Vec3>& pos, double spacing,
 													 Graph& out);

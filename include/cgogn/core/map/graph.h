@@ -11,7 +11,8 @@ namespace cgogn
 /// trees, roads). A 1-dimensional map of half-edges (darts):
 /// - alpha0, an involution, exchanges the two half-edges of an edge;
 /// - alpha1, a permutation, turns around a vertex (alpha_1 is its inverse,
-///   stored, so that every operator is O(1) whatever the degrees).
+///   stored, so that inserting or removing a half-edge is O(1) whatever the
+///   degree).
 /// An isolated vertex is one dart with no edge: alpha0(d) = alpha1(d) = d.
 /// It counts as a vertex of degree 0 and as no edge; a vertex with edges
 /// holds only half-edges of edges (check_integrity checks both).
