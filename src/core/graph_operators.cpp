@@ -59,15 +59,6 @@ void splice(Graph& g, Dart d, Dart e)
 	link_alpha1(g, e_prev, d_next);
 }
 
-// Writes vertex line `line` on the darts of e's alpha1 cycle (when vertices
-// are indexed).
-void write_vertex_line(Graph& g, Dart e, uint32 line)
-{
-	if (detail::state_of(g).cell_index[orbit_index(Orbit::ALPHA1)] == nullptr)
-		return;
-	foreach_dart_of_orbit(g, Vertex(e), [&](Dart x) { detail::set_dart_index<Orbit::ALPHA1>(g, x, line); });
-}
-
 // A new dart after `after` around its vertex, on the vertex's line.
 Dart add_half_edge(Graph& g, Dart after, bool set_indices)
 {
@@ -165,23 +156,20 @@ Graph::Vertex merge_vertices(Graph& g, Graph::Vertex v1, Graph::Vertex v2, bool 
 	const Dart d1 = v1.dart, d2 = v2.dart;
 	const uint32 line1 = detail::index_or_invalid<Orbit::ALPHA1>(g, d1);
 	const uint32 line2 = detail::index_or_invalid<Orbit::ALPHA1>(g, d2);
-	if (set_indices && line2 != line1)
-		detail::release_index<Orbit::ALPHA1>(g, line2);
+	// an isolated vertex brings no half-edge: its dart goes
+	Dart kept = d1;
 	if (is_isolated(g, d2))
-	{
 		detail::remove_dart(g, d2);
-		return v1;
-	}
-	if (set_indices)
-		write_vertex_line(g, d2, line1);
-	if (is_isolated(g, d1))
+	else if (is_isolated(g, d1))
 	{
-		detail::set_representative<Orbit::ALPHA1>(g, d2);
 		detail::remove_dart(g, d1);
-		return Vertex(d2);
+		kept = d2;
 	}
-	splice(g, d1, d2);
-	return v1;
+	else
+		splice(g, d1, d2);
+	if (set_indices)
+		detail::merge_cell_indices(g, Vertex(kept), line1, line2);
+	return Vertex(kept);
 }
 
 Graph::Vertex cut_edge(Graph& g, Graph::Edge e, bool set_indices)
@@ -224,38 +212,29 @@ Graph::Vertex collapse_edge(Graph& g, Graph::Edge e, bool set_indices)
 	const uint32 line1 = detail::index_or_invalid<Orbit::ALPHA1>(g, a);
 	const uint32 line2 = detail::index_or_invalid<Orbit::ALPHA1>(g, b);
 	if (set_indices)
-	{
 		detail::release_index<Orbit::ALPHA0>(g, detail::index_or_invalid<Orbit::ALPHA0>(g, a));
-		detail::release_index<Orbit::ALPHA1>(g, line2);
-	}
+	// a and b leave their vertices, and what remains of the two is one vertex;
+	// of a lone edge, a stays as an isolated vertex
+	Dart kept = a;
 	if (next_a == a && next_b == b)
 	{
-		// a lone edge: a stays as the isolated vertex
 		detail::set_dart_index<Orbit::ALPHA0>(g, a, INVALID_INDEX);
 		link_alpha0(g, a, a);
-		detail::remove_dart(g, b);
-		return Vertex(a);
 	}
-	if (next_b != b)
-	{
-		unlink(g, b);
-		if (set_indices)
-			write_vertex_line(g, next_b, line1);
-	}
-	detail::remove_dart(g, b);
-	Dart kept;
-	if (next_a == a)
-		kept = next_b; // a was v1's only half-edge: v2's others are the vertex
 	else
 	{
-		unlink(g, a);
-		kept = next_a;
+		if (next_a != a)
+			unlink(g, a);
 		if (next_b != b)
+			unlink(g, b);
+		if (next_a != a && next_b != b)
 			splice(g, next_a, next_b);
+		kept = next_a != a ? next_a : next_b;
+		detail::remove_dart(g, a);
 	}
-	detail::remove_dart(g, a);
-	if (set_indices && line1 != INVALID_INDEX)
-		detail::set_representative<Orbit::ALPHA1>(g, kept);
+	detail::remove_dart(g, b);
+	if (set_indices)
+		detail::merge_cell_indices(g, Vertex(kept), line1, line2);
 	return Vertex(kept);
 }
 

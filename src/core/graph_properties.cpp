@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/map/orbits.h>
+#include <cgogn/core/marking/dart_marker.h>
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/traversals/global.h>
 
@@ -30,26 +31,16 @@ uint32 degree(const Graph& g, Graph::Vertex v)
 
 uint32 nb_connected_components(const Graph& g)
 {
-	std::vector<uint8> seen(detail::state_of(g).darts->end_index(), 0);
-	std::vector<Dart> work;
+	// each component flooded through alpha0 and alpha1 from its first dart
 	uint32 n = 0;
+	DartMarker seen(g);
 	foreach_dart(g, [&](Dart d) {
-		if (seen[d.index])
+		if (seen.is_marked(d))
 			return;
 		++n;
-		seen[d.index] = 1;
-		work.assign(1, d);
-		while (!work.empty())
-		{
-			const Dart x = work.back();
-			work.pop_back();
-			for (const Dart y : {alpha0(g, x), alpha1(g, x)})
-				if (!seen[y.index])
-				{
-					seen[y.index] = 1;
-					work.push_back(y);
-				}
-		}
+		detail::foreach_dart_flood(
+			g, d, [&](Dart x) { seen.mark(x); }, [&](Dart x) { return alpha0(g, x); },
+			[&](Dart x) { return alpha1(g, x); });
 	});
 	return n;
 }
@@ -62,7 +53,7 @@ uint32 cycle_rank(const Graph& g)
 std::vector<GraphBranch> branches(const Graph& g)
 {
 	std::vector<GraphBranch> result;
-	std::vector<uint8> done(detail::state_of(g).darts->end_index(), 0);
+	DartMarker done(g);
 	// from x, a half-edge leaving the branch's first vertex, along the branch
 	// until a vertex of degree other than 2, or back to x (a closed branch)
 	auto walk = [&](Dart start) {
@@ -72,7 +63,8 @@ std::vector<GraphBranch> branches(const Graph& g)
 		while (true)
 		{
 			const Dart y = alpha0(g, x);
-			done[x.index] = done[y.index] = 1;
+			done.mark(x);
+			done.mark(y);
 			++b.nb_edges;
 			if (!at_degree_two(g, y))
 			{
@@ -90,12 +82,12 @@ std::vector<GraphBranch> branches(const Graph& g)
 		result.push_back(b);
 	};
 	foreach_dart(g, [&](Dart d) {
-		if (!done[d.index] && !is_isolated(g, d) && !at_degree_two(g, d))
+		if (!done.is_marked(d) && !is_isolated(g, d) && !at_degree_two(g, d))
 			walk(d);
 	});
 	// what is left are the components whose vertices all have degree 2
 	foreach_dart(g, [&](Dart d) {
-		if (!done[d.index] && !is_isolated(g, d))
+		if (!done.is_marked(d) && !is_isolated(g, d))
 			walk(d);
 	});
 	return result;

@@ -1,20 +1,33 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/io/options.h>
 
+#include "formats.h"
+
 #include <algorithm>
 #include <cctype>
 
 namespace cgogn::io
 {
 
-Format format_from_extension(const std::string& path)
+namespace detail
+{
+
+std::string lower_extension(const std::string& path)
 {
 	const std::size_t dot = path.find_last_of('.');
 	const std::size_t slash = path.find_last_of("/\\");
 	if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-		return Format::Auto;
+		return {};
 	std::string ext = path.substr(dot + 1);
 	std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+	return ext;
+}
+
+} // namespace detail
+
+Format format_from_extension(const std::string& path)
+{
+	const std::string ext = detail::lower_extension(path);
 	if (ext == "off")
 		return Format::Off;
 	if (ext == "obj")

@@ -11,6 +11,10 @@
 namespace cgogn::io::detail
 {
 
+/// The extension of path's file name in lower case, without the dot; empty
+/// when it has none. O(length of the path).
+std::string lower_extension(const std::string& path);
+
 // ---- surfaces (cells are polygons)
 MeshData read_off(std::string_view text, const std::string& path);
 MeshData read_obj(std::string_view text, const std::string& path);

@@ -6,12 +6,12 @@
 #include <cgogn/io/graph.h>
 
 #include "file_io.h"
+#include "formats.h"
 #include "graph_data.h"
 #include "text_reader.h"
 #include "text_writer.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <string_view>
 #include <vector>
@@ -21,17 +21,6 @@ namespace cgogn::io
 
 namespace
 {
-
-std::string extension_of(const std::string& path)
-{
-	const std::size_t dot = path.find_last_of('.');
-	const std::size_t slash = path.find_last_of('/');
-	if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-		return {};
-	std::string e = path.substr(dot + 1);
-	std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-	return e;
-}
 
 // The header `# D:3 NV:12 NE:11` (the colons read as blanks, keys in any order).
 struct CgHeader
@@ -197,7 +186,7 @@ uint32 obj_index(detail::TextReader& in, std::string_view t, uint32 nb_vertices)
 	return uint32(k);
 }
 
-detail::GraphData read_obj(std::string_view text, const std::string& path)
+detail::GraphData read_obj_lines(std::string_view text, const std::string& path)
 {
 	detail::TextReader in(text, path, '#');
 	detail::GraphData d;
@@ -246,7 +235,7 @@ GraphData read_graph(std::string_view text, const std::string& path, GraphFormat
 	case GraphFormat::Cgr:
 		return read_cg(text, path, true, index_base);
 	case GraphFormat::Obj:
-		return read_obj(text, path);
+		return read_obj_lines(text, path);
 	default:
 		return read_skel(text, path);
 	}
@@ -315,7 +304,7 @@ GraphLoadReport build_graph(Graph& g, const GraphData& d, const std::string& pat
 
 GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOptions& options)
 {
-	const std::string ext = extension_of(path);
+	const std::string ext = detail::lower_extension(path);
 	if (ext != "cg" && ext != "cgr" && ext != "skel" && ext != "obj")
 		throw Error(path, "unknown graph format '." + ext + "' (.cg, .cgr, .skel and .obj are read)");
 	if (options.index_base > 1)
@@ -330,7 +319,7 @@ GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOpt
 
 void save_graph(const Graph& g, const std::string& path)
 {
-	const std::string ext = extension_of(path);
+	const std::string ext = detail::lower_extension(path);
 	if (ext != "cg" && ext != "cgr" && ext != "obj")
 		throw Error(path, "cannot write graph format '." + ext + "' (.cg, .cgr and .obj are written)");
 	const bool obj = ext == "obj";

@@ -165,8 +165,11 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 	const Dart d = c.dart;
 	if constexpr (O == Orbit::DART)
 		return call_and_continue(f, d);
-	else if constexpr (O == Orbit::PHI1)
+	else if constexpr (O == Orbit::PHI1 || O == Orbit::ALPHA1)
 	{
+		// a face's cycle; in a graph, the half-edges around a vertex (alpha1
+		// is stored where the maps keep phi1)
+		static_assert(O == Orbit::PHI1 || std::derived_from<MAP, Graph>, "ALPHA1: an orbit of the graphs only");
 		const auto phi1_of = detail::state_of(m).phi1->view(); // see LineStorage::View
 		Dart it = d;
 		do
@@ -262,10 +265,18 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 			m, d, f, [&](Dart x) { return phi1(m, x); }, [&](Dart x) { return phi2(m, x); },
 			[&](Dart x) { return phi3(m, x); });
 	}
-	else if constexpr (O == Orbit::BETA0 || O == Orbit::BETA1)
+	else if constexpr (O == Orbit::BETA0 || O == Orbit::BETA1 || O == Orbit::ALPHA0)
 	{
-		static_assert(is_gmap_v<MAP>, "orbit not available in combinatorial maps");
-		const Dart e = O == Orbit::BETA0 ? beta0(m, d) : beta1(m, d);
+		// one involution: d and its image (d alone at a fixed point: a free
+		// side of an unfinished G-map, an isolated graph vertex)
+		static_assert(O == Orbit::ALPHA0 ? std::derived_from<MAP, Graph> : is_gmap_v<MAP>,
+					  "orbit not available in this map");
+		const Dart e = [&] {
+			if constexpr (O == Orbit::ALPHA0)
+				return alpha0(m, d);
+			else
+				return O == Orbit::BETA0 ? beta0(m, d) : beta1(m, d);
+		}();
 		return call_and_continue(f, d) && (e == d || call_and_continue(f, e));
 	}
 	else if constexpr (O == Orbit::BETA0_BETA1 || O == Orbit::BETA1_BETA2)
@@ -349,27 +360,6 @@ bool foreach_dart_of_orbit(const MAP& m, Cell<O> c, const FUNC& f)
 		return detail::foreach_dart_flood(
 			m, d, f, [&](Dart x) { return beta0(m, x); }, [&](Dart x) { return beta1(m, x); },
 			[&](Dart x) { return beta2(m, x); }, [&](Dart x) { return beta3(m, x); });
-	}
-	else if constexpr (O == Orbit::ALPHA1)
-	{
-		// the half-edges around a graph vertex, in alpha1 order
-		static_assert(std::derived_from<MAP, Graph>, "orbit of the graphs only");
-		const auto alpha1_of = detail::state_of(m).phi1->view(); // see LineStorage::View
-		Dart it = d;
-		do
-		{
-			if (!call_and_continue(f, it))
-				return false;
-			it = Dart(alpha1_of[it.index]);
-		} while (it != d);
-		return true;
-	}
-	else if constexpr (O == Orbit::ALPHA0)
-	{
-		// a graph edge; the dart alone for an isolated vertex (no edge)
-		static_assert(std::derived_from<MAP, Graph>, "orbit of the graphs only");
-		const Dart e = alpha0(m, d);
-		return call_and_continue(f, d) && (e == d || call_and_continue(f, e));
 	}
 	else if constexpr (is_dimension_orbit(O))
 	{

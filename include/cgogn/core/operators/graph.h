@@ -41,8 +41,9 @@ bool can_merge_vertices(const Graph& g, Graph::Vertex v1, Graph::Vertex v2);
 /// Merges v2 into v1: the edges of v2 come after v1.dart around v1, v1's
 /// line is kept and v2's released (an edge between them becomes a
 /// self-loop). Returns the merged vertex; v1 unchanged when v1 and v2 are
-/// one vertex. O(degree of v2) when vertices are indexed (the merged darts
-/// take v1's line), O(degree of v1) otherwise (the test of one vertex).
+/// one vertex. O(degree of the merged vertex) when vertices are indexed
+/// (its darts get v1's line), O(degree of v1) otherwise (the test of one
+/// vertex).
 Graph::Vertex merge_vertices(Graph& g, Graph::Vertex v1, Graph::Vertex v2, bool set_indices = true);
 
 /// Splits edge e by a new vertex of degree 2. The part at e.dart keeps e's
@@ -58,8 +59,8 @@ bool can_collapse_edge(const Graph& g, Graph::Edge e);
 /// end's attribute values are dropped, set them after the call (e.g. the
 /// midpoint). Two ends of degree 1 leave an isolated vertex. Returns the
 /// merged vertex. Throws TopologyError (nothing changed) for a self-loop
-/// (see can_collapse_edge). O(degree of the other end) when vertices are
-/// indexed, O(degree of e's vertex) otherwise (the test of a self-loop).
+/// (see can_collapse_edge). O(degree of the merged vertex) when vertices
+/// are indexed, O(degree of e's vertex) otherwise (the test of a self-loop).
 Graph::Vertex collapse_edge(Graph& g, Graph::Edge e, bool set_indices = true);
 
 } // namespace cgogn

@@ -76,19 +76,20 @@ void parallel_foreach_cell_by_darts(const MAP& m, const FUNC& f)
 	const AttributeArray<uint32>& key = detail::state_of(m).darts->key();
 	if constexpr (orbit_is_cyclic(CELL::ORBIT))
 	{
-		parallel_for_chunks(
-			nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
-				held_callable_t<FUNC> fc = f; // see held_callable_t
-				for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
-				{
-					if (key[i] == INVALID_INDEX || detail::passed_over_by_traversals<CELL::ORBIT>(m, Dart(i)))
-						continue;
-					const bool owner = foreach_dart_of_orbit(m, CELL(Dart(i)),
-															 [&](Dart x) { return x.index >= i || is_boundary(m, x); });
-					if (owner)
-						fc(CELL(Dart(i)));
-				}
-			}));
+		parallel_for_chunks(nb_blocks, PARALLEL_DART_BLOCKS_GRAIN, ChunkBody([&](uint32 bb, uint32 be) {
+								held_callable_t<FUNC> fc = f; // see held_callable_t
+								for (uint32 i = bb * 64, e = std::min(be * 64, end); i < e; ++i)
+								{
+									if (key[i] == INVALID_INDEX ||
+										detail::passed_over_by_traversals<CELL::ORBIT>(m, Dart(i)))
+										continue;
+									const bool owner = foreach_dart_of_orbit(m, CELL(Dart(i)), [&](Dart x) {
+										return x.index >= i || detail::passed_over_by_traversals<CELL::ORBIT>(m, x);
+									});
+									if (owner)
+										fc(CELL(Dart(i)));
+								}
+							}));
 		return;
 	}
 	else
