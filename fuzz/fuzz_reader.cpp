@@ -213,8 +213,14 @@ int cgogn_fuzz::run_one_input(int format, const std::uint8_t* data, std::size_t 
 		else
 		{
 			CMap2 m;
-			io::detail::build_map(m, d, path);
+			const io::LoadReport rm = io::detail::build_map(m, d, path);
 			if (!check_integrity(m).ok())
+				std::abort();
+			// the incidence graph keeps the file whole: every vertex, the same faces
+			IncidenceGraph ig;
+			io::detail::build_map(ig, d, path);
+			if (!check_integrity(ig).ok() || nb_cells<IncidenceGraph::Face>(ig) != rm.nb_cells_built ||
+				nb_cells<IncidenceGraph::Vertex>(ig) != d.nb_vertices())
 				std::abort();
 			GMap2 g;
 			const io::LoadReport rg = io::detail::build_map(g, d, path);

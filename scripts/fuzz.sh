@@ -5,7 +5,8 @@
 # bounded time: FUZZ_SECONDS in total (default 300), split evenly over the
 # targets (one per reader, and fuzz_append, which loads any
 # format into a map that already holds a mesh and attributes, and
-# fuzz_graph, the graph readers). Fails on any
+# fuzz_graph, the graph readers, and fuzz_incidence_graph, the .ig reader).
+# Fails on any
 # crash, leak, timeout or sanitizer report.
 #
 # Each target starts from its corpus in fuzz/corpus/<target> (kept in the
@@ -22,7 +23,7 @@ total=${FUZZ_SECONDS:-300}
 formats=(off obj ply stl medit vtk vtu gmsh tetgen)
 targets=()
 for f in "${formats[@]}"; do targets+=("$f"); done
-targets+=(append graph)
+targets+=(append graph incidence_graph)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
@@ -85,6 +86,8 @@ printf '\x01# D:3 NV:3 NE:2\nv 0 0 0 0.5\nv 1 0 0 0.25\nv 2 0 0 1e-3\ne 0 1\ne 1
 printf '\x02ID Cx Cy Cz RADIUS #NEIGHBORS NEIGHBORS_LIST\n3\n0 0 0 0 1 1 1\n1 1 0 0 1 2 0 2\n2 2 0 0 1 0\n' > "$seeds/graph/path.skel"
 printf '\x03v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3 1\nl -1 -2\nf 1 2 3\n' > "$seeds/graph/lines.obj"
 printf '\x04# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg"
+# fuzz_incidence_graph: an .ig file (a book of three triangles, a wire, a lone vertex)
+printf 'IG 7 8 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 2 0 0\nv 3 3 3\n# spine, then the sides\ne 0 1\ne 1 2\ne 2 0\ne 1 3\ne 3 0\ne 1 4\ne 4 0\ne 1 5\nf 3 0 1 2\nf 3 0 3 4\nf 3 5 6 0\n' > "$seeds/incidence_graph/book.ig"
 cat fuzz/dict/*.dict > "$build/append.dict"
 
 dict_of() {

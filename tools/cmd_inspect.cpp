@@ -3,6 +3,8 @@
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/io/graph.h>
+#include <cgogn/io/incidence_graph.h>
+#include <cgogn/io/surface.h>
 
 #include "commands.h"
 #include "mesh_info.h"
@@ -45,14 +47,49 @@ int run_info(const std::string& path, bool as_json)
 			progress.stage("measuring");
 			j = tool::nmap_info(m);
 		});
+	else if (is_incidence_graph_file(path))
+	{
+		progress.stage("loading " + path);
+		IncidenceGraph ig;
+		io::load_incidence_graph(ig, path);
+		progress.stage("measuring");
+		io::LoadReport counts;
+		counts.format = io::Format::Auto;
+		j = tool::complex_info(ig, counts);
+		j["format"] = "IG";
+	}
 	else
+	{
+		bool repaired = false;
 		with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
 			progress.stage("measuring");
 			if constexpr (std::decay_t<decltype(m)>::dimension == 3)
 				j = tool::volume_info(m, r);
 			else
+			{
 				j = tool::surface_info(m, r);
+				repaired = !r.manifold();
+			}
 		});
+		// a map cannot hold a non-manifold surface: the true counts are the
+		// incidence graph's, the repaired map's beside them
+		if (repaired)
+		{
+			progress.stage("loading " + path + " as an incidence graph");
+			IncidenceGraph ig;
+			const io::LoadReport r = io::load_surface(ig, path);
+			json map = j;
+			j = tool::complex_info(ig, r);
+			json summary;
+			for (const char* k : {"map", "vertices", "edges", "faces", "connected_components", "euler_characteristic",
+								  "split_vertex_copies", "nonmanifold_edges", "nonmanifold_vertices", "holes_closed"})
+				if (map.contains(k))
+					summary[k] = map[k];
+			j["repaired_map"] = summary;
+			j["bbox"] = map["bbox"];
+			j["edge_length"] = map["edge_length"];
+		}
+	}
 	j["file"] = path;
 	progress.stage("done");
 	if (as_json)
@@ -79,6 +116,14 @@ int run_check(const std::string& path, bool as_json)
 			progress.stage("checking");
 			report = check_integrity(m);
 		});
+	else if (is_incidence_graph_file(path))
+	{
+		progress.stage("loading " + path);
+		IncidenceGraph ig;
+		io::load_incidence_graph(ig, path);
+		progress.stage("checking");
+		report = check_integrity(ig);
+	}
 	else
 		with_loaded_whole(path, progress, [&](const auto& m, const io::LoadReport& r) {
 			progress.stage("checking");
@@ -149,6 +194,29 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 		io::save_graph(g, out);
 		return 0;
 	}
+	if (is_incidence_graph_file(in) || is_incidence_graph_file(out))
+	{
+		// an incidence graph (an .ig file) to or from a surface file, exactly
+		if (boundary)
+			throw io::Error(in, "--boundary applies to the maps of any dimension (.nmap files)");
+		progress.stage("loading " + in);
+		IncidenceGraph ig;
+		if (is_incidence_graph_file(in))
+			io::load_incidence_graph(ig, in);
+		else
+			io::load_surface(ig, in);
+		progress.stage("writing " + out);
+		if (is_incidence_graph_file(out))
+			io::save_incidence_graph(ig, out);
+		else
+		{
+			io::SaveOptions options;
+			options.binary = binary;
+			options.attributes = attributes;
+			io::save_surface(ig, out, options);
+		}
+		return 0;
+	}
 	if (is_nmap_file(in))
 	{
 		with_loaded_nmap(in, progress, [&](const auto& m) {
@@ -171,7 +239,7 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 	io::SaveOptions options;
 	options.binary = binary;
 	options.attributes = attributes;
-	with_loaded_whole(in, progress, [&](const auto& m, const io::LoadReport&) {
+	with_loaded_whole(in, progress, [&](const auto& m, const io::LoadReport& r) {
 		progress.stage("writing " + out);
 		if constexpr (std::decay_t<decltype(m)>::dimension == 3)
 		{
@@ -183,7 +251,15 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 		{
 			if (volume_out)
 				throw io::Error(out, "a surface mesh cannot be written in a volume format");
-			io::save_surface(m, out, options);
+			if (r.manifold())
+				io::save_surface(m, out, options);
+			else
+			{
+				// the map was repaired: write the file's own complex, whole
+				IncidenceGraph ig;
+				io::load_surface(ig, in);
+				io::save_surface(ig, out, options);
+			}
 		}
 	});
 	return 0;
@@ -196,8 +272,9 @@ Command add_info_command(CLI::App& app)
 	auto* sub = app.add_subcommand("info", "Counts, topology, geometry summary of a mesh file");
 	auto file = std::make_shared<std::string>();
 	auto as_json = std::make_shared<bool>(false);
-	sub->add_option("FILE", *file,
-					"mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap), or graph (.cg .cgr .skel)")
+	sub->add_option(
+		   "FILE", *file,
+		   "mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap .ig), or graph (.cg .cgr .skel)")
 		->required();
 	sub->add_flag("--json", *as_json, "print one JSON object");
 	return {sub, [=] { return run_info(*file, *as_json); }};

@@ -4,6 +4,7 @@
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/graph_properties.h>
+#include <cgogn/core/properties/incidence_graph_properties.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
@@ -242,6 +243,45 @@ json graph_info(const Graph& g, const io::GraphLoadReport& r)
 	return j;
 }
 
+json complex_info(const IncidenceGraph& ig, const io::LoadReport& r)
+{
+	json j;
+	j["dimension"] = 2;
+	j["map"] = "IncidenceGraph";
+	j["format"] = io::format_name(r.format);
+	const int64 v = nb_cells<IncidenceGraph::Vertex>(ig), e = nb_cells<IncidenceGraph::Edge>(ig),
+				f = nb_cells<IncidenceGraph::Face>(ig);
+	j["vertices"] = v;
+	j["edges"] = e;
+	j["faces"] = f;
+	j["connected_components"] = nb_connected_components(ig);
+	j["euler_characteristic"] = v - e + f;
+	uint64 nonmanifold_vertices = 0, isolated = 0, wires = 0, nonmanifold_edges = 0, border = 0;
+	uint32 max_faces = 0;
+	foreach_cell(ig, [&](IncidenceGraph::Vertex x) {
+		if (degree(ig, x) == 0)
+			++isolated;
+		else if (!is_manifold_vertex(ig, x))
+			++nonmanifold_vertices;
+	});
+	foreach_cell(ig, [&](IncidenceGraph::Edge x) {
+		const uint32 d = degree(ig, x);
+		wires += d == 0;
+		border += d == 1;
+		nonmanifold_edges += d > 2;
+		max_faces = std::max(max_faces, d);
+	});
+	j["manifold"] = nonmanifold_vertices == 0 && nonmanifold_edges == 0 && wires == 0;
+	j["nonmanifold_vertices"] = nonmanifold_vertices;
+	j["nonmanifold_edges"] = nonmanifold_edges;
+	j["boundary_edges"] = border;
+	j["wire_edges"] = wires;
+	j["isolated_vertices"] = isolated;
+	j["max_faces_per_edge"] = max_faces;
+	j["skipped_cells"] = r.nb_cells_skipped;
+	return j;
+}
+
 std::string info_text(const json& j)
 {
 	std::ostringstream s;
@@ -286,6 +326,8 @@ std::string info_text(const json& j)
 						  "nonmanifold_vertices",
 						  "split_vertex_copies",
 						  "nonmanifold_edges",
+						  "wire_edges",
+						  "max_faces_per_edge",
 						  "orientation_conflicts",
 						  "nonmanifold_faces",
 						  "skipped_cells",
@@ -294,7 +336,8 @@ std::string info_text(const json& j)
 						  "cell_kinds",
 						  "face_degrees",
 						  "bbox",
-						  "edge_length"})
+						  "edge_length",
+						  "repaired_map"})
 		if (j.contains(k))
 			line(k, j[k]);
 	return s.str();

@@ -5,6 +5,7 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/io/graph.h>
 #include <cgogn/io/options.h>
 
@@ -29,6 +30,14 @@ nlohmann::json volume_info(const GMap3& m, const io::LoadReport& r);
 /// the degree histogram), whether the file had radii and one-sided .skel
 /// edges, bounding box and edge lengths. O(size of g).
 nlohmann::json graph_info(const Graph& g, const io::GraphLoadReport& r);
+
+/// The true counts of a surface file loaded into an incidence graph (nothing
+/// split or detached): vertices, edges, faces, components, Euler
+/// characteristic, non-manifold edges (three faces or more) and vertices
+/// (with edges, but not one fan of faces), wire edges (no face), isolated
+/// vertices, the largest number of faces on an edge, and what the load
+/// skipped. O(size of ig).
+nlohmann::json complex_info(const IncidenceGraph& ig, const io::LoadReport& r);
 
 /// The same information as readable text lines.
 std::string info_text(const nlohmann::json& info);

@@ -45,25 +45,35 @@ bool is_volume_format(io::Format f)
 		   f == io::Format::TetGen;
 }
 
-bool is_nmap_file(const std::string& path)
+namespace
 {
-	if (path.size() < 5)
-		return false;
-	std::string ext = path.substr(path.size() - 5);
+// The extension of path from its last dot, lower-cased; empty without a dot.
+std::string lower_extension(const std::string& path)
+{
+	const std::size_t dot = path.find_last_of('.');
+	if (dot == std::string::npos)
+		return {};
+	std::string ext = path.substr(dot);
 	for (char& c : ext)
 		c = char(std::tolower(static_cast<unsigned char>(c)));
-	return ext == ".nmap";
+	return ext;
+}
+} // namespace
+
+bool is_nmap_file(const std::string& path)
+{
+	return lower_extension(path) == ".nmap";
 }
 
 bool is_graph_file(const std::string& path)
 {
-	const std::size_t dot = path.find_last_of('.');
-	if (dot == std::string::npos)
-		return false;
-	std::string ext = path.substr(dot);
-	for (char& c : ext)
-		c = char(std::tolower(static_cast<unsigned char>(c)));
+	const std::string ext = lower_extension(path);
 	return ext == ".cg" || ext == ".cgr" || ext == ".skel";
+}
+
+bool is_incidence_graph_file(const std::string& path)
+{
+	return lower_extension(path) == ".ig";
 }
 
 io::Format format_of(const std::string& path)

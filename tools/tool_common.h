@@ -55,6 +55,8 @@ bool is_nmap_file(const std::string& path);
 
 /// Whether path names a graph file (.cg, .cgr, .skel; any case).
 bool is_graph_file(const std::string& path);
+/// True for an incidence graph's own file (.ig, any case).
+bool is_incidence_graph_file(const std::string& path);
 
 /// The format of path by its extension; throws io::Error when unknown.
 io::Format format_of(const std::string& path);

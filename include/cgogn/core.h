@@ -17,6 +17,7 @@
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/orbits.h>
@@ -30,10 +31,12 @@
 #include <cgogn/core/operators/gmap2.h>
 #include <cgogn/core/operators/gmap3.h>
 #include <cgogn/core/operators/graph.h>
+#include <cgogn/core/operators/incidence_graph.h>
 #include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/operators/nmap.h>
 #include <cgogn/core/parallel/thread_pool.h>
 #include <cgogn/core/properties/graph_properties.h>
+#include <cgogn/core/properties/incidence_graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
@@ -44,6 +47,7 @@
 #include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/core/traversals/local_graph.h>
+#include <cgogn/core/traversals/local_incidence_graph.h>
 #include <cgogn/core/traversals/local_views.h>
 #include <cgogn/core/traversals/parallel.h>
 #include <cgogn/core/utils/error.h>

@@ -5,6 +5,7 @@
 #include <cgogn/geometry.h>
 #include <cgogn/io/error.h>
 #include <cgogn/io/graph.h>
+#include <cgogn/io/incidence_graph.h>
 #include <cgogn/io/nmap.h>
 #include <cgogn/io/options.h>
 #include <cgogn/io/surface.h>

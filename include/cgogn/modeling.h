@@ -12,6 +12,7 @@
 #include <cgogn/modeling/progress.h>
 #include <cgogn/modeling/quadric.h>
 #include <cgogn/modeling/remeshing.h>
+#include <cgogn/modeling/skeleton.h>
 #include <cgogn/modeling/subdivision.h>
 #include <cgogn/modeling/triangle_tree.h>
 #include <cgogn/modeling/triangulation.h>

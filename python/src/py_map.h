@@ -143,5 +143,6 @@ void bind_attributes(py::module_& m);
 void bind_operators(py::module_& m);
 void bind_algorithms(py::module_& m);
 void bind_graph(py::module_& m);
+void bind_incidence_graph(py::module_& m);
 
 } // namespace cgogn::python

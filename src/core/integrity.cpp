@@ -3,6 +3,9 @@
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
 
+#include "incidence_graph_records.h"
+
+#include <algorithm>
 #include <array>
 #include <sstream>
 
@@ -17,6 +20,10 @@ class Checker
 public:
 	explicit Checker(IntegrityReport& r) : report_(r)
 	{
+	}
+	bool ok() const
+	{
+		return report_.nb_errors == 0;
 	}
 	void add(IntegrityError::Kind k, Orbit o, uint32 dart, uint32 index, const std::string& what)
 	{
@@ -185,6 +192,128 @@ void check_graph_relations(const Graph& g, Checker& ck)
 	});
 }
 
+// The records of an incidence graph (see IncidenceGraph): the rings of edge
+// ends around vertices and of uses around edges, and the face cycles.
+void check_incidence_graph_relations(const IncidenceGraph& ig, Checker& ck)
+{
+	const detail::IgRecords r(ig);
+	const AttributeContainer& vertices = r.vertices();
+	const AttributeContainer& edges = r.edges();
+	check_container_free_list(vertices, Orbit::IG_VERTEX, ck);
+	check_container_free_list(edges, Orbit::IG_EDGE, ck);
+	// edges: two different live vertices
+	bool ok = true;
+	for (uint32 e = 0; e < edges.end_index(); ++e)
+	{
+		if (!edges.is_live(e))
+			continue;
+		const uint32 a = r.end_vertex(2 * e), b = r.end_vertex(2 * e + 1);
+		if (!vertices.is_live(a) || !vertices.is_live(b) || a == b)
+		{
+			ck.add(Kind::DeadRelation, Orbit::IG_EDGE, INVALID_INDEX, e,
+				   "an edge does not join two different live vertices");
+			ok = false;
+		}
+	}
+	if (!ok)
+		return;
+	// rings of ends: each end of a live edge once, in its vertex's ring
+	std::vector<uint8> end_seen(2 * std::size_t(edges.end_index()), 0);
+	for (uint32 v = 0; v < vertices.end_index(); ++v)
+	{
+		if (!vertices.is_live(v) || r.first_end(v) == detail::NO_EDGE_END)
+			continue;
+		uint32 it = r.first_end(v);
+		for (uint32 steps = 0;; ++steps)
+		{
+			if (it >= end_seen.size() || !edges.is_live(it >> 1) || r.end_vertex(it) != v || end_seen[it] ||
+				steps > end_seen.size())
+			{
+				ck.add(Kind::RingBroken, Orbit::IG_VERTEX, INVALID_INDEX, v,
+					   "the ring of edge ends around a vertex is broken");
+				return;
+			}
+			end_seen[it] = 1;
+			it = r.next_end(it);
+			if (it == r.first_end(v))
+				break;
+		}
+	}
+	for (uint32 e = 0; e < edges.end_index(); ++e)
+		if (edges.is_live(e) && (!end_seen[2 * e] || !end_seen[2 * e + 1]))
+			ck.add(Kind::RingBroken, Orbit::IG_EDGE, INVALID_INDEX, e, "an edge end is in no vertex's ring");
+	// uses: on a live edge, each once in its edge's radial ring
+	const AttributeContainer& darts = *detail::state_of(ig).darts;
+	std::vector<uint8> use_seen(darts.end_index(), 0);
+	bool uses_ok = true;
+	foreach_dart(ig, [&](Dart u) {
+		if (!edges.is_live(r.use_edge_end(u) >> 1) || !is_dart_valid(ig, r.next_in_face(u)))
+		{
+			ck.add(Kind::DeadRelation, Orbit::DART, u.index, INVALID_INDEX,
+				   "a use is on a dead edge or its next use is dead");
+			uses_ok = false;
+		}
+	});
+	if (!uses_ok || !ck.ok())
+		return;
+	for (uint32 e = 0; e < edges.end_index(); ++e)
+	{
+		if (!edges.is_live(e) || r.first_use(e) == INVALID_INDEX)
+			continue;
+		Dart it(r.first_use(e));
+		for (uint32 steps = 0;; ++steps)
+		{
+			if (!is_dart_valid(ig, it) || (r.use_edge_end(it) >> 1) != e || use_seen[it.index] ||
+				steps > use_seen.size())
+			{
+				ck.add(Kind::RingBroken, Orbit::IG_EDGE, INVALID_INDEX, e, "the radial ring of an edge is broken");
+				return;
+			}
+			use_seen[it.index] = 1;
+			it = r.next_radial(it);
+			if (it.index == r.first_use(e))
+				break;
+		}
+	}
+	foreach_dart(ig, [&](Dart u) {
+		if (!use_seen[u.index])
+			ck.add(Kind::RingBroken, Orbit::DART, u.index, INVALID_INDEX, "a use is in no edge's radial ring");
+	});
+	if (!ck.ok())
+		return;
+	// faces: phi1 a permutation, simple cycles of consecutive sides, 3 or more
+	std::vector<uint8> preimages(darts.end_index(), 0);
+	foreach_dart(ig, [&](Dart u) {
+		if (preimages[r.next_in_face(u).index]++ == 1)
+			ck.add(Kind::Phi1NotPermutation, Orbit::DART, r.next_in_face(u).index, INVALID_INDEX,
+				   "phi1 is not a permutation: two uses have this use as next");
+	});
+	if (!ck.ok())
+		return;
+	std::vector<uint8> in_face(darts.end_index(), 0);
+	std::vector<uint32> face_vertices;
+	foreach_dart(ig, [&](Dart u) {
+		if (in_face[u.index])
+			return;
+		face_vertices.clear();
+		Dart it = u;
+		bool consecutive = true;
+		do
+		{
+			in_face[it.index] = 1;
+			face_vertices.push_back(r.origin(it));
+			consecutive = consecutive && r.target(it) == r.origin(r.next_in_face(it));
+			it = r.next_in_face(it);
+		} while (it != u);
+		if (face_vertices.size() < 3)
+			ck.add(Kind::ShortFace, Orbit::PHI1, u.index, INVALID_INDEX, "a face has fewer than 3 edges");
+		std::sort(face_vertices.begin(), face_vertices.end());
+		if (!consecutive || std::adjacent_find(face_vertices.begin(), face_vertices.end()) != face_vertices.end())
+			ck.add(Kind::FaceNotSimpleCycle, Orbit::PHI1, u.index, INVALID_INDEX,
+				   "a face is not a simple cycle of consecutive sides");
+	});
+}
+
 template <typename MAP>
 void check_phi_relations(const MAP& m, Checker& ck);
 template <typename MAP>
@@ -207,6 +336,8 @@ void check_relations(const MAP& m, Checker& ck)
 	}
 	if constexpr (std::is_same_v<MAP, Graph>)
 		check_graph_relations(m, ck);
+	else if constexpr (std::is_same_v<MAP, IncidenceGraph>)
+		check_incidence_graph_relations(m, ck);
 	else if constexpr (is_nmap_v<MAP>)
 		check_nmap_relations(m, ck);
 	else if constexpr (is_gmap_v<MAP>)
@@ -554,6 +685,11 @@ IntegrityReport check_integrity(const CMap3& m)
 IntegrityReport check_integrity(const Graph& g)
 {
 	return check_map<Graph, Orbit::ALPHA0, Orbit::ALPHA1>(g);
+}
+
+IntegrityReport check_integrity(const IncidenceGraph& ig)
+{
+	return check_map<IncidenceGraph, Orbit::PHI1>(ig);
 }
 
 IntegrityReport check_integrity(const GMap1& m)

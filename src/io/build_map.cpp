@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/operators/incidence_graph.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/error.h>
@@ -256,7 +257,88 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	return rep;
 }
 
+// The incidence graph of the soup, exactly: every vertex (used or not) in
+// the file's order, every face through its vertices in the file's order,
+// edges shared by their faces whatever their number and directions. Only
+// faces that no complex holds (fewer than 3 vertices, a repeated vertex)
+// are skipped and counted.
+LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::string& path)
+{
+	using Vertex = IncidenceGraph::Vertex;
+	using Face = IncidenceGraph::Face;
+	check_names<Vertex, Face>(ig, d, path);
+	if (uint64(d.nb_vertices()) + container_of<Vertex::ORBIT>(ig).end_index() >= INVALID_INDEX - 1 ||
+		uint64(d.cell_vertices.size()) + container_of<Orbit::DART>(ig).end_index() >= INVALID_INDEX)
+		throw Error(path, "the mesh is too large for 32-bit indices");
+
+	LoadReport rep;
+	bool any_cell_column = false;
+	for (const auto& c : d.cell_columns)
+		any_cell_column = any_cell_column || usable(c);
+	if (any_cell_column)
+		index_cells<Face>(ig);
+	std::vector<Vertex> vertex(d.nb_vertices());
+	for (uint32 i = 0; i < d.nb_vertices(); ++i)
+		vertex[i] = add_vertex(ig);
+	std::vector<std::pair<uint32, uint32>> faces; // (face line, cell) when faces are indexed
+	std::vector<Vertex> fv, sorted;
+	std::size_t k = 0;
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+	{
+		const uint32 n = d.cell_sizes[c];
+		fv.clear();
+		for (uint32 i = 0; i < n; ++i)
+			fv.push_back(vertex[d.cell_vertices[k + i]]);
+		k += n;
+		sorted = fv;
+		std::sort(sorted.begin(), sorted.end(), [](Vertex a, Vertex b) { return a.dart.index < b.dart.index; });
+		if (n < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+		{
+			++rep.build.nb_cells_degenerate;
+			continue;
+		}
+		const Face f = add_face_through_vertices(ig, fv);
+		++rep.build.nb_cells_built;
+		if (any_cell_column)
+			faces.emplace_back(index_of(ig, f), c);
+	}
+
+	auto vertex_lines = [&](const auto& f) {
+		for (uint32 i = 0; i < d.nb_vertices(); ++i)
+			f(vertex[i].dart.index, std::size_t(i));
+	};
+	auto pos = get_or_add<Vec3, Vertex>(ig, "position", path);
+	vertex_lines([&](uint32 line, std::size_t i) {
+		(*pos)[line] = Vec3(d.positions[3 * i], d.positions[3 * i + 1], d.positions[3 * i + 2]);
+	});
+	for (const auto& c : d.vertex_columns)
+		if (usable(c))
+			fill_column<Vertex>(ig, c, vertex_lines, path);
+	for (const auto& c : d.cell_columns)
+		if (usable(c))
+			fill_column<Face>(
+				ig, c,
+				[&](const auto& f) {
+					for (const auto& [line, cell] : faces)
+						f(line, std::size_t(cell));
+				},
+				path);
+
+	rep.build.nb_cells_read = d.nb_cells();
+	rep.build.vertex_offset = vertex.empty() ? 0 : vertex[0].dart.index;
+	rep.nb_vertices_read = d.nb_vertices();
+	rep.nb_cells_read = d.nb_cells();
+	rep.nb_cells_built = rep.build.nb_cells_built;
+	rep.nb_cells_skipped = rep.build.nb_cells_degenerate;
+	return rep;
+}
+
 } // namespace
+
+LoadReport build_map(IncidenceGraph& ig, const MeshData& d, const std::string& path)
+{
+	return build_complex(ig, d, path);
+}
 
 LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path)
 {

@@ -79,10 +79,19 @@ std::vector<uint32> number_vertices(const MAP& m, MeshData& d, const std::string
 	return id;
 }
 
+// The vertex a face's dart starts at (an incidence graph's use: its origin).
+template <typename MAP>
+typename mesh_traits<MAP>::Vertex vertex_of_dart(const MAP& m, Dart x)
+{
+	if constexpr (std::is_same_v<MAP, IncidenceGraph>)
+		return use_origin(m, x);
+	else
+		return typename mesh_traits<MAP>::Vertex(x);
+}
+
 template <typename MAP>
 MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 {
-	using Vertex = typename mesh_traits<MAP>::Vertex;
 	using Face = typename mesh_traits<MAP>::Face;
 	// a G-map face's darts alternate beta0 and beta1: every other one starts
 	// an edge, in the order of the polygon
@@ -95,7 +104,7 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 		uint32 n = 0;
 		foreach_dart_of_orbit(m, f, [&](Dart x) {
 			if (n++ % step == 0)
-				d.cell_vertices.push_back(id[index_of(m, Vertex(x))]);
+				d.cell_vertices.push_back(id[index_of(m, vertex_of_dart(m, x))]);
 		});
 		d.cell_sizes.push_back(n / step);
 		if (faces_indexed)
@@ -232,6 +241,11 @@ MeshData extract_surface(const CMap2& m, const std::string& path, bool attribute
 MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes)
 {
 	return extract_faces(m, path, attributes);
+}
+
+MeshData extract_surface(const IncidenceGraph& ig, const std::string& path, bool attributes)
+{
+	return extract_faces(ig, path, attributes);
 }
 
 MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes)

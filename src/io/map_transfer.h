@@ -6,6 +6,7 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/io/options.h>
 
 #include "mesh_data.h"
@@ -23,6 +24,11 @@ LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path);
 LoadReport build_map(GMap2& m, const MeshData& d, const std::string& path);
 LoadReport build_map(CMap3& m, const MeshData& d, const std::string& path);
 LoadReport build_map(GMap3& m, const MeshData& d, const std::string& path);
+/// Appends d to an incidence graph exactly: every vertex in the file's order,
+/// every face through its vertices, edges found or added; faces with fewer
+/// than 3 vertices or a repeated one are skipped and counted. The same
+/// attributes as for a map; nothing is split, detached or turned over.
+LoadReport build_map(IncidenceGraph& ig, const MeshData& d, const std::string& path);
 
 /// Turns over volume cells of negative orientation (tetrahedra by their signed
 /// volume; other cells by the side of the top relative to the bottom face's
@@ -40,6 +46,7 @@ uint32 orient_cells(MeshData& d);
 /// format's order whatever the orientation of the darts. O(size of m).
 MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes);
 MeshData extract_surface(const GMap2& m, const std::string& path, bool attributes);
+MeshData extract_surface(const IncidenceGraph& ig, const std::string& path, bool attributes);
 MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes);
 MeshData extract_volume(const GMap3& m, const std::string& path, bool attributes);
 

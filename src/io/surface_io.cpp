@@ -85,6 +85,16 @@ LoadReport load_surface(GMap2& m, const std::string& path, const LoadOptions& op
 	return load_surface_into(m, path, options);
 }
 
+LoadReport load_surface(IncidenceGraph& ig, const std::string& path, const LoadOptions& options)
+{
+	return load_surface_into(ig, path, options);
+}
+
+void save_surface(const IncidenceGraph& ig, const std::string& path, const SaveOptions& options)
+{
+	save_surface_of(ig, path, options);
+}
+
 void save_surface(const CMap2& m, const std::string& path, const SaveOptions& options)
 {
 	save_surface_of(m, path, options);

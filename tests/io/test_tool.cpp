@@ -3,6 +3,7 @@
 // stderr, no progress output when not on a terminal.
 #include <cgogn/cgogn.h>
 
+#include "cgogn_test_data.h"
 #include "io_test_utils.h"
 
 #include <gtest/gtest.h>
@@ -175,7 +176,11 @@ TEST(Tool, CheckReportsIntegrityAndRepairs)
 	EXPECT_EQ(j["nonmanifold_vertices"], 1);
 	r = run_tool("info --json '" + dir.file("bowtie.off") + "'", dir);
 	const nlohmann::json i = nlohmann::json::parse(r.out);
-	EXPECT_EQ(i["vertices"], 6) << "the shared vertex is split, one per fan";
+	// the file's true counts, and the repaired map's beside them
+	EXPECT_EQ(i["map"], "IncidenceGraph");
+	EXPECT_EQ(i["vertices"], 5);
+	EXPECT_EQ(i["nonmanifold_vertices"], 1);
+	EXPECT_EQ(i["repaired_map"]["vertices"], 6) << "the shared vertex is split, one per fan";
 	EXPECT_EQ(i["manifold"], false);
 	r = run_tool("check '" + dir.file("bowtie.off") + "'", dir);
 	EXPECT_EQ(r.status, 0);
@@ -318,6 +323,63 @@ TEST(Tool, GraphInfoCheckAndConvert)
 	r = run_tool("info '" + dir.file("bad.cg") + "'", dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("bad.cg:3: vertex index 1 out of range"), std::string::npos) << r.err;
+}
+
+TEST(Tool, NonManifoldInfoAndConvertKeepTheFileWhole)
+{
+	TempDir dir;
+	const std::string file = cgogn_test_data::path("surface/icositetrachoron_2skeleton.off");
+	ToolRun r = run_tool("info --json '" + file + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "IncidenceGraph");
+	EXPECT_EQ(j["vertices"], 24);
+	EXPECT_EQ(j["edges"], 96);
+	EXPECT_EQ(j["faces"], 96);
+	EXPECT_EQ(j["euler_characteristic"], 24);
+	EXPECT_EQ(j["connected_components"], 1);
+	EXPECT_EQ(j["nonmanifold_edges"], 96);
+	EXPECT_EQ(j["max_faces_per_edge"], 3);
+	// the repaired map's figures beside the true ones
+	// no orientation glues its triangles two by two: the repaired map is a
+	// GMap2, its vertices split into 112 and its edges into 192
+	EXPECT_EQ(j["repaired_map"]["map"], "GMap2");
+	EXPECT_EQ(j["repaired_map"]["vertices"], 112);
+	EXPECT_EQ(j["repaired_map"]["edges"], 192);
+	EXPECT_EQ(j["repaired_map"]["connected_components"], 18);
+
+	// convert keeps it whole, in another surface format and as .ig
+	r = run_tool("convert '" + file + "' '" + dir.file("c.ply") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("convert '" + dir.file("c.ply") + "' '" + dir.file("c.ig") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("info --json '" + dir.file("c.ig") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["vertices"], 24);
+	EXPECT_EQ(j["edges"], 96);
+	EXPECT_EQ(j["faces"], 96);
+	r = run_tool("check '" + dir.file("c.ig") + "'", dir);
+	EXPECT_EQ(r.status, 0) << r.err;
+	r = run_tool("convert '" + dir.file("c.ig") + "' '" + dir.file("d.off") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	IncidenceGraph a, b;
+	io::load_surface(a, file);
+	io::load_surface(b, dir.file("d.off"));
+	EXPECT_EQ(nb_cells<IncidenceGraph::Edge>(b), 96u);
+	std::vector<uint32> fa, fb;
+	foreach_cell(a, [&](IncidenceGraph::Face f) {
+		foreach_incident_vertex(a, f, [&](IncidenceGraph::Vertex v) { fa.push_back(v.dart.index); });
+	});
+	foreach_cell(b, [&](IncidenceGraph::Face f) {
+		foreach_incident_vertex(b, f, [&](IncidenceGraph::Vertex v) { fb.push_back(v.dart.index); });
+	});
+	EXPECT_EQ(fa, fb);
+
+	// a manifold file keeps today's report
+	r = run_tool("info --json '" + cgogn_test_data::path("surface/hemisphere.off") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(nlohmann::json::parse(r.out)["map"], "CMap2");
 }
 
 } // namespace cgogn_test_tool

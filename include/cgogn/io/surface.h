@@ -4,6 +4,7 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/gmap3.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/io/error.h>
 #include <cgogn/io/options.h>
 
@@ -40,6 +41,23 @@ LoadReport load_surface(GMap2& m, const std::string& path, const LoadOptions& op
 /// its darts (a non-orientable surface has no consistent order to keep), as
 /// save_surface for a CMap2. O(size of m).
 void save_surface(const GMap2& m, const std::string& path, const SaveOptions& options = {});
+
+/// The same into an incidence graph, exactly as written: every vertex in the
+/// file's order (those no face uses included), every face through its
+/// vertices in the file's order, edges shared by any number of faces in any
+/// directions. Nothing is split, detached or turned over: a non-manifold
+/// or non-orientable file keeps its true counts. Only faces that no complex
+/// holds (fewer than 3 vertices, a repeated vertex) are skipped, and
+/// counted. The same attributes as for a map (positions, per-vertex and
+/// per-face data), the same errors; a failed load leaves ig unchanged.
+/// O(file size x vertex degree).
+LoadReport load_surface(IncidenceGraph& ig, const std::string& path, const LoadOptions& options = {});
+/// Writes the faces of an incidence graph, vertices in the order of their
+/// container and faces in traversal order: a loaded file comes back with
+/// its vertex and face order. Edges without face and vertices without edge
+/// are written only as vertices (the surface formats have no wires).
+/// O(size of ig).
+void save_surface(const IncidenceGraph& ig, const std::string& path, const SaveOptions& options = {});
 
 // A CMap3 is a CMap2 and a GMap3 a GMap2: without these, a volume map would
 // be read as a surface.

@@ -527,14 +527,30 @@ std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContain
 		if (to.orbit() == P)
 			return to.add_attribute<T, CellAttribute<T, P>>(this->name(), this->default_value());
 	// and so do a graph's vertices and edges, from the vertices and edges of
-	// any map (to_graph: its 1-skeleton)
-	constexpr Orbit K = is_dimension_orbit(O) ? O : dimension_counterpart(O);
+	// any map (to_graph: its 1-skeleton), and an incidence graph's vertices
+	// and edges, from and to those of a 2-map (to_incidence_graph, to_cmap2)
+	constexpr Orbit K = is_dimension_orbit(O)   ? O
+						: O == Orbit::IG_VERTEX ? Orbit::CELL0
+						: O == Orbit::IG_EDGE   ? Orbit::CELL1
+												: dimension_counterpart(O);
 	if constexpr (K == Orbit::CELL0)
+	{
 		if (to.orbit() == Orbit::ALPHA1)
 			return to.add_attribute<T, CellAttribute<T, Orbit::ALPHA1>>(this->name(), this->default_value());
+		if (to.orbit() == Orbit::IG_VERTEX)
+			return to.add_attribute<T, CellAttribute<T, Orbit::IG_VERTEX>>(this->name(), this->default_value());
+		if (to.orbit() == Orbit::PHI21)
+			return to.add_attribute<T, CellAttribute<T, Orbit::PHI21>>(this->name(), this->default_value());
+	}
 	if constexpr (K == Orbit::CELL1)
+	{
 		if (to.orbit() == Orbit::ALPHA0)
 			return to.add_attribute<T, CellAttribute<T, Orbit::ALPHA0>>(this->name(), this->default_value());
+		if (to.orbit() == Orbit::IG_EDGE)
+			return to.add_attribute<T, CellAttribute<T, Orbit::IG_EDGE>>(this->name(), this->default_value());
+		if (to.orbit() == Orbit::PHI2)
+			return to.add_attribute<T, CellAttribute<T, Orbit::PHI2>>(this->name(), this->default_value());
+	}
 	// and a container of the cells of the same dimension in a map of any
 	// dimension, or in a map of dimension 2 or 3 (to_nmap, to_fixed_map)
 	std::shared_ptr<AttributeBase> same_dimension;

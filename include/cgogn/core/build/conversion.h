@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/nmap.h>
 
 namespace cgogn
@@ -79,5 +81,28 @@ Graph to_graph(const CMap2& m);
 Graph to_graph(const GMap2& m);
 Graph to_graph(const CMap3& m);
 Graph to_graph(const GMap3& m);
+/// The 1-skeleton of an incidence graph: its vertices and edges, with their
+/// attributes (lines renumbered in traversal order). O(size x attributes).
+Graph to_graph(const IncidenceGraph& ig);
+
+/// The incidence graph of a 2-map: a vertex, an edge and a face per real
+/// vertex, edge and face of m (boundary faces are not faces of the complex;
+/// their edges are the border), each face running along its phi1 cycle.
+/// The vertex, edge and face attributes of m are carried (lines renumbered in
+/// traversal order; faces are indexed when m's are). Throws TopologyError
+/// when an edge of m has the same vertex at both ends or a face meets a
+/// vertex twice (the complex has neither). O(size of m x attributes).
+IncidenceGraph to_incidence_graph(const CMap2& m);
+
+/// The 2-map of an incidence graph, built from its faces as a polygon soup
+/// by build_surface: exact when every edge has at most two faces listing it
+/// in opposite directions and every vertex is manifold (one fan; see
+/// is_manifold_vertex), and otherwise repaired as build_surface repairs,
+/// the report telling what was detached, split or dropped (vertices without
+/// face are dropped: a 2-map has no isolated vertex). Vertex attributes
+/// follow to every copy of a split vertex; edge and face attributes are
+/// carried. Faces keep their order and orientation; soup vertex i is the
+/// i-th live vertex of ig. O(size of ig x attributes).
+CMap2 to_cmap2(const IncidenceGraph& ig, BuildReport* report = nullptr);
 
 } // namespace cgogn

@@ -22,7 +22,7 @@ AttributeContainer& container_of(const CMapBase& m)
 template <typename CELL>
 bool is_indexed(const CMapBase& m)
 {
-	if constexpr (CELL::ORBIT == Orbit::DART)
+	if constexpr (CELL::ORBIT == Orbit::DART || is_direct_orbit(CELL::ORBIT))
 		return true;
 	else
 		return detail::state_of(m).cell_index[orbit_index(CELL::ORBIT)] != nullptr;
@@ -34,7 +34,7 @@ bool is_indexed(const CMapBase& m)
 template <Orbit O>
 CGOGN_INLINE uint32 index_of(const CMapBase& m, Cell<O> c)
 {
-	if constexpr (O == Orbit::DART)
+	if constexpr (O == Orbit::DART || is_direct_orbit(O))
 		return c.dart.index;
 	else
 	{
@@ -156,7 +156,7 @@ requires std::derived_from<MAP, CMapBase>
 void index_cells(MAP& m)
 {
 	constexpr Orbit O = CELL::ORBIT;
-	if constexpr (O == Orbit::DART)
+	if constexpr (O == Orbit::DART || is_direct_orbit(O))
 		return;
 	else
 	{

@@ -5,6 +5,7 @@
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/nmap.h>
 
 #include <concepts>
@@ -140,6 +141,22 @@ struct mesh_traits<Graph>
 	using Edge = Graph::Edge;              ///< See Graph::Edge.
 	/// The cell types: views keep one predicate or cell set per entry.
 	using Cells = std::tuple<Vertex, Edge>;
+	template <typename T>
+	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
+	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).
+};
+
+/// The traits of an incidence graph.
+template <>
+struct mesh_traits<IncidenceGraph>
+{
+	static constexpr uint32 dimension = 2; ///< The dimension of the complex.
+	using MapType = IncidenceGraph;        ///< The map type.
+	using Vertex = IncidenceGraph::Vertex; ///< See IncidenceGraph::Vertex.
+	using Edge = IncidenceGraph::Edge;     ///< See IncidenceGraph::Edge.
+	using Face = IncidenceGraph::Face;     ///< See IncidenceGraph::Face.
+	/// The cell types: views keep one predicate or cell set per entry.
+	using Cells = std::tuple<Vertex, Edge, Face>;
 	template <typename T>
 	using Attribute = cgogn::AttributeArray<T>; ///< An attribute of values of type T, of any orbit.
 	using AttributeGen = AttributeBase;         ///< An attribute of any type (type-erased).

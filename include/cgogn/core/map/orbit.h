@@ -38,6 +38,9 @@ enum class Orbit : uint32
 	// graphs
 	ALPHA0, // graph edge: its two half-edges (none for an isolated vertex)
 	ALPHA1, // graph vertex: the half-edges around it
+	// incidence graphs: a cell is its line (no darts)
+	IG_VERTEX, // incidence-graph vertex
+	IG_EDGE,   // incidence-graph edge
 	// the i-cells of the maps of any dimension (CMapN, GMapN), i = 0 ... MAX_DIMENSION
 	CELL0,
 	CELL1,
@@ -75,6 +78,14 @@ constexpr bool is_dimension_orbit(Orbit o)
 	return orbit_index(o) >= orbit_index(Orbit::CELL0) && o != Orbit::NB_ORBITS;
 }
 
+/// True for the orbits whose cells are records rather than sets of darts
+/// (the vertices and edges of an IncidenceGraph): a cell's `dart` field
+/// holds its line, the cell is always indexed, and its line is its identity.
+constexpr bool is_direct_orbit(Orbit o)
+{
+	return o == Orbit::IG_VERTEX || o == Orbit::IG_EDGE;
+}
+
 /// The dimension of the cells of an orbit of the maps of any dimension.
 constexpr uint32 dimension_of_orbit(Orbit o)
 {
@@ -104,6 +115,8 @@ constexpr std::string_view orbit_name(Orbit o)
 															   "BETA0_BETA1_BETA2_BETA3",
 															   "ALPHA0",
 															   "ALPHA1",
+															   "IG_VERTEX",
+															   "IG_EDGE",
 															   "CELL0",
 															   "CELL1",
 															   "CELL2",

@@ -446,7 +446,9 @@ template <typename MAP, Orbit O>
 requires std::derived_from<MAP, CMapBase>
 bool same_cell(const MAP& m, Cell<O> c1, Cell<O> c2)
 {
-	if constexpr (O != Orbit::DART)
+	if constexpr (is_direct_orbit(O))
+		return c1.dart == c2.dart;
+	else if constexpr (O != Orbit::DART)
 	{
 		if (const AttributeArray<uint32>* idx = detail::state_of(m).cell_index[orbit_index(O)])
 		{

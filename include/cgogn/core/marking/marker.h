@@ -43,7 +43,10 @@ public:
 		if (indexed_)
 			mark_->set(index_of(map_, c));
 		else
-			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set(d.index); });
+		{
+			if constexpr (!is_direct_orbit(CELL::ORBIT)) // records are always indexed
+				foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set(d.index); });
+		}
 	}
 	/// Unmarks c. O(1) when the orbit is indexed, else O(size of the orbit).
 	void unmark(CELL c)
@@ -51,7 +54,10 @@ public:
 		if (indexed_)
 			mark_->reset(index_of(map_, c));
 		else
-			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->reset(d.index); });
+		{
+			if constexpr (!is_direct_orbit(CELL::ORBIT)) // records are always indexed
+				foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->reset(d.index); });
+		}
 	}
 	/// Whether c is marked, through any of its darts. O(1).
 	bool is_marked(CELL c) const
@@ -143,7 +149,10 @@ private:
 		if (indexed_)
 			mark_->set_value(index_of(map_, c), b);
 		else
-			foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set_value(d.index, b); });
+		{
+			if constexpr (!is_direct_orbit(CELL::ORBIT)) // records are always indexed
+				foreach_dart_of_orbit(map_, c, [&](Dart d) { mark_->set_value(d.index, b); });
+		}
 	}
 	bool is_same(CELL a, CELL b) const
 	{

@@ -4,6 +4,7 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/mesh_traits.h>
 
 #include <string>
@@ -40,6 +41,8 @@ struct IntegrityError
 		IncidenceCacheStale,          ///< a quick incidence cache disagrees with the map (see IncidenceCache)
 		InverseRelationWrong,         ///< a stored inverse (a graph's alpha_1) is not the relation's inverse
 		EdgelessDartNotAlone,         ///< a graph dart without edge shares its vertex with other darts
+		RingBroken,         ///< an incidence graph's ring (edge ends around a vertex, uses around an edge) is broken
+		FaceNotSimpleCycle, ///< an incidence graph's face is not a simple cycle of consecutive sides
 	};
 	Kind kind;                   ///< The violated invariant.
 	Orbit orbit = Orbit::DART;   ///< The orbit of the cell or line at fault; DART for errors of the relations.
@@ -108,5 +111,13 @@ IntegrityReport check_integrity(const GMap3& m);
 /// a digon). O(D^2 x number of darts x number of indexed orbits + lines).
 template <typename MAP>
 requires is_nmap_v<MAP> IntegrityReport check_integrity(const MAP& m);
+/// The invariants of an incidence graph: each edge joins two different live
+/// vertices and its two ends are each in the ring of their vertex, every
+/// ring holds exactly the ends of its vertex once; every use (dart) is on a
+/// live edge and in that edge's radial ring, once; phi1 is a permutation of
+/// the uses whose cycles (the faces) are simple cycles of at least 3 sides,
+/// each side starting where the previous one ends; and the face indexing
+/// when faces are indexed. O(number of uses + edges + vertices + lines).
+IntegrityReport check_integrity(const IncidenceGraph& ig);
 
 } // namespace cgogn

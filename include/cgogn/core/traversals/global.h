@@ -128,7 +128,16 @@ void foreach_cell_of_map(const MAP& m, const FUNC& func)
 	// f's captures in registers across the loop (see held_callable_t)
 	held_callable_t<FUNC> f = func;
 	constexpr Orbit O = CELL::ORBIT;
-	if constexpr (O == Orbit::DART)
+	if constexpr (is_direct_orbit(O))
+	{
+		// a record's line is the cell itself
+		const AttributeContainer& c = *detail::state_of(m).cells[orbit_index(O)];
+		const auto key = c.key().view();
+		for (uint32 i = 0, end = c.end_index(); i < end; ++i)
+			if (key[i] != INVALID_INDEX && !call_and_continue(f, reported_cell<CELL>(Dart(i), i)))
+				return;
+	}
+	else if constexpr (O == Orbit::DART)
 	{
 		// a dart's line is its index
 		foreach_dart(

@@ -162,7 +162,19 @@ template <typename CELL, typename MAP, typename FUNC>
 void parallel_foreach_cell_of_map(const MAP& m, const FUNC& f)
 {
 	constexpr Orbit O = CELL::ORBIT;
-	if constexpr (O == Orbit::DART)
+	if constexpr (is_direct_orbit(O))
+	{
+		// a record's line is the cell itself
+		const AttributeContainer& c = *detail::state_of(m).cells[orbit_index(O)];
+		const AttributeArray<uint32>& key = c.key();
+		parallel_for_chunks(c.end_index(), PARALLEL_LINE_GRAIN, ChunkBody([&](uint32 b, uint32 e) {
+								held_callable_t<FUNC> fc = f; // see held_callable_t
+								for (uint32 i = b; i < e; ++i)
+									if (key[i] != INVALID_INDEX)
+										fc(CELL(Dart(i)));
+							}));
+	}
+	else if constexpr (O == Orbit::DART)
 	{
 		const uint32 end = detail::state_of(m).darts->end_index();
 		const AttributeArray<uint32>& key = detail::state_of(m).darts->key();
