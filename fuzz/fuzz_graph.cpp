@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The libFuzzer target of the graph readers: the input's first byte chooses
-// the format (.cg, .cgr, .skel, .obj) and the index base, the rest is the file. Any
+// the format (.cg, .cgr, .skel, .obj, .vtk, .vtu) and the index base, the rest is the file. Any
 // input must either throw io::Error or give a graph that passes
 // check_integrity with the counts read, whether loaded into an empty graph or
 // appended to one. Loading into a graph whose `position` has another type
@@ -45,8 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
 	if (size == 0)
 		return 0;
-	const auto format = io::detail::GraphFormat(data[0] % 4);
-	const uint32 base = (data[0] / 4) % 2;
+	const auto format = io::detail::GraphFormat(data[0] % 6);
+	const uint32 base = (data[0] / 6) % 2;
 	const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
 	io::detail::GraphData d;
 	try

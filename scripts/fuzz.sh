@@ -80,12 +80,13 @@ for f in "${formats[@]}"; do
   k=$((k + 1))
 done
 # fuzz_graph: the first byte chooses the format (0 .cg, 1 .cgr, 2 .skel,
-# 3 .obj; +4: indices from 1)
+# 3 .obj, 4 .vtk, 5 .vtu; +6: indices from 1)
 printf '\x00# D:3 NV:4 NE:4\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n# tree\ne 0 1\ne 1 2\ne 1 3\ne 3 3\n' > "$seeds/graph/tree.cg"
 printf '\x01# D:3 NV:3 NE:2\nv 0 0 0 0.5\nv 1 0 0 0.25\nv 2 0 0 1e-3\ne 0 1\ne 1 2\n' > "$seeds/graph/path.cgr"
 printf '\x02ID Cx Cy Cz RADIUS #NEIGHBORS NEIGHBORS_LIST\n3\n0 0 0 0 1 1 1\n1 1 0 0 1 2 0 2\n2 2 0 0 1 0\n' > "$seeds/graph/path.skel"
 printf '\x03v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3 1\nl -1 -2\nf 1 2 3\n' > "$seeds/graph/lines.obj"
-printf '\x04# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg"
+printf '\x06# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg"
+printf '\x04# vtk DataFile Version 3.0\nlines\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n0 0 0 1 0 0 2 0 0\nCELLS 2 7\n2 0 1\n3 0 1 2\nCELL_TYPES 2\n3\n4\nPOINT_DATA 3\nSCALARS radius double 1\nLOOKUP_TABLE default\n1 2 3\n' > "$seeds/graph/lines.vtk"
 # fuzz_incidence_graph: an .ig file (a book of three triangles, a wire, a lone vertex)
 printf 'IG 7 8 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 2 0 0\nv 3 3 3\n# spine, then the sides\ne 0 1\ne 1 2\ne 2 0\ne 1 3\ne 3 0\ne 1 4\ne 4 0\ne 1 5\nf 3 0 1 2\nf 3 0 3 4\nf 3 5 6 0\n' > "$seeds/incidence_graph/book.ig"
 cat fuzz/dict/*.dict > "$build/append.dict"

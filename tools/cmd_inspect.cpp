@@ -184,8 +184,12 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 	Progress progress;
 	if (is_graph_file(in) || is_graph_file(out))
 	{
-		if (!is_graph_file(in) || !is_graph_file(out))
-			throw io::Error(is_graph_file(in) ? out : in, "a graph file converts to a graph file (.cg, .cgr)");
+		// the other side: a graph file, or a format that holds polylines
+		const std::string& other = is_graph_file(in) ? out : in;
+		const io::Format f = io::format_from_extension(other);
+		if (!is_graph_file(other) && f != io::Format::Obj && f != io::Format::VtkLegacy && f != io::Format::Vtu)
+			throw io::Error(other, "a graph file converts to a graph file (.cg, .cgr, .skel read only) or to the "
+								   "polylines of .obj, .vtk and .vtu");
 		if (boundary)
 			throw io::Error(in, "--boundary applies to the maps of any dimension (.nmap files)");
 		io::GraphLoadReport r;

@@ -128,12 +128,13 @@ void bind_graph(py::module_& m)
 				return w;
 			},
 			py::arg("path"), py::arg("index_base") = 0,
-			"Loads a .cg, .cgr (radii in the attribute 'radius'), .skel or .obj (v and l lines) file; index_base=1 "
+			"Loads a .cg, .cgr (radii in the attribute 'radius'), .skel, .obj (v and l lines) or .vtk/.vtu (line "
+			"and polyline cells) file; index_base=1 "
 			"for the .cg files "
 			"of CGoGN 2. Raises cgogn.IOError naming the file, line and problem on bad input.")
 		.def(
 			"save", [](const W& w, const std::string& path) { io::save_graph(w.g, path); }, py::arg("path"),
-			"Writes a .cg or .obj file, or a .cgr file (needs the vertex attribute 'radius').")
+			"Writes a .cg, .obj, .vtk or .vtu file, or a .cgr file (needs the vertex attribute 'radius').")
 		.def_property_readonly(
 			"nb_vertices", [](const W& w) { return nb_cells<Vertex>(w.g); }, "Number of vertices.")
 		.def_property_readonly(

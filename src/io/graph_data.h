@@ -23,6 +23,7 @@ struct GraphData
 	std::vector<std::pair<uint32, uint32>> edges;
 	uint32 nb_one_sided_edges = 0; ///< .skel: edges listed by one end only
 	uint32 nb_faces_ignored = 0;   ///< .obj: faces (`f`), not part of a graph
+	uint32 nb_cells_ignored = 0;   ///< .vtk, .vtu: cells other than lines, not part of a graph
 };
 
 enum class GraphFormat
@@ -30,7 +31,9 @@ enum class GraphFormat
 	Cg,
 	Cgr,
 	Skel,
-	Obj
+	Obj,
+	Vtk,
+	Vtu
 };
 
 /// Parses a whole graph file (see <cgogn/io/graph.h> for the formats).

@@ -221,6 +221,22 @@ detail::GraphData read_obj_lines(std::string_view text, const std::string& path)
 	return d;
 }
 
+// The line and polyline cells of a VTK file (legacy or XML), read by the
+// volume readers into MeshData::segments.
+detail::GraphData read_vtk_lines(std::string_view text, const std::string& path, bool xml)
+{
+	const detail::MeshData m = xml ? detail::read_vtu(text, path) : detail::read_vtk(text, path);
+	detail::GraphData d;
+	d.positions.reserve(m.nb_vertices());
+	for (uint32 i = 0; i < m.nb_vertices(); ++i)
+		d.positions.emplace_back(m.positions[3 * i], m.positions[3 * i + 1], m.positions[3 * i + 2]);
+	d.edges = m.segments;
+	if (const detail::Column* r = m.find_vertex_column("radius"); r != nullptr && r->dim == 1)
+		d.radii = r->values;
+	d.nb_cells_ignored = m.nb_cells();
+	return d;
+}
+
 } // namespace
 
 namespace detail
@@ -236,6 +252,9 @@ GraphData read_graph(std::string_view text, const std::string& path, GraphFormat
 		return read_cg(text, path, true, index_base);
 	case GraphFormat::Obj:
 		return read_obj_lines(text, path);
+	case GraphFormat::Vtk:
+	case GraphFormat::Vtu:
+		return read_vtk_lines(text, path, format == GraphFormat::Vtu);
 	default:
 		return read_skel(text, path);
 	}
@@ -297,6 +316,7 @@ GraphLoadReport build_graph(Graph& g, const GraphData& d, const std::string& pat
 	r.radius = !d.radii.empty();
 	r.nb_one_sided_edges = d.nb_one_sided_edges;
 	r.nb_faces_ignored = d.nb_faces_ignored;
+	r.nb_cells_ignored = d.nb_cells_ignored;
 	return r;
 }
 
@@ -305,14 +325,16 @@ GraphLoadReport build_graph(Graph& g, const GraphData& d, const std::string& pat
 GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOptions& options)
 {
 	const std::string ext = detail::lower_extension(path);
-	if (ext != "cg" && ext != "cgr" && ext != "skel" && ext != "obj")
-		throw Error(path, "unknown graph format '." + ext + "' (.cg, .cgr, .skel and .obj are read)");
+	if (ext != "cg" && ext != "cgr" && ext != "skel" && ext != "obj" && ext != "vtk" && ext != "vtu")
+		throw Error(path, "unknown graph format '." + ext + "' (.cg, .cgr, .skel, .obj, .vtk and .vtu are read)");
 	if (options.index_base > 1)
 		throw Error(path, "index_base must be 0 or 1");
 	const std::string text = detail::read_file(path);
 	const detail::GraphFormat format = ext == "cg"     ? detail::GraphFormat::Cg
 									   : ext == "cgr"  ? detail::GraphFormat::Cgr
 									   : ext == "skel" ? detail::GraphFormat::Skel
+									   : ext == "vtk"  ? detail::GraphFormat::Vtk
+									   : ext == "vtu"  ? detail::GraphFormat::Vtu
 													   : detail::GraphFormat::Obj;
 	return detail::build_graph(g, detail::read_graph(text, path, format, options.index_base), path);
 }
@@ -320,8 +342,8 @@ GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOpt
 void save_graph(const Graph& g, const std::string& path)
 {
 	const std::string ext = detail::lower_extension(path);
-	if (ext != "cg" && ext != "cgr" && ext != "obj")
-		throw Error(path, "cannot write graph format '." + ext + "' (.cg, .cgr and .obj are written)");
+	if (ext != "cg" && ext != "cgr" && ext != "obj" && ext != "vtk" && ext != "vtu")
+		throw Error(path, "cannot write graph format '." + ext + "' (.cg, .cgr, .obj, .vtk and .vtu are written)");
 	const bool obj = ext == "obj";
 	const auto position = get_attribute<Vec3, Graph::Vertex>(g, "position");
 	if (!position)
@@ -341,6 +363,29 @@ void save_graph(const Graph& g, const std::string& path)
 	});
 	const AttributeContainer& lines = container_of<Orbit::ALPHA1>(g);
 	std::vector<uint32> number(lines.end_index(), INVALID_INDEX);
+	if (ext == "vtk" || ext == "vtu")
+	{
+		// points and one line cell per edge, radii as point data
+		detail::MeshData m;
+		if (!radius)
+			radius = get_attribute<double, Graph::Vertex>(g, "radius");
+		detail::Column radii{"radius", 1, {}};
+		foreach_cell(g, [&](Graph::Vertex v) {
+			number[index_of(g, v)] = m.nb_vertices();
+			const Vec3& p = value<Vec3>(g, position, v);
+			m.positions.insert(m.positions.end(), {p[0], p[1], p[2]});
+			if (radius)
+				radii.values.push_back(value<double>(g, radius, v));
+		});
+		if (radius)
+			m.vertex_columns.push_back(std::move(radii));
+		foreach_cell(g, [&](Graph::Edge e) {
+			m.segments.emplace_back(number[index_of(g, Graph::Vertex(e.dart))],
+									number[index_of(g, Graph::Vertex(alpha0(g, e.dart)))]);
+		});
+		detail::write_file(path, ext == "vtk" ? detail::write_vtk(m, false) : detail::write_vtu(m, false));
+		return;
+	}
 	std::string s = obj ? std::string("# a graph: its vertices, and one line (l) per edge\n")
 						: "# D:3 NV:" + std::to_string(nb_cells<Graph::Vertex>(g)) +
 							  " NE:" + std::to_string(nb_cells<Graph::Edge>(g)) + "\n";

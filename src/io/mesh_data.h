@@ -6,6 +6,7 @@
 #include <cgogn/core/utils/numeric.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cgogn::io::detail
@@ -37,6 +38,12 @@ struct MeshData
 	std::vector<uint32> cell_vertices;
 	std::vector<Column> vertex_columns;
 	std::vector<Column> cell_columns;
+	/// Line cells, as vertex pairs: read by the VTK readers (a line, type 3;
+	/// a polyline, type 4, as its consecutive segments), which do not count
+	/// them as cells; written by the VTK writers after the cells, as lines.
+	/// Graphs are stored here. A writer drops the cell columns when there are
+	/// segments (the columns have one row per cell, none for the segments).
+	std::vector<std::pair<uint32, uint32>> segments;
 
 	uint32 nb_vertices() const
 	{

@@ -322,10 +322,11 @@ std::string write_vtk(const MeshData& d, bool binary)
 		put_double(d.positions[i], i % 3 == 2);
 	if (binary)
 		s += '\n';
+	const std::size_t nb_segments = d.segments.size();
 	s += "CELLS ";
-	append_uint(s, d.nb_cells());
+	append_uint(s, d.nb_cells() + nb_segments);
 	s += ' ';
-	append_uint(s, d.nb_cells() + d.cell_vertices.size());
+	append_uint(s, d.nb_cells() + d.cell_vertices.size() + 3 * nb_segments);
 	s += '\n';
 	std::size_t k = 0;
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
@@ -337,13 +338,24 @@ std::string write_vtk(const MeshData& d, bool binary)
 		for (uint32 i = 0; i < n; ++i)
 			put_int(v[vtk_order(n, i)], i + 1 == n);
 	}
+	for (const auto& [a, b] : d.segments)
+	{
+		put_int(2, false);
+		put_int(a, false);
+		put_int(b, true);
+	}
 	if (binary)
 		s += '\n';
 	s += "CELL_TYPES ";
-	append_uint(s, d.nb_cells());
+	append_uint(s, d.nb_cells() + nb_segments);
 	s += '\n';
+	std::vector<uint32> types;
+	types.reserve(d.nb_cells() + nb_segments);
 	for (uint32 n : d.cell_sizes)
-		put_int(vtk_cell_type(n), true);
+		types.push_back(uint32(vtk_cell_type(n)));
+	types.insert(types.end(), nb_segments, 3u); // VTK_LINE
+	for (uint32 t : types)
+		put_int(t, true);
 	if (binary)
 		s += '\n';
 	auto put_columns = [&](const std::vector<Column>& cols, const char* section, uint32 count) {
@@ -371,7 +383,8 @@ std::string write_vtk(const MeshData& d, bool binary)
 		}
 	};
 	put_columns(d.vertex_columns, "POINT_DATA", d.nb_vertices());
-	put_columns(d.cell_columns, "CELL_DATA", d.nb_cells());
+	if (d.segments.empty()) // see MeshData::segments
+		put_columns(d.cell_columns, "CELL_DATA", d.nb_cells());
 	return s;
 }
 

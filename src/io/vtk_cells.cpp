@@ -53,10 +53,16 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 		case 14:
 			take({0, 1, 2, 3, 4}, 5);
 			break;
+		case 3: // line
+		case 4: // polyline
+			if (n < 2)
+				fail("cell " + std::to_string(c) + " of type " + std::to_string(types[c]) + " has " +
+					 std::to_string(n) + " point(s) (a line has 2 or more)");
+			for (int64 i = 0; i + 1 < (types[c] == 3 ? 2 : n); ++i)
+				d.segments.emplace_back(uint32(ids[i]), uint32(ids[i + 1]));
+			continue; // segments, not volume cells
 		case 1:
 		case 2:
-		case 3:
-		case 4:
 		case 5:
 		case 6:
 		case 7:

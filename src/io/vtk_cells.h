@@ -12,7 +12,8 @@ namespace cgogn::io::detail
 
 /// Appends the volume cells of a VTK cell list to d (tetra 10, voxel 11,
 /// hexahedron 12, wedge 13, pyramid 14, corners of quadratic tetra 24 and
-/// hexahedron 25; lines and polygons are ignored) and the matching rows of
+/// hexahedron 25; lines 3 and polylines 4 go to d.segments; polygons are
+/// ignored) and the matching rows of
 /// `cell_data` to d's cell columns. `offsets` has one more entry than `types`
 /// (starting at 0). `fail(message)` must throw.
 void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std::vector<int64>& connectivity,

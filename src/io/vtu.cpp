@@ -424,7 +424,8 @@ std::string write_vtu(const MeshData& d, bool binary)
 	std::string head = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
 					   "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece "
 					   "NumberOfPoints=\"" +
-					   std::to_string(d.nb_vertices()) + "\" NumberOfCells=\"" + std::to_string(d.nb_cells()) + "\">\n";
+					   std::to_string(d.nb_vertices()) + "\" NumberOfCells=\"" +
+					   std::to_string(d.nb_cells() + d.segments.size()) + "\">\n";
 	std::string appended;
 	auto array = [&](const std::string& type, const std::string& name, uint32 dim, const auto& fill_text,
 					 const auto& fill_raw) {
@@ -491,6 +492,12 @@ std::string write_vtu(const MeshData& d, bool binary)
 		offsets.push_back(int64(conn.size()));
 		types.push_back(vtk_cell_type(n));
 	}
+	for (const auto& [a, b] : d.segments)
+	{
+		conn.insert(conn.end(), {int64(a), int64(b)});
+		offsets.push_back(int64(conn.size()));
+		types.push_back(3); // VTK_LINE
+	}
 	ints("connectivity", conn);
 	ints("offsets", offsets);
 	ints("types", types);
@@ -503,7 +510,7 @@ std::string write_vtu(const MeshData& d, bool binary)
 		head += std::string("</") + section + ">\n";
 	};
 	data("PointData", d.vertex_columns);
-	data("CellData", d.cell_columns);
+	data("CellData", d.segments.empty() ? d.cell_columns : std::vector<Column>{}); // see MeshData::segments
 	head += "</Piece>\n</UnstructuredGrid>\n";
 	if (binary)
 	{

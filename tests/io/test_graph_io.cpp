@@ -195,6 +195,57 @@ TEST(GraphFiles, ObjPolylines)
 	}
 }
 
+TEST(GraphFiles, VtkAndVtuPolylinesRoundTripExactly)
+{
+	TempDir dir;
+	const Graph g = random_graph(150, 11);
+	for (const char* ext : {".vtk", ".vtu"})
+	{
+		SCOPED_TRACE(ext);
+		const std::string path = dir.file(std::string("tree") + ext);
+		io::save_graph(g, path);
+		Graph h;
+		const io::GraphLoadReport r = io::load_graph(h, path);
+		EXPECT_TRUE(check_integrity(h).ok());
+		EXPECT_EQ(r.nb_vertices_read, 150u);
+		EXPECT_EQ(r.nb_edges_read, nb_cells<Edge>(g));
+		EXPECT_EQ(r.nb_cells_ignored, 0u);
+		EXPECT_TRUE(r.radius);
+		const Content a = content_of(g), b = content_of(h);
+		EXPECT_EQ(a.positions, b.positions); // bit for bit
+		EXPECT_EQ(a.radii, b.radii);
+		EXPECT_EQ(a.edges, b.edges);
+		EXPECT_EQ(cycle_rank(h), cycle_rank(g));
+	}
+}
+
+TEST(GraphFiles, VtkPolylinesBesideOtherCells)
+{
+	TempDir dir;
+	// a polyline of 3 points, a line, a tetrahedron (ignored, counted)
+	write_text(dir.file("mixed.vtk"), "# vtk DataFile Version 3.0\nmixed\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+									  "POINTS 5 double\n0 0 0 1 0 0 2 0 0 0 1 0 0 0 1\n"
+									  "CELLS 3 12\n3 0 1 2\n2 2 3\n4 0 1 3 4\nCELL_TYPES 3\n4\n3\n10\n");
+	Graph g;
+	const io::GraphLoadReport r = io::load_graph(g, dir.file("mixed.vtk"));
+	EXPECT_EQ(r.nb_vertices_read, 5u);
+	EXPECT_EQ(r.nb_edges_read, 3u);
+	EXPECT_EQ(r.nb_cells_ignored, 1u);
+	EXPECT_FALSE(r.radius);
+	EXPECT_EQ(nb_connected_components(g), 2u); // the fifth point is alone
+	// a line of one point, and a point index out of range
+	for (const std::string& cells :
+		 {std::string("CELLS 1 2\n1 0\nCELL_TYPES 1\n3\n"), std::string("CELLS 1 3\n2 0 9\nCELL_TYPES 1\n3\n")})
+	{
+		write_text(dir.file("bad.vtk"), "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+										"POINTS 2 double\n0 0 0 1 0 0\n" +
+											cells);
+		Graph x;
+		EXPECT_THROW(io::load_graph(x, dir.file("bad.vtk")), io::Error);
+		EXPECT_EQ(nb_darts(x), 0u);
+	}
+}
+
 TEST(GraphFiles, MalformedFilesGiveTypedErrorsAndLeaveTheGraph)
 {
 	TempDir dir;

@@ -319,6 +319,12 @@ TEST(Tool, GraphInfoCheckAndConvert)
 	r = run_tool("convert '" + dir.file("g.cgr") + "' '" + dir.file("h.off") + "'", dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("graph file"), std::string::npos) << r.err;
+	// to ParaView's polylines and back, the same file
+	r = run_tool("convert '" + dir.file("g.cgr") + "' '" + dir.file("g.vtu") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("convert '" + dir.file("g.vtu") + "' '" + dir.file("k.cgr") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(read_text(dir.file("k.cgr")), read_text(dir.file("g.cgr")));
 	write_text(dir.file("bad.cg"), "# D:3 NV:1 NE:1\nv 0 0 0\ne 0 1\n");
 	r = run_tool("info '" + dir.file("bad.cg") + "'", dir);
 	EXPECT_EQ(r.status, 2);

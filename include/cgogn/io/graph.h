@@ -25,6 +25,12 @@ namespace cgogn::io
 //   pair of consecutive vertices an edge; indices from 1, or negative:
 //   relative to the last vertex). Faces are not part of a graph: they are
 //   counted in GraphLoadReport::nb_faces_ignored. Written as one `l` per edge.
+// - `.vtk` (legacy, UNSTRUCTURED_GRID) and `.vtu`: the points and the line
+//   (type 3) and polyline (type 4) cells, a polyline giving an edge per pair
+//   of consecutive points; a point array `radius` of one component becomes
+//   the radii. Other cells are counted in
+//   GraphLoadReport::nb_cells_ignored. Written (ascii) as one line cell per
+//   edge, with `radius` as point data when the graph has radii.
 
 /// How load_graph reads a file.
 struct GraphLoadOptions
@@ -44,9 +50,12 @@ struct GraphLoadReport
 	uint32 nb_one_sided_edges = 0;
 	/// `.obj`: faces (`f` lines), which a graph does not hold: not loaded.
 	uint32 nb_faces_ignored = 0;
+	/// `.vtk`, `.vtu`: cells other than lines and polylines (triangles,
+	/// tetrahedra, ...), which a graph does not hold: not loaded.
+	uint32 nb_cells_ignored = 0;
 };
 
-/// Reads a graph file (.cg, .cgr, .skel, .obj) and appends its vertices and edges
+/// Reads a graph file (.cg, .cgr, .skel, .obj, .vtk, .vtu) and appends its vertices and edges
 /// to g: positions go to the Vec3 vertex attribute `position`, radii to the
 /// double vertex attribute `radius` (created if missing). Edges are indexed,
 /// so that save_graph writes the vertices and edges of a loaded file back in
@@ -58,7 +67,7 @@ struct GraphLoadReport
 /// or `radius` attribute of another type. O(size of the file).
 GraphLoadReport load_graph(Graph& g, const std::string& path, const GraphLoadOptions& options = {});
 
-/// Writes g as a .cg or .obj file, or as a .cgr file with the double vertex
+/// Writes g as a .cg, .obj, .vtk or .vtu file, or as a .cgr file with the double vertex
 /// attribute `radius`: vertices in the order of their container, edges in
 /// the order of theirs when they are indexed (from the vertex of their dart),
 /// in the order of their darts otherwise; positions
