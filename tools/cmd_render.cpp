@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `cgogn render`: a shaded PNG picture of a surface, or of the boundary of a
 // volume mesh, drawn by the software rasterizer of cgogn::render.
+#include <cgogn/io/graph.h>
+#include <cgogn/io/incidence_graph.h>
+#include <cgogn/io/surface.h>
 #include <cgogn/render/render.h>
 
 #include "commands.h"
@@ -23,6 +26,8 @@ struct RenderCommandOptions
 	std::string background;
 	std::vector<double> range;
 	render::RenderOptions render;
+	render::GraphDrawing graph;
+	bool lines = false;
 };
 
 void parse_size(const std::string& text, render::RenderOptions& o)
@@ -60,7 +65,45 @@ int run_render(RenderCommandOptions o)
 	}
 	Progress progress;
 	render::Image img;
-	with_loaded(o.in, progress, [&](auto& m, const io::LoadReport&) {
+	o.graph.tubes = !o.lines;
+	// a graph, an .ig file, or a non-manifold surface (below) are drawn as
+	// they are, without the repair a map would need
+	auto render_complex = [&](const IncidenceGraph& ig) {
+		auto pos = get_attribute<Vec3, IncidenceGraph::Vertex>(ig, "position");
+		if (!pos)
+			throw std::runtime_error(o.in + ": the complex has no vertex positions");
+		progress.stage("rendering");
+		img = render::render_surface(ig, *pos, o.render);
+	};
+	try
+	{
+		if (is_graph_file(o.in))
+		{
+			progress.stage("loading " + o.in);
+			Graph g;
+			io::load_graph(g, o.in);
+			progress.stage("rendering");
+			img = render::render_graph(g, *get_attribute<Vec3, Graph::Vertex>(g, "position"), o.render, o.graph);
+		}
+		else if (is_incidence_graph_file(o.in))
+		{
+			progress.stage("loading " + o.in);
+			IncidenceGraph ig;
+			io::load_incidence_graph(ig, o.in);
+			render_complex(ig);
+		}
+	}
+	catch (const render::RenderError& e)
+	{
+		throw render::RenderError(o.in + ": " + e.what());
+	}
+	if (is_graph_file(o.in) || is_incidence_graph_file(o.in))
+	{
+		progress.stage("writing " + o.out);
+		render::write_png(img, o.out);
+		return 0;
+	}
+	with_loaded(o.in, progress, [&](auto& m, const io::LoadReport& report) {
 		using Vertex = typename mesh_traits<std::decay_t<decltype(m)>>::Vertex;
 		auto pos = get_attribute<Vec3, Vertex>(m, "position");
 		if (!pos)
@@ -70,6 +113,12 @@ int run_render(RenderCommandOptions o)
 		{
 			if constexpr (std::is_same_v<std::decay_t<decltype(m)>, CMap3>)
 				img = render::render_volume_boundary(m, *pos, o.render);
+			else if (!report.manifold())
+			{
+				IncidenceGraph ig;
+				io::load_surface(ig, o.in);
+				render_complex(ig);
+			}
 			else
 				img = render::render_surface(m, *pos, o.render);
 		}
@@ -87,10 +136,13 @@ int run_render(RenderCommandOptions o)
 
 Command add_render_command(CLI::App& app)
 {
-	auto* sub = app.add_subcommand("render", "Draw a surface, or the boundary of a volume mesh, into a PNG picture "
-											 "(software rasterizer, orthographic camera)");
+	auto* sub = app.add_subcommand("render", "Draw a surface, the boundary of a volume mesh, or a graph into a PNG "
+											 "picture (software rasterizer, orthographic camera)");
 	auto o = std::make_shared<RenderCommandOptions>();
-	sub->add_option("IN", o->in, "input mesh file (surface or volume format)")->required();
+	sub->add_option("IN", o->in,
+					"input mesh file (surface or volume format; a non-manifold surface is drawn as it is), .ig, or "
+					"graph (.cg .cgr .skel)")
+		->required();
 	sub->add_option("OUT", o->out, "output PNG file")->required();
 	sub->add_option("--size", o->size, "picture size WIDTHxHEIGHT (default 800x600)");
 	const std::map<std::string, render::View> views = {
@@ -112,7 +164,13 @@ Command add_render_command(CLI::App& app)
 	sub->add_flag("--edges", o->render.edges, "draw the mesh edges over the faces");
 	sub->add_flag("--show-defects", o->render.show_defects,
 				  "boundary edges in red, vertices split by the loader (non-manifold) as orange dots; hidden "
-				  "ones faint");
+				  "ones faint. A non-manifold surface: edges without two faces in red, non-manifold vertices as "
+				  "orange dots");
+	sub->add_flag("--lines", o->lines, "a graph: each edge a line one pixel wide (default: tubes and balls)");
+	sub->add_option("--radius", o->graph.radius,
+					"a graph: the tubes' radius (default: the file's radii, else 0.5% of the bounding box's "
+					"diagonal)")
+		->check(CLI::PositiveNumber);
 	sub->add_option("--color", o->color,
 					"curvature (mean), gaussian, area, quality (triangle shape), or the name of a double/float "
 					"vertex or cell attribute of the file, through viridis with a legend (default: none)");

@@ -171,6 +171,8 @@ void bind_attributes(py::module_& mod)
 	bind_attribute_methods(gsurface);
 	auto gvolume = py::class_<GVolumeMesh>(mod.attr("GMap3"));
 	bind_attribute_methods(gvolume);
+	auto complex = py::class_<PyMap<IncidenceGraph>>(mod.attr("IncidenceGraph"));
+	bind_attribute_methods(complex);
 }
 
 } // namespace cgogn::python

@@ -33,10 +33,10 @@ PYBIND11_MODULE(_cgogn, m)
 		}
 	});
 	cgogn::python::bind_maps(m);
+	cgogn::python::bind_incidence_graph(m); // before the attribute methods, which it gets too
 	cgogn::python::bind_attributes(m);
 	cgogn::python::bind_operators(m);
 	cgogn::python::bind_algorithms(m);
 	cgogn::python::bind_nmaps(m);
 	cgogn::python::bind_graph(m);
-	cgogn::python::bind_incidence_graph(m);
 }

@@ -94,7 +94,10 @@ decltype(auto) with_kind(Kind k, FUNC&& f)
 	case Kind::Face:
 		return f.template operator()<typename T::Face>();
 	default:
-		return f.template operator()<typename T::Volume>();
+		if constexpr (requires { typename T::Volume; })
+			return f.template operator()<typename T::Volume>();
+		else
+			throw py::value_error("this mesh has no volumes");
 	}
 }
 

@@ -72,6 +72,24 @@ def test_non_manifold_file_round_trip(data, tmp_path):
         cgogn.IncidenceGraph.load(str(tmp_path / "bad.ig"))
 
 
+def test_attributes_as_arrays():
+    ig = book()
+    tag = ig.add_attribute("tag", "face", "int32")
+    assert tag.shape == (3,)
+    tag[:] = [7, 8, 9]
+    heat = ig.add_attribute("heat", "vertex")
+    heat[:] = np.arange(5)
+    ig.add_attribute("w", "edge", "float64", 3)
+    assert ("tag", "int32", 1) in ig.attributes("face")
+    w = ig.cut_edge([e for e, (a, b) in zip(ig.edge_ids(), ig.edges()) if {a, b} == {0, 1}][0])
+    np.testing.assert_array_equal(ig.attribute("tag", "face"), [7, 8, 9])  # the faces keep their ids
+    assert ig.attribute("heat", "vertex")[w] == 0.0  # a new vertex: the default value
+    with pytest.raises(ValueError):
+        ig.add_attribute("v", "volume")
+    with pytest.raises(KeyError):
+        ig.attribute("missing", "vertex")
+
+
 def test_cmap2_round_trip(data):
     m = cgogn.load(str(data / "surface" / "hemisphere.off"))
     counts = tuple(m.nb_cells(k) for k in ("vertex", "edge", "face"))

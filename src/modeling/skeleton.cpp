@@ -9,6 +9,7 @@
 #include <cgogn/core/utils/error.h>
 #include <cgogn/modeling/skeleton.h>
 
+#include <Eigen/Geometry>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 

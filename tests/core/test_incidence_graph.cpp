@@ -241,6 +241,8 @@ TEST(IncidenceGraph, AttributesMarkersAndParallel)
 	});
 	EXPECT_EQ(visited.load(), 7u);
 	EXPECT_EQ(value<float>(b.ig, len, b.spine), 1.0f);
+	EXPECT_EQ((*len)[b.spine], 1.0f); // a record is its own line
+	EXPECT_EQ((*pos)[b.v[3]], 3.0);
 	CellMarker<IG, Vertex> marked(b.ig);
 	foreach_incident_vertex(b.ig, b.spine, [&](Vertex v) { marked.mark(v); });
 	uint32 n = 0;

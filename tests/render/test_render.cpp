@@ -317,6 +317,93 @@ TEST(Render, HiddenDefectsAreFaint)
 	EXPECT_EQ(img.at(110, 100), s) << "inside the hidden outline, the sphere is untouched";
 }
 
+TEST(Render, NonManifoldSurfaceAsItIs)
+{
+	// a book of three unit squares on the spine x = 0, z in [0, 1], seen
+	// from +z: the pages at y = 0 (x in [0, 1]), x = 0 (y in [0, 1]) and
+	// y = 0 (x in [-1, 0]); the spine is red with show_defects
+	IncidenceGraph ig;
+	auto pos = add_attribute<Vec3, IncidenceGraph::Vertex>(ig, "position");
+	auto vertex = [&](double x, double y, double z) {
+		const IncidenceGraph::Vertex v = add_vertex(ig);
+		(*pos)[v] = Vec3(x, y, z);
+		return v;
+	};
+	const IncidenceGraph::Vertex a = vertex(0, 0, 0), b = vertex(0, 0, 1);
+	for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0)})
+	{
+		const std::vector<IncidenceGraph::Vertex> page = {a, b, vertex(d[0], d[1], 1), vertex(d[0], d[1], 0)};
+		add_face_through_vertices(ig, page);
+	}
+	add_edge(ig, vertex(0, 0, 2), vertex(0, 1, 2)); // a wire above
+	render::RenderOptions o = unlit(render::View::X, 200, 200);
+	const render::Image plain = render::render_surface(ig, *pos, o);
+	uint32_t surface = 0, wire = 0;
+	for (uint32_t y = 0; y < plain.height; ++y)
+		for (uint32_t x = 0; x < plain.width; ++x)
+		{
+			surface += plain.at(x, y) == o.surface_color;
+			wire += plain.at(x, y) == o.edge_color;
+		}
+	EXPECT_GT(surface, 1000u) << "the page facing the camera is drawn";
+	EXPECT_GT(wire, 20u) << "the wire is drawn without --edges";
+	o.show_defects = true;
+	const render::Image defects = render::render_surface(ig, *pos, o);
+	uint32_t red = 0;
+	for (uint32_t y = 0; y < defects.height; ++y)
+		for (uint32_t x = 0; x < defects.width; ++x)
+			red += defects.at(x, y) == render::Rgb{230, 25, 25};
+	EXPECT_GT(red, 100u) << "the spine, the borders and the wire are red";
+	o.color = render::ColorSource::MeanCurvature;
+	EXPECT_THROW(render::render_surface(ig, *pos, o), render::RenderError);
+	o.color = render::ColorSource::Quality;
+	EXPECT_NO_THROW(render::render_surface(ig, *pos, o));
+}
+
+TEST(Render, GraphAsTubesAndLines)
+{
+	// a path of three vertices along x, with radii
+	Graph g;
+	auto pos = add_attribute<Vec3, Graph::Vertex>(g, "position");
+	auto radius = add_attribute<double, Graph::Vertex>(g, "radius");
+	std::vector<Graph::Vertex> v;
+	for (int i = 0; i < 3; ++i)
+	{
+		v.push_back(add_vertex(g));
+		(*pos)[v.back()] = Vec3(i, 0, 0);
+		(*radius)[v.back()] = 0.1;
+	}
+	connect_vertices(g, v[0], v[1]);
+	connect_vertices(g, v[1], v[2]);
+	render::RenderOptions o = unlit(render::View::Z, 300, 100);
+	auto count = [](const render::Image& img, render::Rgb c) {
+		uint32_t n = 0;
+		for (uint32_t y = 0; y < img.height; ++y)
+			for (uint32_t x = 0; x < img.width; ++x)
+				n += img.at(x, y) == c;
+		return n;
+	};
+	const render::Image tubes = render::render_graph(g, *pos, o);
+	// 2.2 units wide in 270 pixels: 0.2 thick is about 24 pixels, over 2 units
+	const uint32_t covered = count(tubes, o.surface_color);
+	EXPECT_GT(covered, 4000u);
+	EXPECT_LT(covered, 8000u);
+	render::GraphDrawing lines;
+	lines.tubes = false;
+	const render::Image thin = render::render_graph(g, *pos, o, lines);
+	EXPECT_EQ(count(thin, o.surface_color), 0u);
+	EXPECT_GT(count(thin, o.edge_color), 200u);
+	// coloured by a vertex attribute; faces' colour sources are refused
+	o.color = render::ColorSource::Attribute;
+	o.attribute = "radius";
+	EXPECT_NO_THROW(render::render_graph(g, *pos, o));
+	o.attribute = "nothing";
+	EXPECT_THROW(render::render_graph(g, *pos, o), render::RenderError);
+	o.color = render::ColorSource::Area;
+	EXPECT_THROW(render::render_graph(g, *pos, o), render::RenderError);
+	EXPECT_THROW(render::render_graph(Graph(), *pos, unlit(render::View::Z, 10, 10)), render::RenderError);
+}
+
 TEST(Render, ViewConventions)
 {
 	struct Case

@@ -114,4 +114,33 @@ TEST(ToolRender, BadInputExits2AndWritesNothing)
 	EXPECT_NE(r.err.find("dir.png"), std::string::npos) << r.err;
 }
 
+TEST(ToolRender, NonManifoldSurfaceAndGraph)
+{
+	TempDir dir;
+	const std::string skeleton = quoted(cgogn_test_data::path("surface/icositetrachoron_2skeleton.off"));
+	ToolRun r =
+		run_tool("render " + skeleton + " " + quoted(dir.file("nm.png")) + " --size 200x200 --show-defects", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const render::Image nm = read_png(dir.file("nm.png"));
+	ASSERT_EQ(nm.width, 200u);
+	uint32_t red = 0;
+	for (uint32_t y = 0; y < nm.height; ++y)
+		for (uint32_t x = 0; x < nm.width; ++x)
+			red += nm.at(x, y) == render::Rgb{230, 25, 25};
+	EXPECT_GT(red, 100u) << "every edge has three faces: the edges are red";
+
+	write_text(dir.file("tree.cg"), "# D:3 NV:4 NE:3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ne 0 1\ne 0 2\ne 0 3\n");
+	r = run_tool("render " + quoted(dir.file("tree.cg")) + " " + quoted(dir.file("tree.png")) + " --size 200x150", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_GT(nb_colours(read_png(dir.file("tree.png"))), 5u) << "shaded tubes";
+	r = run_tool("render " + quoted(dir.file("tree.cg")) + " " + quoted(dir.file("lines.png")) +
+					 " --size 200x150 --lines --ssaa 1",
+				 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_LE(nb_colours(read_png(dir.file("lines.png"))), 2u) << "lines only: the background and the edge colour";
+	r = run_tool("render " + quoted(dir.file("tree.cg")) + " " + quoted(dir.file("x.png")) + " --color area", dir);
+	EXPECT_NE(r.status, 0);
+	EXPECT_NE(r.err.find("tree.cg"), std::string::npos) << r.err;
+}
+
 } // namespace cgogn_test_tool_render

@@ -21,6 +21,8 @@
 #pragma once
 
 #include <cgogn/core/map/cmap3.h>
+#include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include <cstdint>
@@ -156,6 +158,39 @@ Image render_surface(const CMap2& m, const AttributeArray<Vec3>& pos, const Rend
 /// errors as render_surface; a map with no boundary face is an error, and the
 /// curvature colour sources are not available (they are defined on surfaces).
 Image render_volume_boundary(const CMap3& m, const AttributeArray<Vec3>& pos, const RenderOptions& options);
+
+/// Renders the faces of an incidence graph (polygons fanned into
+/// triangles), and its edges without face as lines in the edge colour: a
+/// non-manifold surface drawn as it is, flat-shaded (the faces around a
+/// non-manifold vertex have no common normal). With show_defects, the edges that do
+/// not have exactly two faces (borders, fins, wires) are drawn in red and
+/// the vertices that are not manifold as orange dots. Colour sources: as for
+/// render_surface but the curvatures (not defined where the surface
+/// branches); `Attribute` takes a double or float vertex or face attribute.
+/// Throws RenderError when the complex has no face and no edge, and as
+/// render_surface. O(size of ig + number of samples).
+Image render_surface(const IncidenceGraph& ig, const AttributeArray<Vec3>& pos, const RenderOptions& options);
+
+/// How render_graph draws a graph.
+struct GraphDrawing
+{
+	/// true: each edge a tube (an 8-sided prism, shaded) and each vertex a
+	/// ball (an octahedron), so that the picture shows depth; false: each
+	/// edge a line one pixel wide in RenderOptions::edge_color.
+	bool tubes = true;
+	/// The tubes' radius; 0: the vertex attribute "radius" when the graph has
+	/// one (each tube then tapers between its ends' radii), otherwise 0.5% of
+	/// the diagonal of the bounding box.
+	double radius = 0.0;
+};
+
+/// Renders a graph (skeleton, curve network) as tubes or lines. Colour
+/// sources: Uniform, or Attribute (a double or float vertex attribute,
+/// interpolated along the tubes); the others throw RenderError. Throws
+/// RenderError when the graph has no vertex, a position is not finite, or
+/// an option is out of range. O(size of g + number of samples).
+Image render_graph(const Graph& g, const AttributeArray<Vec3>& pos, const RenderOptions& options,
+				   const GraphDrawing& drawing = {});
 
 /// What `viewer_html` puts in the page and how the page opens.
 struct ViewerOptions

@@ -578,8 +578,8 @@ CGOGN_INLINE uint32 AttributeArray<T>::line_of(Cell<O> c) const
 {
 	assert(container_ != nullptr && "attribute removed from its map");
 	assert(container_->orbit() == O && "attribute indexed by a cell of another orbit");
-	if constexpr (O == Orbit::DART)
-		return c.dart.index;
+	if constexpr (O == Orbit::DART || is_direct_orbit(O))
+		return c.dart.index; // a dart, or a record (see is_direct_orbit), is its own line
 	else
 	{
 		assert(this->cell_index_ != nullptr && this->cell_index_ == container_->cell_index() && "orbit not indexed");
