@@ -2,10 +2,11 @@
 // The incidence graph beside the CMap2 on the same manifold triangle mesh
 // (torus_soup(1000, 500, true): 500,000 vertices, 1,000,000 faces): the
 // connectivity's bytes per face, the local traversals, and the load of the
-// same OFF file. Then the load of a non-manifold file of the same size (half
-// the torus's triangles, and one fin triangle on an edge of each: every fin
-// edge has three faces) into the incidence graph, against the manifold load
-// into the CMap2.
+// same OFF file. Then the load of a non-manifold file of the same size (as
+// many vertices and triangles: every other triangle of the torus, each with
+// a fin on its first edge toward the vertex opposite on the torus, so that
+// that edge has three faces) into the incidence graph, against the manifold
+// load into the CMap2.
 #include <cgogn/cgogn.h>
 
 #include "file_io.h"
@@ -160,8 +161,8 @@ void ig_edge_faces(benchmark::State& state)
 }
 
 // The OFF files, written once per process: the torus, and the non-manifold
-// file of as many faces (even triangles of the torus, each with a fin on
-// its first edge toward a new vertex).
+// file of as many vertices and faces (even triangles of the torus, each with
+// a fin on its first edge toward the vertex half the torus away).
 const std::string& file(bool non_manifold)
 {
 	static const std::string dir = [] {
@@ -176,13 +177,12 @@ const std::string& file(bool non_manifold)
 		io::detail::write_file((d / "torus.off").string(), io::detail::write_off(md));
 		io::detail::MeshData fins;
 		fins.positions = md.positions;
+		const uint32 nv = s.nb_vertices;
 		for (std::size_t f = 0; f < s.face_sizes.size(); f += 2)
 		{
 			const uint32* t = &s.face_vertices[3 * f];
 			fins.cell_sizes.insert(fins.cell_sizes.end(), {3, 3});
-			const uint32 apex = fins.nb_vertices();
-			const double* a = &md.positions[3 * t[0]];
-			fins.positions.insert(fins.positions.end(), {a[0], a[1], a[2] + 0.01});
+			const uint32 apex = (t[2] + nv / 2) % nv;
 			fins.cell_vertices.insert(fins.cell_vertices.end(), {t[0], t[1], t[2], t[0], t[1], apex});
 		}
 		io::detail::write_file((d / "fins.off").string(), io::detail::write_off(fins));

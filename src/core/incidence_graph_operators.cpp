@@ -197,24 +197,45 @@ Face add_face_through_vertices(IncidenceGraph& ig, std::span<const Vertex> verti
 	if (k < 3)
 		throw TopologyError("add_face_through_vertices: a face has at least 3 vertices");
 	for (std::size_t i = 0; i < k; ++i)
-	{
 		if (!is_live_vertex(ig, vertices[i]))
 			throw TopologyError("add_face_through_vertices: vertex " + std::to_string(i) + " is not live");
-		for (std::size_t j = 0; j < i; ++j)
-			if (vertices[j] == vertices[i])
-				throw TopologyError("add_face_through_vertices: vertex " + std::to_string(i) + " repeats");
+	// a repeated vertex: pairwise for the usual small faces, sorted for large ones
+	bool repeated = false;
+	if (k <= 32)
+	{
+		for (std::size_t i = 1; i < k && !repeated; ++i)
+			for (std::size_t j = 0; j < i && !repeated; ++j)
+				repeated = vertices[j] == vertices[i];
 	}
+	else
+	{
+		std::vector<uint32> sorted(k);
+		for (std::size_t i = 0; i < k; ++i)
+			sorted[i] = vertices[i].dart.index;
+		std::sort(sorted.begin(), sorted.end());
+		repeated = std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+	}
+	if (repeated)
+		throw TopologyError("add_face_through_vertices: a vertex repeats");
+	// the sides, found or added, each made a use as it comes (no buffer)
 	const detail::IgRecords r(ig);
-	std::vector<uint32> sides(k);
+	Dart first, prev;
 	for (std::size_t i = 0; i < k; ++i)
 	{
 		const Vertex a = vertices[i], b = vertices[(i + 1) % k];
 		Edge e = find_edge(ig, a, b);
 		if (!e.is_valid())
 			e = add_edge(ig, a, b);
-		sides[i] = 2 * e.dart.index + (r.end_vertex(2 * e.dart.index) == a.dart.index ? 0u : 1u);
+		const Dart u = r.new_use(2 * e.dart.index + (r.end_vertex(2 * e.dart.index) == a.dart.index ? 0u : 1u));
+		if (first.is_valid())
+			r.set_next_in_face(prev, u);
+		else
+			first = u;
+		prev = u;
 	}
-	return Face(build_face(ig, r, sides));
+	r.set_next_in_face(prev, first);
+	detail::index_new_cell(ig, Face(first));
+	return Face(first);
 }
 
 void remove_face(IncidenceGraph& ig, Face f)

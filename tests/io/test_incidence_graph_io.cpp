@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -175,6 +176,52 @@ TEST(IncidenceGraphFiles, MalformedIgFilesGiveTypedErrorsAndChangeNothing)
 	IG ig;
 	io::load_incidence_graph(ig, dir.file("good.ig"));
 	EXPECT_EQ(nb_cells<IG::Face>(ig), 1u);
+}
+
+// CMap2 -> IncidenceGraph -> CMap2 is the identity on every manifold
+// (orientable) test mesh: the counts, the darts, and each face with its
+// vertices' positions and its attributes.
+TEST(IncidenceGraphFiles, CMap2RoundTripOnEveryManifoldMesh)
+{
+	using Face2 = CMap2::Face;
+	for (const char* file : {"hemisphere.off", "fandisk_quads.off", "spot_quadrangulated.obj", "spot_control_mesh.obj",
+							 "suzanne.obj", "torus_quad.off", "cube_quad.off", "tetrahedron.off", "triangle.off",
+							 "L.off", "vertex_onering.off", "edge_onering.off", "elephant-with-holes.off"})
+	{
+		SCOPED_TRACE(file);
+		CMap2 m;
+		const io::LoadReport lr = io::load_surface(m, data(file));
+		ASSERT_TRUE(lr.manifold() && lr.orientable);
+		auto tag = add_attribute<int, Face2>(m, "tag");
+		int k = 0;
+		foreach_cell(m, [&](Face2 f) { value<int>(m, tag, f) = k++; });
+		const IncidenceGraph ig = to_incidence_graph(m);
+		ASSERT_TRUE(check_integrity(ig).ok());
+		EXPECT_EQ(nb_non_manifold_edges(ig), 0u);
+		BuildReport report;
+		const CMap2 back = to_cmap2(ig, &report);
+		ASSERT_TRUE(check_integrity(back).ok());
+		EXPECT_EQ(report.nb_nonmanifold_edges, 0u);
+		EXPECT_TRUE(report.split_vertices.empty());
+		EXPECT_EQ(nb_darts(back), nb_darts(m));
+		EXPECT_EQ(nb_cells<CMap2::Vertex>(back), nb_cells<CMap2::Vertex>(m));
+		EXPECT_EQ(nb_cells<CMap2::Edge>(back), nb_cells<CMap2::Edge>(m));
+		EXPECT_EQ(nb_cells<Face2>(back), nb_cells<Face2>(m));
+		EXPECT_EQ(nb_boundary_components(back), nb_boundary_components(m));
+		// each face by its tag: the positions of its vertices in cycle order
+		auto faces = [](const CMap2& map) {
+			auto pos = get_attribute<Vec3, CMap2::Vertex>(map, "position");
+			auto t = get_attribute<int, Face2>(map, "tag");
+			std::map<int, std::vector<Vec3>> out;
+			foreach_cell(map, [&](Face2 f) {
+				auto& ps = out[value<int>(map, t, f)];
+				foreach_incident_vertex(map, f, [&](CMap2::Vertex v) { ps.push_back(value<Vec3>(map, pos, v)); });
+			});
+			return out;
+		};
+		ASSERT_TRUE((get_attribute<int, Face2>(back, "tag")));
+		EXPECT_EQ(faces(back), faces(m));
+	}
 }
 
 TEST(IncidenceGraphFiles, ToCMap2RepairsWhatAMapCannotHold)
