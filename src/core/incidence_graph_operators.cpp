@@ -344,6 +344,40 @@ Edge cut_face(IncidenceGraph& ig, Face f, Vertex v0, Vertex v1)
 	return e;
 }
 
+Face face_to_cut(const IncidenceGraph& ig, Vertex v0, Vertex v1)
+{
+	if (v0 == v1 || !is_live_vertex(ig, v0) || !is_live_vertex(ig, v1))
+		return Face();
+	const detail::IgRecords r(ig);
+	Face found;
+	uint32 n = 0;
+	// each face around v0 once: by its side that leaves v0
+	r.foreach_end(v0.dart.index, [&](uint32 end) {
+		return r.foreach_use(end >> 1, [&](Dart u) {
+			if (r.origin(u) == v0.dart.index && can_cut_face(ig, Face(u), v0, v1))
+			{
+				found = Face(u);
+				++n;
+			}
+			return n < 2;
+		});
+	});
+	return n == 1 ? found : Face();
+}
+
+bool can_cut_face(const IncidenceGraph& ig, Vertex v0, Vertex v1)
+{
+	return face_to_cut(ig, v0, v1).is_valid();
+}
+
+Edge cut_face(IncidenceGraph& ig, Vertex v0, Vertex v1)
+{
+	const Face f = face_to_cut(ig, v0, v1);
+	if (!f.is_valid())
+		throw TopologyError("cut_face: no single face has v0 and v1 as non-consecutive vertices");
+	return cut_face(ig, f, v0, v1);
+}
+
 bool can_collapse_edge(const IncidenceGraph& ig, Edge e)
 {
 	const detail::IgRecords r(ig);

@@ -127,4 +127,11 @@ std::shared_ptr<AttributeArray<Vec3>> resample_graph(const Graph& g, const Attri
 	return out_pos;
 }
 
+Graph resample_graph(const Graph& g, const AttributeArray<Vec3>& pos, double spacing)
+{
+	Graph out;
+	resample_graph(g, pos, spacing, out);
+	return out;
+}
+
 } // namespace cgogn::modeling

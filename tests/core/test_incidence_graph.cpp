@@ -149,6 +149,34 @@ TEST(IncidenceGraph, CutFace)
 	});
 	EXPECT_EQ(kept, 1);
 	EXPECT_EQ(euler_characteristic(ig), 1);
+
+	// without naming the face: the one face where the vertices are not consecutive
+	IG h;
+	std::vector<Vertex> w;
+	for (int i = 0; i < 5; ++i)
+		w.push_back(add_vertex(h));
+	add_face_through_vertices(h, w); // a pentagon
+	EXPECT_FALSE(can_cut_face(h, w[0], w[1]));
+	EXPECT_THROW(cut_face(h, w[0], w[1]), TopologyError);
+	ASSERT_TRUE(can_cut_face(h, w[0], w[2]));
+	cut_face(h, w[0], w[2]);
+	expect_valid(h);
+	EXPECT_EQ(counts(h), (std::array<uint32, 3>{5, 6, 2}));
+	// w[0] and w[3] now share only the quadrangle w0 w2 w3 w4
+	ASSERT_TRUE(can_cut_face(h, w[0], w[3]));
+	cut_face(h, w[0], w[3]);
+	EXPECT_EQ(counts(h), (std::array<uint32, 3>{5, 7, 3}));
+	expect_valid(h);
+	// two faces qualify: ambiguous
+	IG two;
+	std::vector<Vertex> x;
+	for (int i = 0; i < 6; ++i)
+		x.push_back(add_vertex(two));
+	const std::vector<Vertex> q1 = {x[0], x[1], x[2], x[3]}, q2 = {x[0], x[4], x[2], x[5]};
+	add_face_through_vertices(two, q1);
+	add_face_through_vertices(two, q2);
+	EXPECT_FALSE(can_cut_face(two, x[0], x[2]));
+	EXPECT_FALSE(face_to_cut(two, x[0], x[2]).is_valid());
 }
 
 TEST(IncidenceGraph, CollapseRemovesDigonsAndMergesEdges)
@@ -381,9 +409,11 @@ TEST(IncidenceGraph, CMap2RoundTripIsTheIdentity)
 			auto bw = get_attribute<int, CMap2::Edge>(map, "w");
 			std::map<int, std::pair<std::multiset<double>, std::multiset<int>>> s;
 			foreach_cell(map, [&](CMap2::Face f) {
-				auto& [xs, ws] = s[value<int>(map, bt, f)];
-				foreach_incident_vertex(map, f, [&](CMap2::Vertex v) { xs.insert(value<double>(map, bx, v)); });
-				foreach_incident_edge(map, f, [&](CMap2::Edge e) { ws.insert(value<int>(map, bw, e)); });
+				// no structured binding: clang 14 does not capture one in a lambda
+				auto& entry = s[value<int>(map, bt, f)];
+				foreach_incident_vertex(map, f,
+										[&](CMap2::Vertex v) { entry.first.insert(value<double>(map, bx, v)); });
+				foreach_incident_edge(map, f, [&](CMap2::Edge e) { entry.second.insert(value<int>(map, bw, e)); });
 			});
 			return s;
 		};

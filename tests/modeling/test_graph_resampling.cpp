@@ -54,6 +54,11 @@ TEST(GraphResampling, PathGetsEvenSpacingAndKeepsItsEnds)
 	std::sort(xs.begin(), xs.end());
 	for (int i = 0; i < 5; ++i)
 		EXPECT_NEAR(xs[i], 2.25 * i, 1e-12);
+	// the same as a new graph
+	const Graph fresh = modeling::resample_graph(in.g, *in.pos, 2.5);
+	EXPECT_EQ(nb_cells<Vertex>(fresh), 5u);
+	EXPECT_EQ(nb_cells<Edge>(fresh), 4u);
+	EXPECT_TRUE((get_attribute<Vec3, Vertex>(fresh, "position")));
 	foreach_cell(out, [&](Edge e) {
 		EXPECT_NEAR((value<Vec3>(out, pos, Vertex(e.dart)) - value<Vec3>(out, pos, Vertex(alpha0(out, e.dart)))).norm(),
 					2.25, 1e-12);

@@ -26,4 +26,8 @@ namespace cgogn::modeling
 std::shared_ptr<AttributeArray<Vec3>> resample_graph(const Graph& g, const AttributeArray<Vec3>& pos, double spacing,
 													 Graph& out);
 
+/// The same into a new graph, returned, with its "position" (and "radius")
+/// vertex attributes. O(size of g + size of the result).
+Graph resample_graph(const Graph& g, const AttributeArray<Vec3>& pos, double spacing);
+
 } // namespace cgogn::modeling

@@ -86,6 +86,21 @@ bool can_cut_face(const IncidenceGraph& ig, IncidenceGraph::Face f, IncidenceGra
 IncidenceGraph::Edge cut_face(IncidenceGraph& ig, IncidenceGraph::Face f, IncidenceGraph::Vertex v0,
 							  IncidenceGraph::Vertex v1);
 
+/// The face that can be cut between v0 and v1 (can_cut_face), when exactly
+/// one face around v0 can; an invalid face otherwise (none, or several: say
+/// which with the overloads taking the face). O(sum of the sizes of the
+/// faces around v0).
+IncidenceGraph::Face face_to_cut(const IncidenceGraph& ig, IncidenceGraph::Vertex v0, IncidenceGraph::Vertex v1);
+
+/// Whether face_to_cut(ig, v0, v1) finds a face. O(as face_to_cut).
+bool can_cut_face(const IncidenceGraph& ig, IncidenceGraph::Vertex v0, IncidenceGraph::Vertex v1);
+
+/// Cuts the face that v0 and v1 share, not as consecutive vertices (see
+/// face_to_cut), along an edge from v0 to v1, as cut_face(ig, f, v0, v1).
+/// Throws TopologyError, changing nothing, when no face or several faces
+/// qualify. O(as face_to_cut + size of the face).
+IncidenceGraph::Edge cut_face(IncidenceGraph& ig, IncidenceGraph::Vertex v0, IncidenceGraph::Vertex v1);
+
 /// Whether edge e can be collapsed: no face other than e's own holds both
 /// of its vertices (it would be pinched into a non-simple cycle), and no
 /// other edge joining them has a face. O(sum of the sizes of the faces
