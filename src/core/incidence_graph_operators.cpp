@@ -48,14 +48,17 @@ void drop_edge_record(const detail::IgRecords& r, uint32 e)
 	r.edges().release_line(e);
 }
 
-// Builds the face of the given (edge end) sides, consecutive in this order,
-// and indexes it when faces are indexed. Returns its first use.
-Dart build_face(IncidenceGraph& ig, const detail::IgRecords& r, std::span<const uint32> sides)
+// Builds the face of k sides, side_of(i) giving the edge end of side i
+// (consecutive in this order; it may add the edge, so that a caller finds or
+// makes its sides without a buffer), and indexes it when faces are indexed.
+// Returns its first use.
+template <typename SIDE_OF>
+Dart build_face_of(IncidenceGraph& ig, const detail::IgRecords& r, std::size_t k, const SIDE_OF& side_of)
 {
 	Dart first, prev;
-	for (uint32 ee : sides)
+	for (std::size_t i = 0; i < k; ++i)
 	{
-		const Dart u = r.new_use(ee);
+		const Dart u = r.new_use(side_of(i));
 		if (first.is_valid())
 			r.set_next_in_face(prev, u);
 		else
@@ -65,6 +68,12 @@ Dart build_face(IncidenceGraph& ig, const detail::IgRecords& r, std::span<const 
 	r.set_next_in_face(prev, first);
 	detail::index_new_cell(ig, Face(first));
 	return first;
+}
+
+// The same for sides given in a list.
+Dart build_face(IncidenceGraph& ig, const detail::IgRecords& r, std::span<const uint32> sides)
+{
+	return build_face_of(ig, r, sides.size(), [&](std::size_t i) { return sides[i]; });
 }
 
 // The sides (edge ends) of a face bounded by `edges` in any order, ordered
@@ -217,25 +226,15 @@ Face add_face_through_vertices(IncidenceGraph& ig, std::span<const Vertex> verti
 	}
 	if (repeated)
 		throw TopologyError("add_face_through_vertices: a vertex repeats");
-	// the sides, found or added, each made a use as it comes (no buffer)
+	// the sides, found or added as they come (no buffer)
 	const detail::IgRecords r(ig);
-	Dart first, prev;
-	for (std::size_t i = 0; i < k; ++i)
-	{
+	return Face(build_face_of(ig, r, k, [&](std::size_t i) {
 		const Vertex a = vertices[i], b = vertices[(i + 1) % k];
 		Edge e = find_edge(ig, a, b);
 		if (!e.is_valid())
 			e = add_edge(ig, a, b);
-		const Dart u = r.new_use(2 * e.dart.index + (r.end_vertex(2 * e.dart.index) == a.dart.index ? 0u : 1u));
-		if (first.is_valid())
-			r.set_next_in_face(prev, u);
-		else
-			first = u;
-		prev = u;
-	}
-	r.set_next_in_face(prev, first);
-	detail::index_new_cell(ig, Face(first));
-	return Face(first);
+		return 2 * e.dart.index + (r.end_vertex(2 * e.dart.index) == a.dart.index ? 0u : 1u);
+	}));
 }
 
 void remove_face(IncidenceGraph& ig, Face f)

@@ -34,14 +34,6 @@ void check_finite(const Vec3& p, uint32 line)
 		throw RenderError("vertex " + std::to_string(line) + " has a non-finite position");
 }
 
-// A double or float attribute of CELL named `name`, read per cell; false
-// when there is none.
-template <typename CELL, typename MESH>
-bool reader(const MESH& m, const std::string& name, std::function<double(CELL)>& read)
-{
-	return detail::attribute_reader<CELL>(m, name, read);
-}
-
 std::string usable_names(const std::vector<std::string>& a, const std::vector<std::string>& b = {})
 {
 	std::string list;
@@ -130,13 +122,13 @@ Image render_surface(const IncidenceGraph& ig, const AttributeArray<Vec3>& pos, 
 	case ColorSource::Attribute: {
 		std::function<double(Vertex)> vr;
 		std::function<double(Face)> fr;
-		if (reader<Vertex>(ig, o.attribute, vr))
+		if (detail::attribute_reader<Vertex>(ig, o.attribute, vr))
 		{
 			s.scalar_on = Scene::ScalarOn::Vertices;
 			for (Vertex v : vertices)
 				s.scalar.push_back(vr(v));
 		}
-		else if (is_indexed<Face>(ig) && reader<Face>(ig, o.attribute, fr))
+		else if (is_indexed<Face>(ig) && detail::attribute_reader<Face>(ig, o.attribute, fr))
 		{
 			s.scalar_on = Scene::ScalarOn::Faces;
 			for (Face f : faces)
@@ -180,7 +172,7 @@ Image render_graph(const Graph& g, const AttributeArray<Vec3>& pos, const Render
 	for (std::size_t i = 0; i < vertices.size(); ++i)
 		number[index_of(g, vertices[i])] = uint32_t(i);
 	std::function<double(Vertex)> value_of;
-	if (o.color == ColorSource::Attribute && !reader<Vertex>(g, o.attribute, value_of))
+	if (o.color == ColorSource::Attribute && !detail::attribute_reader<Vertex>(g, o.attribute, value_of))
 		throw RenderError("no double or float vertex attribute named '" + o.attribute + "' (available: " +
 						  usable_names(detail::scalar_attribute_names(container_of<Orbit::ALPHA1>(g))) + ")");
 
@@ -200,7 +192,7 @@ Image render_graph(const Graph& g, const AttributeArray<Vec3>& pos, const Render
 	// tubes and balls, one face per triangle (flat-shaded sides, smooth
 	// normals per corner)
 	std::function<double(Vertex)> radius_of;
-	if (!(drawing.radius > 0.0) && !reader<Vertex>(g, "radius", radius_of))
+	if (!(drawing.radius > 0.0) && !detail::attribute_reader<Vertex>(g, "radius", radius_of))
 	{
 		const double r = 0.005 * (hi - lo).norm();
 		radius_of = [r](Vertex) { return r > 0.0 ? r : 1.0; };
