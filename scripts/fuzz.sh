@@ -5,7 +5,8 @@
 # bounded time: FUZZ_SECONDS in total (default 300), split evenly over the
 # targets (one per reader, and fuzz_append, which loads any
 # format into a map that already holds a mesh and attributes, and
-# fuzz_graph, the graph readers, and fuzz_incidence_graph, the .ig reader).
+# fuzz_graph, the graph readers, fuzz_incidence_graph, the .ig reader, and
+# fuzz_map_file, the .cgmap reader of whole maps).
 # Fails on any
 # crash, leak, timeout or sanitizer report.
 #
@@ -23,7 +24,7 @@ total=${FUZZ_SECONDS:-300}
 formats=(off obj ply stl medit vtk vtu gmsh tetgen)
 targets=()
 for f in "${formats[@]}"; do targets+=("$f"); done
-targets+=(append graph incidence_graph)
+targets+=(append graph incidence_graph map_file)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
@@ -89,6 +90,18 @@ printf '\x06# D:2 NV:2 NE:1\nv 0 0\nv 1 1\ne 1 2\n' > "$seeds/graph/one_based.cg
 printf '\x04# vtk DataFile Version 3.0\nlines\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n0 0 0 1 0 0 2 0 0\nCELLS 2 7\n2 0 1\n3 0 1 2\nCELL_TYPES 2\n3\n4\nPOINT_DATA 3\nSCALARS radius double 1\nLOOKUP_TABLE default\n1 2 3\n' > "$seeds/graph/lines.vtk"
 # fuzz_incidence_graph: an .ig file (a book of three triangles, a wire, a lone vertex)
 printf 'IG 7 8 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 2 0 0\nv 3 3 3\n# spine, then the sides\ne 0 1\ne 1 2\ne 2 0\ne 1 3\ne 3 0\ne 1 4\ne 4 0\ne 1 5\nf 3 0 1 2\nf 3 0 3 4\nf 3 5 6 0\n' > "$seeds/incidence_graph/book.ig"
+# fuzz_map_file: the first byte chooses the map type (0 CMap2, 1 CMap3,
+# 2 GMap2, 3 GMap3, 4 Graph, 5 CMapN<3>, 6 GMapN<2>, 7 CMap1)
+{ printf '\x00'; cat tests/data/maps/compatibility_v1.cgmap; } > "$seeds/map_file/compatibility_v1"
+if [ -x "$tool" ]; then
+  "$tool" convert "$seeds/medit/two_tets.mesh" "$build/two_tets.cgmap"
+  { printf '\x01'; cat "$build/two_tets.cgmap"; } > "$seeds/map_file/two_tets"
+  "$tool" convert tests/data/surface/mobius_strip.off "$build/mobius.cgmap"
+  { printf '\x02'; cat "$build/mobius.cgmap"; } > "$seeds/map_file/mobius"
+  printf '# D:3 NV:3 NE:2\nv 0 0 0\nv 1 0 0\nv 2 0 0\ne 0 1\ne 1 2\n' > "$build/path.cg"
+  "$tool" convert "$build/path.cg" "$build/path.cgmap"
+  { printf '\x04'; cat "$build/path.cgmap"; } > "$seeds/map_file/path"
+fi
 cat fuzz/dict/*.dict > "$build/append.dict"
 
 dict_of() {

@@ -7,6 +7,7 @@
 #include <cgogn/io/surface.h>
 
 #include "commands.h"
+#include "map_files.h"
 #include "mesh_info.h"
 #include "nmap_files.h"
 
@@ -31,6 +32,24 @@ Graph load_graph_file(const std::string& path, Progress& progress, io::GraphLoad
 	return g;
 }
 
+// What `cgogn info` reports about a map read from a .cgmap file.
+template <typename MAP>
+json map_file_info(const MAP& m)
+{
+	json j;
+	if constexpr (std::same_as<MAP, Graph>)
+		j = tool::graph_info(m, io::GraphLoadReport{});
+	else if constexpr (is_nmap_v<MAP>)
+		j = tool::nmap_info(m);
+	else if constexpr (MAP::dimension == 3)
+		j = tool::volume_info(m, io::LoadReport{});
+	else
+		j = tool::surface_info(m, io::LoadReport{});
+	j["map"] = io::map_type_name<MAP>();
+	j["format"] = "cgmap";
+	return j;
+}
+
 int run_info(const std::string& path, bool as_json)
 {
 	Progress progress;
@@ -46,6 +65,11 @@ int run_info(const std::string& path, bool as_json)
 		with_loaded_nmap(path, progress, [&](const auto& m) {
 			progress.stage("measuring");
 			j = tool::nmap_info(m);
+		});
+	else if (is_map_file(path))
+		with_loaded_map_file(path, progress, [&](const auto& m) {
+			progress.stage("measuring");
+			j = map_file_info(m);
 		});
 	else if (is_incidence_graph_file(path))
 	{
@@ -116,6 +140,11 @@ int run_check(const std::string& path, bool as_json)
 			progress.stage("checking");
 			report = check_integrity(m);
 		});
+	else if (is_map_file(path))
+		with_loaded_map_file(path, progress, [&](const auto& m) {
+			progress.stage("checking");
+			report = check_integrity(m);
+		});
 	else if (is_incidence_graph_file(path))
 	{
 		progress.stage("loading " + path);
@@ -179,9 +208,70 @@ void save_nmap_as(const MAP& m, const std::string& out, bool boundary)
 		throw io::Error(out, "a map of dimension 1 has no boundary cells to write");
 }
 
+// A map read from a .cgmap file to `out`: another .cgmap file, or the
+// formats of its kind of map.
+template <typename MAP>
+void save_map_as(const MAP& m, const std::string& out, const io::SaveOptions& options, bool boundary)
+{
+	if (is_map_file(out))
+		io::save_map(m, out);
+	else if constexpr (is_nmap_v<MAP>)
+		save_nmap_as(m, out, boundary);
+	else if (boundary)
+		throw io::Error(out, "--boundary applies to the maps of any dimension (CMapN, GMapN)");
+	else if constexpr (std::same_as<MAP, Graph>)
+		io::save_graph(m, out);
+	else if constexpr (MAP::dimension == 3)
+		io::save_volume(m, out, options);
+	else
+		io::save_surface(m, out, options);
+}
+
+// Any input the program reads as a map to a .cgmap file: surfaces and
+// volumes as the map they load into (a G-map when the file needs one),
+// graphs, maps of any dimension, .cgmap files.
+void convert_to_map_file(const std::string& in, const std::string& out, Progress& progress)
+{
+	const auto save = [&](const auto& m) {
+		progress.stage("writing " + out);
+		io::save_map(m, out);
+	};
+	if (is_map_file(in))
+		with_loaded_map_file(in, progress, save);
+	else if (is_nmap_file(in))
+		with_loaded_nmap(in, progress, save);
+	else if (is_graph_file(in))
+	{
+		io::GraphLoadReport r;
+		save(load_graph_file(in, progress, r));
+	}
+	else if (is_incidence_graph_file(in))
+		throw io::Error(in, "an incidence graph is not a map: it is kept whole in .ig files");
+	else
+		with_loaded_whole(in, progress, [&](const auto& m, const io::LoadReport&) { save(m); });
+}
+
 int run_convert(const std::string& in, const std::string& out, bool binary, bool attributes, bool boundary)
 {
 	Progress progress;
+	if (is_map_file(out))
+	{
+		if (boundary)
+			throw io::Error(out, "--boundary writes the boundary's cells to a .vtu file");
+		convert_to_map_file(in, out, progress);
+		return 0;
+	}
+	if (is_map_file(in))
+	{
+		io::SaveOptions options;
+		options.binary = binary;
+		options.attributes = attributes;
+		with_loaded_map_file(in, progress, [&](const auto& m) {
+			progress.stage("writing " + out);
+			save_map_as(m, out, options, boundary);
+		});
+		return 0;
+	}
 	if (is_graph_file(in) || is_graph_file(out))
 	{
 		// the other side: a graph file, or a format that holds polylines
@@ -276,9 +366,9 @@ Command add_info_command(CLI::App& app)
 	auto* sub = app.add_subcommand("info", "Counts, topology, geometry summary of a mesh file");
 	auto file = std::make_shared<std::string>();
 	auto as_json = std::make_shared<bool>(false);
-	sub->add_option(
-		   "FILE", *file,
-		   "mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap .ig), or graph (.cg .cgr .skel)")
+	sub->add_option("FILE", *file,
+					"mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap .ig .cgmap), or graph (.cg "
+					".cgr .skel)")
 		->required();
 	sub->add_flag("--json", *as_json, "print one JSON object");
 	return {sub, [=] { return run_info(*file, *as_json); }};
@@ -300,9 +390,11 @@ Command add_convert_command(CLI::App& app)
 	auto files = std::make_shared<EditFiles>();
 	auto no_attributes = std::make_shared<bool>(false);
 	auto boundary = std::make_shared<bool>(false);
-	sub->add_option("IN", files->in, "input mesh file (or .nmap: a map of any dimension; .cg .cgr .skel: a graph)")
+	sub->add_option("IN", files->in,
+					"input mesh file (or .nmap: a map of any dimension; .cg .cgr .skel: a graph; .cgmap: a whole map)")
 		->required();
-	sub->add_option("OUT", files->out, "output mesh file (or .nmap; .cg .cgr for a graph)")->required();
+	sub->add_option("OUT", files->out, "output mesh file (or .nmap; .cg .cgr for a graph; .cgmap: the whole map)")
+		->required();
 	sub->add_flag("--binary", files->binary, "write binary where the format allows it (PLY, STL, VTK, VTU, msh)");
 	sub->add_flag("--no-attributes", *no_attributes, "write positions and connectivity only");
 	sub->add_flag("--boundary", *boundary, "a .nmap to .vtu: write the cells of the map's boundary");

@@ -65,6 +65,11 @@ bool is_nmap_file(const std::string& path)
 	return lower_extension(path) == ".nmap";
 }
 
+bool is_map_file(const std::string& path)
+{
+	return lower_extension(path) == ".cgmap";
+}
+
 bool is_graph_file(const std::string& path)
 {
 	const std::string ext = lower_extension(path);

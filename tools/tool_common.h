@@ -53,6 +53,9 @@ bool is_volume_format(io::Format f);
 /// extension, any case).
 bool is_nmap_file(const std::string& path);
 
+/// Whether path names a whole-map file (.cgmap, any case).
+bool is_map_file(const std::string& path);
+
 /// Whether path names a graph file (.cg, .cgr, .skel; any case).
 bool is_graph_file(const std::string& path);
 /// True for an incidence graph's own file (.ig, any case).

@@ -6,6 +6,7 @@
 #include <cgogn/io/error.h>
 #include <cgogn/io/graph.h>
 #include <cgogn/io/incidence_graph.h>
+#include <cgogn/io/map_file.h>
 #include <cgogn/io/nmap.h>
 #include <cgogn/io/options.h>
 #include <cgogn/io/surface.h>

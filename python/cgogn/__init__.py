@@ -41,6 +41,7 @@ from ._cgogn import (
     NMap,
     RenderError,
     load,
+    map_from_bytes,
     nb_workers,
     set_nb_workers,
 )
@@ -86,6 +87,7 @@ __all__ = [
     "IOError",
     "RenderError",
     "load",
+    "map_from_bytes",
     "laplacian",
     "set_nb_workers",
     "nb_workers",
@@ -94,6 +96,12 @@ __all__ = [
     "to_pyvista",
     "to_trimesh",
 ]
+
+
+def _from_bytes(data):
+    """Rebuilds a pickled map: the maps' ``__reduce__`` names this function
+    (a compiled function cannot be pickled by name)."""
+    return map_from_bytes(data)
 
 
 def _laplacian_method(self, kind="cotan"):

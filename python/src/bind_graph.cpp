@@ -78,6 +78,14 @@ py::array ids_of(const PyGraph& w)
 
 } // namespace
 
+py::object wrap_graph(Graph&& g)
+{
+	auto w = std::make_unique<PyGraph>();
+	w->g = std::move(g);
+	w->attach();
+	return py::cast(std::move(w));
+}
+
 void bind_graph(py::module_& m)
 {
 	using W = PyGraph;
@@ -133,8 +141,20 @@ void bind_graph(py::module_& m)
 			"for the .cg files "
 			"of CGoGN 2. Raises cgogn.IOError naming the file, line and problem on bad input.")
 		.def(
-			"save", [](const W& w, const std::string& path) { io::save_graph(w.g, path); }, py::arg("path"),
-			"Writes a .cg, .obj, .vtk or .vtu file, or a .cgr file (needs the vertex attribute 'radius').")
+			"save",
+			[](const W& w, const std::string& path) {
+				if (has_map_file_extension(path))
+					io::save_map(w.g, path);
+				else
+					io::save_graph(w.g, path);
+			},
+			py::arg("path"),
+			"Writes a .cg, .obj, .vtk or .vtu file, a .cgr file (needs the vertex attribute 'radius'), or a .cgmap "
+			"file (the whole graph, every attribute: cgogn.load reads it back).")
+		.def(
+			"to_bytes", [](const W& w) { return py::bytes(io::save_map_to_bytes(w.g)); },
+			"The graph as the bytes of a .cgmap file (see CMap2.to_bytes).")
+		.def("__reduce__", [](const W& w) { return map_file_reduce(io::save_map_to_bytes(w.g)); })
 		.def_property_readonly(
 			"nb_vertices", [](const W& w) { return nb_cells<Vertex>(w.g); }, "Number of vertices.")
 		.def_property_readonly(

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -665,13 +667,19 @@ void bind_maps(py::module_& mod)
 			"save",
 			[](Surface& w, const std::string& path, bool binary) {
 				py::gil_scoped_release release;
+				if (has_map_file_extension(path))
+				{
+					io::save_map(w.m, path);
+					return;
+				}
 				io::SaveOptions o;
 				o.binary = binary;
 				io::save_surface(w.m, path, o);
 			},
 			py::arg("path"), py::arg("binary") = false,
-			"Writes the surface in the format of the extension (off, obj, ply, stl; binary for ply and stl). Raises "
-			"cgogn.IOError on failure.");
+			"Writes the surface in the format of the extension (off, obj, ply, stl; binary for ply and stl), or "
+			"the whole map to a .cgmap file (every attribute; cgogn.load reads it back). Raises cgogn.IOError on "
+			"failure.");
 
 	py::class_<VolumeMesh> volume(mod, "CMap3",
 								  "A volume mesh: an oriented 3-map of polyhedra, closed by boundary volumes.");
@@ -727,13 +735,18 @@ void bind_maps(py::module_& mod)
 			"save",
 			[](VolumeMesh& w, const std::string& path, bool binary) {
 				py::gil_scoped_release release;
+				if (has_map_file_extension(path))
+				{
+					io::save_map(w.m, path);
+					return;
+				}
 				io::SaveOptions o;
 				o.binary = binary;
 				io::save_volume(w.m, path, o);
 			},
 			py::arg("path"), py::arg("binary") = false,
-			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension). Raises cgogn.IOError on "
-			"failure.");
+			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension), or the whole map to a .cgmap "
+			"file. Raises cgogn.IOError on failure.");
 
 	py::class_<GSurface> gsurface(mod, "GMap2",
 								  "A surface that may not be orientable (a Moebius strip, a Klein bottle): a "
@@ -751,13 +764,18 @@ void bind_maps(py::module_& mod)
 			"save",
 			[](GSurface& w, const std::string& path, bool binary) {
 				py::gil_scoped_release release;
+				if (has_map_file_extension(path))
+				{
+					io::save_map(w.m, path);
+					return;
+				}
 				io::SaveOptions o;
 				o.binary = binary;
 				io::save_surface(w.m, path, o);
 			},
 			py::arg("path"), py::arg("binary") = false,
 			"Writes the surface in the format of the extension (off, obj, ply, stl), each face in the "
-			"orientation of its dart. Raises cgogn.IOError on failure.");
+			"orientation of its dart, or the whole map to a .cgmap file. Raises cgogn.IOError on failure.");
 
 	py::class_<GVolumeMesh> gvolume(mod, "GMap3",
 									"A volume mesh that may not be orientable (a solid Klein bottle): a generalized "
@@ -772,13 +790,18 @@ void bind_maps(py::module_& mod)
 			"save",
 			[](GVolumeMesh& w, const std::string& path, bool binary) {
 				py::gil_scoped_release release;
+				if (has_map_file_extension(path))
+				{
+					io::save_map(w.m, path);
+					return;
+				}
 				io::SaveOptions o;
 				o.binary = binary;
 				io::save_volume(w.m, path, o);
 			},
 			py::arg("path"), py::arg("binary") = false,
-			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension), each cell oriented on its own. "
-			"Raises cgogn.IOError on failure.");
+			"Writes the volume mesh (mesh, vtk, vtu, msh, node/ele by extension), each cell oriented on its own, "
+			"or the whole map to a .cgmap file. Raises cgogn.IOError on failure.");
 
 	// orientability and conversions, both ways, carrying every attribute
 	bind_conversions<CMap2, GMap2>(surface, gsurface);
@@ -789,6 +812,16 @@ void bind_maps(py::module_& mod)
 		[](const std::string& path, bool gmap) -> py::object {
 			if (has_nmap_extension(path))
 				return load_nmap_file(path, gmap);
+			if (has_map_file_extension(path))
+			{
+				if (gmap)
+					throw py::value_error("gmap=True: a .cgmap file holds its own type of map");
+				std::ifstream f(path, std::ios::binary);
+				if (!f)
+					throw io::Error(path, "cannot open the file");
+				const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+				return map_from_bytes(bytes, path);
+			}
 			const bool volumes = is_volume_format(io::format_from_extension(path));
 			if (gmap)
 				return volumes ? py::cast(load_into<GMap3>(path)) : py::cast(load_into<GMap2>(path));
@@ -798,8 +831,9 @@ void bind_maps(py::module_& mod)
 		"Loads a mesh file: a CMap2 for the surface formats (off, obj, ply, stl), a CMap3 for the volume "
 		"formats (mesh, vtk, vtu, msh, node/ele); with gmap=True a GMap2 or a GMap3, which keep a mesh that "
 		"cannot be oriented whole. A .nmap file gives the map of any dimension it holds (CMapN1 ... CMapN4, "
-		"GMapN1 ... GMapN4; with gmap=True a GMapN also for a CMapN file). Raises cgogn.IOError naming the "
-		"file, line and problem on bad input.");
+		"GMapN1 ... GMapN4; with gmap=True a GMapN also for a CMapN file). A .cgmap file gives the map it "
+		"holds, exactly as saved (CMap2, CMap3, GMap2, GMap3, Graph, CMapN, GMapN). Raises cgogn.IOError "
+		"naming the file, line and problem on bad input.");
 }
 
 } // namespace cgogn::python

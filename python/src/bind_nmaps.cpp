@@ -8,11 +8,13 @@
 #include <cgogn/core/map/darts.h>
 #include <cgogn/io/nmap.h>
 
+#include "py_map.h"
 #include "py_nmap.h"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <fstream>
 #include <optional>
 #include <pybind11/stl.h>
 #include <tuple>
@@ -414,9 +416,18 @@ void bind_nmaps(py::module_& mod)
 				std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
 				std::transform(ext.begin(), ext.end(), ext.begin(),
 							   [](unsigned char ch) { return char(std::tolower(ch)); });
+				if (has_map_file_extension(path))
+				{
+					std::vector<std::string> skipped;
+					const std::string bytes = w.map_bytes(&skipped);
+					std::ofstream f(path, std::ios::binary);
+					if (!f.write(bytes.data(), std::streamsize(bytes.size())))
+						throw io::Error(path, "cannot write the file");
+					return skipped;
+				}
 				if (ext != ".vtu" && !has_nmap_extension(path))
 					throw io::Error(path, "unknown extension '" + ext +
-											  "': a map of any dimension is written as .nmap or .vtu");
+											  "': a map of any dimension is written as .nmap, .vtu or .cgmap");
 				if (ext != ".vtu" && dimensions)
 					throw py::value_error("dimensions: for .vtu files only");
 				py::gil_scoped_release release;
@@ -427,7 +438,8 @@ void bind_nmaps(py::module_& mod)
 			},
 			py::arg("path"), py::arg("dimensions") = py::none(),
 			"Writes the map: a .nmap file (darts, relations, boundary and the attributes of every cell "
-			"dimension; returns the names of the attributes whose type the format has not), or a .vtu file (VTK "
+			"dimension; returns the names of the attributes whose type the format has not), a .cgmap file (the "
+			"whole map, exactly; returns the names of the attributes left out), or a .vtu file (VTK "
 			"XML, which ParaView opens) of the cells of the given dimensions (0 to 3; by default min(D, 3)) on "
 			"the first three coordinates of the positions. Raises cgogn.IOError on failure.")
 		.def(

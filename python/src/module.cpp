@@ -39,4 +39,5 @@ PYBIND11_MODULE(_cgogn, m)
 	cgogn::python::bind_algorithms(m);
 	cgogn::python::bind_nmaps(m);
 	cgogn::python::bind_graph(m);
+	cgogn::python::bind_map_files(m); // methods of the classes bound above
 }

@@ -147,5 +147,18 @@ void bind_operators(py::module_& m);
 void bind_algorithms(py::module_& m);
 void bind_graph(py::module_& m);
 void bind_incidence_graph(py::module_& m);
+/// Whole-map files (.cgmap) and pickling of every map class (bind_map_files.cpp);
+/// bound last, once the classes exist.
+void bind_map_files(py::module_& m);
+/// Whether path ends with .cgmap (any case).
+bool has_map_file_extension(const std::string& path);
+/// The map of .cgmap bytes as an instance of its Python class; io::Error for
+/// bad bytes or a type Python has no class of. `name` stands for the file.
+py::object map_from_bytes(std::string_view bytes, const std::string& name);
+/// What a map's __reduce__ returns: cgogn._from_bytes and the map's .cgmap
+/// bytes (bind_map_files.cpp).
+py::tuple map_file_reduce(std::string bytes);
+/// A graph moved into an instance of cgogn.Graph (bind_graph.cpp).
+py::object wrap_graph(Graph&& g);
 
 } // namespace cgogn::python

@@ -66,6 +66,9 @@ struct NMap
 	virtual void load_nmap(const std::string& path) = 0;
 	/// Writes the .nmap file; returns the names of the attributes not written.
 	virtual std::vector<std::string> save_nmap(const std::string& path) const = 0;
+	/// The bytes of the map's .cgmap file (io::save_map_to_bytes); the names
+	/// of the attributes left out go to `skipped` when given.
+	virtual std::string map_bytes(std::vector<std::string>* skipped = nullptr) const = 0;
 	/// Writes the cells of the given dimensions as a VTK XML unstructured grid.
 	virtual void save_vtu(const std::string& path, const std::vector<uint32>& dimensions) const = 0;
 	/// The boundary as a map of dimension D - 1 (D >= 2), vertex attributes carried.

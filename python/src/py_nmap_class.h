@@ -116,6 +116,15 @@ struct PyNMap final : NMap
 	{
 		return io::save_nmap(m, path);
 	}
+	std::string map_bytes(std::vector<std::string>* skipped) const override
+	{
+		io::MapFileReport r;
+		std::string bytes = io::save_map_to_bytes(m, &r);
+		if (skipped != nullptr)
+			for (const io::SkippedAttribute& a : r.skipped)
+				skipped->push_back(a.name);
+		return bytes;
+	}
 	void save_vtu(const std::string& path, const std::vector<uint32>& dimensions) const override
 	{
 		io::save_vtu(m, path, dimensions);

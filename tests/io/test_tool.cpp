@@ -388,4 +388,64 @@ TEST(Tool, NonManifoldInfoAndConvertKeepTheFileWhole)
 	EXPECT_EQ(nlohmann::json::parse(r.out)["map"], "CMap2");
 }
 
+TEST(Tool, WholeMapFilesAreInspectedCheckedAndConverted)
+{
+	TempDir dir;
+	const auto info = [&](const std::string& file) { return info_json(dir.file(file), dir); };
+	// a surface: the .cgmap gives the counts of the mesh it was made from,
+	// and converts back to the same file
+	ToolRun r = run_tool("convert '" + example_mesh() + "' '" + dir.file("spot.cgmap") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	nlohmann::json j = info("spot.cgmap");
+	EXPECT_EQ(j["format"], "cgmap");
+	EXPECT_EQ(j["map"], "CMap2");
+	EXPECT_EQ(j["vertices"], 188);
+	EXPECT_EQ(j["faces"], 180);
+	EXPECT_EQ(j["face_degrees"]["5"], 16);
+	converted_and_checked(dir.file("spot.cgmap"), dir.file("spot.obj"), dir);
+	converted_and_checked(dir.file("spot.obj"), dir.file("spot2.cgmap"), dir);
+	EXPECT_EQ(read_text(dir.file("spot2.cgmap")), read_text(dir.file("spot.cgmap")));
+	// a non-orientable surface is kept whole, in a GMap2
+	r = run_tool("convert '" + std::string(CGOGN_DATA_DIR) + "/surface/klein_bottle.off' '" + dir.file("k.cgmap") + "'",
+				 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	j = info("k.cgmap");
+	EXPECT_EQ(j["map"], "GMap2");
+	EXPECT_EQ(j["orientable"], false);
+	// a volume mesh, a map of any dimension and a graph
+	CMap3 m;
+	build_with_positions(m, tet_grid_soup(2, 2, 2));
+	io::save_volume(m, dir.file("g.mesh"));
+	converted_and_checked(dir.file("g.mesh"), dir.file("g.cgmap"), dir);
+	j = info("g.cgmap");
+	EXPECT_EQ(j["map"], "CMap3");
+	EXPECT_EQ(j["volumes"], 48);
+	converted_and_checked(dir.file("g.cgmap"), dir.file("g.vtu"), dir);
+	EXPECT_EQ(info("g.vtu")["volumes"], 48);
+	CMapN<4> grid;
+	generate_cube_grid(grid, 2);
+	io::save_nmap(grid, dir.file("grid.nmap"));
+	converted_and_checked(dir.file("grid.nmap"), dir.file("grid.cgmap"), dir);
+	EXPECT_EQ(info("grid.cgmap")["f_vector"], (std::vector<uint32>{81, 216, 216, 96, 16}));
+	write_text(dir.file("p.cg"), "# D:3 NV:3 NE:2\nv 0 0 0\nv 1 0 0\nv 2 0 0\ne 0 1\ne 1 2\n");
+	converted_and_checked(dir.file("p.cg"), dir.file("p.cgmap"), dir);
+	EXPECT_EQ(info("p.cgmap")["map"], "Graph");
+	// errors: a damaged file, an incidence graph, a type of map no command takes
+	std::string bytes = read_text(dir.file("g.cgmap"));
+	write_text(dir.file("cut.cgmap"), bytes.substr(0, bytes.size() / 2));
+	r = run_tool("info '" + dir.file("cut.cgmap") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("cut.cgmap: byte "), std::string::npos) << r.err;
+	write_text(dir.file("t.ig"), "IG 3 3 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\ne 0 1\ne 1 2\ne 2 0\nf 3 0 1 2\n");
+	r = run_tool("convert '" + dir.file("t.ig") + "' '" + dir.file("t.cgmap") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("not a map"), std::string::npos) << r.err;
+	CMap1 polygon;
+	add_face(polygon, 3);
+	io::save_map(polygon, dir.file("c1.cgmap"));
+	r = run_tool("info '" + dir.file("c1.cgmap") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("a map of type CMap1"), std::string::npos) << r.err;
+}
+
 } // namespace cgogn_test_tool

@@ -203,6 +203,20 @@ public:
 		return first;
 	}
 
+	/// Gives an empty container the lines a saved one had: end_index()
+	/// becomes `end` (every attribute holds it, at its default value) and
+	/// the free list becomes `free_lines`, in that order (new_line reuses
+	/// the last one first). The caller then writes the values, keys included,
+	/// so that the free lines, and only they, have INVALID_INDEX keys.
+	/// Precondition: end_index() == 0. Used by io::load_map. O(end x attributes).
+	void restore_lines(uint32 end, std::vector<uint32> free_lines)
+	{
+		assert(size_ == 0);
+		reserve(end);
+		size_ = end;
+		free_lines_ = std::move(free_lines);
+	}
+
 	/// Frees a line: its key becomes INVALID_INDEX and it will be reused.
 	void release_line(uint32 i)
 	{
@@ -553,19 +567,22 @@ std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContain
 	}
 	// and a container of the cells of the same dimension in a map of any
 	// dimension, or in a map of dimension 2 or 3 (to_nmap, to_fixed_map)
+	// (a fold over the few orbits concerned: one over every orbit would
+	// instantiate a lambda per orbit in every attribute class)
+	constexpr std::array<Orbit, 4> same_kind = same_dimension_orbits(O);
 	std::shared_ptr<AttributeBase> same_dimension;
-	[&]<std::size_t... K>(std::index_sequence<K...>)
+	[&]<std::size_t... I>(std::index_sequence<I...>)
 	{
 		(
 			[&] {
-				constexpr Orbit X = Orbit(K);
-				if constexpr (X != O && (dimension_counterpart(X) == O || dimension_counterpart(O) == X))
+				constexpr Orbit X = same_kind[I];
+				if constexpr (X != Orbit::NB_ORBITS)
 					if (to.orbit() == X)
 						same_dimension = to.add_attribute<T, CellAttribute<T, X>>(this->name(), this->default_value());
 			}(),
 			...);
 	}
-	(std::make_index_sequence<NB_ORBITS>{});
+	(std::make_index_sequence<same_kind.size()>{});
 	if (same_dimension)
 		return same_dimension;
 	assert(to.orbit() == O && "clone into a container of another orbit");

@@ -223,6 +223,20 @@ constexpr Orbit dimension_counterpart(Orbit o)
 	}
 }
 
+/// The orbits X other than o of the cells of the same dimension as o's in
+/// the other families of maps (dimension_counterpart(X) == o, or X ==
+/// dimension_counterpart(o)), padded with NB_ORBITS: at most four (the
+/// vertices of 2- and 3-maps and G-maps for CELL0).
+constexpr std::array<Orbit, 4> same_dimension_orbits(Orbit o)
+{
+	std::array<Orbit, 4> r{Orbit::NB_ORBITS, Orbit::NB_ORBITS, Orbit::NB_ORBITS, Orbit::NB_ORBITS};
+	std::size_t n = 0;
+	for (uint32 x = 0; x < orbit_index(Orbit::NB_ORBITS); ++x)
+		if (Orbit(x) != o && (dimension_counterpart(Orbit(x)) == o || dimension_counterpart(o) == Orbit(x)))
+			r[n++] = Orbit(x);
+	return r;
+}
+
 /// The orbit of the same cell kind in the other model of maps: a CMap2
 /// vertex (PHI21) is a GMap2 vertex (BETA1_BETA2), and so for edges (PHI2,
 /// BETA0_BETA2), faces (PHI1, BETA0_BETA1) and components (PHI1_PHI2,

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+// The value types of the .cgmap format: their names and their little-endian
+// encodings.
+#pragma once
+
+#include <cgogn/core/attributes/attribute_container.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include "byte_reader.h"
+
+#include <array>
+#include <bit>
+#include <cstring>
+#include <string>
+#include <tuple>
+#include <typeindex>
+#include <vector>
+
+namespace cgogn::io::detail
+{
+
+/// Appends the little-endian bytes of a scalar.
+template <typename S>
+void put_scalar(std::string& out, S v)
+{
+	char b[sizeof(S)];
+	std::memcpy(b, &v, sizeof(S));
+	if constexpr (std::endian::native == std::endian::big)
+		for (std::size_t i = 0; i < sizeof(S) / 2; ++i)
+			std::swap(b[i], b[sizeof(S) - 1 - i]);
+	out.append(b, sizeof(S));
+}
+
+/// A length-prefixed string: uint32 byte count, then the bytes.
+inline void put_string(std::string& out, std::string_view s)
+{
+	put_scalar<uint32>(out, uint32(s.size()));
+	out.append(s);
+}
+
+/// Reads a length-prefixed string, refusing one longer than what remains.
+inline std::string get_string(ByteReader& in)
+{
+	const uint32 n = in.read<uint32>();
+	in.check_count(n, 1, "string bytes");
+	std::string s(n, '\0');
+	for (uint32 i = 0; i < n; ++i)
+		s[i] = in.read<char>();
+	return s;
+}
+
+template <typename S>
+struct ScalarName;
+#define CGOGN_SCALAR_NAME(TYPE, NAME)                                                                                  \
+	template <>                                                                                                        \
+	struct ScalarName<TYPE>                                                                                            \
+	{                                                                                                                  \
+		static constexpr const char* name = NAME;                                                                      \
+	};
+CGOGN_SCALAR_NAME(bool, "bool")
+CGOGN_SCALAR_NAME(int8, "int8")
+CGOGN_SCALAR_NAME(uint8, "uint8")
+CGOGN_SCALAR_NAME(std::int16_t, "int16")
+CGOGN_SCALAR_NAME(uint16, "uint16")
+CGOGN_SCALAR_NAME(int32, "int32")
+CGOGN_SCALAR_NAME(uint32, "uint32")
+CGOGN_SCALAR_NAME(int64, "int64")
+CGOGN_SCALAR_NAME(uint64, "uint64")
+CGOGN_SCALAR_NAME(float, "float32")
+CGOGN_SCALAR_NAME(double, "float64")
+#undef CGOGN_SCALAR_NAME
+
+/// How a value type is named, written and read. Scalars are their bytes
+/// (bool: one byte, 0 or 1); vectors and arrays their coordinates in order;
+/// strings length-prefixed.
+template <typename T>
+struct ValueCodec
+{
+	static std::string name()
+	{
+		return ScalarName<T>::name;
+	}
+	static void write(std::string& out, const T& v)
+	{
+		if constexpr (std::is_same_v<T, bool>)
+			put_scalar<uint8>(out, v ? 1 : 0);
+		else
+			put_scalar<T>(out, v);
+	}
+	static T read(ByteReader& in)
+	{
+		if constexpr (std::is_same_v<T, bool>)
+		{
+			const uint8 b = in.read<uint8>();
+			if (b > 1)
+				in.fail("a bool value is " + std::to_string(b) + ", not 0 or 1");
+			return b == 1;
+		}
+		else
+			return in.read<T>();
+	}
+};
+
+template <int N>
+struct ValueCodec<Eigen::Matrix<double, N, 1>>
+{
+	using T = Eigen::Matrix<double, N, 1>;
+	static std::string name()
+	{
+		return "Vec" + std::to_string(N);
+	}
+	static void write(std::string& out, const T& v)
+	{
+		for (int i = 0; i < N; ++i)
+			put_scalar<double>(out, v[i]);
+	}
+	static T read(ByteReader& in)
+	{
+		T v;
+		for (int i = 0; i < N; ++i)
+			v[i] = in.read<double>();
+		return v;
+	}
+};
+
+template <typename S, std::size_t K>
+struct ValueCodec<std::array<S, K>>
+{
+	static std::string name()
+	{
+		return std::string(ScalarName<S>::name) + "[" + std::to_string(K) + "]";
+	}
+	static void write(std::string& out, const std::array<S, K>& v)
+	{
+		for (const S& x : v)
+			put_scalar<S>(out, x);
+	}
+	static std::array<S, K> read(ByteReader& in)
+	{
+		std::array<S, K> v;
+		for (S& x : v)
+			x = in.read<S>();
+		return v;
+	}
+};
+
+template <>
+struct ValueCodec<std::string>
+{
+	static std::string name()
+	{
+		return "string";
+	}
+	static void write(std::string& out, const std::string& v)
+	{
+		put_string(out, v);
+	}
+	static std::string read(ByteReader& in)
+	{
+		return get_string(in);
+	}
+};
+
+/// What reading one attribute of the file needs: where its values go and
+/// what the map already has under its name.
+struct AttributeRead
+{
+	ByteReader& in;
+	AttributeContainer& container;
+	Orbit orbit;                          ///< the container's orbit
+	const std::string& name;              ///< the attribute's name
+	std::shared_ptr<AttributeBase> found; ///< the map's own attribute of that name (nullptr: create one)
+	uint32 end;                           ///< the container's lines
+};
+
+/// The typed work on attributes, for the types of a group: the groups are
+/// compiled apart (map_file_scalars.cpp, map_file_vectors.cpp), each of its
+/// types creating its attribute class for every orbit.
+template <typename TYPES>
+struct AttributeValues;
+template <typename... T>
+struct AttributeValues<std::tuple<T...>>
+{
+	/// Appends the format's type name, the payload size, the default value
+	/// and the values of lines [0, end) of `a`; false (nothing written) when
+	/// its type is not one of the group.
+	static bool write(std::string& out, const AttributeBase& a, uint32 end);
+	/// Reads the default value and the values of an attribute of the type
+	/// named `type` into r.found, or into a new attribute of r.container;
+	/// false (nothing read) when the type is not one of the group. Throws
+	/// io::Error when r.found has another type.
+	static bool read(AttributeRead& r, std::string_view type);
+	/// Whether the type of `a` is one of the group.
+	static bool holds(const AttributeBase& a)
+	{
+		return ((a.type() == typeid(T)) || ...);
+	}
+	/// The format's names of the group's types.
+	static void names(std::vector<std::string>& out)
+	{
+		(out.push_back(ValueCodec<T>::name()), ...);
+	}
+};
+
+/// The groups of the format's value types (map_file_value_types() lists them).
+using ScalarValueTypes =
+	std::tuple<bool, int8, uint8, std::int16_t, uint16, int32, uint32, int64, uint64, float, double>;
+using VectorValueTypes = std::tuple<Vec2, Vec3, Vec4, std::array<double, 1>, std::array<double, 2>,
+									std::array<double, 3>, std::array<double, 4>, std::array<double, 5>,
+									std::array<double, 6>, std::array<double, 7>, std::array<double, 8>, std::string>;
+
+} // namespace cgogn::io::detail
