@@ -8,6 +8,7 @@
 #include "cmap3_build.h"
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 namespace cgogn::detail
@@ -103,6 +104,107 @@ void foreach_buildable_cell(uint32 nb_vertices, std::span<const uint32> cell_siz
 			continue;
 		}
 		f(cv, *faces);
+	}
+}
+
+/// Whether the faces of a polyhedron (local vertex numbers) close one
+/// surface, consistently oriented: every directed edge of a face is met once,
+/// and its reverse once in another face; and the faces are connected through
+/// their edges. `edges` is scratch. O(size x log).
+inline bool is_closed_oriented_surface(const FaceList& faces, std::vector<std::array<uint32, 3>>& edges)
+{
+	edges.clear();
+	for (uint32 f = 0; f < faces.size(); ++f)
+		for (std::size_t i = 0; i < faces[f].size(); ++i)
+			edges.push_back({faces[f][i], faces[f][(i + 1) % faces[f].size()], f});
+	std::sort(edges.begin(), edges.end());
+	std::vector<uint32> component(faces.size());
+	for (uint32 f = 0; f < faces.size(); ++f)
+		component[f] = f;
+	const auto root = [&](uint32 f) {
+		while (component[f] != f)
+			f = component[f] = component[component[f]];
+		return f;
+	};
+	for (std::size_t i = 0; i < edges.size(); ++i)
+	{
+		if (i + 1 < edges.size() && edges[i][0] == edges[i + 1][0] && edges[i][1] == edges[i + 1][1])
+			return false; // a directed edge twice: faces of opposite orientations, or a non-manifold edge
+		const std::array<uint32, 3> reverse{edges[i][1], edges[i][0], 0};
+		const auto it = std::lower_bound(edges.begin(), edges.end(), reverse);
+		if (it == edges.end() || (*it)[0] != reverse[0] || (*it)[1] != reverse[1])
+			return false; // an open edge
+		component[root(edges[i][2])] = root((*it)[2]);
+	}
+	for (uint32 f = 0; f < faces.size(); ++f)
+		if (root(f) != root(0))
+			return false;
+	return true;
+}
+
+/// Calls f(labels, faces) on each polyhedron of a list that build_polyhedra
+/// builds, in order: `labels` the distinct vertex ids of the cell, `faces`
+/// its faces in local numbers (indices into labels). A polyhedron is built
+/// when it has at least 4 faces, each of at least 3 vertices in [0,
+/// nb_vertices) with none repeated, that close one consistently oriented
+/// surface; the others are counted in `report` (one that runs past the end
+/// of the lists, names a vertex out of range or does not close a surface is
+/// invalid; one with fewer faces, a short face or a repeated vertex is
+/// degenerate). O(total size x log).
+template <typename FUNC>
+void foreach_buildable_polyhedron(uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
+								  std::span<const uint32> face_sizes, std::span<const uint32> face_vertices,
+								  BuildReport& report, const FUNC& f)
+{
+	std::size_t face = 0, first = 0;
+	std::vector<uint32> labels, scratch;
+	std::vector<std::pair<uint32, uint32>> local_of; // (vertex id, local number), sorted
+	std::vector<std::array<uint32, 3>> edges;
+	FaceList faces;
+	for (uint32 nf : cell_nb_faces)
+	{
+		bool invalid = face + nf > face_sizes.size(), degenerate = nf < 4;
+		const std::size_t nb = invalid ? face_sizes.size() - face : nf;
+		labels.clear();
+		local_of.clear();
+		faces.assign(nb, {});
+		for (std::size_t k = 0; k < nb; ++k)
+		{
+			const uint32 n = face_sizes[face + k];
+			if (first + n > face_vertices.size())
+			{
+				invalid = true;
+				first = face_vertices.size();
+				continue;
+			}
+			const std::span<const uint32> fv = face_vertices.subspan(first, n);
+			first += n;
+			if (std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }))
+			{
+				invalid = true;
+				continue;
+			}
+			degenerate = degenerate || n < 3 || has_repeated_vertex(fv, scratch);
+			for (uint32 v : fv)
+			{
+				auto it = std::lower_bound(local_of.begin(), local_of.end(), std::pair<uint32, uint32>{v, 0});
+				if (it == local_of.end() || it->first != v)
+				{
+					it = local_of.insert(it, {v, uint32(labels.size())});
+					labels.push_back(v);
+				}
+				faces[k].push_back(it->second);
+			}
+		}
+		face += nb;
+		if (invalid)
+			++report.nb_cells_invalid;
+		else if (degenerate)
+			++report.nb_cells_degenerate;
+		else if (!is_closed_oriented_surface(faces, edges))
+			++report.nb_cells_invalid;
+		else
+			f(std::span<const uint32>(labels), faces);
 	}
 }
 

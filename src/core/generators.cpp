@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/build/generators.h>
 
+#include "cmap3_build.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -275,6 +277,30 @@ VolumeSoup hex_grid_soup(uint32 nx, uint32 ny, uint32 nz)
 										v(i + 1, j, k + 1), v(i + 1, j + 1, k + 1), v(i, j + 1, k + 1)});
 			}
 	return s;
+}
+
+PolyhedronSoup polyhedra_of(const VolumeSoup& s)
+{
+	PolyhedronSoup p;
+	p.nb_vertices = s.nb_vertices;
+	p.positions = s.positions;
+	std::size_t first = 0;
+	for (uint32 n : s.cell_sizes)
+	{
+		const detail::FaceList* faces = detail::cell_faces(n);
+		if (faces != nullptr && first + n <= s.cell_vertices.size())
+		{
+			p.cell_nb_faces.push_back(uint32(faces->size()));
+			for (const auto& f : *faces)
+			{
+				p.face_sizes.push_back(uint32(f.size()));
+				for (uint32 local : f)
+					p.face_vertices.push_back(s.cell_vertices[first + local]);
+			}
+		}
+		first += n;
+	}
+	return p;
 }
 
 } // namespace cgogn

@@ -12,11 +12,17 @@
 namespace cgogn
 {
 
-BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
-						 std::span<const uint32> cell_vertices)
+namespace
+{
+
+// Builds the cells that foreach_input_cell(report, f) hands to f(labels,
+// faces) (each a closed surface: its local faces and the vertex id of each
+// local vertex), sews them, closes the outside and indexes the vertices.
+template <typename FOREACH_CELL>
+BuildReport build_cells(CMap3& m, uint32 nb_vertices, uint32 nb_cells, const FOREACH_CELL& foreach_input_cell)
 {
 	BuildReport report;
-	report.nb_cells_read = uint32(cell_sizes.size());
+	report.nb_cells_read = nb_cells;
 
 	if (!is_indexed<CMap3::Vertex>(m))
 		index_cells<CMap3::Vertex>(m);
@@ -30,15 +36,14 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	// 1. each cell as a closed 2-map (faces sewn by phi2)
 	std::vector<Dart> darts;
 	std::vector<uint32> labels;
-	detail::foreach_buildable_cell(nb_vertices, cell_sizes, cell_vertices, report,
-								   [&](std::span<const uint32> cv, const detail::FaceList& faces) {
-									   labels.clear();
-									   std::vector<Dart> cell_darts = detail::add_volume_topology(m, faces, cv, labels);
-									   for (std::size_t i = 0; i < cell_darts.size(); ++i)
-										   vidx[cell_darts[i].index] = offset + labels[i];
-									   darts.insert(darts.end(), cell_darts.begin(), cell_darts.end());
-									   ++report.nb_cells_built;
-								   });
+	foreach_input_cell(report, [&](std::span<const uint32> cv, const detail::FaceList& faces) {
+		labels.clear();
+		std::vector<Dart> cell_darts = detail::add_volume_topology(m, faces, cv, labels);
+		for (std::size_t i = 0; i < cell_darts.size(); ++i)
+			vidx[cell_darts[i].index] = offset + labels[i];
+		darts.insert(darts.end(), cell_darts.begin(), cell_darts.end());
+		++report.nb_cells_built;
+	});
 
 	// 2. sew faces of adjacent cells: same vertices, opposite orientation
 	std::vector<uint32> offsets(nb_vertices + 1, 0);
@@ -119,6 +124,24 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	detail::index_new_darts(m, darts);
 	detail::release_idle_marks(m);
 	return report;
+}
+
+} // namespace
+
+BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
+						 std::span<const uint32> cell_vertices)
+{
+	return build_cells(m, nb_vertices, uint32(cell_sizes.size()), [&](BuildReport& report, const auto& f) {
+		detail::foreach_buildable_cell(nb_vertices, cell_sizes, cell_vertices, report, f);
+	});
+}
+
+BuildReport build_polyhedra(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
+							std::span<const uint32> face_sizes, std::span<const uint32> face_vertices)
+{
+	return build_cells(m, nb_vertices, uint32(cell_nb_faces.size()), [&](BuildReport& report, const auto& f) {
+		detail::foreach_buildable_polyhedron(nb_vertices, cell_nb_faces, face_sizes, face_vertices, report, f);
+	});
 }
 
 } // namespace cgogn

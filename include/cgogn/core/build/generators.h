@@ -27,6 +27,21 @@ struct VolumeSoup
 	std::vector<std::array<double, 3>> positions; ///< x, y, z of each vertex, by id.
 };
 
+/// Polyhedra given by their faces (build_polyhedra's input) with positions.
+struct PolyhedronSoup
+{
+	uint32 nb_vertices = 0;                       ///< Number of vertices; their ids are [0, nb_vertices).
+	std::vector<uint32> cell_nb_faces;            ///< Number of faces of each cell.
+	std::vector<uint32> face_sizes;               ///< Number of vertices of each face, cell after cell.
+	std::vector<uint32> face_vertices;            ///< The vertex ids of the faces, face after face.
+	std::vector<std::array<double, 3>> positions; ///< x, y, z of each vertex, by id.
+};
+
+/// The cells of a volume soup as polyhedra: each cell's faces as
+/// build_volume builds them (seen counterclockwise from outside). Cells of
+/// an unknown size are left out. O(size of s).
+PolyhedronSoup polyhedra_of(const VolumeSoup& s);
+
 /// A flat nx x ny grid of unit squares in the z = 0 plane, (nx+1)(ny+1)
 /// vertices, one boundary loop; quads, or each quad split in two triangles.
 SurfaceSoup grid_soup(uint32 nx, uint32 ny, bool triangles = false);
@@ -84,6 +99,10 @@ inline BuildReport build_volume(CMap3& m, const VolumeSoup& s)
 inline BuildReport build_volume(GMap3& m, const VolumeSoup& s)
 {
 	return build_volume(m, s.nb_vertices, s.cell_sizes, s.cell_vertices);
+}
+inline BuildReport build_polyhedra(CMap3& m, const PolyhedronSoup& s)
+{
+	return build_polyhedra(m, s.nb_vertices, s.cell_nb_faces, s.face_sizes, s.face_vertices);
 }
 
 } // namespace cgogn

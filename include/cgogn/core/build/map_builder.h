@@ -98,6 +98,22 @@ BuildReport build_surface(GMap2& m, uint32 nb_vertices, std::span<const uint32> 
 BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_sizes,
 						 std::span<const uint32> cell_vertices);
 
+/// Builds a closed 3-map from polyhedra given by their faces and appends
+/// them to m: cell c has `cell_nb_faces[c]` faces, taken in order from
+/// `face_sizes` (the number of vertices of each face) and `face_vertices`
+/// (their ids in [0, nb_vertices), face after face), each seen
+/// counterclockwise from outside the cell (VTK's polyhedron convention).
+/// Any polyhedron whose faces close one consistently oriented surface is
+/// built (of any genus; faces of any degree), its faces sewn to the
+/// matching faces of the other cells as build_volume sews them; the outside
+/// is closed by boundary volumes, vertices indexed as for build_surface. A
+/// cell with fewer than 4 faces, a face of fewer than 3 vertices or a
+/// repeated vertex is skipped as degenerate; one with an id out of range,
+/// faces that do not close a surface, or faces of opposite orientations is
+/// skipped as invalid (BuildReport). O(total size x log).
+BuildReport build_polyhedra(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
+							std::span<const uint32> face_sizes, std::span<const uint32> face_vertices);
+
 /// Builds closed 3-G-map volumes from a list of cells and appends them to m,
 /// as build_volume for a CMap3 does (same cells and vertex orders, same
 /// report), with one difference: two cells sharing a face are glued whatever

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// Volume meshes of any polyhedra (build_polyhedra): prisms on any polygon
+// stacked and sewn, the standard cells given by their faces against
+// build_volume, and the cells the builder refuses.
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+namespace cgogn_test_polyhedra
+{
+
+using namespace cgogn;
+
+namespace
+{
+
+// A column of `layers` prisms on an n-gon: ring k holds vertices k n ...
+// k n + n - 1; each prism's faces seen counterclockwise from outside.
+PolyhedronSoup prism_column(uint32 n, uint32 layers)
+{
+	PolyhedronSoup s;
+	s.nb_vertices = n * (layers + 1);
+	for (uint32 l = 0; l < layers; ++l)
+	{
+		const uint32 b = l * n, t = (l + 1) * n;
+		s.cell_nb_faces.push_back(n + 2);
+		s.face_sizes.push_back(n); // bottom, seen from below
+		s.face_vertices.push_back(b);
+		for (uint32 i = n - 1; i >= 1; --i)
+			s.face_vertices.push_back(b + i);
+		s.face_sizes.push_back(n); // top
+		for (uint32 i = 0; i < n; ++i)
+			s.face_vertices.push_back(t + i);
+		for (uint32 i = 0; i < n; ++i) // sides
+		{
+			s.face_sizes.push_back(4);
+			s.face_vertices.insert(s.face_vertices.end(), {b + i, b + (i + 1) % n, t + (i + 1) % n, t + i});
+		}
+	}
+	return s;
+}
+
+std::vector<uint32> counts(const CMap3& m)
+{
+	return {nb_cells<CMap3::Vertex>(m), nb_cells<CMap3::Edge>(m), nb_cells<CMap3::Face>(m), nb_cells<CMap3::Volume>(m)};
+}
+
+} // namespace
+
+TEST(Polyhedra, PrismsOnAnyPolygonAreBuiltAndSewn)
+{
+	for (uint32 n : {3u, 4u, 5u, 6u, 11u})
+	{
+		SCOPED_TRACE(n);
+		CMap3 m;
+		const BuildReport r = build_polyhedra(m, prism_column(n, 3));
+		EXPECT_EQ(r.nb_cells_read, 3u);
+		EXPECT_EQ(r.nb_cells_built, 3u);
+		EXPECT_EQ(r.nb_cells_invalid + r.nb_cells_degenerate, 0u);
+		EXPECT_EQ(r.nb_nonmanifold_faces, 0u);
+		EXPECT_TRUE(check_integrity(m).ok()) << check_integrity(m).to_string();
+		// 4 rings of n vertices, 4 n ring edges and 3 n posts, 4 n-gons and 3 n quads
+		EXPECT_EQ(counts(m), (std::vector<uint32>{4 * n, 7 * n, 4 + 3 * n, 3}));
+		uint32 ngons = 0, quads = 0;
+		foreach_cell(m, [&](CMap3::Face f) {
+			const uint32 k = codegree(m, f);
+			ngons += k == n;
+			quads += k == 4;
+		});
+		if (n != 4)
+		{
+			EXPECT_EQ(ngons, 4u);
+			EXPECT_EQ(quads, 3 * n);
+		}
+		foreach_cell(m, [&](CMap3::Volume w) {
+			uint32 faces = 0;
+			foreach_incident_face(m, w, [&](CMap3::Face) { return ++faces, true; });
+			EXPECT_EQ(faces, n + 2);
+		});
+		// the two inner n-gons are shared: not on the boundary
+		uint32 inner = 0;
+		foreach_cell(m, [&](CMap3::Face f) { inner += !is_incident_to_boundary(m, f); });
+		EXPECT_EQ(inner, 2u);
+	}
+}
+
+TEST(Polyhedra, StandardCellsGivenByTheirFacesBuildTheSameMap)
+{
+	for (const VolumeSoup& v : {hex_grid_soup(3, 2, 2), tet_grid_soup(2, 2, 3)})
+	{
+		CMap3 cells, faces;
+		build_volume(cells, v);
+		const PolyhedronSoup p = polyhedra_of(v);
+		EXPECT_EQ(p.cell_nb_faces.size(), v.cell_sizes.size());
+		const BuildReport r = build_polyhedra(faces, p);
+		EXPECT_EQ(r.nb_cells_built, uint32(v.cell_sizes.size()));
+		EXPECT_TRUE(check_integrity(faces).ok());
+		EXPECT_EQ(counts(faces), counts(cells));
+		EXPECT_EQ(nb_darts(faces), nb_darts(cells));
+		EXPECT_EQ(nb_boundary_components(faces), 1u);
+	}
+}
+
+TEST(Polyhedra, CellsThatDoNotCloseASurfaceAreSkippedAndCounted)
+{
+	const PolyhedronSoup good = prism_column(5, 1); // faces: bottom, top, 5 sides
+	const auto one_cell = [&](const std::vector<std::vector<uint32>>& faces) {
+		PolyhedronSoup s;
+		s.nb_vertices = good.nb_vertices;
+		s.cell_nb_faces = {uint32(faces.size())};
+		for (const auto& f : faces)
+		{
+			s.face_sizes.push_back(uint32(f.size()));
+			s.face_vertices.insert(s.face_vertices.end(), f.begin(), f.end());
+		}
+		CMap3 m;
+		const BuildReport r = build_polyhedra(m, s);
+		EXPECT_TRUE(check_integrity(m).ok());
+		EXPECT_EQ(nb_cells<CMap3::Volume>(m), r.nb_cells_built);
+		return r;
+	};
+	std::vector<std::vector<uint32>> faces = {{0, 4, 3, 2, 1}, {5, 6, 7, 8, 9}};
+	for (uint32 i = 0; i < 5; ++i)
+		faces.push_back({i, (i + 1) % 5, 5 + (i + 1) % 5, 5 + i});
+	EXPECT_EQ(one_cell(faces).nb_cells_built, 1u);
+
+	auto open = faces;
+	open.pop_back(); // a side missing
+	EXPECT_EQ(one_cell(open).nb_cells_invalid, 1u);
+	auto turned = faces;
+	std::reverse(turned[1].begin(), turned[1].end()); // the top listed inward
+	EXPECT_EQ(one_cell(turned).nb_cells_invalid, 1u);
+	auto out_of_range = faces;
+	out_of_range[0][0] = 10;
+	EXPECT_EQ(one_cell(out_of_range).nb_cells_invalid, 1u);
+	auto repeated = faces;
+	repeated[0] = {0, 4, 3, 3, 1};
+	EXPECT_EQ(one_cell(repeated).nb_cells_degenerate, 1u);
+	EXPECT_EQ(one_cell({{0, 1, 2}, {0, 2, 1}}).nb_cells_degenerate, 1u); // two faces
+	// the same surface listed twice: each directed edge met twice
+	auto twice = faces;
+	twice.insert(twice.end(), faces.begin(), faces.end());
+	EXPECT_EQ(one_cell(twice).nb_cells_invalid, 1u);
+
+	// lists that stop short: the cell is invalid, the cells before it built
+	PolyhedronSoup s = prism_column(4, 2);
+	s.face_vertices.resize(s.face_vertices.size() - 3);
+	CMap3 m;
+	const BuildReport r = build_polyhedra(m, s);
+	EXPECT_EQ(r.nb_cells_built, 1u);
+	EXPECT_EQ(r.nb_cells_invalid, 1u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	s.cell_nb_faces.push_back(7); // no face left for it
+	CMap3 k;
+	EXPECT_EQ(build_polyhedra(k, s).nb_cells_invalid, 2u);
+}
+
+} // namespace cgogn_test_polyhedra
