@@ -109,8 +109,17 @@ void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& 
 			// cells) split their vertices: the GMap3 glues them
 			progress.stage("not manifold as a CMap3: loading " + path + " as a GMap3");
 			GMap3 g;
-			const io::LoadReport rg = io::load_volume(g, path);
-			if (!rg.orientable)
+			io::LoadReport rg;
+			bool loaded = true;
+			try
+			{
+				rg = io::load_volume(g, path);
+			}
+			catch (const io::Error&)
+			{
+				loaded = false; // cells a GMap3 does not take (polyhedra): the CMap3 it is
+			}
+			if (loaded && !rg.orientable)
 			{
 				f(g, rg);
 				return;

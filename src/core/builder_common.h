@@ -142,69 +142,100 @@ inline bool is_closed_oriented_surface(const FaceList& faces, std::vector<std::a
 	return true;
 }
 
+/// What the volume builders do with one input cell.
+enum class CellStatus
+{
+	Buildable,
+	Degenerate, ///< skipped: too few faces or vertices, a repeated vertex
+	Invalid     ///< skipped: a vertex out of range, or faces that do not close a surface
+};
+
+/// Scratch of polyhedron_status, reused from cell to cell.
+struct PolyhedronScratch
+{
+	std::vector<uint32> labels;                      ///< the distinct vertex ids of the cell
+	FaceList faces;                                  ///< its faces in local numbers (indices into labels)
+	std::vector<std::pair<uint32, uint32>> local_of; // (vertex id, local number), sorted
+	std::vector<std::array<uint32, 3>> edges;
+	std::vector<uint32> repeated;
+};
+
+/// Whether build_polyhedra builds the polyhedron of these faces (the face
+/// sizes of the cell, and exactly their vertex ids): it has at least 4
+/// faces, each of at least 3 vertices in [0, nb_vertices) with none
+/// repeated, that close one consistently oriented surface. When it does,
+/// s.labels and s.faces hold its vertices and local faces. O(size x log).
+inline CellStatus polyhedron_status(uint32 nb_vertices, std::span<const uint32> face_sizes,
+									std::span<const uint32> face_vertices, PolyhedronScratch& s)
+{
+	if (std::any_of(face_vertices.begin(), face_vertices.end(), [&](uint32 v) { return v >= nb_vertices; }))
+		return CellStatus::Invalid;
+	bool degenerate = face_sizes.size() < 4;
+	s.labels.clear();
+	s.local_of.clear();
+	s.faces.assign(face_sizes.size(), {});
+	std::size_t first = 0;
+	for (std::size_t k = 0; k < face_sizes.size(); ++k)
+	{
+		const std::span<const uint32> fv = face_vertices.subspan(first, face_sizes[k]);
+		first += face_sizes[k];
+		degenerate = degenerate || fv.size() < 3 || has_repeated_vertex(fv, s.repeated);
+		for (uint32 v : fv)
+		{
+			auto it = std::lower_bound(s.local_of.begin(), s.local_of.end(), std::pair<uint32, uint32>{v, 0});
+			if (it == s.local_of.end() || it->first != v)
+			{
+				it = s.local_of.insert(it, {v, uint32(s.labels.size())});
+				s.labels.push_back(v);
+			}
+			s.faces[k].push_back(it->second);
+		}
+	}
+	if (degenerate)
+		return CellStatus::Degenerate;
+	return is_closed_oriented_surface(s.faces, s.edges) ? CellStatus::Buildable : CellStatus::Invalid;
+}
+
 /// Calls f(labels, faces) on each polyhedron of a list that build_polyhedra
-/// builds, in order: `labels` the distinct vertex ids of the cell, `faces`
-/// its faces in local numbers (indices into labels). A polyhedron is built
-/// when it has at least 4 faces, each of at least 3 vertices in [0,
-/// nb_vertices) with none repeated, that close one consistently oriented
-/// surface; the others are counted in `report` (one that runs past the end
-/// of the lists, names a vertex out of range or does not close a surface is
-/// invalid; one with fewer faces, a short face or a repeated vertex is
-/// degenerate). O(total size x log).
+/// builds (see polyhedron_status), in order: `labels` the distinct vertex
+/// ids of the cell, `faces` its faces in local numbers. The others are
+/// counted in `report` (a cell whose faces run past the end of the lists is
+/// invalid). O(total size x log).
 template <typename FUNC>
 void foreach_buildable_polyhedron(uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
 								  std::span<const uint32> face_sizes, std::span<const uint32> face_vertices,
 								  BuildReport& report, const FUNC& f)
 {
 	std::size_t face = 0, first = 0;
-	std::vector<uint32> labels, scratch;
-	std::vector<std::pair<uint32, uint32>> local_of; // (vertex id, local number), sorted
-	std::vector<std::array<uint32, 3>> edges;
-	FaceList faces;
+	PolyhedronScratch scratch;
 	for (uint32 nf : cell_nb_faces)
 	{
-		bool invalid = face + nf > face_sizes.size(), degenerate = nf < 4;
-		const std::size_t nb = invalid ? face_sizes.size() - face : nf;
-		labels.clear();
-		local_of.clear();
-		faces.assign(nb, {});
+		const std::size_t nb = std::min<std::size_t>(nf, face_sizes.size() - face);
+		std::size_t size = 0;
 		for (std::size_t k = 0; k < nb; ++k)
-		{
-			const uint32 n = face_sizes[face + k];
-			if (first + n > face_vertices.size())
-			{
-				invalid = true;
-				first = face_vertices.size();
-				continue;
-			}
-			const std::span<const uint32> fv = face_vertices.subspan(first, n);
-			first += n;
-			if (std::any_of(fv.begin(), fv.end(), [&](uint32 v) { return v >= nb_vertices; }))
-			{
-				invalid = true;
-				continue;
-			}
-			degenerate = degenerate || n < 3 || has_repeated_vertex(fv, scratch);
-			for (uint32 v : fv)
-			{
-				auto it = std::lower_bound(local_of.begin(), local_of.end(), std::pair<uint32, uint32>{v, 0});
-				if (it == local_of.end() || it->first != v)
-				{
-					it = local_of.insert(it, {v, uint32(labels.size())});
-					labels.push_back(v);
-				}
-				faces[k].push_back(it->second);
-			}
-		}
+			size += face_sizes[face + k];
+		const std::span<const uint32> sizes = face_sizes.subspan(face, nb);
 		face += nb;
-		if (invalid)
+		if (nb < nf || first + size > face_vertices.size())
+		{
 			++report.nb_cells_invalid;
-		else if (degenerate)
+			first = face_vertices.size();
+			continue;
+		}
+		const std::span<const uint32> vertices = face_vertices.subspan(first, size);
+		first += size;
+		switch (polyhedron_status(nb_vertices, sizes, vertices, scratch))
+		{
+		case CellStatus::Buildable:
+			f(std::span<const uint32>(scratch.labels), scratch.faces);
+			break;
+		case CellStatus::Degenerate:
 			++report.nb_cells_degenerate;
-		else if (!is_closed_oriented_surface(faces, edges))
+			break;
+		case CellStatus::Invalid:
 			++report.nb_cells_invalid;
-		else
-			f(std::span<const uint32>(labels), faces);
+			break;
+		}
 	}
 }
 

@@ -136,6 +136,18 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 	});
 }
 
+bool is_buildable_polyhedron(std::span<const uint32> face_sizes, std::span<const uint32> face_vertices)
+{
+	std::size_t size = 0;
+	for (uint32 n : face_sizes)
+		size += n;
+	if (size != face_vertices.size())
+		return false;
+	detail::PolyhedronScratch scratch;
+	return detail::polyhedron_status(INVALID_INDEX, face_sizes, face_vertices, scratch) ==
+		   detail::CellStatus::Buildable;
+}
+
 BuildReport build_polyhedra(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
 							std::span<const uint32> face_sizes, std::span<const uint32> face_vertices)
 {

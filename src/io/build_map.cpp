@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/build/generators.h>
 #include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/operators/incidence_graph.h>
 #include <cgogn/core/traversals/global.h>
@@ -143,6 +144,60 @@ uint32 darts_of_cell(uint32 size, uint32 dimension, bool gmap)
 	}
 }
 
+// Builds d's cells, standard ones and polyhedra, into m through
+// build_polyhedra (each standard cell given by its faces), in their order.
+template <typename MAP>
+BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
+{
+	if constexpr (std::same_as<MAP, CMap3>)
+	{
+		VolumeSoup standard;
+		standard.nb_vertices = d.nb_vertices();
+		std::size_t k = 0;
+		for (uint32 c = 0; c < d.nb_cells(); ++c)
+		{
+			if (!d.is_polyhedron(c))
+			{
+				standard.cell_sizes.push_back(d.cell_sizes[c]);
+				standard.cell_vertices.insert(standard.cell_vertices.end(), d.cell_vertices.begin() + std::ptrdiff_t(k),
+											  d.cell_vertices.begin() + std::ptrdiff_t(k + d.cell_sizes[c]));
+			}
+			k += d.cell_sizes[c];
+		}
+		const PolyhedronSoup faces_of_standard = polyhedra_of(standard);
+		PolyhedronSoup all;
+		all.nb_vertices = d.nb_vertices();
+		std::size_t s_face = 0, s_first = 0, p_face = 0, p_first = 0;
+		auto take = [&](const std::vector<uint32>& sizes, const std::vector<uint32>& ids, std::size_t& face,
+						std::size_t& first, uint32 nf) {
+			all.cell_nb_faces.push_back(nf);
+			for (uint32 f = 0; f < nf; ++f)
+			{
+				const uint32 n = sizes[face + f];
+				all.face_sizes.push_back(n);
+				all.face_vertices.insert(all.face_vertices.end(), ids.begin() + std::ptrdiff_t(first),
+										 ids.begin() + std::ptrdiff_t(first + n));
+				first += n;
+			}
+			face += nf;
+		};
+		uint32 s_cell = 0;
+		for (uint32 c = 0; c < d.nb_cells(); ++c)
+			if (d.is_polyhedron(c))
+				take(d.polyhedron_face_sizes, d.polyhedron_face_vertices, p_face, p_first, d.cell_nb_faces[c]);
+			else
+				take(faces_of_standard.face_sizes, faces_of_standard.face_vertices, s_face, s_first,
+					 faces_of_standard.cell_nb_faces[s_cell++]);
+		return build_polyhedra(m, all);
+	}
+	else
+	{
+		(void)m;
+		(void)d;
+		return BuildReport{};
+	}
+}
+
 template <typename MAP>
 LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 {
@@ -154,24 +209,47 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	// 1. everything that can fail, before touching m
 	check_names<Vertex, Top>(m, d, path);
 	if (uint64(d.nb_vertices()) + container_of<Vertex::ORBIT>(m).end_index() >= INVALID_INDEX ||
-		uint64(d.cell_vertices.size()) * (is_gmap_v<MAP> && dim == 3 ? 12 : 6) +
+		uint64(d.cell_vertices.size()) * (is_gmap_v<MAP> && dim == 3 ? 12 : 6) + d.polyhedron_face_vertices.size() +
 				container_of<Orbit::DART>(m).end_index() >=
 			INVALID_INDEX)
 		throw Error(path, "the mesh is too large for 32-bit indices");
 
-	// which cells the builder will build (same rules as build_surface/build_volume)
+	const bool polyhedra = !d.cell_nb_faces.empty();
+	if constexpr (dim == 2 || is_gmap_v<MAP>)
+		if (polyhedra)
+			throw Error(path,
+						std::string("the file has polyhedra (VTK cells of type 42): they load into a CMap3, not a ") +
+							(dim == 2 ? "surface" : "GMap3"));
+
+	// which cells the builder will build (same rules as build_surface,
+	// build_volume and build_polyhedra), and their darts
 	std::vector<uint8> built(d.nb_cells(), 0);
+	std::vector<uint32> nb_darts_of(d.nb_cells(), 0);
 	{
-		std::size_t k = 0;
+		std::size_t k = 0, face = 0, first = 0;
 		std::vector<uint32> tmp;
 		for (uint32 c = 0; c < d.nb_cells(); ++c)
 		{
 			const uint32 n = d.cell_sizes[c];
+			if (d.is_polyhedron(c))
+			{
+				k += n;
+				const std::span<const uint32> sizes(d.polyhedron_face_sizes.data() + face, d.cell_nb_faces[c]);
+				face += d.cell_nb_faces[c];
+				std::size_t size = 0;
+				for (uint32 fs : sizes)
+					size += fs;
+				built[c] = is_buildable_polyhedron(sizes, {d.polyhedron_face_vertices.data() + first, size});
+				nb_darts_of[c] = uint32(size);
+				first += size;
+				continue;
+			}
 			tmp.assign(d.cell_vertices.begin() + std::ptrdiff_t(k), d.cell_vertices.begin() + std::ptrdiff_t(k + n));
 			k += n;
 			std::sort(tmp.begin(), tmp.end());
 			const bool ok_size = dim == 2 ? n >= 3 : darts_of_cell(n, 3, false) != 0;
 			built[c] = ok_size && std::adjacent_find(tmp.begin(), tmp.end()) == tmp.end();
+			nb_darts_of[c] = darts_of_cell(n, dim, is_gmap_v<MAP>);
 		}
 	}
 	const DartPredictor predict(m);
@@ -180,6 +258,8 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	LoadReport rep;
 	if constexpr (dim == 2)
 		rep.build = build_surface(m, d.nb_vertices(), d.cell_sizes, d.cell_vertices);
+	else if (polyhedra)
+		rep.build = build_polyhedra_of(m, d);
 	else
 		rep.build = build_volume(m, d.nb_vertices(), d.cell_sizes, d.cell_vertices);
 	const BuildReport& br = rep.build;
@@ -218,7 +298,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			if (built[c])
 			{
 				firsts.emplace_back(predict(k), c);
-				k += darts_of_cell(d.cell_sizes[c], dim, is_gmap_v<MAP>);
+				k += nb_darts_of[c];
 			}
 		for (const auto& c : d.cell_columns)
 		{

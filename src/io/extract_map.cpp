@@ -150,6 +150,7 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 	DartMarker<MAP> seen(m);
 	std::vector<std::pair<Dart, uint32>> faces; // (dart, degree) of one volume
 	std::vector<Dart> work;
+	std::vector<uint32> face_sizes, face_ids; // a polyhedron's
 	foreach_cell(m, [&](Volume w) {
 		faces.clear();
 		auto add_face = [&](Dart x) {
@@ -199,10 +200,22 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 		else if (nf == 6 && quad == 6)
 			bottom_degree = 4, size = 8;
 		else
-			throw Error(path, "a volume with " + std::to_string(nf) + " faces (" + std::to_string(tri) +
-								  " triangles, " + std::to_string(quad) +
-								  " quads) is not a tetrahedron, pyramid, prism or hexahedron: the format cannot "
-								  "hold it");
+		{
+			// any other polyhedron: its faces, counterclockwise seen from outside
+			face_sizes.clear();
+			face_ids.clear();
+			for (const auto& [x, n] : faces)
+			{
+				face_sizes.push_back(n);
+				Dart it = x;
+				for (uint32 i = 0; i < n; ++i, it = next(it))
+					face_ids.push_back(origin(it));
+			}
+			d.add_polyhedron(uint32(nf), face_sizes, face_ids);
+			if (volumes_indexed)
+				volume_lines.push_back(index_of(m, w));
+			return;
+		}
 		Dart b;
 		for (const auto& f : faces)
 			if (f.second == bottom_degree)
@@ -226,6 +239,7 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 		if (volumes_indexed)
 			volume_lines.push_back(index_of(m, w));
 	});
+	d.finish_polyhedra();
 	if (attributes && volumes_indexed)
 		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false);
 	return d;

@@ -32,14 +32,15 @@ LoadReport build_map(IncidenceGraph& ig, const MeshData& d, const std::string& p
 
 /// Turns over volume cells of negative orientation (tetrahedra by their signed
 /// volume; other cells by the side of the top relative to the bottom face's
-/// normal). Returns the number of cells turned over. O(number of cells).
+/// normal; polyhedra by their signed volume, every face reversed). Returns
+/// the number of cells turned over. O(size of the cells).
 uint32 orient_cells(MeshData& d);
 
 /// The faces of m (polygons) or volumes of m (cells of 4, 5, 6 or 8 vertices in
-/// the builder's order) with positions and, when `attributes`, the double,
-/// Vec2 and Vec3 vertex and face/volume attributes. Throws io::Error (naming
-/// path) when there is no `position` or, for volumes, a volume is not a
-/// tetrahedron, pyramid, prism or hexahedron. A volume of a GMap3 is read in
+/// the builder's order, other volumes as polyhedra given by their faces) with
+/// positions and, when `attributes`, the double, Vec2 and Vec3 vertex and
+/// face/volume attributes. Throws io::Error (naming path) when there is no
+/// `position`. A volume of a GMap3 is read in
 /// the orientation of the dart it is reached by (a volume is a sphere: it can
 /// always be oriented), then turned over when that gives it a negative
 /// orientation (see orient_cells), so that every cell is written in the

@@ -5,6 +5,7 @@
 
 #include <cgogn/core/utils/numeric.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,17 @@ struct MeshData
 	/// Graphs are stored here. A writer drops the cell columns when there are
 	/// segments (the columns have one row per cell, none for the segments).
 	std::vector<std::pair<uint32, uint32>> segments;
+	/// Polyhedra (VTK's general polyhedron, cell type 42), beside the cells
+	/// of the standard kinds. Empty when there is none; otherwise one entry
+	/// per cell: 0 for a standard cell, else the polyhedron's number of
+	/// faces, whose sizes and vertex ids follow one another (polyhedron
+	/// after polyhedron) in polyhedron_face_sizes and
+	/// polyhedron_face_vertices, each face counterclockwise seen from
+	/// outside. A polyhedron's cell_sizes entry is its number of distinct
+	/// vertices, which cell_vertices lists in the order of their first use.
+	std::vector<uint32> cell_nb_faces;
+	std::vector<uint32> polyhedron_face_sizes;
+	std::vector<uint32> polyhedron_face_vertices;
 
 	uint32 nb_vertices() const
 	{
@@ -52,6 +64,38 @@ struct MeshData
 	uint32 nb_cells() const
 	{
 		return uint32(cell_sizes.size());
+	}
+	/// Whether cell c is a polyhedron given by its faces.
+	bool is_polyhedron(uint32 c) const
+	{
+		return c < cell_nb_faces.size() && cell_nb_faces[c] > 0;
+	}
+	/// Appends a polyhedron: its faces as (size, ids...) lists, `nb_faces`
+	/// of them; its vertices are the distinct ids in the order of first use.
+	void add_polyhedron(uint32 nb_faces, const std::vector<uint32>& sizes, const std::vector<uint32>& ids)
+	{
+		cell_nb_faces.resize(cell_sizes.size(), 0);
+		cell_nb_faces.push_back(nb_faces);
+		polyhedron_face_sizes.insert(polyhedron_face_sizes.end(), sizes.begin(), sizes.end());
+		polyhedron_face_vertices.insert(polyhedron_face_vertices.end(), ids.begin(), ids.end());
+		// the distinct ids in the order of their first use: O(n log n)
+		std::vector<std::pair<uint32, uint32>> first_use(ids.size()); // (id, position)
+		for (uint32 i = 0; i < uint32(ids.size()); ++i)
+			first_use[i] = {ids[i], i};
+		std::sort(first_use.begin(), first_use.end());
+		first_use.erase(std::unique(first_use.begin(), first_use.end(),
+									[](const auto& a, const auto& b) { return a.first == b.first; }),
+						first_use.end());
+		std::sort(first_use.begin(), first_use.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+		for (const auto& [id, position] : first_use)
+			cell_vertices.push_back(id);
+		cell_sizes.push_back(uint32(first_use.size()));
+	}
+	/// Makes cell_nb_faces one entry per cell when there are polyhedra.
+	void finish_polyhedra()
+	{
+		if (!cell_nb_faces.empty())
+			cell_nb_faces.resize(cell_sizes.size(), 0);
 	}
 	Column* find_vertex_column(const std::string& name)
 	{

@@ -27,6 +27,24 @@ void validate(const MeshData& d, const std::string& path)
 		total += n;
 	if (total != d.cell_vertices.size())
 		throw Error(path, "inconsistent cell sizes");
+	if (!d.cell_nb_faces.empty())
+	{
+		if (d.cell_nb_faces.size() != d.cell_sizes.size())
+			throw Error(path, "inconsistent polyhedra");
+		std::size_t nb_faces = 0, nb_ids = 0;
+		for (uint32 n : d.cell_nb_faces)
+			nb_faces += n;
+		if (nb_faces != d.polyhedron_face_sizes.size())
+			throw Error(path, "inconsistent polyhedron faces");
+		for (uint32 n : d.polyhedron_face_sizes)
+			nb_ids += n;
+		if (nb_ids != d.polyhedron_face_vertices.size())
+			throw Error(path, "inconsistent polyhedron faces");
+		for (uint32 v : d.polyhedron_face_vertices)
+			if (v >= d.nb_vertices())
+				throw Error(path, "vertex index " + std::to_string(v) + " out of range (the file has " +
+									  std::to_string(d.nb_vertices()) + " vertices)");
+	}
 	const uint32 nv = d.nb_vertices();
 	for (uint32 v : d.cell_vertices)
 		if (v >= nv)

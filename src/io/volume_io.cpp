@@ -5,6 +5,8 @@
 #include "formats.h"
 #include "map_transfer.h"
 
+#include <algorithm>
+
 namespace cgogn::io
 {
 
@@ -71,6 +73,13 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 {
 	const Format f = resolve(options.format, path);
 	const detail::MeshData d = detail::extract_volume(m, path, options.attributes);
+	if (!d.cell_nb_faces.empty() && f != Format::VtkLegacy && f != Format::Vtu)
+	{
+		const auto nb = std::count_if(d.cell_nb_faces.begin(), d.cell_nb_faces.end(), [](uint32 n) { return n > 0; });
+		throw Error(path, "the map has " + std::to_string(nb) +
+							  " volume(s) that are not tetrahedra, pyramids, prisms or hexahedra: the format cannot "
+							  "hold them (.vtk and .vtu hold any polyhedron)");
+	}
 	switch (f)
 	{
 	case Format::Medit:

@@ -323,17 +323,29 @@ std::string write_vtk(const MeshData& d, bool binary)
 	if (binary)
 		s += '\n';
 	const std::size_t nb_segments = d.segments.size();
+	// a polyhedron's entry is its face stream
+	const std::vector<std::vector<uint32>> streams = polyhedron_streams(d);
+	std::size_t size = d.nb_cells() + 3 * nb_segments;
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+		size += d.is_polyhedron(c) ? streams[c].size() : d.cell_sizes[c];
 	s += "CELLS ";
 	append_uint(s, d.nb_cells() + nb_segments);
 	s += ' ';
-	append_uint(s, d.nb_cells() + d.cell_vertices.size() + 3 * nb_segments);
+	append_uint(s, size);
 	s += '\n';
 	std::size_t k = 0;
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 	{
 		const uint32 n = d.cell_sizes[c];
-		const uint32* v = &d.cell_vertices[k];
+		const uint32* v = d.cell_vertices.data() + k;
 		k += n;
+		if (d.is_polyhedron(c))
+		{
+			put_int(uint32(streams[c].size()), false);
+			for (std::size_t i = 0; i < streams[c].size(); ++i)
+				put_int(streams[c][i], i + 1 == streams[c].size());
+			continue;
+		}
 		put_int(n, false);
 		for (uint32 i = 0; i < n; ++i)
 			put_int(v[vtk_order(n, i)], i + 1 == n);
@@ -351,8 +363,8 @@ std::string write_vtk(const MeshData& d, bool binary)
 	s += '\n';
 	std::vector<uint32> types;
 	types.reserve(d.nb_cells() + nb_segments);
-	for (uint32 n : d.cell_sizes)
-		types.push_back(uint32(vtk_cell_type(n)));
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+		types.push_back(d.is_polyhedron(c) ? 42u : uint32(vtk_cell_type(d.cell_sizes[c])));
 	types.insert(types.end(), nb_segments, 3u); // VTK_LINE
 	for (uint32 t : types)
 		put_int(t, true);

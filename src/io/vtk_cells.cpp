@@ -8,12 +8,46 @@ namespace cgogn::io::detail
 
 void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std::vector<int64>& connectivity,
 					   const std::vector<int64>& types, const std::vector<Column>& cell_data,
-					   const std::function<void(const std::string&)>& fail)
+					   const std::function<void(const std::string&)>& fail, const std::vector<int64>& faces,
+					   const std::vector<int64>& face_offsets)
 {
 	if (types.size() + 1 != offsets.size())
 		fail("the cell types and the cell list do not have the same number of cells");
+	const bool vtu_faces = !face_offsets.empty();
+	if (vtu_faces && face_offsets.size() != types.size())
+		fail("the faceoffsets array does not have one entry per cell");
 	const uint32 nv = d.nb_vertices();
 	std::vector<uint32> kept;
+	int64 stream_start = 0;                   // where the next polyhedron's faces start in `faces`
+	std::vector<uint32> face_sizes, face_ids; // one polyhedron's
+	// A polyhedron's face stream: its number of faces, then each face's
+	// number of points and point ids, exactly.
+	auto add_polyhedron = [&](std::size_t c, const int64* stream, int64 length) {
+		const std::string cell = "cell " + std::to_string(c) + " (a polyhedron)";
+		if (length < 1 || stream[0] < 1 || stream[0] > length)
+			fail(cell + ": its face stream does not start with a number of faces");
+		face_sizes.clear();
+		face_ids.clear();
+		int64 k = 1;
+		for (int64 f = 0; f < stream[0]; ++f)
+		{
+			if (k >= length || stream[k] < 0 || stream[k] > length - k - 1)
+				fail(cell + ": face " + std::to_string(f) + " runs past the end of its face stream");
+			const int64 n = stream[k++];
+			face_sizes.push_back(uint32(n));
+			for (int64 i = 0; i < n; ++i, ++k)
+			{
+				if (stream[k] < 0 || stream[k] >= int64(nv))
+					fail(cell + ": point index " + std::to_string(stream[k]) + " out of range (the file has " +
+						 std::to_string(nv) + " points)");
+				face_ids.push_back(uint32(stream[k]));
+			}
+		}
+		if (k != length)
+			fail(cell + ": its face stream has " + std::to_string(length - k) + " values after its faces");
+		d.add_polyhedron(uint32(stream[0]), face_sizes, face_ids);
+		kept.push_back(uint32(c));
+	};
 	for (std::size_t c = 0; c < types.size(); ++c)
 	{
 		const int64 b = offsets[c], e = offsets[c + 1];
@@ -21,6 +55,37 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 			fail("inconsistent cell offsets");
 		const int64* ids = connectivity.data() + b;
 		const int64 n = e - b;
+		if (types[c] == 42)
+		{
+			if (!vtu_faces) // the connectivity is the face stream
+				add_polyhedron(c, ids, n);
+			else
+			{
+				const int64 end = face_offsets[c];
+				if (end < stream_start || end > int64(faces.size()))
+					fail("cell " + std::to_string(c) + " (a polyhedron): faceoffsets entry " + std::to_string(end) +
+						 " out of the faces array");
+				add_polyhedron(c, faces.data() + stream_start, end - stream_start);
+				stream_start = end;
+			}
+			continue;
+		}
+		if ((types[c] == 15 || types[c] == 16) && n >= 2 * (types[c] - 10))
+		{
+			// pentagonal and hexagonal prisms: a polyhedron of two k-gons and
+			// k quads (turned outward on load)
+			const int64 k = types[c] - 10;
+			std::vector<int64> stream{k + 2, k};
+			for (int64 i = 0; i < k; ++i)
+				stream.push_back(ids[i]);
+			stream.push_back(k);
+			for (int64 i = 0; i < k; ++i)
+				stream.push_back(ids[k + i]);
+			for (int64 i = 0; i < k; ++i)
+				stream.insert(stream.end(), {4, ids[i], ids[(i + 1) % k], ids[k + (i + 1) % k], ids[k + i]});
+			add_polyhedron(c, stream.data(), int64(stream.size()));
+			continue;
+		}
 		for (int64 i = 0; i < n; ++i)
 			if (ids[i] < 0 || ids[i] >= int64(nv))
 				fail("cell " + std::to_string(c) + ": point index " + std::to_string(ids[i]) +
@@ -79,6 +144,7 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 		d.cell_vertices.insert(d.cell_vertices.end(), v.begin(), v.begin() + size);
 		kept.push_back(uint32(c));
 	}
+	d.finish_polyhedra();
 	for (const auto& col : cell_data)
 	{
 		if (col.values.size() != types.size() * col.dim)
@@ -89,6 +155,27 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 							col.values.begin() + std::ptrdiff_t(c + 1) * col.dim);
 		d.cell_columns.push_back(std::move(k));
 	}
+}
+
+std::vector<std::vector<uint32>> polyhedron_streams(const MeshData& d)
+{
+	std::vector<std::vector<uint32>> streams(d.nb_cells());
+	std::size_t face = 0, first = 0;
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+		if (d.is_polyhedron(c))
+		{
+			std::vector<uint32>& s = streams[c];
+			s.push_back(d.cell_nb_faces[c]);
+			for (uint32 f = 0; f < d.cell_nb_faces[c]; ++f)
+			{
+				const uint32 n = d.polyhedron_face_sizes[face++];
+				s.push_back(n);
+				s.insert(s.end(), d.polyhedron_face_vertices.begin() + std::ptrdiff_t(first),
+						 d.polyhedron_face_vertices.begin() + std::ptrdiff_t(first + n));
+				first += n;
+			}
+		}
+	return streams;
 }
 
 } // namespace cgogn::io::detail

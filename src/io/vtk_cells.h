@@ -12,13 +12,25 @@ namespace cgogn::io::detail
 
 /// Appends the volume cells of a VTK cell list to d (tetra 10, voxel 11,
 /// hexahedron 12, wedge 13, pyramid 14, corners of quadratic tetra 24 and
-/// hexahedron 25; lines 3 and polylines 4 go to d.segments; polygons are
-/// ignored) and the matching rows of
+/// hexahedron 25, pentagonal and hexagonal prisms 15 and 16 and polyhedra 42
+/// as polyhedra; lines 3 and polylines 4 go to d.segments;
+/// polygons are ignored) and the matching rows of
 /// `cell_data` to d's cell columns. `offsets` has one more entry than `types`
-/// (starting at 0). `fail(message)` must throw.
+/// (starting at 0). A polyhedron's faces are a face stream (its number of
+/// faces, then each face's number of points and point ids): its
+/// connectivity in a legacy file, where `face_offsets` is empty; in a VTU
+/// file, `faces` from the end of the previous polyhedron's stream to
+/// `face_offsets[c]` (-1 for the other cells). `fail(message)` must throw.
 void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std::vector<int64>& connectivity,
 					   const std::vector<int64>& types, const std::vector<Column>& cell_data,
-					   const std::function<void(const std::string&)>& fail);
+					   const std::function<void(const std::string&)>& fail, const std::vector<int64>& faces = {},
+					   const std::vector<int64>& face_offsets = {});
+
+/// The face stream of each polyhedron of d, by cell (empty for the cells of
+/// the standard kinds): its number of faces, then each face's number of
+/// points and point ids, as VTK's type-42 cells hold them. O(size of the
+/// polyhedra).
+std::vector<std::vector<uint32>> polyhedron_streams(const MeshData& d);
 
 /// An integer read as a double, converted without overflow: values out of
 /// the int64 range (or NaN) become -1, which every consumer rejects.

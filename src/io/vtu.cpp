@@ -103,7 +103,7 @@ public:
 		}
 		std::string section;
 		MeshData d;
-		std::vector<int64> connectivity, offsets, types;
+		std::vector<int64> connectivity, offsets, types, faces, face_offsets;
 		std::vector<Column> cell_data;
 		std::vector<std::string> point_data_names, cell_data_names;
 		bool have_points = false, have_piece = false;
@@ -157,6 +157,10 @@ public:
 						offsets = integers(t, content_end, nb_cells_);
 					else if (name == "types")
 						types = integers(t, content_end, nb_cells_);
+					else if (name == "faces") // polyhedra: their face streams
+						faces = integers(t, content_end, 0);
+					else if (name == "faceoffsets")
+						face_offsets = integers(t, content_end, nb_cells_);
 				}
 				else if (section == "PointData" || section == "CellData")
 				{
@@ -178,8 +182,12 @@ public:
 		if (!have_piece || !have_points)
 			fail_at(data_.size(), "no Piece with Points");
 		offsets.insert(offsets.begin(), 0);
-		vtk_cells_to_mesh(d, offsets, connectivity, types, cell_data,
-						  [&](const std::string& m) { fail_at(cells_byte_, m); });
+		if (face_offsets.empty() && std::find(types.begin(), types.end(), 42) != types.end())
+			fail_at(cells_byte_, "polyhedron cells (type 42) without the 'faces' and 'faceoffsets' arrays that "
+								 "give their faces");
+		vtk_cells_to_mesh(
+			d, offsets, connectivity, types, cell_data, [&](const std::string& m) { fail_at(cells_byte_, m); }, faces,
+			face_offsets);
 		return d;
 	}
 
@@ -470,7 +478,9 @@ std::string write_vtu(const MeshData& d, bool binary)
 				{
 					if (i > 0)
 						s += i % 16 == 0 ? '\n' : ' ';
-					append_uint(s, uint64(v[i]));
+					if (v[i] < 0) // faceoffsets of the cells that are not polyhedra
+						s += '-';
+					append_uint(s, uint64(v[i] < 0 ? -v[i] : v[i]));
 				}
 			},
 			[&](std::string& s) {
@@ -481,16 +491,21 @@ std::string write_vtu(const MeshData& d, bool binary)
 	head += "<Points>\n";
 	doubles("Points", 3, d.positions);
 	head += "</Points>\n<Cells>\n";
-	std::vector<int64> conn, offsets, types;
+	std::vector<int64> conn, offsets, types, faces, face_offsets;
+	const std::vector<std::vector<uint32>> streams = polyhedron_streams(d);
 	std::size_t k = 0;
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 	{
 		const uint32 n = d.cell_sizes[c];
+		const bool polyhedron = d.is_polyhedron(c);
 		for (uint32 i = 0; i < n; ++i)
-			conn.push_back(d.cell_vertices[k + vtk_order(n, i)]);
+			conn.push_back(d.cell_vertices[k + (polyhedron ? i : vtk_order(n, i))]);
 		k += n;
 		offsets.push_back(int64(conn.size()));
-		types.push_back(vtk_cell_type(n));
+		types.push_back(polyhedron ? 42 : vtk_cell_type(n));
+		// a polyhedron's faces: its face stream, and where it ends (-1 for the other cells)
+		faces.insert(faces.end(), streams[c].begin(), streams[c].end());
+		face_offsets.push_back(polyhedron ? int64(faces.size()) : -1);
 	}
 	for (const auto& [a, b] : d.segments)
 	{
@@ -501,6 +516,12 @@ std::string write_vtu(const MeshData& d, bool binary)
 	ints("connectivity", conn);
 	ints("offsets", offsets);
 	ints("types", types);
+	if (!d.cell_nb_faces.empty())
+	{
+		face_offsets.resize(types.size(), -1); // the segments
+		ints("faces", faces);
+		ints("faceoffsets", face_offsets);
+	}
 	head += "</Cells>\n";
 	auto data = [&](const char* section, const std::vector<Column>& cols) {
 		head += std::string("<") + section + ">\n";

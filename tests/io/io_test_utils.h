@@ -64,6 +64,8 @@ BuildReport build_with_positions(MAP& m, const SOUP& s)
 	BuildReport r;
 	if constexpr (MAP::dimension == 2)
 		r = build_surface(m, s);
+	else if constexpr (std::same_as<SOUP, PolyhedronSoup>)
+		r = build_polyhedra(m, s);
 	else
 		r = build_volume(m, s);
 	using Vertex = typename mesh_traits<MAP>::Vertex;

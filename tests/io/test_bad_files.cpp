@@ -233,7 +233,7 @@ INSTANTIATE_TEST_SUITE_P(
 		BadCase{"vtk_wrong_counts", "vtk_wrong_counts.vtk", nullptr, Where::Line, "same number of cells"},
 		BadCase{"vtk_polydata", "vtk_polydata.vtk", nullptr, Where::Line, "UNSTRUCTURED_GRID"},
 		BadCase{"vtk_unsupported_cell", "vtk_unsupported_cell.vtk", nullptr, Where::Line,
-				"unsupported VTK cell type 42"},
+				"unsupported VTK cell type 71"},
 		BadCase{"vtk_binary_truncated", "b.vtk",
 				[] {
 					return std::string("# vtk DataFile Version 3.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 "

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <sys/wait.h>
 #include <vector>
@@ -446,6 +447,38 @@ TEST(Tool, WholeMapFilesAreInspectedCheckedAndConverted)
 	r = run_tool("info '" + dir.file("c1.cgmap") + "'", dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("a map of type CMap1"), std::string::npos) << r.err;
+}
+
+TEST(Tool, PolyhedraAreInspectedAndConverted)
+{
+	TempDir dir;
+	// two pentagonal prisms, stacked
+	PolyhedronSoup p;
+	p.nb_vertices = 15;
+	for (uint32 l = 0; l < 3; ++l)
+		for (uint32 i = 0; i < 5; ++i)
+			p.positions.push_back({std::cos(1.2566370614359172 * i), std::sin(1.2566370614359172 * i), double(l)});
+	for (uint32 l = 0; l < 2; ++l)
+	{
+		const uint32 b = 5 * l, t = 5 * l + 5;
+		p.cell_nb_faces.push_back(7);
+		p.face_sizes.insert(p.face_sizes.end(), {5, 5, 4, 4, 4, 4, 4});
+		p.face_vertices.insert(p.face_vertices.end(), {b, b + 4, b + 3, b + 2, b + 1, t, t + 1, t + 2, t + 3, t + 4});
+		for (uint32 i = 0; i < 5; ++i)
+			p.face_vertices.insert(p.face_vertices.end(), {b + i, b + (i + 1) % 5, t + (i + 1) % 5, t + i});
+	}
+	CMap3 m;
+	build_with_positions(m, p);
+	io::save_volume(m, dir.file("p.vtu"));
+	const nlohmann::json j = converted_and_checked(dir.file("p.vtu"), dir.file("p.vtk"), dir);
+	EXPECT_EQ(j["ok"], true);
+	const nlohmann::json info = info_json(dir.file("p.vtk"), dir);
+	EXPECT_EQ(info["volumes"], 2);
+	EXPECT_EQ(info["cell_kinds"]["other"], 2);
+	EXPECT_EQ(info["faces"], 13); // 7 + 7, the middle pentagon shared
+	const ToolRun r = run_tool("convert '" + dir.file("p.vtk") + "' '" + dir.file("p.mesh") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("not tetrahedra, pyramids, prisms or hexahedra"), std::string::npos) << r.err;
 }
 
 } // namespace cgogn_test_tool

@@ -114,6 +114,13 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 BuildReport build_polyhedra(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
 							std::span<const uint32> face_sizes, std::span<const uint32> face_vertices);
 
+/// Whether build_polyhedra builds the polyhedron of these faces (the sizes
+/// of its faces, and their vertex ids, face after face): at least 4 faces,
+/// each of at least 3 vertices with none repeated, closing one consistently
+/// oriented surface. Readers use it to know which cells a build keeps.
+/// O(size x log).
+bool is_buildable_polyhedron(std::span<const uint32> face_sizes, std::span<const uint32> face_vertices);
+
 /// Builds closed 3-G-map volumes from a list of cells and appends them to m,
 /// as build_volume for a CMap3 does (same cells and vertex orders, same
 /// report), with one difference: two cells sharing a face are glued whatever

@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: MIT
+// Polyhedra (VTK cell type 42) through .vtu and .vtk files: exact round
+// trips of prisms on any polygon with their cell data, faces listed in
+// either direction made consistent and outward, the formats that cannot
+// hold them, and malformed face streams.
+#include <cgogn/core.h>
+#include <cgogn/io.h>
+
+#include "io_test_utils.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace cgogn_test_polyhedra_io
+{
+
+using namespace cgogn;
+using io_test::TempDir;
+
+namespace
+{
+
+// A column of `layers` prisms on a regular n-gon of radius 1, layers of
+// height 1; faces counterclockwise seen from outside.
+PolyhedronSoup prism_column(uint32 n, uint32 layers)
+{
+	PolyhedronSoup s;
+	s.nb_vertices = n * (layers + 1);
+	for (uint32 l = 0; l <= layers; ++l)
+		for (uint32 i = 0; i < n; ++i)
+		{
+			const double a = 2 * std::numbers::pi * i / n;
+			s.positions.push_back({std::cos(a), std::sin(a), double(l)});
+		}
+	for (uint32 l = 0; l < layers; ++l)
+	{
+		const uint32 b = l * n, t = (l + 1) * n;
+		s.cell_nb_faces.push_back(n + 2);
+		s.face_sizes.push_back(n);
+		s.face_vertices.push_back(b);
+		for (uint32 i = n - 1; i >= 1; --i)
+			s.face_vertices.push_back(b + i);
+		s.face_sizes.push_back(n);
+		for (uint32 i = 0; i < n; ++i)
+			s.face_vertices.push_back(t + i);
+		for (uint32 i = 0; i < n; ++i)
+		{
+			s.face_sizes.push_back(4);
+			s.face_vertices.insert(s.face_vertices.end(), {b + i, b + (i + 1) % n, t + (i + 1) % n, t + i});
+		}
+	}
+	return s;
+}
+
+std::vector<uint32> counts(const CMap3& m)
+{
+	return {nb_cells<CMap3::Vertex>(m), nb_cells<CMap3::Edge>(m), nb_cells<CMap3::Face>(m), nb_cells<CMap3::Volume>(m)};
+}
+
+std::vector<double> values(const CMap3& m, const std::string& name)
+{
+	std::vector<double> v;
+	auto a = get_attribute<double, CMap3::Volume>(m, name);
+	if (a)
+		foreach_cell(m, [&](CMap3::Volume w) { v.push_back((*a)[w]); });
+	return v;
+}
+
+std::string load_error(const std::string& path)
+{
+	CMap3 m;
+	try
+	{
+		io::load_volume(m, path);
+	}
+	catch (const io::Error& e)
+	{
+		EXPECT_EQ(nb_darts(m), 0u);
+		return e.what();
+	}
+	return "";
+}
+
+} // namespace
+
+TEST(PolyhedraIo, PrismsRoundTripThroughVtuAndVtk)
+{
+	TempDir dir;
+	for (uint32 n : {5u, 7u})
+	{
+		CMap3 m;
+		io_test::build_with_positions(m, prism_column(n, 3));
+		auto pressure = add_attribute<double, CMap3::Volume>(m, "pressure");
+		double p = 0.5;
+		foreach_cell(m, [&](CMap3::Volume w) { (*pressure)[w] = p *= 3; });
+		for (const char* ext : {".vtu", ".vtk"})
+			for (bool binary : {false, true})
+			{
+				SCOPED_TRACE(std::string(ext) + (binary ? " binary" : " ascii") + " n=" + std::to_string(n));
+				const std::string path = dir.file(std::string("p") + ext);
+				const std::string again = dir.file(std::string("again") + ext);
+				io::save_volume(m, path, {.binary = binary});
+				CMap3 r;
+				const io::LoadReport rep = io::load_volume(r, path);
+				EXPECT_EQ(rep.nb_cells_built, 3u);
+				EXPECT_EQ(rep.nb_cells_reoriented, 0u);
+				EXPECT_TRUE(rep.manifold());
+				EXPECT_TRUE(check_integrity(r).ok()) << check_integrity(r).to_string();
+				EXPECT_EQ(counts(r), counts(m));
+				EXPECT_EQ(counts(r), (std::vector<uint32>{4 * n, 7 * n, 4 + 3 * n, 3}));
+				EXPECT_EQ(values(r, "pressure"), values(m, "pressure"));
+				EXPECT_NEAR(geometry::solid_volume(r, *get_attribute<Vec3, CMap3::Vertex>(r, "position")),
+							geometry::solid_volume(m, *get_attribute<Vec3, CMap3::Vertex>(m, "position")), 1e-12);
+				// and the same file again
+				io::save_volume(r, again, {.binary = binary});
+				EXPECT_EQ(io_test::read_text(again), io_test::read_text(path));
+			}
+		// formats that cannot hold them
+		for (const char* ext : {".mesh", ".msh"})
+		{
+			try
+			{
+				io::save_volume(m, dir.file(std::string("p") + ext));
+				ADD_FAILURE() << ext << " accepted polyhedra";
+			}
+			catch (const io::Error& e)
+			{
+				EXPECT_NE(std::string(e.what()).find("3 volume(s) that are not tetrahedra"), std::string::npos)
+					<< e.what();
+			}
+		}
+		// a G-map takes no polyhedra from a file yet: refused before it is touched
+		io::save_volume(m, dir.file("p.vtu"));
+		GMap3 g;
+		EXPECT_THROW(io::load_volume(g, dir.file("p.vtu")), io::Error);
+		EXPECT_EQ(nb_darts(g), 0u);
+	}
+}
+
+TEST(PolyhedraIo, StandardCellsBesidePolyhedraKeepTheirKind)
+{
+	// two unit cubes sewn through a square: one a hexahedron (type 12), the
+	// other a polyhedron (type 42) given by its faces
+	TempDir dir;
+	io_test::write_text(dir.file("mixed.vtu"), R"(<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+<UnstructuredGrid>
+<Piece NumberOfPoints="12" NumberOfCells="2">
+<Points>
+<DataArray type="Float64" NumberOfComponents="3" format="ascii">
+0 0 0 1 0 0 1 1 0 0 1 0 0 0 1 1 0 1 1 1 1 0 1 1 0 0 2 1 0 2 1 1 2 0 1 2
+</DataArray>
+</Points>
+<Cells>
+<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3 4 5 6 7 4 5 6 7 8 9 10 11</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">8 16</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">12 42</DataArray>
+<DataArray type="Int64" Name="faces" format="ascii">
+6 4 4 7 6 5 4 8 9 10 11 4 4 5 9 8 4 5 6 10 9 4 6 7 11 10 4 7 4 8 11
+</DataArray>
+<DataArray type="Int64" Name="faceoffsets" format="ascii">-1 31</DataArray>
+</Cells>
+<CellData>
+<DataArray type="Float64" Name="material" format="ascii">1 2</DataArray>
+</CellData>
+</Piece>
+</UnstructuredGrid>
+</VTKFile>
+)");
+	CMap3 m;
+	const io::LoadReport r = io::load_volume(m, dir.file("mixed.vtu"));
+	EXPECT_EQ(r.nb_cells_built, 2u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_EQ(counts(m), (std::vector<uint32>{12, 20, 11, 2})); // two cubes sharing a face
+	EXPECT_EQ(values(m, "material"), (std::vector<double>{1, 2}));
+	// written back, both are hexahedra now (the polyhedron is recognised by its faces)
+	io::save_volume(m, dir.file("back.vtu"));
+	EXPECT_EQ(io_test::read_text(dir.file("back.vtu")).find("faceoffsets"), std::string::npos);
+}
+
+TEST(PolyhedraIo, FacesInEitherDirectionAreMadeConsistentAndOutward)
+{
+	TempDir dir;
+	// a tetrahedron whose faces are listed in no consistent direction, and a
+	// cube whose faces all point inward (legacy layout: the face stream is
+	// the cell's entry)
+	io_test::write_text(dir.file("mixed_directions.vtk"), R"(# vtk DataFile Version 3.0
+polyhedra
+ASCII
+DATASET UNSTRUCTURED_GRID
+POINTS 12 double
+0 0 0 1 0 0 0.5 1 0 0.5 0.5 1
+5 0 0 6 0 0 6 1 0 5 1 0 5 0 1 6 0 1 6 1 1 5 1 1
+CELLS 2 50
+17 4 3 0 1 2 3 0 1 3 3 1 2 3 3 0 2 3
+31 6 4 4 5 6 7 4 8 11 10 9 4 4 8 9 5 4 5 9 10 6 4 6 10 11 7 4 7 11 8 4
+CELL_TYPES 2
+42
+42
+)");
+	CMap3 m;
+	const io::LoadReport r = io::load_volume(m, dir.file("mixed_directions.vtk"));
+	EXPECT_EQ(r.nb_cells_built, 2u);
+	EXPECT_EQ(r.nb_cells_reoriented, 2u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_NEAR(geometry::solid_volume(m, *get_attribute<Vec3, CMap3::Vertex>(m, "position")), 1.0 + 1.0 / 6.0, 1e-12);
+}
+
+TEST(PolyhedraIo, MalformedFaceStreamsAreErrors)
+{
+	TempDir dir;
+	const auto vtk = [&](const std::string& cells, std::size_t size) {
+		const std::string path = dir.file("bad.vtk");
+		io_test::write_text(path, "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 "
+								  "double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 " +
+									  std::to_string(size) + "\n" + cells + "\nCELL_TYPES 1\n42\n");
+		return load_error(path);
+	};
+	EXPECT_EQ(vtk("17 4 3 0 2 1 3 0 1 3 3 1 2 3 3 0 3 2", 18), "");
+	EXPECT_NE(vtk("5 4 3 0 2 1", 6).find("face 1 runs past the end of its face stream"), std::string::npos);
+	EXPECT_NE(vtk("6 1 3 0 2 1 3", 7).find("values after its faces"), std::string::npos);
+	EXPECT_NE(vtk("5 1 3 0 2 9", 6).find("point index 9 out of range"), std::string::npos);
+	EXPECT_NE(vtk("1 0", 2).find("does not start with a number of faces"), std::string::npos);
+	// a VTU polyhedron without its faces, and with a face offset out of range
+	const auto vtu = [&](const std::string& extra) {
+		const std::string path = dir.file("bad.vtu");
+		io_test::write_text(path, R"(<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+<UnstructuredGrid>
+<Piece NumberOfPoints="4" NumberOfCells="1">
+<Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>
+<Cells>
+<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">4</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">42</DataArray>
+)" + extra + R"(</Cells>
+</Piece>
+</UnstructuredGrid>
+</VTKFile>
+)");
+		return load_error(path);
+	};
+	EXPECT_NE(vtu("").find("without the 'faces' and 'faceoffsets' arrays"), std::string::npos);
+	EXPECT_NE(vtu(R"(<DataArray type="Int64" Name="faces" format="ascii">4 3 0 2 1</DataArray>
+<DataArray type="Int64" Name="faceoffsets" format="ascii">40</DataArray>
+)")
+				  .find("faceoffsets entry 40 out of the faces array"),
+			  std::string::npos);
+	EXPECT_EQ(vtu(R"(<DataArray type="Int64" Name="faces" format="ascii">4 3 0 2 1 3 0 1 3 3 1 2 3 3 0 3 2</DataArray>
+<DataArray type="Int64" Name="faceoffsets" format="ascii">17</DataArray>
+)"),
+			  "");
+}
+
+TEST(PolyhedraIo, PentagonalAndHexagonalPrismsAreReadAsPolyhedra)
+{
+	// VTK types 15 and 16: the k-gon below, then the k-gon above, both listed
+	// the same way round (one prism of each kind)
+	TempDir dir;
+	for (uint32 k : {5u, 6u})
+	{
+		std::string points;
+		for (uint32 l = 0; l < 2; ++l)
+			for (uint32 i = 0; i < k; ++i)
+			{
+				const double a = 2 * std::numbers::pi * i / k;
+				points +=
+					std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " " + std::to_string(l) + "\n";
+			}
+		std::string cell = std::to_string(2 * k);
+		for (uint32 i = 0; i < 2 * k; ++i)
+			cell += " " + std::to_string(i);
+		const std::string path = dir.file("prism.vtk");
+		io_test::write_text(path, "# vtk DataFile Version 3.0\nprism\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " +
+									  std::to_string(2 * k) + " double\n" + points + "CELLS 1 " +
+									  std::to_string(2 * k + 1) + "\n" + cell + "\nCELL_TYPES 1\n" +
+									  std::to_string(k + 10) + "\n");
+		CMap3 m;
+		const io::LoadReport r = io::load_volume(m, path);
+		EXPECT_EQ(r.nb_cells_built, 1u);
+		EXPECT_TRUE(check_integrity(m).ok());
+		EXPECT_EQ(counts(m), (std::vector<uint32>{2 * k, 3 * k, k + 2, 1}));
+		const double area = 0.5 * k * std::sin(2 * std::numbers::pi / k);
+		EXPECT_NEAR(geometry::solid_volume(m, *get_attribute<Vec3, CMap3::Vertex>(m, "position")), area, 1e-5);
+	}
+}
+
+} // namespace cgogn_test_polyhedra_io
