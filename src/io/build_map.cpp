@@ -149,7 +149,7 @@ uint32 darts_of_cell(uint32 size, uint32 dimension, bool gmap)
 template <typename MAP>
 BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
 {
-	if constexpr (std::same_as<MAP, CMap3>)
+	if constexpr (MAP::dimension == 3)
 	{
 		VolumeSoup standard;
 		standard.nb_vertices = d.nb_vertices();
@@ -215,11 +215,9 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 		throw Error(path, "the mesh is too large for 32-bit indices");
 
 	const bool polyhedra = !d.cell_nb_faces.empty();
-	if constexpr (dim == 2 || is_gmap_v<MAP>)
+	if constexpr (dim == 2)
 		if (polyhedra)
-			throw Error(path,
-						std::string("the file has polyhedra (VTK cells of type 42): they load into a CMap3, not a ") +
-							(dim == 2 ? "surface" : "GMap3"));
+			throw Error(path, "the file has polyhedra (VTK cells of type 42): they load into a volume map");
 
 	// which cells the builder will build (same rules as build_surface,
 	// build_volume and build_polyhedra), and their darts
@@ -240,7 +238,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 				for (uint32 fs : sizes)
 					size += fs;
 				built[c] = is_buildable_polyhedron(sizes, {d.polyhedron_face_vertices.data() + first, size});
-				nb_darts_of[c] = uint32(size);
+				nb_darts_of[c] = uint32(is_gmap_v<MAP> ? 2 * size : size);
 				first += size;
 				continue;
 			}

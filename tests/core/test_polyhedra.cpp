@@ -84,10 +84,53 @@ TEST(Polyhedra, PrismsOnAnyPolygonAreBuiltAndSewn)
 	}
 }
 
+TEST(Polyhedra, GMap3HoldsThemWithTwiceTheDarts)
+{
+	for (uint32 n : {3u, 4u, 7u, 12u})
+	{
+		SCOPED_TRACE(n);
+		CMap3 c;
+		GMap3 g;
+		const PolyhedronSoup s = prism_column(n, 4);
+		build_polyhedra(c, s);
+		const BuildReport r = build_polyhedra(g, s);
+		EXPECT_EQ(r.nb_cells_built, 4u);
+		EXPECT_TRUE(r.orientable);
+		EXPECT_TRUE(check_integrity(g).ok()) << check_integrity(g).to_string();
+		EXPECT_EQ(nb_darts(g), 2 * nb_darts(c));
+		EXPECT_EQ((std::vector<uint32>{nb_cells<GMap3::Vertex>(g), nb_cells<GMap3::Edge>(g), nb_cells<GMap3::Face>(g),
+									   nb_cells<GMap3::Volume>(g)}),
+				  counts(c));
+	}
+	// a G-map glues a cell listed in the other orientation to its neighbours;
+	// a 3-map cannot
+	PolyhedronSoup s = prism_column(5, 2);
+	std::size_t k = 2 * 5 + 5 * 4; // the vertices of the first cell's faces
+	for (std::size_t f = 7; f < s.face_sizes.size(); ++f)
+	{
+		std::reverse(s.face_vertices.begin() + std::ptrdiff_t(k),
+					 s.face_vertices.begin() + std::ptrdiff_t(k + s.face_sizes[f]));
+		k += s.face_sizes[f];
+	}
+	GMap3 g;
+	CMap3 c;
+	build_polyhedra(g, s);
+	build_polyhedra(c, s);
+	EXPECT_TRUE(check_integrity(g).ok());
+	EXPECT_EQ(nb_cells<GMap3::Face>(g), 2 + 1 + 2 * 5u); // the middle pentagon shared
+	EXPECT_EQ(nb_cells<CMap3::Face>(c), 2 + 2 + 2 * 5u); // not sewn there: two faces
+}
+
 TEST(Polyhedra, StandardCellsGivenByTheirFacesBuildTheSameMap)
 {
 	for (const VolumeSoup& v : {hex_grid_soup(3, 2, 2), tet_grid_soup(2, 2, 3)})
 	{
+		GMap3 gcells, gfaces;
+		build_volume(gcells, v);
+		build_polyhedra(gfaces, polyhedra_of(v));
+		EXPECT_TRUE(check_integrity(gfaces).ok());
+		EXPECT_EQ(nb_darts(gfaces), nb_darts(gcells));
+		EXPECT_EQ(nb_cells<GMap3::Face>(gfaces), nb_cells<GMap3::Face>(gcells));
 		CMap3 cells, faces;
 		build_volume(cells, v);
 		const PolyhedronSoup p = polyhedra_of(v);

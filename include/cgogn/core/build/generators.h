@@ -104,5 +104,9 @@ inline BuildReport build_polyhedra(CMap3& m, const PolyhedronSoup& s)
 {
 	return build_polyhedra(m, s.nb_vertices, s.cell_nb_faces, s.face_sizes, s.face_vertices);
 }
+inline BuildReport build_polyhedra(GMap3& m, const PolyhedronSoup& s)
+{
+	return build_polyhedra(m, s.nb_vertices, s.cell_nb_faces, s.face_sizes, s.face_vertices);
+}
 
 } // namespace cgogn

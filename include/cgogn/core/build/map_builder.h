@@ -113,6 +113,13 @@ BuildReport build_volume(CMap3& m, uint32 nb_vertices, std::span<const uint32> c
 /// skipped as invalid (BuildReport). O(total size x log).
 BuildReport build_polyhedra(CMap3& m, uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
 							std::span<const uint32> face_sizes, std::span<const uint32> face_vertices);
+/// The same into a GMap3, whose cells are glued whatever the direction in
+/// which each lists a shared face (see build_volume for a GMap3); each
+/// cell's own faces must still close one consistently oriented surface. A
+/// face of n vertices has 2n darts, a cell's darts are consecutive.
+/// O(total size x log).
+BuildReport build_polyhedra(GMap3& m, uint32 nb_vertices, std::span<const uint32> cell_nb_faces,
+							std::span<const uint32> face_sizes, std::span<const uint32> face_vertices);
 
 /// Whether build_polyhedra builds the polyhedron of these faces (the sizes
 /// of its faces, and their vertex ids, face after face): at least 4 faces,
