@@ -47,7 +47,8 @@ enum Kind
 	VTK,
 	VTU,
 	GMSH,
-	TETGEN
+	TETGEN,
+	OVM
 };
 
 io::detail::MeshData parse(int kind, std::string_view in, const std::string& path)
@@ -70,6 +71,8 @@ io::detail::MeshData parse(int kind, std::string_view in, const std::string& pat
 		return io::detail::read_vtu(in, path);
 	case GMSH:
 		return io::detail::read_gmsh(in, path);
+	case OVM:
+		return io::detail::read_ovm(in, path);
 	default: {
 		// the .node and .ele contents, separated by the first NUL byte
 		const std::size_t sep = in.find('\0');
@@ -165,7 +168,7 @@ int cgogn_fuzz::run_one_input(int format, const std::uint8_t* data, std::size_t 
 	{
 		if (in.empty())
 			return 0;
-		kind = int(uint8_t(in[0])) % (TETGEN + 1);
+		kind = int(uint8_t(in[0])) % (OVM + 1);
 		in.remove_prefix(1);
 	}
 	io::detail::MeshData d;

@@ -21,7 +21,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 total=${FUZZ_SECONDS:-300}
-formats=(off obj ply stl medit vtk vtu gmsh tetgen)
+formats=(off obj ply stl medit vtk vtu gmsh tetgen ovm)
 targets=()
 for f in "${formats[@]}"; do targets+=("$f"); done
 targets+=(append graph incidence_graph map_file)
@@ -68,9 +68,12 @@ if [ -x "$tool" ]; then
   "$tool" convert --binary "$tets" "$seeds/vtu/appended.vtu"
   "$tool" convert "$tets" "$seeds/gmsh/ascii.msh"
   "$tool" convert --binary "$tets" "$seeds/gmsh/binary.msh"
+  "$tool" convert "$tets" "$seeds/ovm/two_tets.ovm"
   "$tool" convert "$tets" "$build/two_tets.ele"
   { cat "$build/two_tets.node"; printf '\0'; cat "$build/two_tets.ele"; } > "$seeds/tetgen/two_tets"
 fi
+# an .ovm cube: OpenVolumeMesh's inward half-faces, properties of every kind
+printf 'OVM ASCII\nVertices\n8\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\nEdges\n12\n0 1\n1 2\n2 3\n3 0\n4 5\n5 6\n6 7\n7 4\n0 4\n1 5\n2 6\n3 7\nFaces\n6\n4 0 2 4 6\n4 8 10 12 14\n4 0 18 9 17\n4 2 20 11 19\n4 4 22 13 21\n4 6 16 15 23\nPolyhedra\n1\n6 0 3 5 7 9 11\nvprop double "t"\n0 1 2 3 4 5 6 7\neprop int "e"\n0 0 0 0 0 0 0 0 0 0 0 0\ncprop vec3d "c"\n1 2 3\n' > "$seeds/ovm/cube.ovm"
 # fuzz_append: every seed and corpus file of reader k, behind the byte k
 k=0
 for f in "${formats[@]}"; do

@@ -366,9 +366,10 @@ Command add_info_command(CLI::App& app)
 	auto* sub = app.add_subcommand("info", "Counts, topology, geometry summary of a mesh file");
 	auto file = std::make_shared<std::string>();
 	auto as_json = std::make_shared<bool>(false);
-	sub->add_option("FILE", *file,
-					"mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .nmap .ig .cgmap), or graph (.cg "
-					".cgr .skel)")
+	sub->add_option(
+		   "FILE", *file,
+		   "mesh file (.off .obj .ply .stl .mesh .vtk .vtu .msh .node/.ele .ovm .nmap .ig .cgmap), or graph (.cg "
+		   ".cgr .skel)")
 		->required();
 	sub->add_flag("--json", *as_json, "print one JSON object");
 	return {sub, [=] { return run_info(*file, *as_json); }};

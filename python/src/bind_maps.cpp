@@ -646,7 +646,7 @@ void bind_conversions(py::class_<PyMap<CMAP>>& c, py::class_<PyMap<GMAP>>& g)
 bool is_volume_format(io::Format f)
 {
 	return f == io::Format::Medit || f == io::Format::VtkLegacy || f == io::Format::Vtu || f == io::Format::Gmsh ||
-		   f == io::Format::TetGen;
+		   f == io::Format::TetGen || f == io::Format::Ovm;
 }
 
 } // namespace
@@ -829,7 +829,7 @@ void bind_maps(py::module_& mod)
 		},
 		py::arg("path"), py::arg("gmap") = false,
 		"Loads a mesh file: a CMap2 for the surface formats (off, obj, ply, stl), a CMap3 for the volume "
-		"formats (mesh, vtk, vtu, msh, node/ele); with gmap=True a GMap2 or a GMap3, which keep a mesh that "
+		"formats (mesh, vtk, vtu, msh, node/ele, ovm); with gmap=True a GMap2 or a GMap3, which keep a mesh that "
 		"cannot be oriented whole. A .nmap file gives the map of any dimension it holds (CMapN1 ... CMapN4, "
 		"GMapN1 ... GMapN4; with gmap=True a GMapN also for a CMapN file). A .cgmap file gives the map it "
 		"holds, exactly as saved (CMap2, CMap3, GMap2, GMap3, Graph, CMapN, GMapN). Raises cgogn.IOError "

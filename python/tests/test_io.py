@@ -27,7 +27,7 @@ def test_surface_round_trip(data, tmp_path, ext, binary):
         same_surface(m, back)
 
 
-@pytest.mark.parametrize("ext,binary", [("mesh", False), ("vtk", False), ("vtk", True), ("vtu", False), ("vtu", True), ("msh", False), ("msh", True), ("ele", False)])
+@pytest.mark.parametrize("ext,binary", [("mesh", False), ("vtk", False), ("vtk", True), ("vtu", False), ("vtu", True), ("msh", False), ("msh", True), ("ele", False), ("ovm", False)])
 def test_volume_round_trip(data, tmp_path, ext, binary):
     # TetGen files hold tetrahedra only
     name = "armadillo_tet_4k.mesh" if ext == "ele" else "liver_hex_624.mesh"

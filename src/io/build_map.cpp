@@ -145,51 +145,12 @@ uint32 darts_of_cell(uint32 size, uint32 dimension, bool gmap)
 }
 
 // Builds d's cells, standard ones and polyhedra, into m through
-// build_polyhedra (each standard cell given by its faces), in their order.
+// build_polyhedra, in their order.
 template <typename MAP>
 BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
 {
 	if constexpr (MAP::dimension == 3)
-	{
-		VolumeSoup standard;
-		standard.nb_vertices = d.nb_vertices();
-		std::size_t k = 0;
-		for (uint32 c = 0; c < d.nb_cells(); ++c)
-		{
-			if (!d.is_polyhedron(c))
-			{
-				standard.cell_sizes.push_back(d.cell_sizes[c]);
-				standard.cell_vertices.insert(standard.cell_vertices.end(), d.cell_vertices.begin() + std::ptrdiff_t(k),
-											  d.cell_vertices.begin() + std::ptrdiff_t(k + d.cell_sizes[c]));
-			}
-			k += d.cell_sizes[c];
-		}
-		const PolyhedronSoup faces_of_standard = polyhedra_of(standard);
-		PolyhedronSoup all;
-		all.nb_vertices = d.nb_vertices();
-		std::size_t s_face = 0, s_first = 0, p_face = 0, p_first = 0;
-		auto take = [&](const std::vector<uint32>& sizes, const std::vector<uint32>& ids, std::size_t& face,
-						std::size_t& first, uint32 nf) {
-			all.cell_nb_faces.push_back(nf);
-			for (uint32 f = 0; f < nf; ++f)
-			{
-				const uint32 n = sizes[face + f];
-				all.face_sizes.push_back(n);
-				all.face_vertices.insert(all.face_vertices.end(), ids.begin() + std::ptrdiff_t(first),
-										 ids.begin() + std::ptrdiff_t(first + n));
-				first += n;
-			}
-			face += nf;
-		};
-		uint32 s_cell = 0;
-		for (uint32 c = 0; c < d.nb_cells(); ++c)
-			if (d.is_polyhedron(c))
-				take(d.polyhedron_face_sizes, d.polyhedron_face_vertices, p_face, p_first, d.cell_nb_faces[c]);
-			else
-				take(faces_of_standard.face_sizes, faces_of_standard.face_vertices, s_face, s_first,
-					 faces_of_standard.cell_nb_faces[s_cell++]);
-		return build_polyhedra(m, all);
-	}
+		return build_polyhedra(m, cells_as_polyhedra(d));
 	else
 	{
 		(void)m;
@@ -416,6 +377,50 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 LoadReport build_map(IncidenceGraph& ig, const MeshData& d, const std::string& path)
 {
 	return build_complex(ig, d, path);
+}
+
+PolyhedronSoup cells_as_polyhedra(const MeshData& d)
+{
+	VolumeSoup standard;
+	standard.nb_vertices = d.nb_vertices();
+	std::size_t k = 0;
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+	{
+		if (!d.is_polyhedron(c))
+		{
+			standard.cell_sizes.push_back(d.cell_sizes[c]);
+			standard.cell_vertices.insert(standard.cell_vertices.end(), d.cell_vertices.begin() + std::ptrdiff_t(k),
+										  d.cell_vertices.begin() + std::ptrdiff_t(k + d.cell_sizes[c]));
+		}
+		k += d.cell_sizes[c];
+	}
+	const PolyhedronSoup standard_faces = polyhedra_of(standard);
+	PolyhedronSoup all;
+	all.nb_vertices = d.nb_vertices();
+	std::size_t s_face = 0, s_first = 0, p_face = 0, p_first = 0;
+	auto take = [&](const std::vector<uint32>& sizes, const std::vector<uint32>& ids, std::size_t& face,
+					std::size_t& first, uint32 nf) {
+		all.cell_nb_faces.push_back(nf);
+		for (uint32 f = 0; f < nf; ++f)
+		{
+			const uint32 n = sizes[face + f];
+			all.face_sizes.push_back(n);
+			all.face_vertices.insert(all.face_vertices.end(), ids.begin() + std::ptrdiff_t(first),
+									 ids.begin() + std::ptrdiff_t(first + n));
+			first += n;
+		}
+		face += nf;
+	};
+	uint32 s_cell = 0;
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+		if (d.is_polyhedron(c))
+			take(d.polyhedron_face_sizes, d.polyhedron_face_vertices, p_face, p_first, d.cell_nb_faces[c]);
+		else if (s_cell < standard_faces.cell_nb_faces.size()) // cells of an unknown size have no faces
+			take(standard_faces.face_sizes, standard_faces.face_vertices, s_face, s_first,
+				 standard_faces.cell_nb_faces[s_cell++]);
+		else
+			all.cell_nb_faces.push_back(0);
+	return all;
 }
 
 LoadReport build_map(CMap2& m, const MeshData& d, const std::string& path)

@@ -46,6 +46,8 @@ Format format_from_extension(const std::string& path)
 		return Format::Gmsh;
 	if (ext == "node" || ext == "ele")
 		return Format::TetGen;
+	if (ext == "ovm")
+		return Format::Ovm;
 	return Format::Auto;
 }
 
@@ -73,6 +75,8 @@ const char* format_name(Format f)
 		return "gmsh";
 	case Format::TetGen:
 		return "TetGen";
+	case Format::Ovm:
+		return "OVM";
 	}
 	return "unknown";
 }

@@ -43,6 +43,12 @@ std::string write_vtu(const MeshData& d, bool binary);
 std::string write_gmsh(const MeshData& d, bool binary);
 /// The .node and .ele files.
 std::pair<std::string, std::string> write_tetgen(const MeshData& d);
+/// OpenVolumeMesh ascii (.ovm): every cell as a polyhedron (vertices, edges,
+/// faces of half-edges, cells of half-faces whose normals point into the
+/// cell), vertex and cell properties as vertex and cell columns; what the
+/// map cannot hold (other properties, faces in no cell) goes to d.dropped.
+MeshData read_ovm(std::string_view text, const std::string& path);
+std::string write_ovm(const MeshData& d);
 
 /// Throws io::Error (no position) when a cell refers to a vertex that does not
 /// exist, a column does not have one value per element, or two columns of the

@@ -18,6 +18,8 @@ std::string LoadReport::summary(const std::string& map_type) const
 	line(nb_nonmanifold_edges, "non-manifold edge(s): the extra faces were detached there");
 	line(nb_nonmanifold_faces, "non-manifold face(s): the extra volumes were detached there");
 	line(nb_cells_reoriented, "volume cell(s) given in negative orientation turned over");
+	for (const std::string& d : dropped)
+		s += "not loaded: " + d + "\n";
 	if (!orientable)
 	{
 		if (map_type == "CMap2")

@@ -3,6 +3,7 @@
 // extracting what a writer needs from a map.
 #pragma once
 
+#include <cgogn/core/build/generators.h>
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap2.h>
 #include <cgogn/core/map/gmap3.h>
@@ -29,6 +30,12 @@ LoadReport build_map(GMap3& m, const MeshData& d, const std::string& path);
 /// than 3 vertices or a repeated one are skipped and counted. The same
 /// attributes as for a map; nothing is split, detached or turned over.
 LoadReport build_map(IncidenceGraph& ig, const MeshData& d, const std::string& path);
+
+/// Every cell of d (the standard ones by their faces, as build_volume
+/// builds them, and the polyhedra) as build_polyhedra's input, in their
+/// order. Precondition: the standard cells have 4, 5, 6 or 8 vertices.
+/// O(size of d).
+PolyhedronSoup cells_as_polyhedra(const MeshData& d);
 
 /// Turns over volume cells of negative orientation (tetrahedra by their signed
 /// volume; other cells by the side of the top relative to the bottom face's

@@ -56,6 +56,9 @@ struct MeshData
 	std::vector<uint32> cell_nb_faces;
 	std::vector<uint32> polyhedron_face_sizes;
 	std::vector<uint32> polyhedron_face_vertices;
+	/// What a reader read but the map will not hold, each with why
+	/// (LoadReport::dropped).
+	std::vector<std::string> dropped;
 
 	uint32 nb_vertices() const
 	{

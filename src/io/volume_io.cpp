@@ -17,8 +17,9 @@ Format resolve(Format f, const std::string& path)
 	if (f == Format::Auto)
 		f = format_from_extension(path);
 	if (f == Format::Auto)
-		throw Error(path, "unknown volume format: use .mesh, .vtk, .vtu, .msh or .node/.ele, or give the format");
-	if (f != Format::Medit && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Gmsh && f != Format::TetGen)
+		throw Error(path, "unknown volume format: use .mesh, .vtk, .vtu, .msh, .node/.ele or .ovm, or give the format");
+	if (f != Format::Medit && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Gmsh && f != Format::TetGen &&
+		f != Format::Ovm)
 		throw Error(path, std::string(format_name(f)) + " is not a volume format (use load_surface/save_surface)");
 	return f;
 }
@@ -55,6 +56,9 @@ LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& 
 		case Format::Vtu:
 			d = detail::read_vtu(data, path);
 			break;
+		case Format::Ovm:
+			d = detail::read_ovm(data, path);
+			break;
 		default:
 			d = detail::read_gmsh(data, path);
 			break;
@@ -65,6 +69,7 @@ LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& 
 	LoadReport r = detail::build_map(m, d, path);
 	r.format = f;
 	r.nb_cells_reoriented = flipped;
+	r.dropped = d.dropped;
 	return r;
 }
 
@@ -73,12 +78,12 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 {
 	const Format f = resolve(options.format, path);
 	const detail::MeshData d = detail::extract_volume(m, path, options.attributes);
-	if (!d.cell_nb_faces.empty() && f != Format::VtkLegacy && f != Format::Vtu)
+	if (!d.cell_nb_faces.empty() && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Ovm)
 	{
 		const auto nb = std::count_if(d.cell_nb_faces.begin(), d.cell_nb_faces.end(), [](uint32 n) { return n > 0; });
 		throw Error(path, "the map has " + std::to_string(nb) +
 							  " volume(s) that are not tetrahedra, pyramids, prisms or hexahedra: the format cannot "
-							  "hold them (.vtk and .vtu hold any polyhedron)");
+							  "hold them (.vtk, .vtu and .ovm hold any polyhedron)");
 	}
 	switch (f)
 	{
@@ -95,6 +100,10 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 		break;
 	case Format::Gmsh:
 		detail::write_file(path, detail::write_gmsh(d, options.binary));
+		break;
+	case Format::Ovm:
+		detail::check_written_names(d, path);
+		detail::write_file(path, detail::write_ovm(d));
 		break;
 	default: {
 		for (uint32 n : d.cell_sizes)

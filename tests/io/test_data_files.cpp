@@ -352,8 +352,7 @@ TEST(DataFolder, EveryMeshFileIsCoveredAboveOrNamedHere)
 	const std::set<std::string> known_volume = {
 		"armadillo_tet_461k.mesh", "heart_tet_205k.mesh", "elephant_tet_27k.mesh", "elephant_tet_8k.mesh",
 		"armadillo_tet_4k.mesh", "elephant_hex_110k.mesh", "liver_hex_624.mesh", "hex_dominant_11k.mesh",
-		// OpenVolumeMesh polyhedra: no reader for .ovm, and the builder takes
-		// tetrahedra, pyramids, prisms and hexahedra only
+		// OpenVolumeMesh polyhedra: its counts are checked by test_polyhedra_io.cpp
 		"elephant_poly_4k.ovm"};
 	for (const char* sub : {"surface", "volume"})
 	{

@@ -6,6 +6,7 @@
 #include <cgogn/core.h>
 #include <cgogn/io.h>
 
+#include "cgogn_test_data.h"
 #include "io_test_utils.h"
 
 #include <gtest/gtest.h>
@@ -299,6 +300,168 @@ TEST(PolyhedraIo, PentagonalAndHexagonalPrismsAreReadAsPolyhedra)
 		const double area = 0.5 * k * std::sin(2 * std::numbers::pi / k);
 		EXPECT_NEAR(geometry::solid_volume(m, *get_attribute<Vec3, CMap3::Vertex>(m, "position")), area, 1e-5);
 	}
+}
+
+namespace
+{
+// A unit cube in OpenVolumeMesh's layout: the cell lists the half-faces
+// whose normals point into it; an extra triangle in no cell, and an edge
+// property the map does not take.
+const char* const ovm_cube = R"(OVM ASCII
+Vertices
+8
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+Edges
+13
+0 1
+1 2
+2 3
+3 0
+4 5
+5 6
+6 7
+7 4
+0 4
+1 5
+2 6
+3 7
+0 2
+Faces
+7
+4 0 2 4 6
+4 8 10 12 14
+4 0 18 9 17
+4 2 20 11 19
+4 4 22 13 21
+4 6 16 15 23
+3 0 2 25
+Polyhedra
+1
+6 0 3 5 7 9 11
+vprop double "t"
+0 1 2 3 4 5 6 7
+eprop int "e"
+0 0 0 0 0 0 0 0 0 0 0 0 0
+cprop vec3d "c"
+1 2 3
+)";
+} // namespace
+
+TEST(PolyhedraIo, OvmFilesLoadWithTheirPropertiesAndSayWhatTheyDrop)
+{
+	TempDir dir;
+	io_test::write_text(dir.file("cube.ovm"), ovm_cube);
+	CMap3 m;
+	const io::LoadReport r = io::load_volume(m, dir.file("cube.ovm"));
+	EXPECT_EQ(r.format, io::Format::Ovm);
+	EXPECT_EQ(r.nb_cells_built, 1u);
+	EXPECT_EQ(r.nb_cells_reoriented, 0u); // OVM's inward half-faces are its convention, not a flaw
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_EQ(counts(m), (std::vector<uint32>{8, 12, 6, 1}));
+	EXPECT_NEAR(geometry::solid_volume(m, *get_attribute<Vec3, CMap3::Vertex>(m, "position")), 1.0, 1e-12);
+	auto t = get_attribute<double, CMap3::Vertex>(m, "t");
+	auto c = get_attribute<Vec3, CMap3::Volume>(m, "c");
+	ASSERT_TRUE(t && c);
+	EXPECT_EQ((*c)[CMap3::Volume(Dart(0))], Vec3(1, 2, 3));
+	double sum = 0;
+	foreach_cell(m, [&](CMap3::Vertex v) { sum += (*t)[v]; });
+	EXPECT_EQ(sum, 28.0);
+	ASSERT_EQ(r.dropped.size(), 2u);
+	EXPECT_NE(r.dropped[0].find("1 face(s) in no polyhedron"), std::string::npos) << r.dropped[0];
+	EXPECT_NE(r.dropped[1].find("eprop 'e' of type int"), std::string::npos) << r.dropped[1];
+	EXPECT_NE(r.summary("CMap3").find("not loaded: eprop 'e'"), std::string::npos);
+}
+
+TEST(PolyhedraIo, OvmRoundTripsPrismsAndTheirData)
+{
+	TempDir dir;
+	CMap3 m;
+	io_test::build_with_positions(m, prism_column(6, 3));
+	auto pressure = add_attribute<double, CMap3::Volume>(m, "pressure");
+	auto velocity = add_attribute<Vec3, CMap3::Vertex>(m, "velocity");
+	double p = 1;
+	foreach_cell(m, [&](CMap3::Volume w) { (*pressure)[w] = p /= 3; });
+	foreach_cell(m, [&](CMap3::Vertex v) {
+		p += 1;
+		(*velocity)[v] = Vec3(p, -p, 0.5) * p;
+	});
+	io::save_volume(m, dir.file("p.ovm"));
+	const std::string text = io_test::read_text(dir.file("p.ovm"));
+	EXPECT_EQ(text.rfind("OVM ASCII\nVertices\n24\n", 0), 0u);
+	EXPECT_NE(text.find("\nEdges\n42\n"), std::string::npos);
+	EXPECT_NE(text.find("\nFaces\n22\n"), std::string::npos);
+	EXPECT_NE(text.find("\ncprop double \"pressure\"\n"), std::string::npos);
+	EXPECT_NE(text.find("\nvprop vec3d \"velocity\"\n"), std::string::npos);
+	CMap3 r;
+	const io::LoadReport rep = io::load_volume(r, dir.file("p.ovm"));
+	EXPECT_EQ(rep.nb_cells_reoriented, 0u);
+	EXPECT_TRUE(rep.dropped.empty());
+	EXPECT_TRUE(check_integrity(r).ok());
+	EXPECT_EQ(counts(r), counts(m));
+	EXPECT_EQ(values(r, "pressure"), values(m, "pressure"));
+	EXPECT_NEAR(geometry::solid_volume(r, *get_attribute<Vec3, CMap3::Vertex>(r, "position")),
+				geometry::solid_volume(m, *get_attribute<Vec3, CMap3::Vertex>(m, "position")), 1e-12);
+	auto rv = get_attribute<Vec3, CMap3::Vertex>(r, "velocity");
+	ASSERT_TRUE(rv);
+	std::vector<Vec3> a, b;
+	foreach_cell(m, [&](CMap3::Vertex v) { a.push_back((*velocity)[v]); });
+	foreach_cell(r, [&](CMap3::Vertex v) { b.push_back((*rv)[v]); });
+	EXPECT_EQ(a, b);
+}
+
+TEST(PolyhedraIo, MalformedOvmFilesAreErrors)
+{
+	TempDir dir;
+	const auto error_of = [&](std::string text, const std::string& from, const std::string& to) {
+		if (!from.empty())
+		{
+			const std::size_t at = text.find(from);
+			EXPECT_NE(at, std::string::npos) << from;
+			text.replace(at, from.size(), to);
+		}
+		io_test::write_text(dir.file("bad.ovm"), text);
+		return load_error(dir.file("bad.ovm"));
+	};
+	EXPECT_EQ(error_of(ovm_cube, "", ""), "");
+	EXPECT_NE(error_of(ovm_cube, "OVM ASCII", "OVM BINARY").find("binary .ovm files are not read"), std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "0 2\nFaces", "0 9\nFaces").find(":26: vertex index 9 out of range"),
+			  std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "4 0 2 4 6", "4 0 2 4 99").find("half-edge index 99 out of range"), std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "4 0 2 4 6", "4 0 4 2 6").find("does not start where the previous one ends"),
+			  std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "6 0 3 5 7 9 11", "6 0 3 5 7 9 40").find("half-face index 40 out of range"),
+			  std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "cprop vec3d \"c\"", "cprop vec3d c").find("without its name in quotes"),
+			  std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "cprop vec3d", "xprop vec3d").find("unknown property kind 'xprop'"),
+			  std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "Polyhedra\n1", "Polyhedra\n2").find("the number of half-faces of a polyhedron"),
+			  std::string::npos);
+	EXPECT_NE(error_of(ovm_cube, "vprop double \"t\"", "vprop double \"position\"").find("collides"),
+			  std::string::npos);
+}
+
+TEST(PolyhedraIo, LargeOvmMeshHasTheCountsOfItsReadme)
+{
+	const std::string path = cgogn_test_data::path("volume/elephant_poly_4k.ovm");
+	if (path.empty())
+		GTEST_SKIP() << cgogn_test_data::missing_large("volume/elephant_poly_4k.ovm");
+	CMap3 m;
+	const io::LoadReport r = io::load_volume(m, path);
+	EXPECT_EQ(r.nb_cells_built, 4392u);
+	EXPECT_EQ(r.nb_cells_skipped, 0u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	EXPECT_EQ(counts(m), (std::vector<uint32>{160844, 207618, 51159, 4392}));
+	uint32 boundary_faces = 0;
+	foreach_cell(m, [&](CMap3::Face f) { boundary_faces += is_incident_to_boundary(m, f); });
+	EXPECT_EQ(boundary_faces, 29393u);
 }
 
 } // namespace cgogn_test_polyhedra_io

@@ -4,6 +4,7 @@
 #include <cgogn/core/build/map_builder.h>
 
 #include <string>
+#include <vector>
 
 namespace cgogn::io
 {
@@ -22,11 +23,12 @@ enum class Format
 	VtkLegacy,
 	Vtu,
 	Gmsh,
-	TetGen
+	TetGen,
+	Ovm ///< OpenVolumeMesh's ascii files (polyhedra)
 };
 
 /// The format of a path by its extension (case-insensitive): .off .obj .ply
-/// .stl .mesh .vtk .vtu .msh .node/.ele. Returns Format::Auto when unknown.
+/// .stl .mesh .vtk .vtu .msh .node/.ele .ovm. Returns Format::Auto when unknown.
 /// O(length of the path).
 Format format_from_extension(const std::string& path);
 
@@ -91,6 +93,9 @@ struct LoadReport
 	/// above; load it into a GMap2 to keep it whole. Volume meshes are always
 	/// orientable: their cells are oriented by their geometry.
 	bool orientable = true;
+	/// What the file held that the map does not, each with why (e.g. an
+	/// .ovm edge property, faces in no cell): never dropped silently.
+	std::vector<std::string> dropped;
 	BuildReport build; ///< The map builder's own report.
 
 	/// True when the input needed no repair: no non-manifold vertex, edge or
