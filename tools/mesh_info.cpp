@@ -74,6 +74,8 @@ void load_report(const io::LoadReport& r, json& j)
 	j["skipped_cells"] = r.nb_cells_skipped;
 	j["holes_closed"] = r.nb_holes_closed;
 	j["orientation_conflicts"] = r.nb_orientation_conflicts;
+	if (!r.dropped.empty())
+		j["not_loaded"] = r.dropped;
 }
 
 template <typename MAP>
@@ -333,6 +335,7 @@ std::string info_text(const json& j)
 						  "skipped_cells",
 						  "holes_closed",
 						  "reoriented_cells",
+						  "not_loaded",
 						  "cell_kinds",
 						  "face_degrees",
 						  "bbox",

@@ -476,9 +476,20 @@ TEST(Tool, PolyhedraAreInspectedAndConverted)
 	EXPECT_EQ(info["volumes"], 2);
 	EXPECT_EQ(info["cell_kinds"]["other"], 2);
 	EXPECT_EQ(info["faces"], 13); // 7 + 7, the middle pentagon shared
-	const ToolRun r = run_tool("convert '" + dir.file("p.vtk") + "' '" + dir.file("p.mesh") + "'", dir);
+	ToolRun r = run_tool("convert '" + dir.file("p.vtk") + "' '" + dir.file("p.mesh") + "'", dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("not tetrahedra, pyramids, prisms or hexahedra"), std::string::npos) << r.err;
+	// an .ovm file: what it holds beyond the map is listed
+	write_text(dir.file("e.ovm"), "OVM ASCII\nVertices\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\nEdges\n6\n0 1\n1 2\n2 0\n"
+								  "0 3\n1 3\n2 3\nFaces\n4\n3 0 2 4\n3 0 8 7\n3 2 10 9\n3 4 6 11\nPolyhedra\n1\n4 "
+								  "0 3 5 7\neprop int \"w\"\n1 2 3 4 5 6\n");
+	const nlohmann::json ovm = info_json(dir.file("e.ovm"), dir);
+	EXPECT_EQ(ovm["format"], "OVM");
+	EXPECT_EQ(ovm["volumes"], 1);
+	ASSERT_EQ(ovm["not_loaded"].size(), 1u);
+	EXPECT_NE(ovm["not_loaded"][0].get<std::string>().find("eprop 'w'"), std::string::npos);
+	r = run_tool("info '" + dir.file("e.ovm") + "'", dir);
+	EXPECT_NE(r.out.find("not_loaded: [\"eprop 'w'"), std::string::npos) << r.out;
 }
 
 } // namespace cgogn_test_tool
