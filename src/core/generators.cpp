@@ -303,4 +303,34 @@ PolyhedronSoup polyhedra_of(const VolumeSoup& s)
 	return p;
 }
 
+PolyhedronSoup prism_column_soup(uint32 n, uint32 layers)
+{
+	PolyhedronSoup s;
+	s.nb_vertices = n * (layers + 1);
+	for (uint32 l = 0; l <= layers; ++l)
+		for (uint32 i = 0; i < n; ++i)
+		{
+			const double a = 2 * std::numbers::pi * i / n;
+			s.positions.push_back({std::cos(a), std::sin(a), double(l)});
+		}
+	for (uint32 l = 0; l < layers; ++l)
+	{
+		const uint32 b = l * n, t = (l + 1) * n;
+		s.cell_nb_faces.push_back(n + 2);
+		s.face_sizes.push_back(n); // the bottom, seen from below
+		s.face_vertices.push_back(b);
+		for (uint32 i = n - 1; i >= 1; --i)
+			s.face_vertices.push_back(b + i);
+		s.face_sizes.push_back(n); // the top
+		for (uint32 i = 0; i < n; ++i)
+			s.face_vertices.push_back(t + i);
+		for (uint32 i = 0; i < n; ++i) // the sides
+		{
+			s.face_sizes.push_back(4);
+			s.face_vertices.insert(s.face_vertices.end(), {b + i, b + (i + 1) % n, t + (i + 1) % n, t + i});
+		}
+	}
+	return s;
+}
+
 } // namespace cgogn

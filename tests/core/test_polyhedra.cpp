@@ -14,32 +14,6 @@ using namespace cgogn;
 namespace
 {
 
-// A column of `layers` prisms on an n-gon: ring k holds vertices k n ...
-// k n + n - 1; each prism's faces seen counterclockwise from outside.
-PolyhedronSoup prism_column(uint32 n, uint32 layers)
-{
-	PolyhedronSoup s;
-	s.nb_vertices = n * (layers + 1);
-	for (uint32 l = 0; l < layers; ++l)
-	{
-		const uint32 b = l * n, t = (l + 1) * n;
-		s.cell_nb_faces.push_back(n + 2);
-		s.face_sizes.push_back(n); // bottom, seen from below
-		s.face_vertices.push_back(b);
-		for (uint32 i = n - 1; i >= 1; --i)
-			s.face_vertices.push_back(b + i);
-		s.face_sizes.push_back(n); // top
-		for (uint32 i = 0; i < n; ++i)
-			s.face_vertices.push_back(t + i);
-		for (uint32 i = 0; i < n; ++i) // sides
-		{
-			s.face_sizes.push_back(4);
-			s.face_vertices.insert(s.face_vertices.end(), {b + i, b + (i + 1) % n, t + (i + 1) % n, t + i});
-		}
-	}
-	return s;
-}
-
 std::vector<uint32> counts(const CMap3& m)
 {
 	return {nb_cells<CMap3::Vertex>(m), nb_cells<CMap3::Edge>(m), nb_cells<CMap3::Face>(m), nb_cells<CMap3::Volume>(m)};
@@ -53,7 +27,7 @@ TEST(Polyhedra, PrismsOnAnyPolygonAreBuiltAndSewn)
 	{
 		SCOPED_TRACE(n);
 		CMap3 m;
-		const BuildReport r = build_polyhedra(m, prism_column(n, 3));
+		const BuildReport r = build_polyhedra(m, prism_column_soup(n, 3));
 		EXPECT_EQ(r.nb_cells_read, 3u);
 		EXPECT_EQ(r.nb_cells_built, 3u);
 		EXPECT_EQ(r.nb_cells_invalid + r.nb_cells_degenerate, 0u);
@@ -91,7 +65,7 @@ TEST(Polyhedra, GMap3HoldsThemWithTwiceTheDarts)
 		SCOPED_TRACE(n);
 		CMap3 c;
 		GMap3 g;
-		const PolyhedronSoup s = prism_column(n, 4);
+		const PolyhedronSoup s = prism_column_soup(n, 4);
 		build_polyhedra(c, s);
 		const BuildReport r = build_polyhedra(g, s);
 		EXPECT_EQ(r.nb_cells_built, 4u);
@@ -104,7 +78,7 @@ TEST(Polyhedra, GMap3HoldsThemWithTwiceTheDarts)
 	}
 	// a G-map glues a cell listed in the other orientation to its neighbours;
 	// a 3-map cannot
-	PolyhedronSoup s = prism_column(5, 2);
+	PolyhedronSoup s = prism_column_soup(5, 2);
 	std::size_t k = 2 * 5 + 5 * 4; // the vertices of the first cell's faces
 	for (std::size_t f = 7; f < s.face_sizes.size(); ++f)
 	{
@@ -146,7 +120,7 @@ TEST(Polyhedra, StandardCellsGivenByTheirFacesBuildTheSameMap)
 
 TEST(Polyhedra, CellsThatDoNotCloseASurfaceAreSkippedAndCounted)
 {
-	const PolyhedronSoup good = prism_column(5, 1); // faces: bottom, top, 5 sides
+	const PolyhedronSoup good = prism_column_soup(5, 1); // faces: bottom, top, 5 sides
 	const auto one_cell = [&](const std::vector<std::vector<uint32>>& faces) {
 		PolyhedronSoup s;
 		s.nb_vertices = good.nb_vertices;
@@ -186,7 +160,7 @@ TEST(Polyhedra, CellsThatDoNotCloseASurfaceAreSkippedAndCounted)
 	EXPECT_EQ(one_cell(twice).nb_cells_invalid, 1u);
 
 	// lists that stop short: the cell is invalid, the cells before it built
-	PolyhedronSoup s = prism_column(4, 2);
+	PolyhedronSoup s = prism_column_soup(4, 2);
 	s.face_vertices.resize(s.face_vertices.size() - 3);
 	CMap3 m;
 	const BuildReport r = build_polyhedra(m, s);

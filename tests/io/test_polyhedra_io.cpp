@@ -23,38 +23,6 @@ using io_test::TempDir;
 namespace
 {
 
-// A column of `layers` prisms on a regular n-gon of radius 1, layers of
-// height 1; faces counterclockwise seen from outside.
-PolyhedronSoup prism_column(uint32 n, uint32 layers)
-{
-	PolyhedronSoup s;
-	s.nb_vertices = n * (layers + 1);
-	for (uint32 l = 0; l <= layers; ++l)
-		for (uint32 i = 0; i < n; ++i)
-		{
-			const double a = 2 * std::numbers::pi * i / n;
-			s.positions.push_back({std::cos(a), std::sin(a), double(l)});
-		}
-	for (uint32 l = 0; l < layers; ++l)
-	{
-		const uint32 b = l * n, t = (l + 1) * n;
-		s.cell_nb_faces.push_back(n + 2);
-		s.face_sizes.push_back(n);
-		s.face_vertices.push_back(b);
-		for (uint32 i = n - 1; i >= 1; --i)
-			s.face_vertices.push_back(b + i);
-		s.face_sizes.push_back(n);
-		for (uint32 i = 0; i < n; ++i)
-			s.face_vertices.push_back(t + i);
-		for (uint32 i = 0; i < n; ++i)
-		{
-			s.face_sizes.push_back(4);
-			s.face_vertices.insert(s.face_vertices.end(), {b + i, b + (i + 1) % n, t + (i + 1) % n, t + i});
-		}
-	}
-	return s;
-}
-
 std::vector<uint32> counts(const CMap3& m)
 {
 	return {nb_cells<CMap3::Vertex>(m), nb_cells<CMap3::Edge>(m), nb_cells<CMap3::Face>(m), nb_cells<CMap3::Volume>(m)};
@@ -92,7 +60,7 @@ TEST(PolyhedraIo, PrismsRoundTripThroughVtuAndVtk)
 	for (uint32 n : {5u, 7u})
 	{
 		CMap3 m;
-		io_test::build_with_positions(m, prism_column(n, 3));
+		io_test::build_with_positions(m, prism_column_soup(n, 3));
 		auto pressure = add_attribute<double, CMap3::Volume>(m, "pressure");
 		double p = 0.5;
 		foreach_cell(m, [&](CMap3::Volume w) { (*pressure)[w] = p *= 3; });
@@ -383,7 +351,7 @@ TEST(PolyhedraIo, OvmRoundTripsPrismsAndTheirData)
 {
 	TempDir dir;
 	CMap3 m;
-	io_test::build_with_positions(m, prism_column(6, 3));
+	io_test::build_with_positions(m, prism_column_soup(6, 3));
 	auto pressure = add_attribute<double, CMap3::Volume>(m, "pressure");
 	auto velocity = add_attribute<Vec3, CMap3::Vertex>(m, "velocity");
 	double p = 1;

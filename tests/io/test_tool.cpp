@@ -453,20 +453,7 @@ TEST(Tool, PolyhedraAreInspectedAndConverted)
 {
 	TempDir dir;
 	// two pentagonal prisms, stacked
-	PolyhedronSoup p;
-	p.nb_vertices = 15;
-	for (uint32 l = 0; l < 3; ++l)
-		for (uint32 i = 0; i < 5; ++i)
-			p.positions.push_back({std::cos(1.2566370614359172 * i), std::sin(1.2566370614359172 * i), double(l)});
-	for (uint32 l = 0; l < 2; ++l)
-	{
-		const uint32 b = 5 * l, t = 5 * l + 5;
-		p.cell_nb_faces.push_back(7);
-		p.face_sizes.insert(p.face_sizes.end(), {5, 5, 4, 4, 4, 4, 4});
-		p.face_vertices.insert(p.face_vertices.end(), {b, b + 4, b + 3, b + 2, b + 1, t, t + 1, t + 2, t + 3, t + 4});
-		for (uint32 i = 0; i < 5; ++i)
-			p.face_vertices.insert(p.face_vertices.end(), {b + i, b + (i + 1) % 5, t + (i + 1) % 5, t + i});
-	}
+	const PolyhedronSoup p = prism_column_soup(5, 2);
 	CMap3 m;
 	build_with_positions(m, p);
 	io::save_volume(m, dir.file("p.vtu"));

@@ -42,6 +42,12 @@ struct PolyhedronSoup
 /// an unknown size are left out. O(size of s).
 PolyhedronSoup polyhedra_of(const VolumeSoup& s);
 
+/// A column of `layers` prisms on a regular n-gon (n >= 3) of radius 1 in
+/// the z = 0 plane, layers of height 1: ring l holds vertices l n ... l n +
+/// n - 1, each prism's faces (its two n-gons and n quads) counterclockwise
+/// seen from outside. O(n x layers).
+PolyhedronSoup prism_column_soup(uint32 n, uint32 layers);
+
 /// A flat nx x ny grid of unit squares in the z = 0 plane, (nx+1)(ny+1)
 /// vertices, one boundary loop; quads, or each quad split in two triangles.
 SurfaceSoup grid_soup(uint32 nx, uint32 ny, bool triangles = false);
