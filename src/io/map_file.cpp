@@ -77,12 +77,6 @@ Orbit orbit_named(std::string_view name)
 
 // ---------------------------------------------------------------- writing
 
-bool value_type_held(const AttributeBase& a)
-{
-	return detail::AttributeValues<detail::ScalarValueTypes>::holds(a) ||
-		   detail::AttributeValues<detail::VectorValueTypes>::holds(a);
-}
-
 void write_container(std::string& out, std::string_view orbit, const AttributeContainer& c, const MarkAttribute* marks,
 					 MapFileReport& report)
 {
@@ -93,20 +87,28 @@ void write_container(std::string& out, std::string_view orbit, const AttributeCo
 	for (uint32 i : c.free_lines())
 		detail::put_scalar<uint32>(out, i);
 
-	std::vector<const AttributeBase*> written;
+	// each attribute is written when its type is one of the format's; the
+	// count, known at the end, is written in its place then
+	const std::size_t count_at = out.size();
+	detail::put_scalar<uint32>(out, 0);
+	uint32 nb_written = 0;
 	for (const auto& a : c.attributes())
-		if (value_type_held(*a))
-			written.push_back(a.get());
-		else
-			report.skipped.push_back({std::string(orbit), a->name(), "its value type has no encoding in the format"});
-	detail::put_scalar<uint32>(out, uint32(written.size()));
-	for (const AttributeBase* a : written)
 	{
+		const std::size_t at = out.size();
 		detail::put_string(out, a->name());
-		if (!detail::AttributeValues<detail::ScalarValueTypes>::write(out, *a, end))
-			detail::AttributeValues<detail::VectorValueTypes>::write(out, *a, end);
-		++report.nb_attributes_written;
+		if (detail::AttributeValues<detail::ScalarValueTypes>::write(out, *a, end) ||
+			detail::AttributeValues<detail::VectorValueTypes>::write(out, *a, end))
+			++nb_written;
+		else
+		{
+			out.resize(at);
+			report.skipped.push_back({std::string(orbit), a->name(), "its value type has no encoding in the format"});
+		}
 	}
+	std::string count;
+	detail::put_scalar<uint32>(count, nb_written);
+	out.replace(count_at, sizeof(uint32), count);
+	report.nb_attributes_written += nb_written;
 
 	if (marks != nullptr)
 	{

@@ -190,11 +190,6 @@ struct AttributeValues<std::tuple<T...>>
 	/// false (nothing read) when the type is not one of the group. Throws
 	/// io::Error when r.found has another type.
 	static bool read(AttributeRead& r, std::string_view type);
-	/// Whether the type of `a` is one of the group.
-	static bool holds(const AttributeBase& a)
-	{
-		return ((a.type() == typeid(T)) || ...);
-	}
 	/// The format's names of the group's types.
 	static void names(std::vector<std::string>& out)
 	{
