@@ -3,6 +3,10 @@
 // 1,000,000 faces) from binary PLY and OFF: cgogn's reader (parse + build of
 // the closed 2-map) against OpenMesh's reader into a TriMesh, when OpenMesh is
 // available. The files are written once to a temporary folder.
+//
+// Saving and loading the same torus with 4 attributes (position, a Vec3
+// vertex normal, a double vertex value, a double face value) as a whole-map
+// .cgmap file against binary PLY, the surface format that carries them all.
 #include <cgogn/cgogn.h>
 
 #include "file_io.h"
@@ -22,12 +26,32 @@ using namespace cgogn;
 namespace
 {
 
+// This process's folder for the files it writes, removed at exit.
+const std::filesystem::path& bench_dir()
+{
+	struct Folder
+	{
+		std::filesystem::path path =
+			std::filesystem::temp_directory_path() / ("cgogn_io_bench_" + std::to_string(::getpid()));
+		Folder()
+		{
+			std::filesystem::create_directories(path);
+		}
+		~Folder()
+		{
+			std::error_code ignored;
+			std::filesystem::remove_all(path, ignored);
+		}
+	};
+	static const Folder folder;
+	return folder.path;
+}
+
 // Writes the torus once per process, in both formats.
 const std::string& mesh_file(const char* ext)
 {
 	static const std::string dir = [] {
-		const auto d = std::filesystem::temp_directory_path() / ("cgogn_io_bench_" + std::to_string(::getpid()));
-		std::filesystem::create_directories(d);
+		const auto d = bench_dir();
 		// written from the soup by the io writers (what save_surface writes for this map)
 		const SurfaceSoup s = torus_soup(1000, 500, true);
 		io::detail::MeshData md;
@@ -101,7 +125,77 @@ BENCHMARK_CAPTURE(openmesh_load, ply_binary, "ply")->Unit(benchmark::kMillisecon
 BENCHMARK_CAPTURE(openmesh_load, off, "off")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 #endif
 
+// The torus with its 4 attributes, built once per process.
+const CMap2& attributed_torus()
+{
+	static const CMap2 map = [] {
+		CMap2 m;
+		const SurfaceSoup s = torus_soup(1000, 500, true);
+		const BuildReport r = build_surface(m, s);
+		auto position = add_attribute<Vec3, CMap2::Vertex>(m, "position");
+		for (uint32 i = 0; i < s.nb_vertices; ++i)
+			(*position)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+		auto normal = add_attribute<Vec3, CMap2::Vertex>(m, "normal");
+		auto value = add_attribute<double, CMap2::Vertex>(m, "value");
+		auto area = add_attribute<double, CMap2::Face>(m, "area");
+		foreach_cell(m, [&](CMap2::Vertex v) {
+			(*normal)[v] = (*position)[v].normalized();
+			(*value)[v] = (*position)[v].x();
+		});
+		uint32 k = 0;
+		foreach_cell(m, [&](CMap2::Face f) { (*area)[f] = 0.5 + 1e-6 * double(k++); });
+		return m;
+	}();
+	return map;
+}
+
+// Where the attributed torus is saved, in each format, by this process.
+std::string attributed_path(const char* ext)
+{
+	return (bench_dir() / (std::string("attributed.") + ext)).string();
+}
+
+void save_attributed(benchmark::State& state, const char* ext)
+{
+	const CMap2& m = attributed_torus();
+	const std::string path = attributed_path(ext);
+	io::SaveOptions binary;
+	binary.binary = true;
+	for (auto _ : state)
+	{
+		if (std::string(ext) == "cgmap")
+			benchmark::DoNotOptimize(io::save_map(m, path).nb_attributes_written);
+		else
+			io::save_surface(m, path, binary);
+	}
+	state.counters["MB"] = double(std::filesystem::file_size(path)) / 1e6;
+}
+
+void load_attributed(benchmark::State& state, const char* ext)
+{
+	const std::string path = attributed_path(ext);
+	if (!std::filesystem::exists(path))
+	{
+		state.SkipWithError("run the save benchmark of this format first");
+		return;
+	}
+	for (auto _ : state)
+	{
+		CMap2 m;
+		if (std::string(ext) == "cgmap")
+			io::load_map(m, path);
+		else
+			io::load_surface(m, path);
+		benchmark::DoNotOptimize(nb_darts(m));
+	}
+}
+
 } // namespace
+
+BENCHMARK_CAPTURE(save_attributed, ply_binary, "ply")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(save_attributed, cgmap, "cgmap")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(load_attributed, ply_binary, "ply")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(load_attributed, cgmap, "cgmap")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 BENCHMARK_CAPTURE(cgogn_load, ply_binary, "ply")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK_CAPTURE(cgogn_load, off, "off")->Unit(benchmark::kMillisecond)->MinTime(2.0);

@@ -39,6 +39,14 @@ public:
 		pos_ += sizeof(T);
 		return v;
 	}
+	/// Copies the next n bytes as they are (no byte swap) to `to`.
+	void read_bytes(char* to, std::size_t n)
+	{
+		if (n > data_.size() - pos_)
+			fail("unexpected end of file (truncated binary data)");
+		std::memcpy(to, data_.data() + pos_, n);
+		pos_ += n;
+	}
 	void skip(std::size_t n)
 	{
 		if (n > data_.size() - pos_)

@@ -8,6 +8,14 @@
 #include <cstring>
 #include <memory>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#define CGOGN_IO_HAS_MMAP 1
+#endif
+
 namespace cgogn::io::detail
 {
 
@@ -57,6 +65,66 @@ void write_file(const std::string& path, const std::string& data)
 		throw Error(path, "write error");
 	if (std::fflush(f.get()) != 0)
 		throw Error(path, "write error");
+}
+
+OutputFile::OutputFile(const std::string& path) : path_(path), file_(std::fopen(path.c_str(), "wb"))
+{
+	if (file_ == nullptr)
+		throw Error(path, std::string("cannot open for writing: ") + std::strerror(errno));
+}
+
+OutputFile::~OutputFile()
+{
+	if (file_ != nullptr)
+		std::fclose(file_);
+}
+
+void OutputFile::write(const char* bytes, std::size_t n)
+{
+	if (std::fwrite(bytes, 1, n, file_) != n)
+		throw Error(path_, "write error");
+}
+
+void OutputFile::close()
+{
+	const bool flushed = std::fflush(file_) == 0;
+	const bool closed = std::fclose(file_) == 0;
+	file_ = nullptr;
+	if (!flushed || !closed)
+		throw Error(path_, "write error");
+}
+
+InputFile::InputFile(const std::string& path)
+{
+#ifdef CGOGN_IO_HAS_MMAP
+	const int fd = ::open(path.c_str(), O_RDONLY);
+	if (fd < 0)
+		throw Error(path, std::string("cannot open for reading: ") + std::strerror(errno));
+	struct stat st;
+	if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
+	{
+		void* p = ::mmap(nullptr, std::size_t(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+		if (p != MAP_FAILED)
+		{
+			mapping_ = p;
+			mapped_size_ = std::size_t(st.st_size);
+			bytes_ = std::string_view(static_cast<const char*>(p), mapped_size_);
+		}
+	}
+	::close(fd);
+	if (mapping_ != nullptr)
+		return;
+#endif
+	read_ = read_file(path); // an empty file, a pipe, or a system without mmap
+	bytes_ = read_;
+}
+
+InputFile::~InputFile()
+{
+#ifdef CGOGN_IO_HAS_MMAP
+	if (mapping_ != nullptr)
+		::munmap(mapping_, mapped_size_);
+#endif
 }
 
 } // namespace cgogn::io::detail

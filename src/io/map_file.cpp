@@ -77,8 +77,8 @@ Orbit orbit_named(std::string_view name)
 
 // ---------------------------------------------------------------- writing
 
-void write_container(std::string& out, std::string_view orbit, const AttributeContainer& c, const MarkAttribute* marks,
-					 MapFileReport& report)
+void write_container(detail::ByteSink& out, std::string_view orbit, const AttributeContainer& c,
+					 const MarkAttribute* marks, MapFileReport& report)
 {
 	detail::put_string(out, orbit);
 	const uint32 end = c.end_index();
@@ -87,28 +87,26 @@ void write_container(std::string& out, std::string_view orbit, const AttributeCo
 	for (uint32 i : c.free_lines())
 		detail::put_scalar<uint32>(out, i);
 
-	// each attribute is written when its type is one of the format's; the
-	// count, known at the end, is written in its place then
-	const std::size_t count_at = out.size();
-	detail::put_scalar<uint32>(out, 0);
-	uint32 nb_written = 0;
+	// each attribute is written when its type is one of the format's
+	using Writer = void (*)(detail::ByteSink&, const AttributeBase&, uint32);
+	std::vector<std::pair<const AttributeBase*, Writer>> written;
 	for (const auto& a : c.attributes())
 	{
-		const std::size_t at = out.size();
-		detail::put_string(out, a->name());
-		if (detail::AttributeValues<detail::ScalarValueTypes>::write(out, *a, end) ||
-			detail::AttributeValues<detail::VectorValueTypes>::write(out, *a, end))
-			++nb_written;
+		Writer w = detail::AttributeValues<detail::ScalarValueTypes>::writer(*a);
+		if (w == nullptr)
+			w = detail::AttributeValues<detail::VectorValueTypes>::writer(*a);
+		if (w != nullptr)
+			written.emplace_back(a.get(), w);
 		else
-		{
-			out.resize(at);
 			report.skipped.push_back({std::string(orbit), a->name(), "its value type has no encoding in the format"});
-		}
 	}
-	std::string count;
-	detail::put_scalar<uint32>(count, nb_written);
-	out.replace(count_at, sizeof(uint32), count);
-	report.nb_attributes_written += nb_written;
+	detail::put_scalar<uint32>(out, uint32(written.size()));
+	for (const auto& [a, write] : written)
+	{
+		detail::put_string(out, a->name());
+		write(out, *a, end);
+	}
+	report.nb_attributes_written += uint32(written.size());
 
 	if (marks != nullptr)
 	{
@@ -116,14 +114,14 @@ void write_container(std::string& out, std::string_view orbit, const AttributeCo
 		for (uint32 i = 0; i < end; ++i)
 			if (marks->test(i))
 				bits[i / 8] = char(uint8(bits[i / 8]) | uint8(1u << (i % 8)));
-		out += bits;
+		out.append(bits);
 	}
 }
 
-std::string write_map(const CMapBase& m, const std::string& type, MapFileReport& report)
+void write_map(detail::ByteSink& out, const CMapBase& m, const std::string& type, MapFileReport& report)
 {
 	const cgogn::detail::MapState& s = cgogn::detail::state_of(m);
-	std::string out(MAGIC);
+	out.append(MAGIC);
 	detail::put_scalar<uint32>(out, VERSION);
 	detail::put_string(out, type);
 
@@ -135,7 +133,7 @@ std::string write_map(const CMapBase& m, const std::string& type, MapFileReport&
 	write_container(out, orbit_name(Orbit::DART), *s.darts, s.boundary, report);
 	for (uint32 o : cells)
 		write_container(out, orbit_name(Orbit(o)), *s.cells[o], nullptr, report);
-	return out;
+	out.flush();
 }
 
 // ---------------------------------------------------------------- reading
@@ -359,7 +357,9 @@ template <typename MAP>
 requires MapFileType<MAP> std::string save_map_to_bytes(const MAP& m, MapFileReport* report)
 {
 	MapFileReport r;
-	std::string bytes = write_map(m, map_type_name<MAP>(), r);
+	std::string bytes;
+	detail::ByteSink out(bytes);
+	write_map(out, m, map_type_name<MAP>(), r);
 	if (report != nullptr)
 		*report = std::move(r);
 	return bytes;
@@ -369,7 +369,10 @@ template <typename MAP>
 requires MapFileType<MAP> MapFileReport save_map(const MAP& m, const std::string& path)
 {
 	MapFileReport r;
-	detail::write_file(path, write_map(m, map_type_name<MAP>(), r));
+	detail::OutputFile file(path);
+	detail::ByteSink out(file);
+	write_map(out, m, map_type_name<MAP>(), r);
+	file.close();
 	return r;
 }
 
@@ -377,7 +380,8 @@ template <typename MAP>
 requires MapFileType<MAP>
 void load_map(MAP& m, const std::string& path)
 {
-	read_map(m, detail::read_file(path), path);
+	const detail::InputFile file(path);
+	read_map(m, file.bytes(), path);
 }
 
 template <typename MAP>

@@ -7,6 +7,9 @@
 
 #include "map_file_values.h"
 
+#include <algorithm>
+#include <bit>
+
 namespace cgogn::io::detail
 {
 
@@ -33,17 +36,65 @@ std::shared_ptr<AttributeBase> add_attribute_of_orbit(AttributeContainer& c, Orb
 }
 
 template <typename T>
-void write_values(std::string& out, const AttributeArray<T>& a, uint32 end)
+struct is_eigen_vector : std::false_type
 {
+};
+template <int N>
+struct is_eigen_vector<Eigen::Matrix<double, N, 1>> : std::true_type
+{
+};
+template <typename T>
+struct is_std_array : std::false_type
+{
+};
+template <typename S, std::size_t K>
+struct is_std_array<std::array<S, K>> : std::true_type
+{
+};
+
+// Whether the values of T are, in memory, exactly their encoding in the
+// file: then runs of lines are copied as they are, without a loop over the
+// values (the difference between a save or a load at memory speed and one
+// at a few hundred MB/s).
+template <typename T>
+constexpr bool is_bytes_as_encoded()
+{
+	if constexpr (std::endian::native != std::endian::little || std::is_same_v<T, bool>)
+		return false;
+	else if constexpr (std::is_arithmetic_v<T>)
+		return true;
+	else if constexpr (is_eigen_vector<T>::value)
+		return sizeof(T) == sizeof(double) * std::size_t(T::RowsAtCompileTime);
+	else if constexpr (is_std_array<T>::value)
+		return std::is_arithmetic_v<typename T::value_type> && !std::is_same_v<typename T::value_type, bool> &&
+			   sizeof(T) == sizeof(typename T::value_type) * std::tuple_size_v<T>;
+	else
+		return false;
+}
+
+template <typename T>
+void write_values(ByteSink& out, const AttributeBase& base, uint32 end)
+{
+	const auto& a = static_cast<const AttributeArray<T>&>(base);
 	put_string(out, ValueCodec<T>::name());
-	const std::size_t size_at = out.size();
-	put_scalar<uint64>(out, 0); // the payload's size, known once written
+	uint64 payload = ValueCodec<T>::size(a.default_value());
+	if constexpr (is_bytes_as_encoded<T>())
+		payload += uint64(end) * sizeof(T);
+	else
+		for (uint32 i = 0; i < end; ++i)
+			payload += ValueCodec<T>::size(a[i]);
+	put_scalar<uint64>(out, payload);
 	ValueCodec<T>::write(out, a.default_value());
-	for (uint32 i = 0; i < end; ++i)
-		ValueCodec<T>::write(out, a[i]);
-	std::string size;
-	put_scalar<uint64>(size, out.size() - size_at - sizeof(uint64));
-	out.replace(size_at, sizeof(uint64), size);
+	if constexpr (is_bytes_as_encoded<T>())
+		for (uint32 i = 0; i < end;)
+		{
+			const uint32 run = std::min(a.run_end(i), end);
+			out.append(reinterpret_cast<const char*>(&a[i]), std::size_t(run - i) * sizeof(T));
+			i = run;
+		}
+	else
+		for (uint32 i = 0; i < end; ++i)
+			ValueCodec<T>::write(out, a[i]);
 }
 
 template <typename T>
@@ -56,16 +107,27 @@ void read_values(AttributeRead& r)
 		r.in.fail("attribute '" + r.name + "' is of type " + ValueCodec<T>::name() +
 				  " in the file, but the map's own attribute of that name is not");
 	auto& a = static_cast<AttributeArray<T>&>(*r.found);
-	for (uint32 i = 0; i < r.end; ++i)
-		a[i] = ValueCodec<T>::read(r.in);
+	if constexpr (is_bytes_as_encoded<T>())
+	{
+		r.in.check_count(r.end, sizeof(T), "attribute values");
+		for (uint32 i = 0; i < r.end;)
+		{
+			const uint32 run = std::min(a.run_end(i), r.end);
+			r.in.read_bytes(reinterpret_cast<char*>(&a[i]), std::size_t(run - i) * sizeof(T));
+			i = run;
+		}
+	}
+	else
+		for (uint32 i = 0; i < r.end; ++i)
+			a[i] = ValueCodec<T>::read(r.in);
 }
 
 template <typename... T>
-bool AttributeValues<std::tuple<T...>>::write(std::string& out, const AttributeBase& a, uint32 end)
+typename AttributeValues<std::tuple<T...>>::Writer AttributeValues<std::tuple<T...>>::writer(const AttributeBase& a)
 {
-	return (
-		(a.type() == typeid(T) ? (write_values(out, static_cast<const AttributeArray<T>&>(a), end), true) : false) ||
-		...);
+	Writer w = nullptr;
+	(void)((a.type() == typeid(T) ? (w = &write_values<T>, true) : false) || ...);
+	return w;
 }
 
 template <typename... T>

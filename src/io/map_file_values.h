@@ -7,6 +7,7 @@
 #include <cgogn/geometry/types/vector_traits.h>
 
 #include "byte_reader.h"
+#include "file_io.h"
 
 #include <array>
 #include <bit>
@@ -19,9 +20,60 @@
 namespace cgogn::io::detail
 {
 
+/// Where a .cgmap file's bytes go: a string (save_map_to_bytes), or a file
+/// through a buffer of 1 MB, which large runs of values bypass (save_map: no
+/// copy of the whole file in memory).
+class ByteSink
+{
+public:
+	/// Appends to `out`.
+	explicit ByteSink(std::string& out) : out_(out)
+	{
+	}
+	/// Writes to `file`.
+	explicit ByteSink(OutputFile& file) : out_(buffer_), file_(&file)
+	{
+		buffer_.reserve(BUFFER_SIZE);
+	}
+	void append(const char* bytes, std::size_t n)
+	{
+		if (file_ != nullptr && out_.size() + n > BUFFER_SIZE)
+		{
+			flush();
+			if (n >= BUFFER_SIZE)
+			{
+				file_->write(bytes, n);
+				return;
+			}
+		}
+		out_.append(bytes, n);
+	}
+	void append(std::string_view s)
+	{
+		append(s.data(), s.size());
+	}
+	/// Writes what the buffer holds to the file (nothing for a string).
+	/// Throws io::Error when the file cannot be written.
+	void flush()
+	{
+		if (file_ != nullptr && !out_.empty())
+		{
+			file_->write(out_.data(), out_.size());
+			out_.clear();
+		}
+	}
+
+private:
+	static constexpr std::size_t BUFFER_SIZE = std::size_t(1) << 20;
+
+	std::string buffer_;
+	std::string& out_;
+	OutputFile* file_ = nullptr;
+};
+
 /// Appends the little-endian bytes of a scalar.
 template <typename S>
-void put_scalar(std::string& out, S v)
+void put_scalar(ByteSink& out, S v)
 {
 	char b[sizeof(S)];
 	std::memcpy(b, &v, sizeof(S));
@@ -32,7 +84,7 @@ void put_scalar(std::string& out, S v)
 }
 
 /// A length-prefixed string: uint32 byte count, then the bytes.
-inline void put_string(std::string& out, std::string_view s)
+inline void put_string(ByteSink& out, std::string_view s)
 {
 	put_scalar<uint32>(out, uint32(s.size()));
 	out.append(s);
@@ -80,7 +132,11 @@ struct ValueCodec
 	{
 		return ScalarName<T>::name;
 	}
-	static void write(std::string& out, const T& v)
+	static std::size_t size(const T&)
+	{
+		return std::is_same_v<T, bool> ? 1 : sizeof(T);
+	}
+	static void write(ByteSink& out, const T& v)
 	{
 		if constexpr (std::is_same_v<T, bool>)
 			put_scalar<uint8>(out, v ? 1 : 0);
@@ -109,7 +165,11 @@ struct ValueCodec<Eigen::Matrix<double, N, 1>>
 	{
 		return "Vec" + std::to_string(N);
 	}
-	static void write(std::string& out, const T& v)
+	static std::size_t size(const T&)
+	{
+		return N * sizeof(double);
+	}
+	static void write(ByteSink& out, const T& v)
 	{
 		for (int i = 0; i < N; ++i)
 			put_scalar<double>(out, v[i]);
@@ -130,7 +190,11 @@ struct ValueCodec<std::array<S, K>>
 	{
 		return std::string(ScalarName<S>::name) + "[" + std::to_string(K) + "]";
 	}
-	static void write(std::string& out, const std::array<S, K>& v)
+	static std::size_t size(const std::array<S, K>&)
+	{
+		return K * sizeof(S);
+	}
+	static void write(ByteSink& out, const std::array<S, K>& v)
 	{
 		for (const S& x : v)
 			put_scalar<S>(out, x);
@@ -151,7 +215,11 @@ struct ValueCodec<std::string>
 	{
 		return "string";
 	}
-	static void write(std::string& out, const std::string& v)
+	static std::size_t size(const std::string& v)
+	{
+		return sizeof(uint32) + v.size();
+	}
+	static void write(ByteSink& out, const std::string& v)
 	{
 		put_string(out, v);
 	}
@@ -181,10 +249,11 @@ struct AttributeValues;
 template <typename... T>
 struct AttributeValues<std::tuple<T...>>
 {
-	/// Appends the format's type name, the payload size, the default value
-	/// and the values of lines [0, end) of `a`; false (nothing written) when
-	/// its type is not one of the group.
-	static bool write(std::string& out, const AttributeBase& a, uint32 end);
+	/// Appends an attribute's format type name, payload size, default value
+	/// and the values of lines [0, end).
+	using Writer = void (*)(ByteSink& out, const AttributeBase& a, uint32 end);
+	/// The writer of `a`'s type; nullptr when its type is not one of the group.
+	static Writer writer(const AttributeBase& a);
 	/// Reads the default value and the values of an attribute of the type
 	/// named `type` into r.found, or into a new attribute of r.container;
 	/// false (nothing read) when the type is not one of the group. Throws
