@@ -12,7 +12,8 @@ namespace
 {
 
 // The value types Python can use, with their NumPy names.
-using Types = std::tuple<double, float, int32, int64, uint32, bool, Vec2, Vec3, Vec4>;
+using Types =
+	std::tuple<double, float, int8, uint8, std::int16_t, uint16, int32, uint32, int64, uint64, bool, Vec2, Vec3, Vec4>;
 
 // Calls f.template operator()<T>() for the value type of (dtype, components);
 // ValueError when there is none.
@@ -25,12 +26,22 @@ decltype(auto) with_type(const std::string& dtype, int components, F&& f)
 			return f.template operator()<double>();
 		if (dtype == "float32")
 			return f.template operator()<float>();
+		if (dtype == "int8")
+			return f.template operator()<int8>();
+		if (dtype == "uint8")
+			return f.template operator()<uint8>();
+		if (dtype == "int16")
+			return f.template operator()<std::int16_t>();
+		if (dtype == "uint16")
+			return f.template operator()<uint16>();
 		if (dtype == "int32")
 			return f.template operator()<int32>();
-		if (dtype == "int64" || dtype == "int")
-			return f.template operator()<int64>();
 		if (dtype == "uint32")
 			return f.template operator()<uint32>();
+		if (dtype == "int64" || dtype == "int")
+			return f.template operator()<int64>();
+		if (dtype == "uint64")
+			return f.template operator()<uint64>();
 		if (dtype == "bool")
 			return f.template operator()<bool>();
 	}
@@ -43,8 +54,9 @@ decltype(auto) with_type(const std::string& dtype, int components, F&& f)
 		if (components == 4)
 			return f.template operator()<Vec4>();
 	}
-	throw py::value_error("unsupported attribute type: dtype '" + dtype + "' with " + std::to_string(components) +
-						  " component(s) (float64 with 1 to 4, or float32, int32, int64, uint32, bool with 1)");
+	throw py::value_error(
+		"unsupported attribute type: dtype '" + dtype + "' with " + std::to_string(components) +
+		" component(s) (float64 with 1 to 4, or float32, int8 to int64, uint8 to uint64, bool with 1)");
 }
 
 // Calls f(attribute) with the typed attribute of this name and kind, if any;
@@ -105,7 +117,7 @@ void bind_attribute_methods(py::class_<PyMap<MAP>>& c)
 		 py::arg("name"), py::arg("kind"), py::arg("dtype") = "float64", py::arg("components") = 1,
 		 "Adds an attribute (values at their default: 0, False, zero vectors) on the cells of a kind, indexing "
 		 "the kind if needed, and returns its array (see attribute()). dtype: float64 (1 to 4 components), "
-		 "float32, int32, int64, uint32 or bool.")
+		 "float32, int8, int16, int32, int64, uint8, uint16, uint32, uint64 or bool.")
 		.def(
 			"attribute",
 			[](W& w, const std::string& name, const std::string& kind) { return get_array(w, name, kind_of(kind)); },

@@ -130,6 +130,14 @@ const char* dtype_name()
 {
 	if constexpr (std::is_same_v<T, float>)
 		return "float32";
+	else if constexpr (std::is_same_v<T, int8>)
+		return "int8";
+	else if constexpr (std::is_same_v<T, uint8>)
+		return "uint8";
+	else if constexpr (std::is_same_v<T, std::int16_t>)
+		return "int16";
+	else if constexpr (std::is_same_v<T, uint16>)
+		return "uint16";
 	else if constexpr (std::is_same_v<T, int32>)
 		return "int32";
 	else if constexpr (std::is_same_v<T, uint32>)

@@ -57,3 +57,24 @@ def test_missing_file_and_unknown_extension(tmp_path):
     (tmp_path / "a.xyz").write_text("1 2 3\n")
     with pytest.raises(cgogn.IOError):
         cgogn.load(str(tmp_path / "a.xyz"))
+
+
+@pytest.mark.parametrize("ext", ["ply", "vtu"])
+def test_integer_attributes_keep_their_type(data, tmp_path, ext):
+    if ext == "ply":
+        m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+        kind = "face"
+    else:
+        m = cgogn.load(str(data / "volume" / "liver_hex_624.mesh"))
+        kind = "volume"
+    for dtype in ("int8", "uint8", "int16", "uint16", "int32", "uint32"):
+        a = m.add_attribute("tag_" + dtype, kind, dtype)
+        a[:] = np.arange(len(a)) % 100
+    out = tmp_path / ("mesh." + ext)
+    m.save(str(out))
+    back = cgogn.load(str(out))
+    held = {name: dtype for name, dtype, _ in back.attributes(kind)}
+    for dtype in ("int8", "uint8", "int16", "uint16", "int32", "uint32"):
+        assert held["tag_" + dtype] == dtype
+        values = back.attribute("tag_" + dtype, kind)[back.cell_ids(kind)]
+        assert sorted(values) == sorted(m.attribute("tag_" + dtype, kind)[m.cell_ids(kind)])

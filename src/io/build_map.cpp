@@ -26,9 +26,25 @@ void check_free_name(const MAP& m, const std::string& name, std::type_index type
 							  "' of another type: cannot load the file's '" + name + "' into it");
 }
 
+// Calls f.template operator()<T>() with the attribute type of column c:
+// the integer of its type for one integer component, else double, Vec2 or
+// Vec3 by its dimension.
+template <typename F>
+void visit_attribute_type(const Column& c, const F& f)
+{
+	if (c.dim == 1)
+		visit_value_type(c.type, f);
+	else if (c.dim == 2)
+		f.template operator()<Vec2>();
+	else
+		f.template operator()<Vec3>();
+}
+
 std::type_index column_type(const Column& c)
 {
-	return c.dim == 1 ? std::type_index(typeid(double)) : c.dim == 2 ? typeid(Vec2) : typeid(Vec3);
+	std::type_index t = typeid(double);
+	visit_attribute_type(c, [&]<typename T>() { t = typeid(T); });
+	return t;
 }
 
 // Columns that become attributes. Vertex data named `position` is not
@@ -37,6 +53,27 @@ std::type_index column_type(const Column& c)
 bool usable(const Column& c)
 {
 	return c.dim >= 1 && c.dim <= 3 && !c.name.empty() && c.name.rfind("__", 0) != 0;
+}
+
+// What the columns of d lose on their way into the map: columns that no
+// attribute holds, and integer columns of several components, held as
+// vectors of double (LoadReport::dropped).
+void column_notes(const MeshData& d, const char* cell, std::vector<std::string>& notes)
+{
+	auto note = [&](const std::vector<Column>& columns, const std::string& of) {
+		for (const auto& c : columns)
+			if (c.name.empty() || c.name.rfind("__", 0) == 0)
+				notes.push_back(of + " data " + (c.name.empty() ? "without a name" : "'" + c.name + "'") +
+								": names starting with __ are the library's own, and data needs a name");
+			else if (c.dim < 1 || c.dim > 3)
+				notes.push_back(of + " data '" + c.name + "' of " + std::to_string(c.dim) +
+								" components: attributes are loaded from data of 1, 2 or 3 components");
+			else if (c.dim > 1 && is_integer_type(c.type))
+				notes.push_back(of + " data '" + c.name + "': integers of " + std::to_string(c.dim) +
+								" components, held as a vector of double (an integer attribute has one component)");
+	};
+	note(d.vertex_columns, "vertex");
+	note(d.cell_columns, cell);
 }
 
 // Everything about names that could make the build fail, checked before the
@@ -82,23 +119,18 @@ std::shared_ptr<AttributeArray<T>> get_or_add(MAP& m, const std::string& name, c
 template <typename CELL, typename MAP, typename LINES>
 void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string& path)
 {
-	auto put = [&]<typename T>(std::shared_ptr<AttributeArray<T>> a) {
+	visit_attribute_type(c, [&]<typename T>() {
+		auto a = get_or_add<T, CELL>(m, c.name, path);
 		lines([&](uint32 line, std::size_t i) {
 			const double* v = &c.values[i * c.dim];
-			if constexpr (std::is_same_v<T, double>)
-				(*a)[line] = v[0];
-			else if constexpr (std::is_same_v<T, Vec2>)
+			if constexpr (std::is_same_v<T, Vec2>)
 				(*a)[line] = Vec2(v[0], v[1]);
-			else
+			else if constexpr (std::is_same_v<T, Vec3>)
 				(*a)[line] = Vec3(v[0], v[1], v[2]);
+			else
+				(*a)[line] = T(v[0]); // exact: see Column
 		});
-	};
-	if (c.dim == 1)
-		put(get_or_add<double, CELL>(m, c.name, path));
-	else if (c.dim == 2)
-		put(get_or_add<Vec2, CELL>(m, c.name, path));
-	else
-		put(get_or_add<Vec3, CELL>(m, c.name, path));
+	});
 }
 
 // The dart ids add_dart will hand out next: free lines last-in first-out, then new ones.
@@ -264,12 +296,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			if (!usable(c))
 				continue;
 			// creating the attribute indexes the orbit if needed
-			if (c.dim == 1)
-				get_or_add<double, Top>(m, c.name, path);
-			else if (c.dim == 2)
-				get_or_add<Vec2, Top>(m, c.name, path);
-			else
-				get_or_add<Vec3, Top>(m, c.name, path);
+			visit_attribute_type(c, [&]<typename T>() { get_or_add<T, Top>(m, c.name, path); });
 			auto cell_lines = [&](const auto& f) {
 				for (const auto& [dart, cell] : firsts)
 				{
@@ -281,6 +308,8 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 		}
 	}
 
+	rep.dropped = d.dropped;
+	column_notes(d, dim == 2 ? "face" : "volume", rep.dropped);
 	rep.nb_vertices_read = d.nb_vertices();
 	rep.nb_cells_read = br.nb_cells_read;
 	rep.nb_cells_built = br.nb_cells_built;
@@ -363,6 +392,8 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 				},
 				path);
 
+	rep.dropped = d.dropped;
+	column_notes(d, "face", rep.dropped);
 	rep.build.nb_cells_read = d.nb_cells();
 	rep.build.vertex_offset = vertex.empty() ? 0 : vertex[0].dart.index;
 	rep.nb_vertices_read = d.nb_vertices();

@@ -13,43 +13,92 @@ namespace cgogn::io::detail
 namespace
 {
 
-// Column of the typed attributes (double, Vec2, Vec3) of a container, gathered
-// in the order of `lines`.
+// Whether T is an integer type a column holds (see ValueType), and which.
+template <typename T>
+constexpr ValueType integer_value_type()
+{
+	if constexpr (std::is_same_v<T, int8>)
+		return ValueType::Int8;
+	else if constexpr (std::is_same_v<T, uint8>)
+		return ValueType::UInt8;
+	else if constexpr (std::is_same_v<T, std::int16_t>)
+		return ValueType::Int16;
+	else if constexpr (std::is_same_v<T, uint16>)
+		return ValueType::UInt16;
+	else if constexpr (std::is_same_v<T, int32>)
+		return ValueType::Int32;
+	else if constexpr (std::is_same_v<T, uint32>)
+		return ValueType::UInt32;
+	else if constexpr (std::is_same_v<T, int64>)
+		return ValueType::Int64;
+	else
+		return ValueType::UInt64;
+}
+
+// The column of attribute a when its type is T: its values in the order of
+// `lines`; false when a is not of type T. A 64-bit integer attribute whose
+// values a double does not hold exactly is refused (io::Error naming path).
+template <typename T>
+bool gather_column(const AttributeBase& a, const std::vector<uint32>& lines, Column& c, const std::string& path)
+{
+	if (a.type() != typeid(T))
+		return false;
+	const auto& at = static_cast<const AttributeArray<T>&>(a);
+	if constexpr (std::is_same_v<T, double>)
+	{
+		c.dim = 1;
+		for (uint32 l : lines)
+			c.values.push_back(at[l]);
+	}
+	else if constexpr (std::is_same_v<T, Vec2> || std::is_same_v<T, Vec3>)
+	{
+		c.dim = uint32(T::RowsAtCompileTime);
+		for (uint32 l : lines)
+			for (uint32 k = 0; k < c.dim; ++k)
+				c.values.push_back(at[l][k]);
+	}
+	else
+	{
+		c.dim = 1;
+		c.type = integer_value_type<T>();
+		for (uint32 l : lines)
+		{
+			const double v = double(at[l]);
+			if constexpr (sizeof(T) == 8)
+				if (std::abs(v) > MAX_EXACT_INTEGER)
+					throw Error(path, "the attribute '" + c.name + "' holds " + std::to_string(at[l]) +
+										  ": 64-bit integer values are written up to 2^53");
+			c.values.push_back(v);
+		}
+	}
+	return true;
+}
+
+// The columns of the attributes a file can hold (double, Vec2, Vec3, the
+// integers of 8 to 64 bits) of a container, gathered in the order of
+// `lines`; `skip_position` for the vertices.
 void gather_columns(const AttributeContainer& cont, const std::vector<uint32>& lines, std::vector<Column>& out,
-					bool skip_position)
+					bool skip_position, const std::string& path)
 {
 	for (const auto& a : cont.attributes())
 	{
 		const std::string& name = a->name();
-		if (name.rfind("__", 0) == 0 || (skip_position && name == "position"))
+		// position is written apart; original_vertex (uint32) is a load's own
+		// record of the file it read, which a file of this map must not carry
+		if (name.rfind("__", 0) == 0 || (skip_position && name == "position") ||
+			(skip_position && name == "original_vertex" && a->type() == typeid(uint32)))
 			continue;
 		if (name.find_first_of(" \t\r\n") != std::string::npos)
 			continue;
 		Column c{name, 0, {}};
-		if (a->type() == typeid(double))
-		{
-			c.dim = 1;
-			const auto& at = static_cast<const AttributeArray<double>&>(*a);
-			for (uint32 l : lines)
-				c.values.push_back(at[l]);
-		}
-		else if (a->type() == typeid(Vec2))
-		{
-			c.dim = 2;
-			const auto& at = static_cast<const AttributeArray<Vec2>&>(*a);
-			for (uint32 l : lines)
-				c.values.insert(c.values.end(), {at[l][0], at[l][1]});
-		}
-		else if (a->type() == typeid(Vec3))
-		{
-			c.dim = 3;
-			const auto& at = static_cast<const AttributeArray<Vec3>&>(*a);
-			for (uint32 l : lines)
-				c.values.insert(c.values.end(), {at[l][0], at[l][1], at[l][2]});
-		}
-		else
-			continue;
-		out.push_back(std::move(c));
+		const bool held =
+			[&]<typename... T>(std::tuple<T...>*) {
+				return (gather_column<T>(*a, lines, c, path) || ...);
+			}(static_cast<
+				std::tuple<double, Vec2, Vec3, int8, uint8, std::int16_t, uint16, int32, uint32, int64, uint64>*>(
+				nullptr));
+		if (held)
+			out.push_back(std::move(c));
 	}
 }
 
@@ -75,7 +124,7 @@ std::vector<uint32> number_vertices(const MAP& m, MeshData& d, const std::string
 		d.positions.insert(d.positions.end(), {p[0], p[1], p[2]});
 	});
 	if (attributes)
-		gather_columns(vc, lines, d.vertex_columns, true);
+		gather_columns(vc, lines, d.vertex_columns, true, path);
 	return id;
 }
 
@@ -111,7 +160,7 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 			face_lines.push_back(index_of(m, f));
 	});
 	if (attributes && faces_indexed)
-		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false);
+		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false, path);
 	return d;
 }
 
@@ -241,7 +290,7 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 	});
 	d.finish_polyhedra();
 	if (attributes && volumes_indexed)
-		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false);
+		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false, path);
 	return d;
 }
 

@@ -13,13 +13,72 @@
 namespace cgogn::io::detail
 {
 
-/// A named per-element array of `dim` doubles per element (dim 1: scalar,
-/// 2: Vec2, 3: Vec3).
+/// The type of a column's values, in the file and in the map: floating
+/// point (float32 data is widened, exactly, to double) or an integer of a
+/// given width and sign.
+enum class ValueType : uint8
+{
+	Float64,
+	Int8,
+	UInt8,
+	Int16,
+	UInt16,
+	Int32,
+	UInt32,
+	Int64,
+	UInt64
+};
+
+inline bool is_integer_type(ValueType t)
+{
+	return t != ValueType::Float64;
+}
+
+/// The C++ type of a value type: calls f.template operator()<T>().
+template <typename F>
+decltype(auto) visit_value_type(ValueType t, const F& f)
+{
+	switch (t)
+	{
+	case ValueType::Int8:
+		return f.template operator()<int8>();
+	case ValueType::UInt8:
+		return f.template operator()<uint8>();
+	case ValueType::Int16:
+		return f.template operator()<std::int16_t>();
+	case ValueType::UInt16:
+		return f.template operator()<uint16>();
+	case ValueType::Int32:
+		return f.template operator()<int32>();
+	case ValueType::UInt32:
+		return f.template operator()<uint32>();
+	case ValueType::Int64:
+		return f.template operator()<int64>();
+	case ValueType::UInt64:
+		return f.template operator()<uint64>();
+	case ValueType::Float64:
+		break;
+	}
+	return f.template operator()<double>();
+}
+
+/// The largest magnitude of a 64-bit integer value a column holds (its
+/// values are doubles): 2^53 - 1, below which every integer is exact. Loads
+/// refuse larger ones (a larger value may have been rounded already).
+constexpr double MAX_EXACT_INTEGER = 9007199254740991.0;
+
+/// A named per-element array of `dim` values per element (dim 1: scalar,
+/// 2: Vec2, 3: Vec3), stored as doubles whatever `type` (every value of
+/// every type is exact: integers are integral, in their type's range, and 64-bit
+/// ones within +-MAX_EXACT_INTEGER). A column of one integer component
+/// becomes an integer attribute of its type; integer columns of several
+/// components become vectors of double (the load reports it).
 struct Column
 {
 	std::string name;
 	uint32 dim = 1;
 	std::vector<double> values;
+	ValueType type = ValueType::Float64;
 };
 
 /// Why a reader must reject a data array named `name` for the vertices

@@ -49,6 +49,48 @@ uint32 components_of(const std::string& type)
 	return 0;
 }
 
+// The column type of an .ovm scalar type: its integer type, Float64 for
+// float, double and bool.
+ValueType ovm_value_type(const std::string& type)
+{
+	static const std::pair<const char*, ValueType> integers[] = {
+		{"int", ValueType::Int32},   {"unsigned int", ValueType::UInt32},   {"uint", ValueType::UInt32},
+		{"short", ValueType::Int16}, {"unsigned short", ValueType::UInt16}, {"ushort", ValueType::UInt16},
+		{"long", ValueType::Int64},  {"unsigned long", ValueType::UInt64},  {"ulong", ValueType::UInt64},
+		{"char", ValueType::Int8},   {"unsigned char", ValueType::UInt8},   {"uchar", ValueType::UInt8}};
+	for (const auto& [name, t] : integers)
+		if (type == name)
+			return t;
+	return ValueType::Float64;
+}
+
+// The .ovm name of an integer column type.
+const char* ovm_type_name(ValueType t)
+{
+	switch (t)
+	{
+	case ValueType::Int8:
+		return "char";
+	case ValueType::UInt8:
+		return "uchar";
+	case ValueType::Int16:
+		return "short";
+	case ValueType::UInt16:
+		return "ushort";
+	case ValueType::Int32:
+		return "int";
+	case ValueType::UInt32:
+		return "uint";
+	case ValueType::Int64:
+		return "long";
+	case ValueType::UInt64:
+		return "ulong";
+	case ValueType::Float64:
+		break;
+	}
+	return "double";
+}
+
 // Whether b is the cycle a, starting anywhere (same direction). O(size).
 bool same_cycle(const std::vector<uint32>& a, const std::vector<uint32>& b)
 {
@@ -212,15 +254,18 @@ MeshData read_ovm(std::string_view text, const std::string& path)
 		}
 		r.check_count(count * dim, 2, "property values");
 		std::vector<double> values(count * dim);
+		const ValueType value_type = dim == 1 ? ovm_value_type(type) : ValueType::Float64;
 		for (double& v : values)
-			v = r.read_double("a property value");
+			v = is_integer_type(value_type) ? double(r.read_int("an integer property value"))
+											: r.read_double("a property value");
 		if ((entity == "vprop" || entity == "cprop") && dim <= 3)
 		{
 			std::vector<std::string>& names = entity == "vprop" ? vertex_names : cell_names;
 			if (std::string why = data_name_conflict(names, name, entity == "vprop"); !why.empty())
 				r.fail(why);
 			names.push_back(name);
-			(entity == "vprop" ? d.vertex_columns : d.cell_columns).push_back(Column{name, dim, std::move(values)});
+			(entity == "vprop" ? d.vertex_columns : d.cell_columns)
+				.push_back(Column{name, dim, std::move(values), value_type});
 		}
 		else
 			d.dropped.push_back(entity + " '" + name + "' of type " + type +
@@ -317,13 +362,19 @@ std::string write_ovm(const MeshData& d)
 		{
 			if (c.dim < 1 || c.dim > 3 || c.name.find('"') != std::string::npos)
 				continue;
+			const bool integer = c.dim == 1 && is_integer_type(c.type);
 			s += entity;
-			s += c.dim == 1 ? " double \"" : c.dim == 2 ? " vec2d \"" : " vec3d \"";
+			s += ' ';
+			s += integer ? ovm_type_name(c.type) : c.dim == 1 ? "double" : c.dim == 2 ? "vec2d" : "vec3d";
+			s += " \"";
 			s += c.name;
 			s += "\"\n";
 			for (std::size_t i = 0; i < c.values.size(); ++i)
 			{
-				append_double(s, c.values[i]);
+				if (integer)
+					append_int(s, int64(c.values[i]));
+				else
+					append_double(s, c.values[i]);
 				s += (i + 1) % c.dim == 0 ? '\n' : ' ';
 			}
 		}

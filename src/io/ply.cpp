@@ -123,6 +123,28 @@ double read_binary(ByteReader& b, PType t)
 	return 0.0;
 }
 
+// The column type of a scalar property of type t.
+ValueType value_type(PType t)
+{
+	switch (t)
+	{
+	case PType::Int8:
+		return ValueType::Int8;
+	case PType::UInt8:
+		return ValueType::UInt8;
+	case PType::Int16:
+		return ValueType::Int16;
+	case PType::UInt16:
+		return ValueType::UInt16;
+	case PType::Int32:
+		return ValueType::Int32;
+	case PType::UInt32:
+		return ValueType::UInt32;
+	default:
+		return ValueType::Float64;
+	}
+}
+
 // Groups the scalar properties of an element into columns (see the file
 // comment). A scalar property whose column name is taken by a group (`normal`
 // beside nx ny nz, `foo` beside foo_x foo_y) or reserved (data_name_conflict)
@@ -193,7 +215,7 @@ void assign_columns(Element& e, std::vector<Column>& cols, bool is_vertex, const
 			throw Error(path, Error::Where::Line, p.header_line,
 						"property '" + p.name + "' of element '" + e.name + "': " + why);
 		names.push_back(p.name);
-		cols.push_back(Column{p.name, 1, {}});
+		cols.push_back(Column{p.name, 1, {}, value_type(p.type)});
 		p.column = int(cols.size() - 1);
 	}
 }
@@ -440,12 +462,73 @@ bool byte_valued(const Column& c)
 					   [](double v) { return v >= 0.0 && v <= 255.0 && v == std::floor(v); });
 }
 
-// Header lines and per-element writers for a list of columns.
+// Header lines and per-element writers for a list of columns: each value
+// is written as a byte (colours of 0 to 255), as a double, or as the integer
+// type of its column.
 struct ColumnLayout
 {
 	const Column* col;
 	bool as_byte;
+	std::optional<PType> integer; // the PLY integer type of an integer column
 };
+
+// The PLY type that writes the integer column c exactly: its own, or for
+// 64-bit values (PLY has no 64-bit integers) int or uint when they fit;
+// nullopt (written as double, exactly: see Column) when none does.
+std::optional<PType> ply_integer_type(const Column& c)
+{
+	switch (c.type)
+	{
+	case ValueType::Float64:
+		return std::nullopt;
+	case ValueType::Int8:
+		return PType::Int8;
+	case ValueType::UInt8:
+		return PType::UInt8;
+	case ValueType::Int16:
+		return PType::Int16;
+	case ValueType::UInt16:
+		return PType::UInt16;
+	case ValueType::Int32:
+		return PType::Int32;
+	case ValueType::UInt32:
+		return PType::UInt32;
+	case ValueType::Int64:
+	case ValueType::UInt64:
+		break;
+	}
+	const auto [lo, hi] = std::minmax_element(c.values.begin(), c.values.end());
+	const bool empty = lo == c.values.end();
+	if (c.type == ValueType::Int64 && (empty || (*lo >= -2147483648.0 && *hi <= 2147483647.0)))
+		return PType::Int32;
+	if (c.type == ValueType::UInt64 && (empty || *hi <= 4294967295.0))
+		return PType::UInt32;
+	return std::nullopt;
+}
+
+const char* ply_type_name(PType t)
+{
+	switch (t)
+	{
+	case PType::Int8:
+		return "char";
+	case PType::UInt8:
+		return "uchar";
+	case PType::Int16:
+		return "short";
+	case PType::UInt16:
+		return "ushort";
+	case PType::Int32:
+		return "int";
+	case PType::UInt32:
+		return "uint";
+	case PType::Float32:
+		return "float";
+	case PType::Float64:
+		break;
+	}
+	return "double";
+}
 
 // A property name of an element and what it writes, to refuse a second use.
 struct PropertyOwner
@@ -466,7 +549,8 @@ std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& h
 		if (c.dim < 1 || c.dim > 3)
 			continue;
 		const bool as_byte = c.name == "color" && c.dim == 3 && byte_valued(c);
-		const char* type = as_byte ? "uchar" : "double";
+		const std::optional<PType> integer = c.dim == 1 ? ply_integer_type(c) : std::nullopt;
+		const char* type = as_byte ? "uchar" : integer ? ply_type_name(*integer) : "double";
 		auto prop = [&](const std::string& n) {
 			for (const auto& o : owners)
 				if (o.property == n)
@@ -489,7 +573,7 @@ std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& h
 		else
 			for (uint32 k = 0; k < c.dim; ++k)
 				prop(c.name + (k == 0 ? "_x" : k == 1 ? "_y" : "_z"));
-		out.push_back({&c, as_byte});
+		out.push_back({&c, as_byte, integer});
 	}
 	return out;
 }
@@ -500,7 +584,34 @@ void put_columns(std::string& s, const std::vector<ColumnLayout>& cols, std::siz
 		for (uint32 k = 0; k < l.col->dim; ++k)
 		{
 			const double v = l.col->values[i * l.col->dim + k];
-			if (binary)
+			if (l.integer && binary)
+				switch (*l.integer)
+				{
+				case PType::Int8:
+					append_raw(s, int8(v));
+					break;
+				case PType::UInt8:
+					append_raw(s, uint8(v));
+					break;
+				case PType::Int16:
+					append_raw(s, std::int16_t(v));
+					break;
+				case PType::UInt16:
+					append_raw(s, uint16(v));
+					break;
+				case PType::Int32:
+					append_raw(s, int32(v));
+					break;
+				default:
+					append_raw(s, uint32(v));
+					break;
+				}
+			else if (l.integer)
+			{
+				s += ' ';
+				append_int(s, int64(v));
+			}
+			else if (binary)
 			{
 				if (l.as_byte)
 					s.push_back(char(uint8(v)));

@@ -24,6 +24,12 @@ inline void append_uint(std::string& s, uint64 v)
 	auto r = std::to_chars(buf, buf + sizeof(buf), v);
 	s.append(buf, r.ptr);
 }
+inline void append_int(std::string& s, int64 v)
+{
+	char buf[24];
+	auto r = std::to_chars(buf, buf + sizeof(buf), v);
+	s.append(buf, r.ptr);
+}
 /// Appends the bytes of v in little-endian order.
 template <typename T>
 void append_raw(std::string& s, T v)

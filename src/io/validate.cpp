@@ -2,6 +2,9 @@
 #include <cgogn/io/error.h>
 
 #include "formats.h"
+#include "value_type_names.h"
+
+#include <cmath>
 
 namespace cgogn::io::detail
 {
@@ -50,11 +53,23 @@ void validate(const MeshData& d, const std::string& path)
 		if (v >= nv)
 			throw Error(path, "vertex index " + std::to_string(v) + " out of range (the file has " +
 								  std::to_string(nv) + " vertices)");
+	// integer data must hold values of its type: an attribute of that type
+	// receives them
+	auto check_values = [&](const Column& c, const char* of) {
+		if (is_integer_type(c.type))
+			for (double v : c.values)
+				if (!holds_value(c.type, v))
+					throw Error(path,
+								std::string(of) + " data '" + c.name + "' of type " + value_type_name(c.type) +
+									" holds the value " + std::to_string(v) + ", which that type does not have" +
+									(std::abs(v) > MAX_EXACT_INTEGER ? " (64-bit values are read up to 2^53)" : ""));
+	};
 	std::vector<std::string> names;
 	for (const auto& c : d.vertex_columns)
 	{
 		if (c.values.size() != std::size_t(nv) * c.dim)
 			throw Error(path, "vertex data '" + c.name + "' does not have one value per vertex");
+		check_values(c, "vertex");
 		if (std::string why = data_name_conflict(names, c.name, true); !why.empty())
 			throw Error(path, why);
 		names.push_back(c.name);
@@ -64,6 +79,7 @@ void validate(const MeshData& d, const std::string& path)
 	{
 		if (c.values.size() != std::size_t(d.nb_cells()) * c.dim)
 			throw Error(path, "cell data '" + c.name + "' does not have one value per cell");
+		check_values(c, "cell");
 		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
 			throw Error(path, why);
 		names.push_back(c.name);

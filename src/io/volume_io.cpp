@@ -69,7 +69,6 @@ LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& 
 	LoadReport r = detail::build_map(m, d, path);
 	r.format = f;
 	r.nb_cells_reoriented = flipped;
-	r.dropped = d.dropped;
 	return r;
 }
 

@@ -4,11 +4,13 @@
 // (tetra 10, voxel 11, hexahedron 12, wedge 13, pyramid 14, and the corner
 // nodes of quadratic tetra 24 / hexahedron 25) are kept; lower-dimensional
 // cells are ignored. POINT_DATA and CELL_DATA arrays of 1 to 3 components
-// (SCALARS, VECTORS, NORMALS, FIELD) become columns.
+// (SCALARS, VECTORS, NORMALS, FIELD) become columns, of their integer type
+// when they have one.
 #include "byte_reader.h"
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
+#include "value_type_names.h"
 #include "vtk_cells.h"
 
 #include <array>
@@ -273,8 +275,8 @@ private:
 		names.push_back(name);
 		std::vector<double> v;
 		read_array(count * dim, type, v, false);
-		if (dim <= 3)
-			target.push_back(Column{name, dim, std::move(v)});
+		// every array is kept: the load reports those no attribute holds
+		target.push_back(Column{name, dim, std::move(v), vtk_legacy_value_type(type).value_or(ValueType::Float64)});
 	}
 
 	std::string_view data_;
@@ -317,6 +319,16 @@ std::string write_vtk(const MeshData& d, bool binary)
 			append_uint(s, v);
 			s += last ? '\n' : ' ';
 		}
+	};
+	// an integer value of a column of type t (exact: see Column)
+	auto put_integer = [&](double v, ValueType t) {
+		if (!binary)
+		{
+			append_int(s, int64(v));
+			s += '\n';
+			return;
+		}
+		visit_value_type(t, [&]<typename T>() { append_raw_be(s, T(v)); });
 	};
 	for (std::size_t i = 0; i < d.positions.size(); ++i)
 		put_double(d.positions[i], i % 3 == 2);
@@ -384,12 +396,21 @@ std::string write_vtk(const MeshData& d, bool binary)
 				s += '\n';
 				first = false;
 			}
-			if (c.dim == 3)
-				s += "VECTORS " + c.name + " double\n";
+			if (c.dim == 1 && is_integer_type(c.type))
+			{
+				s += "SCALARS " + c.name + " " + vtk_legacy_type_name(c.type) + " 1\nLOOKUP_TABLE default\n";
+				for (double v : c.values)
+					put_integer(v, c.type);
+			}
 			else
-				s += "SCALARS " + c.name + " double " + std::to_string(c.dim) + "\nLOOKUP_TABLE default\n";
-			for (std::size_t i = 0; i < c.values.size(); ++i)
-				put_double(c.values[i], i % c.dim == c.dim - 1);
+			{
+				if (c.dim == 3)
+					s += "VECTORS " + c.name + " double\n";
+				else
+					s += "SCALARS " + c.name + " double " + std::to_string(c.dim) + "\nLOOKUP_TABLE default\n";
+				for (std::size_t i = 0; i < c.values.size(); ++i)
+					put_double(c.values[i], i % c.dim == c.dim - 1);
+			}
 			if (binary)
 				s += '\n';
 		}

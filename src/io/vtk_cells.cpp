@@ -149,7 +149,7 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 	{
 		if (col.values.size() != types.size() * col.dim)
 			fail("cell data '" + col.name + "' does not have one value per cell");
-		Column k{col.name, col.dim, {}};
+		Column k{col.name, col.dim, {}, col.type};
 		for (uint32 c : kept)
 			k.values.insert(k.values.end(), col.values.begin() + std::ptrdiff_t(c) * col.dim,
 							col.values.begin() + std::ptrdiff_t(c + 1) * col.dim);

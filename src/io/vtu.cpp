@@ -6,6 +6,7 @@
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
+#include "value_type_names.h"
 #include "vtk_cells.h"
 
 #include <map>
@@ -170,12 +171,11 @@ public:
 					if (std::string why = data_name_conflict(names, name, of_points); !why.empty())
 						fail_at(t.begin, why);
 					names.push_back(name);
-					if (dim >= 1 && dim <= 3)
-					{
-						const uint64 count = of_points ? nb_points_ : nb_cells_;
-						Column c{name, dim, values(t, content_end, count * dim, false)};
-						(of_points ? d.vertex_columns : cell_data).push_back(std::move(c));
-					}
+					// every array is kept: the load reports those no attribute holds
+					const uint64 count = of_points ? nb_points_ : nb_cells_;
+					Column c{name, dim, values(t, content_end, count * dim, false),
+							 vtu_value_type(t.attrs["type"]).value_or(ValueType::Float64)};
+					(of_points ? d.vertex_columns : cell_data).push_back(std::move(c));
 				}
 			}
 		}
@@ -341,8 +341,9 @@ private:
 			TextReader r(data_.substr(t.end, content_end - t.end), path_, '\0');
 			r.check_count(count, 2, "values");
 			out.reserve(count);
+			const bool integer = type.find("Int") != std::string::npos;
 			for (uint64 i = 0; i < count; ++i)
-				out.push_back(r.read_double("a value"));
+				out.push_back(integer ? double(r.read_int("an integer value")) : r.read_double("a value"));
 			return out;
 		}
 		const std::string raw = bytes(t, content_end);
@@ -488,6 +489,25 @@ std::string write_vtu(const MeshData& d, bool binary)
 					append_raw(s, x);
 			});
 	};
+	// an integer column of type t (its values are exact: see Column)
+	auto integers_of_type = [&](const std::string& name, ValueType t, const std::vector<double>& v) {
+		array(
+			vtu_type_name(t), name, 1,
+			[&](std::string& s) {
+				for (std::size_t i = 0; i < v.size(); ++i)
+				{
+					if (i > 0)
+						s += i % 16 == 0 ? '\n' : ' ';
+					append_int(s, int64(v[i]));
+				}
+			},
+			[&](std::string& s) {
+				visit_value_type(t, [&]<typename T>() {
+					for (double x : v)
+						append_raw(s, T(x));
+				});
+			});
+	};
 	head += "<Points>\n";
 	doubles("Points", 3, d.positions);
 	head += "</Points>\n<Cells>\n";
@@ -526,7 +546,11 @@ std::string write_vtu(const MeshData& d, bool binary)
 	auto data = [&](const char* section, const std::vector<Column>& cols) {
 		head += std::string("<") + section + ">\n";
 		for (const auto& c : cols)
-			if (c.dim >= 1 && c.dim <= 3 && c.name.find_first_of("\"<>&") == std::string::npos)
+			if (c.dim < 1 || c.dim > 3 || c.name.find_first_of("\"<>&") != std::string::npos)
+				continue;
+			else if (c.dim == 1 && is_integer_type(c.type))
+				integers_of_type(c.name, c.type, c.values);
+			else
 				doubles(c.name, c.dim, c.values);
 		head += std::string("</") + section + ">\n";
 	};

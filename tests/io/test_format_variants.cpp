@@ -167,11 +167,11 @@ TEST(PlyVariants, BigEndianBinaryWithExtraPropertiesAndElements)
 	EXPECT_EQ(positions(m)[3], Vec3(1, 1, 0.5));
 	auto color = get_attribute<Vec3, Vertex>(m, "color");
 	auto quality = get_attribute<double, Vertex>(m, "quality");
-	auto flags = get_attribute<double, Face>(m, "flags");
+	auto flags = get_attribute<int32, Face>(m, "flags"); // an int property stays an int
 	ASSERT_TRUE(color && quality && flags);
 	EXPECT_EQ(std::vector<Vec3>(color->begin(), color->end())[2], Vec3(20, 21, 22));
 	EXPECT_EQ(std::vector<double>(quality->begin(), quality->end()), (std::vector<double>{0, 0.5, 1, 1.5}));
-	EXPECT_EQ(std::vector<double>(flags->begin(), flags->end()), (std::vector<double>{7, 8}));
+	EXPECT_EQ(std::vector<int32>(flags->begin(), flags->end()), (std::vector<int32>{7, 8}));
 	EXPECT_TRUE(check_integrity(m).ok());
 }
 
@@ -274,11 +274,11 @@ TEST(VtkVariants, Version5OffsetsConnectivityWedgesAndVoxels)
 	EXPECT_EQ(r.nb_cells_reoriented, 0u) << "a proper VTK wedge and voxel need no turning over";
 	EXPECT_EQ(nb_cells<CMap3::Volume>(m), 2u);
 	EXPECT_EQ(nb_cells<CMap3::Face>(m), 11u);
-	auto id = get_attribute<double, CMap3::Volume>(m, "id");
+	auto id = get_attribute<int32, CMap3::Volume>(m, "id"); // SCALARS of type int
 	ASSERT_TRUE(id);
-	std::vector<double> ids(id->begin(), id->end());
+	std::vector<int32> ids(id->begin(), id->end());
 	std::sort(ids.begin(), ids.end());
-	EXPECT_EQ(ids, (std::vector<double>{4, 5}));
+	EXPECT_EQ(ids, (std::vector<int32>{4, 5}));
 	EXPECT_TRUE((get_attribute<Vec3, CMap3::Vertex>(m, "v")));
 	EXPECT_TRUE(check_integrity(m).ok());
 }
