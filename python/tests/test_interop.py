@@ -46,3 +46,52 @@ def test_pyvista_and_trimesh_when_installed(data):
         assert len(cgogn.to_trimesh(m).faces) == m.nb_cells("face")
     except ImportError:
         pass
+
+
+def tag_histogram(mesh, name):
+    """{(cell kind, tag): count} of a meshio mesh's integer cell data `name`."""
+    counts = {}
+    kinds = {"triangle": "face", "quad": "face", "tetra": "volume", "hexahedron": "volume"}
+    for block, values in zip(mesh.cells, mesh.cell_data[name]):
+        for tag in values:
+            key = (kinds[block.type], int(tag))
+            counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+@pytest.mark.parametrize("source", ["box_tet_v41.msh", "box_hex_v22_bin.msh"])
+@pytest.mark.parametrize("ext,binary", [("msh", False), ("msh", True), ("vtu", False), ("vtu", True), ("vtk", False), ("vtk", True), ("mesh", False)])
+def test_gmsh_tags_seen_by_meshio_after_conversion(data, tmp_path, source, ext, binary):
+    original = meshio.read(str(data / "gmsh" / source))
+    expected = tag_histogram(original, "gmsh:physical")
+    out = tmp_path / ("box." + ext)
+    cgogn.load(str(data / "gmsh" / source)).save(str(out), binary=binary)
+    written = meshio.read(str(out))
+    assert tag_histogram(written, "medit:ref" if ext == "mesh" else "gmsh:physical") == expected
+    if ext != "mesh":
+        assert tag_histogram(written, "gmsh:geometrical") == tag_histogram(original, "gmsh:geometrical")
+
+
+@pytest.mark.parametrize("ext,binary", [("vtu", False), ("vtu", True), ("vtk", False), ("vtk", True)])
+def test_gmsh_tags_seen_by_vtk_after_conversion(data, tmp_path, ext, binary):
+    vtk = pytest.importorskip("vtk")
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    source = data / "gmsh" / "box_tet_v22.msh"
+    expected = tag_histogram(meshio.read(str(source)), "gmsh:physical")
+    out = tmp_path / ("box." + ext)
+    cgogn.load(str(source)).save(str(out), binary=binary)
+    reader = vtk.vtkXMLUnstructuredGridReader() if ext == "vtu" else vtk.vtkUnstructuredGridReader()
+    reader.SetFileName(str(out))
+    reader.Update()
+    grid = reader.GetOutput()
+    kinds = {5: "face", 10: "volume"}
+    types = vtk_to_numpy(grid.GetCellTypesArray())
+    for name in ("gmsh:physical", "gmsh:geometrical"):
+        assert grid.GetCellData().GetArray(name) is not None, name
+    tags = vtk_to_numpy(grid.GetCellData().GetArray("gmsh:physical"))
+    counts = {}
+    for t, tag in zip(types, tags):
+        key = (kinds[int(t)], int(tag))
+        counts[key] = counts.get(key, 0) + 1
+    assert counts == expected

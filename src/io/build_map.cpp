@@ -4,12 +4,15 @@
 #include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/operators/incidence_graph.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/error.h>
 
 #include "map_transfer.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace cgogn::io::detail
 {
@@ -69,11 +72,12 @@ void column_notes(const MeshData& d, const char* cell, std::vector<std::string>&
 				notes.push_back(of + " data '" + c.name + "' of " + std::to_string(c.dim) +
 								" components: attributes are loaded from data of 1, 2 or 3 components");
 			else if (c.dim > 1 && is_integer_type(c.type))
-				notes.push_back(of + " data '" + c.name + "': integers of " + std::to_string(c.dim) +
-								" components, held as a vector of double (an integer attribute has one component)");
+				notes.push_back(of + " data '" + c.name + "' as integers: its " + std::to_string(c.dim) +
+								" components are held as a vector of double (an integer attribute has one component)");
 	};
 	note(d.vertex_columns, "vertex");
 	note(d.cell_columns, cell);
+	note(d.face_columns, "listed face");
 }
 
 // Everything about names that could make the build fail, checked before the
@@ -98,6 +102,8 @@ void check_names(const MAP& m, const MeshData& d, const std::string& path)
 	};
 	check(d.vertex_columns, static_cast<Vertex*>(nullptr));
 	check(d.cell_columns, static_cast<Top*>(nullptr));
+	if constexpr (MAP::dimension == 3)
+		check(d.face_columns, static_cast<typename mesh_traits<MAP>::Face*>(nullptr));
 }
 
 // The attribute to load into. check_names has ruled out every case where
@@ -189,6 +195,78 @@ BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
 		(void)d;
 		return BuildReport{};
 	}
+}
+
+// The key of a face by its vertex ids in any order: the sorted ids' bytes.
+std::string face_key(std::vector<uint32>& ids)
+{
+	std::sort(ids.begin(), ids.end());
+	return std::string(reinterpret_cast<const char*>(ids.data()), ids.size() * sizeof(uint32));
+}
+
+// Puts the face columns of d on the faces of m that the file lists: the
+// faces of the volumes just built whose vertices are a listed face's.
+// Listed faces that match no face (or a face of split vertices whose
+// copies no longer meet) are counted in the report. O(faces of m +
+// listed faces).
+template <typename MAP>
+void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const std::string& path, LoadReport& rep)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Face = typename mesh_traits<MAP>::Face;
+	if (std::none_of(d.face_columns.begin(), d.face_columns.end(), [](const Column& c) { return usable(c); }))
+		return;
+	std::unordered_map<std::string, uint32> listed; // face key -> listed face
+	std::vector<uint32> ids;
+	std::size_t k = 0;
+	for (uint32 f = 0; f < d.nb_faces(); ++f)
+	{
+		ids.assign(d.face_vertices.begin() + std::ptrdiff_t(k),
+				   d.face_vertices.begin() + std::ptrdiff_t(k + d.face_sizes[f]));
+		k += d.face_sizes[f];
+		listed.try_emplace(face_key(ids), f);
+	}
+	// the file's id of the vertex lines this load made
+	std::unordered_map<uint32, uint32> copy_of(br.split_vertices.begin(), br.split_vertices.end());
+	auto file_id = [&](uint32 line) -> uint32 {
+		if (line >= br.vertex_offset && line - br.vertex_offset < d.nb_vertices())
+			return line - br.vertex_offset;
+		const auto it = copy_of.find(line);
+		return it == copy_of.end() ? INVALID_INDEX : it->second;
+	};
+	std::vector<std::pair<uint32, uint32>> found; // (face line, listed face)
+	std::vector<uint8> matched(d.nb_faces(), 0);
+	index_cells<Face>(m);
+	foreach_cell(m, [&](Face f) {
+		ids.clear();
+		bool ours = true;
+		foreach_incident_vertex(m, f, [&](Vertex v) {
+			const uint32 id = file_id(index_of(m, v));
+			ours = ours && id != INVALID_INDEX;
+			ids.push_back(id);
+		});
+		if (!ours)
+			return;
+		const auto it = listed.find(face_key(ids));
+		if (it != listed.end())
+		{
+			found.emplace_back(index_of(m, f), it->second);
+			matched[it->second] = 1;
+		}
+	});
+	for (const auto& c : d.face_columns)
+		if (usable(c))
+			fill_column<Face>(
+				m, c,
+				[&](const auto& put) {
+					for (const auto& [line, face] : found)
+						put(line, std::size_t(face));
+				},
+				path);
+	const auto unmatched = std::count(matched.begin(), matched.end(), uint8(0));
+	if (unmatched > 0)
+		rep.dropped.push_back(std::to_string(unmatched) +
+							  " listed face(s) with their data: no face of the volumes has their vertices");
 }
 
 template <typename MAP>
@@ -310,6 +388,8 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 
 	rep.dropped = d.dropped;
 	column_notes(d, dim == 2 ? "face" : "volume", rep.dropped);
+	if constexpr (dim == 3)
+		fill_listed_faces(m, d, br, path, rep);
 	rep.nb_vertices_read = d.nb_vertices();
 	rep.nb_cells_read = br.nb_cells_read;
 	rep.nb_cells_built = br.nb_cells_built;

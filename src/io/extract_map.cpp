@@ -13,28 +13,6 @@ namespace cgogn::io::detail
 namespace
 {
 
-// Whether T is an integer type a column holds (see ValueType), and which.
-template <typename T>
-constexpr ValueType integer_value_type()
-{
-	if constexpr (std::is_same_v<T, int8>)
-		return ValueType::Int8;
-	else if constexpr (std::is_same_v<T, uint8>)
-		return ValueType::UInt8;
-	else if constexpr (std::is_same_v<T, std::int16_t>)
-		return ValueType::Int16;
-	else if constexpr (std::is_same_v<T, uint16>)
-		return ValueType::UInt16;
-	else if constexpr (std::is_same_v<T, int32>)
-		return ValueType::Int32;
-	else if constexpr (std::is_same_v<T, uint32>)
-		return ValueType::UInt32;
-	else if constexpr (std::is_same_v<T, int64>)
-		return ValueType::Int64;
-	else
-		return ValueType::UInt64;
-}
-
 // The column of attribute a when its type is T: its values in the order of
 // `lines`; false when a is not of type T. A 64-bit integer attribute whose
 // values a double does not hold exactly is refused (io::Error naming path).
@@ -60,14 +38,14 @@ bool gather_column(const AttributeBase& a, const std::vector<uint32>& lines, Col
 	else
 	{
 		c.dim = 1;
-		c.type = integer_value_type<T>();
+		c.type = value_type_of<T>();
 		for (uint32 l : lines)
 		{
 			const double v = double(at[l]);
 			if constexpr (sizeof(T) == 8)
 				if (std::abs(v) > MAX_EXACT_INTEGER)
 					throw Error(path, "the attribute '" + c.name + "' holds " + std::to_string(at[l]) +
-										  ": 64-bit integer values are written up to 2^53");
+										  ": 64-bit integer values are written below 2^53 in magnitude");
 			c.values.push_back(v);
 		}
 	}
@@ -162,6 +140,65 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 	if (attributes && faces_indexed)
 		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false, path);
 	return d;
+}
+
+// The faces of a volume map with a nonzero value in one of their attributes
+// a file can hold, as listed faces with those columns (MeshData::face_sizes),
+// each seen from a volume that is not a boundary one (on a 3-map,
+// counterclockwise seen from outside that volume). O(faces of m).
+template <typename MAP, typename ORIGIN, typename NEXT>
+void list_faces_with_data(const MAP& m, MeshData& d, const std::string& path, const ORIGIN& origin, const NEXT& next)
+{
+	using Face = typename mesh_traits<MAP>::Face;
+	if (!is_indexed<Face>(m))
+		return;
+	std::vector<uint32> lines;
+	std::vector<Dart> darts;
+	foreach_cell(m, [&](Face f) {
+		lines.push_back(index_of(m, f));
+		darts.push_back(f.dart);
+	});
+	std::vector<Column> columns;
+	gather_columns(container_of<Face::ORBIT>(m), lines, columns, false, path);
+	if (columns.empty())
+		return;
+	std::vector<uint32> kept;
+	for (uint32 i = 0; i < uint32(lines.size()); ++i)
+		if (std::any_of(columns.begin(), columns.end(), [&](const Column& c) {
+				return std::any_of(c.values.begin() + std::ptrdiff_t(i) * c.dim,
+								   c.values.begin() + std::ptrdiff_t(i + 1) * c.dim, [](double v) { return v != 0.0; });
+			}))
+			kept.push_back(i);
+	for (Column& c : columns)
+	{
+		std::vector<double> values;
+		values.reserve(kept.size() * c.dim);
+		for (uint32 i : kept)
+			values.insert(values.end(), c.values.begin() + std::ptrdiff_t(i) * c.dim,
+						  c.values.begin() + std::ptrdiff_t(i + 1) * c.dim);
+		c.values = std::move(values);
+	}
+	for (uint32 i : kept)
+	{
+		Dart x = darts[i];
+		if (is_boundary(m, x))
+		{
+			if constexpr (is_gmap_v<MAP>)
+				x = beta3(m, x);
+			else
+				x = phi3(m, x);
+		}
+		uint32 n = 0;
+		Dart it = x;
+		do
+		{
+			d.face_vertices.push_back(origin(it));
+			++n;
+			it = next(it);
+		} while (it != x);
+		d.face_sizes.push_back(n);
+	}
+	d.face_columns = std::move(columns);
 }
 
 // The volumes of a 3-map, or of a 3-G-map: each volume in the orientation
@@ -291,6 +328,8 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 	d.finish_polyhedra();
 	if (attributes && volumes_indexed)
 		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false, path);
+	if (attributes)
+		list_faces_with_data(m, d, path, origin, next);
 	return d;
 }
 

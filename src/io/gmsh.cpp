@@ -1,16 +1,26 @@
 // SPDX-License-Identifier: MIT
 // gmsh .msh versions 2.2 and 4.1, ascii and binary. Volume elements
 // (tetrahedron 4, hexahedron 5, prism 6, pyramid 7, and the corner nodes of
-// second-order ones) are kept, lower-dimensional elements ignored; other
-// sections ($PhysicalNames, $Entities, $NodeData, ...) are skipped.
+// second-order ones) are the cells; surface elements (triangle 2,
+// quadrangle 3, and the corners of second-order ones) are listed faces;
+// both keep their physical and elementary tags as the columns
+// `gmsh:physical` and `gmsh:geometrical` (the names meshio gives them), the
+// physical tags of a 4.1 file coming from its $Entities. Line and point
+// elements are counted in the report; other sections ($NodeData, ...) are
+// skipped.
 #include "byte_reader.h"
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 
+#include <climits>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
 #include <unordered_map>
 
 namespace cgogn::io::detail
@@ -24,7 +34,8 @@ namespace
 struct ElementType
 {
 	uint32 nodes;
-	uint32 corners;
+	uint32 corners;          // of a volume cell
+	uint32 face_corners = 0; // of a surface element
 };
 ElementType element_type(int64 t)
 {
@@ -33,9 +44,9 @@ ElementType element_type(int64 t)
 	case 1:
 		return {2, 0};
 	case 2:
-		return {3, 0};
+		return {3, 0, 3};
 	case 3:
-		return {4, 0};
+		return {4, 0, 4};
 	case 4:
 		return {4, 4};
 	case 5:
@@ -47,9 +58,9 @@ ElementType element_type(int64 t)
 	case 8:
 		return {3, 0};
 	case 9:
-		return {6, 0};
+		return {6, 0, 3};
 	case 10:
-		return {9, 0};
+		return {9, 0, 4};
 	case 11:
 		return {10, 4};
 	case 12:
@@ -61,7 +72,7 @@ ElementType element_type(int64 t)
 	case 15:
 		return {1, 0};
 	case 16:
-		return {8, 0};
+		return {8, 0, 4};
 	case 17:
 		return {20, 8};
 	case 18:
@@ -130,6 +141,11 @@ public:
 				expect("$EndElements");
 				have_elements = true;
 			}
+			else if (k == "$Entities")
+			{
+				entities();
+				expect("$EndEntities");
+			}
 			else if (k.size() > 1 && k[0] == '$')
 			{
 				// skip to the matching $End section (binary sections included)
@@ -144,6 +160,7 @@ public:
 		}
 		if (!have_nodes || !have_elements)
 			t_.fail("no $Nodes or $Elements section");
+		finish();
 		return std::move(d_);
 	}
 
@@ -170,22 +187,136 @@ private:
 			reader.fail("node tag " + std::to_string(tag) + " defined twice");
 		d_.positions.insert(d_.positions.end(), {x, y, z});
 	}
+	// Adds an element with its physical and elementary tags: a volume cell,
+	// a listed face, or a line or point element (counted).
 	template <typename READER>
-	void add_element(int64 type, const uint64* nodes, READER& reader)
+	void add_element(int64 type, const uint64* nodes, int64 physical, int64 elementary, READER& reader)
 	{
 		const ElementType et = element_type(type);
 		if (et.nodes == 0)
 			reader.fail("unsupported gmsh element type " + std::to_string(type));
-		if (et.corners == 0)
+		const uint32 corners = et.corners > 0 ? et.corners : et.face_corners;
+		if (corners == 0)
+		{
+			++nb_lower_elements_;
 			return;
-		for (uint32 i = 0; i < et.corners; ++i)
+		}
+		if (physical < INT32_MIN || physical > INT32_MAX || elementary < INT32_MIN || elementary > INT32_MAX)
+			reader.fail("an element tag out of the 32-bit range");
+		std::vector<uint32>& ids = et.corners > 0 ? d_.cell_vertices : d_.face_vertices;
+		for (uint32 i = 0; i < corners; ++i)
 		{
 			auto it = index_.find(nodes[i]);
 			if (it == index_.end())
 				reader.fail("element refers to node " + std::to_string(nodes[i]) + ", which is not defined");
-			d_.cell_vertices.push_back(it->second);
+			ids.push_back(it->second);
 		}
-		d_.cell_sizes.push_back(et.corners);
+		(et.corners > 0 ? d_.cell_sizes : d_.face_sizes).push_back(corners);
+		(et.corners > 0 ? cell_tags_ : face_tags_).push_back({double(physical), double(elementary)});
+	}
+
+	// The physical tag of the entity (dim, tag) of a 4.1 file: the first of
+	// its physical tags, 0 when it has none.
+	int64 physical_of(int64 dim, int64 tag) const
+	{
+		const auto it = physical_.find({dim, tag});
+		return it == physical_.end() ? 0 : it->second;
+	}
+
+	// $Entities (4.1): the physical tags of the points, curves, surfaces
+	// and volumes.
+	void entities()
+	{
+		int64 counts[4];
+		std::vector<int64> physicals;
+		if (binary_)
+		{
+			t_.next_line();
+			ByteReader b(data_, offset(), path_, big_endian_);
+			for (int64& c : counts)
+				c = int64(read_size(b));
+			for (int64 dim = 0; dim < 4; ++dim)
+			{
+				b.check_count(uint64(counts[dim]), 16, "entities");
+				for (int64 e = 0; e < counts[dim]; ++e)
+				{
+					const int64 tag = b.read<int32>();
+					b.skip(dim == 0 ? 24 : 48); // the point, or the bounding box
+					const uint64 np = read_size(b);
+					b.check_count(np, 4, "physical tags");
+					physicals.resize(np);
+					for (int64& p : physicals)
+						p = b.read<int32>();
+					add_entity(dim, tag, physicals);
+					if (dim > 0)
+					{
+						const uint64 nb = read_size(b);
+						b.check_count(nb, 4, "bounding entities");
+						b.skip(4 * nb);
+					}
+				}
+			}
+			t_.set_position(data_.data() + b.position());
+			return;
+		}
+		for (int64& c : counts)
+			c = int64(t_.read_uint("an entity count"));
+		for (int64 dim = 0; dim < 4; ++dim)
+		{
+			t_.check_count(uint64(counts[dim]), 8, "entities");
+			for (int64 e = 0; e < counts[dim]; ++e)
+			{
+				const int64 tag = t_.read_int("an entity tag");
+				for (int i = 0; i < (dim == 0 ? 3 : 6); ++i)
+					t_.read_double("a coordinate");
+				const uint64 np = t_.read_uint("a physical tag count");
+				t_.check_count(np, 2, "physical tags");
+				physicals.resize(np);
+				for (int64& p : physicals)
+					p = t_.read_int("a physical tag");
+				add_entity(dim, tag, physicals);
+				if (dim > 0)
+				{
+					const uint64 nb = t_.read_uint("a bounding entity count");
+					t_.check_count(nb, 2, "bounding entities");
+					for (uint64 i = 0; i < nb; ++i)
+						t_.read_int("a bounding entity");
+				}
+			}
+		}
+	}
+	void add_entity(int64 dim, int64 tag, const std::vector<int64>& physicals)
+	{
+		if (physicals.empty())
+			return;
+		physical_[{dim, tag}] = physicals[0];
+		nb_multi_physical_ += physicals.size() > 1;
+	}
+
+	// The tags as columns, and what was left out, in the report.
+	void finish()
+	{
+		auto columns = [&](const std::vector<std::array<double, 2>>& tags, std::vector<Column>& out) {
+			if (!has_tags_ || tags.empty())
+				return;
+			Column physical{"gmsh:physical", 1, {}, ValueType::Int32};
+			Column elementary{"gmsh:geometrical", 1, {}, ValueType::Int32};
+			for (const auto& t : tags)
+			{
+				physical.values.push_back(t[0]);
+				elementary.values.push_back(t[1]);
+			}
+			out.push_back(std::move(physical));
+			out.push_back(std::move(elementary));
+		};
+		columns(cell_tags_, d_.cell_columns);
+		columns(face_tags_, d_.face_columns);
+		if (nb_lower_elements_ > 0)
+			d_.dropped.push_back(std::to_string(nb_lower_elements_) +
+								 " line or point element(s): a volume map holds volumes and listed faces");
+		if (nb_multi_physical_ > 0)
+			d_.dropped.push_back(std::to_string(nb_multi_physical_) +
+								 " entit(ies) of several physical groups: their elements keep the first");
 	}
 
 	void nodes2()
@@ -237,12 +368,22 @@ private:
 					b.fail("unsupported gmsh element type " + std::to_string(type));
 				if (count <= 0 || uint32(count) > n - done || ntags < 0 || ntags > 1000)
 					b.fail("bad element block header");
+				has_tags_ = has_tags_ || ntags > 0;
 				for (int32 e = 0; e < count; ++e)
 				{
-					b.skip(4 * (1 + std::size_t(ntags)));
+					b.skip(4); // the element's number
+					int64 physical = 0, elementary = 0;
+					for (int32 i = 0; i < ntags; ++i)
+					{
+						const int32 tag = b.read<int32>();
+						if (i == 0)
+							physical = tag;
+						else if (i == 1)
+							elementary = tag;
+					}
 					for (uint32 i = 0; i < et.nodes; ++i)
 						nodes[i] = uint32(b.read<int32>());
-					add_element(type, nodes.data(), b);
+					add_element(type, nodes.data(), physical, elementary, b);
 				}
 				done += uint32(count);
 			}
@@ -258,11 +399,19 @@ private:
 			if (et.nodes == 0)
 				t_.fail("unsupported gmsh element type " + std::to_string(type));
 			const uint32 ntags = t_.read_uint("a tag count");
+			has_tags_ = has_tags_ || ntags > 0;
+			int64 physical = 0, elementary = 0;
 			for (uint32 i = 0; i < ntags; ++i)
-				t_.read_int("a tag");
+			{
+				const int64 tag = t_.read_int("a tag");
+				if (i == 0)
+					physical = tag;
+				else if (i == 1)
+					elementary = tag;
+			}
 			for (uint32 i = 0; i < et.nodes; ++i)
 				nodes[i] = t_.read_uint("a node tag");
-			add_element(type, nodes.data(), t_);
+			add_element(type, nodes.data(), physical, elementary, t_);
 		}
 	}
 
@@ -341,10 +490,12 @@ private:
 			read_size(b);
 			read_size(b);
 			b.check_count(blocks, 20, "element blocks");
+			has_tags_ = true; // every element is in an entity
 			for (uint64 k = 0; k < blocks; ++k)
 			{
-				b.read<int32>();
-				b.read<int32>();
+				const int32 dim = b.read<int32>();
+				const int32 entity = b.read<int32>();
+				const int64 physical = physical_of(dim, entity);
 				const int32 type = b.read<int32>();
 				const uint64 m = read_size(b);
 				const ElementType et = element_type(type);
@@ -356,7 +507,7 @@ private:
 					read_size(b);
 					for (uint32 i = 0; i < et.nodes; ++i)
 						nodes[i] = read_size(b);
-					add_element(type, nodes.data(), b);
+					add_element(type, nodes.data(), physical, entity, b);
 				}
 			}
 			t_.set_position(data_.data() + b.position());
@@ -367,10 +518,12 @@ private:
 		t_.read_uint("an element tag");
 		t_.read_uint("an element tag");
 		t_.check_count(blocks, 8, "element blocks");
+		has_tags_ = true; // every element is in an entity
 		for (uint64 k = 0; k < blocks; ++k)
 		{
-			t_.read_int("an entity dimension");
-			t_.read_int("an entity tag");
+			const int64 dim = t_.read_int("an entity dimension");
+			const int64 entity = t_.read_int("an entity tag");
+			const int64 physical = physical_of(dim, entity);
 			const int64 type = t_.read_int("an element type");
 			const uint32 m = t_.read_uint("an element count");
 			const ElementType et = element_type(type);
@@ -382,7 +535,7 @@ private:
 				t_.read_uint("an element tag");
 				for (uint32 i = 0; i < et.nodes; ++i)
 					nodes[i] = t_.read_uint("a node tag");
-				add_element(type, nodes.data(), t_);
+				add_element(type, nodes.data(), physical, entity, t_);
 			}
 		}
 	}
@@ -396,6 +549,11 @@ private:
 	uint32 size_t_size_ = 8;
 	MeshData d_;
 	std::unordered_map<uint64, uint32> index_;
+	std::map<std::pair<int64, int64>, int64> physical_;        // (dim, entity tag) -> physical tag (4.1)
+	bool has_tags_ = false;                                    // whether the elements carry tags
+	std::vector<std::array<double, 2>> cell_tags_, face_tags_; // (physical, elementary) of each
+	uint64 nb_lower_elements_ = 0;
+	uint64 nb_multi_physical_ = 0;
 };
 
 } // namespace
@@ -405,22 +563,139 @@ MeshData read_gmsh(std::string_view data, const std::string& path)
 	return GmshReader(data, path).read();
 }
 
+namespace
+{
+
+// The element tags a gmsh file gets for the rows of `columns`: the physical
+// tag from `gmsh:physical` (else `medit:ref`, else 0) and the elementary one
+// from `gmsh:geometrical` (else 1).
+std::vector<std::array<int32, 2>> element_tags(const std::vector<Column>& columns, std::size_t rows)
+{
+	auto find = [&](const char* name) -> const Column* {
+		for (const Column& c : columns)
+			if (c.name == name && c.dim == 1 && c.values.size() == rows)
+				return &c;
+		return nullptr;
+	};
+	const Column* physical = find("gmsh:physical");
+	if (physical == nullptr)
+		physical = find("medit:ref");
+	const Column* elementary = find("gmsh:geometrical");
+	std::vector<std::array<int32, 2>> tags(rows, {0, 1});
+	for (std::size_t i = 0; i < rows; ++i)
+	{
+		if (physical != nullptr)
+			tags[i][0] = int32(physical->values[i]);
+		if (elementary != nullptr)
+			tags[i][1] = int32(elementary->values[i]);
+	}
+	return tags;
+}
+
+// A gmsh entity of the written file: its dimension, tag and physical tag.
+struct Entity
+{
+	int32 dim;
+	int32 tag;
+	int32 physical;
+};
+
+} // namespace
+
 std::string write_gmsh(const MeshData& d, bool binary)
 {
+	// the entities: one per (dimension, elementary tag, physical tag); an
+	// elementary tag used with several physical tags gets new tags for the
+	// others
+	const std::vector<std::array<int32, 2>> cell_tags = element_tags(d.cell_columns, d.nb_cells());
+	const std::vector<std::array<int32, 2>> face_tags = element_tags(d.face_columns, d.nb_faces());
+	std::vector<Entity> entities;
+	std::map<std::tuple<int32, int32, int32>, uint32> entity_of; // (dim, elementary, physical) -> entity
+	std::map<std::pair<int32, int32>, uint32> tag_users;         // (dim, tag) -> entities using it
+	int32 next_tag = 1;
+	for (const auto* tags : {&face_tags, &cell_tags})
+		for (const auto& t : *tags)
+			next_tag = std::max(next_tag, t[1] + 1);
+	auto entity = [&](int32 dim, const std::array<int32, 2>& t) {
+		const auto [it, added] = entity_of.try_emplace({dim, t[1], t[0]}, uint32(entities.size()));
+		if (added)
+			entities.push_back({dim, tag_users[{dim, t[1]}]++ == 0 ? t[1] : next_tag++, t[0]});
+		return it->second;
+	};
+	std::vector<uint32> cell_entity(d.nb_cells()), face_entity(d.nb_faces());
+	for (uint32 f = 0; f < d.nb_faces(); ++f)
+		face_entity[f] = entity(2, face_tags[f]);
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+		cell_entity[c] = entity(3, cell_tags[c]);
+
 	std::string s = binary ? "$MeshFormat\n4.1 1 8\n" : "$MeshFormat\n4.1 0 8\n";
 	if (binary)
 	{
 		append_raw(s, int32(1));
 		s += '\n';
 	}
-	s += "$EndMeshFormat\n$Nodes\n";
+	s += "$EndMeshFormat\n$Entities\n";
+	std::array<double, 6> box = {0, 0, 0, 0, 0, 0}; // every entity's bounding box: the mesh's
+	for (std::size_t i = 0; i < d.positions.size(); ++i)
+	{
+		const double x = d.positions[i];
+		box[i % 3] = i < 3 ? x : std::min(box[i % 3], x);
+		box[3 + i % 3] = i < 3 ? x : std::max(box[3 + i % 3], x);
+	}
+	uint64 nb_of_dim[4] = {0, 0, 0, 0};
+	for (const Entity& e : entities)
+		++nb_of_dim[e.dim];
+	if (binary)
+		for (uint64 n : nb_of_dim)
+			append_raw(s, n);
+	else
+		s += "0 0 " + std::to_string(nb_of_dim[2]) + " " + std::to_string(nb_of_dim[3]) + "\n";
+	for (int32 dim : {2, 3})
+		for (const Entity& e : entities)
+		{
+			if (e.dim != dim)
+				continue;
+			const uint64 np = e.physical != 0 ? 1 : 0;
+			if (binary)
+			{
+				append_raw(s, e.tag);
+				for (double x : box)
+					append_raw(s, x);
+				append_raw(s, np);
+				if (np > 0)
+					append_raw(s, e.physical);
+				append_raw(s, uint64(0)); // no bounding entities
+			}
+			else
+			{
+				s += std::to_string(e.tag);
+				for (double x : box)
+				{
+					s += ' ';
+					append_double(s, x);
+				}
+				s += ' ' + std::to_string(np) + (np > 0 ? " " + std::to_string(e.physical) : "") + " 0\n";
+			}
+		}
+	if (binary)
+		s += '\n';
+	s += "$EndEntities\n$Nodes\n";
+	// the nodes: one block, in the first volume entity (or the first entity)
+	int32 node_dim = 3, node_tag = 1;
+	for (const Entity& e : entities)
+		if (e.dim == 3 || &e == &entities.back())
+		{
+			node_dim = e.dim;
+			node_tag = e.tag;
+			break;
+		}
 	const uint64 nv = d.nb_vertices();
 	if (binary)
 	{
 		for (uint64 v : {uint64(1), nv, uint64(1), nv})
 			append_raw(s, v);
-		append_raw(s, int32(3));
-		append_raw(s, int32(1));
+		append_raw(s, node_dim);
+		append_raw(s, node_tag);
 		append_raw(s, int32(0));
 		append_raw(s, nv);
 		for (uint64 i = 1; i <= nv; ++i)
@@ -431,7 +706,8 @@ std::string write_gmsh(const MeshData& d, bool binary)
 	}
 	else
 	{
-		s += "1 " + std::to_string(nv) + " 1 " + std::to_string(nv) + "\n3 1 0 " + std::to_string(nv) + "\n";
+		s += "1 " + std::to_string(nv) + " 1 " + std::to_string(nv) + "\n" + std::to_string(node_dim) + " " +
+			 std::to_string(node_tag) + " 0 " + std::to_string(nv) + "\n";
 		for (uint64 i = 1; i <= nv; ++i)
 		{
 			append_uint(s, i);
@@ -444,55 +720,79 @@ std::string write_gmsh(const MeshData& d, bool binary)
 		}
 	}
 	s += "$EndNodes\n$Elements\n";
-	std::vector<std::size_t> first(d.nb_cells());
+	// the elements, in blocks of one entity and one element type: the
+	// listed faces (triangles 2, quadrangles 3), then the cells
+	struct Element
+	{
+		uint32 entity;
+		int32 type;
+		const uint32* ids;
+		uint32 size;
+	};
+	std::vector<Element> elements;
+	elements.reserve(d.nb_faces() + d.nb_cells());
 	std::size_t k = 0;
+	for (uint32 f = 0; f < d.nb_faces(); ++f)
+	{
+		const uint32 n = d.face_sizes[f];
+		if (n == 3 || n == 4) // gmsh has no polygon element
+			elements.push_back({face_entity[f], n == 3 ? 2 : 3, d.face_vertices.data() + k, n});
+		k += n;
+	}
+	k = 0;
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 	{
-		first[c] = k;
-		k += d.cell_sizes[c];
+		const uint32 n = d.cell_sizes[c];
+		const int32 type = n == 4 ? 4 : n == 8 ? 5 : n == 6 ? 6 : 7;
+		elements.push_back({cell_entity[c], type, d.cell_vertices.data() + k, n});
+		k += n;
 	}
-	const std::array<std::pair<uint32, int32>, 4> kinds = {{{4, 4}, {8, 5}, {6, 6}, {5, 7}}};
+	std::stable_sort(elements.begin(), elements.end(), [&](const Element& a, const Element& b) {
+		const Entity &ea = entities[a.entity], &eb = entities[b.entity];
+		return std::tie(ea.dim, a.entity, a.type) < std::tie(eb.dim, b.entity, b.type);
+	});
 	uint64 blocks = 0;
-	for (const auto& [size, type] : kinds)
-		blocks += std::count(d.cell_sizes.begin(), d.cell_sizes.end(), size) > 0;
-	const uint64 ne = d.nb_cells();
+	for (std::size_t i = 0; i < elements.size(); ++i)
+		blocks += i == 0 || elements[i].entity != elements[i - 1].entity || elements[i].type != elements[i - 1].type;
+	const uint64 ne = elements.size();
 	if (binary)
 		for (uint64 v : {blocks, ne, uint64(1), ne})
 			append_raw(s, v);
 	else
 		s += std::to_string(blocks) + " " + std::to_string(ne) + " 1 " + std::to_string(ne) + "\n";
 	uint64 tag = 1;
-	for (const auto& [size, type] : kinds)
+	for (std::size_t i = 0; i < elements.size();)
 	{
-		const uint64 count = uint64(std::count(d.cell_sizes.begin(), d.cell_sizes.end(), size));
-		if (count == 0)
-			continue;
+		std::size_t j = i;
+		while (j < elements.size() && elements[j].entity == elements[i].entity && elements[j].type == elements[i].type)
+			++j;
+		const Entity& e = entities[elements[i].entity];
 		if (binary)
 		{
-			append_raw(s, int32(3));
-			append_raw(s, int32(1));
-			append_raw(s, type);
-			append_raw(s, count);
+			append_raw(s, e.dim);
+			append_raw(s, e.tag);
+			append_raw(s, elements[i].type);
+			append_raw(s, uint64(j - i));
 		}
 		else
-			s += "3 1 " + std::to_string(type) + " " + std::to_string(count) + "\n";
-		for (uint32 c = 0; c < d.nb_cells(); ++c)
+			s += std::to_string(e.dim) + " " + std::to_string(e.tag) + " " + std::to_string(elements[i].type) + " " +
+				 std::to_string(j - i) + "\n";
+		for (; i < j; ++i)
 		{
-			if (d.cell_sizes[c] != size)
-				continue;
+			const Element& el = elements[i];
 			if (binary)
 			{
 				append_raw(s, tag++);
-				for (uint32 i = 0; i < size; ++i)
-					append_raw(s, uint64(d.cell_vertices[first[c] + i]) + 1);
+				for (uint32 v = 0; v < el.size; ++v)
+					append_raw(s, uint64(el.ids[v]) + 1);
 			}
 			else
 			{
 				append_uint(s, tag++);
-				for (uint32 i = 0; i < size; ++i)
+				for (uint32 v = 0; v < el.size; ++v)
 				{
 					s += ' ';
-					append_uint(s, uint64(d.cell_vertices[first[c] + i]) + 1);
+					append_uint(s, uint64(el.ids[v]) + 1);
 				}
 				s += '\n';
 			}

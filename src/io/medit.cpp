@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 // MEDIT ascii .mesh: keyword sections (Vertices, Tetrahedra, Pyramids, Prisms,
-// Hexahedra; boundary and annotation sections are read and ignored), 1-based
-// indices, a reference number after each record (not kept).
+// Hexahedra; Triangles and Quadrilaterals as listed faces; Edges and the
+// annotation sections are read and ignored), 1-based indices, a reference
+// number after each record, kept as the column `medit:ref` of the
+// vertices, cells and listed faces when one of them is not 0.
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 
+#include <climits>
+
+#include <algorithm>
 #include <array>
 
 namespace cgogn::io::detail
@@ -23,9 +28,7 @@ int skipped_record_size(std::string_view k, uint32 dim)
 		std::string_view name;
 		int size;
 	};
-	static constexpr std::array<S, 12> sections = {{{"Edges", 3},
-													{"Triangles", 4},
-													{"Quadrilaterals", 5},
+	static constexpr std::array<S, 10> sections = {{{"Edges", 3},
 													{"Corners", 1},
 													{"Ridges", 1},
 													{"RequiredVertices", 1},
@@ -55,6 +58,14 @@ MeshData read_medit(std::string_view text, const std::string& path)
 	bool have_vertices = false;
 	// cells are checked against the vertex count at the end (sections may come in any order)
 	std::vector<uint64> cell_lines;
+	Column vertex_ref{"medit:ref", 1, {}, ValueType::Int32}, cell_ref = vertex_ref, face_ref = vertex_ref;
+	uint64 nb_edges = 0;
+	auto read_ref = [&](Column& c, const char* what) {
+		const int64 ref = r.read_int(what);
+		if (ref < INT32_MIN || ref > INT32_MAX)
+			r.fail("reference " + std::to_string(ref) + " out of the 32-bit range");
+		c.values.push_back(double(ref));
+	};
 	while (true)
 	{
 		k = r.token();
@@ -82,10 +93,32 @@ MeshData read_medit(std::string_view text, const std::string& path)
 					d.positions.push_back(r.read_double("a vertex coordinate"));
 				if (dim == 2)
 					d.positions.push_back(0.0);
-				r.read_int("a vertex reference");
+				read_ref(vertex_ref, "a vertex reference");
 			}
 			continue;
 		}
+		if (k == "Triangles" || k == "Quadrilaterals")
+		{
+			const uint32 size = k == "Triangles" ? 3 : 4;
+			r.check_count(n, 2 * (size + 1), "faces");
+			for (uint32 i = 0; i < n; ++i)
+			{
+				d.face_sizes.push_back(size);
+				for (uint32 j = 0; j < size; ++j)
+				{
+					const uint32 v = r.read_uint("a vertex index");
+					if (v == 0)
+						r.fail("vertex index 0 (MEDIT indices start at 1)");
+					if (have_vertices && v > d.nb_vertices())
+						r.fail("vertex index " + std::to_string(v) + " out of range (the file has " +
+							   std::to_string(d.nb_vertices()) + " vertices)");
+					d.face_vertices.push_back(v - 1);
+				}
+				read_ref(face_ref, "a face reference");
+			}
+			continue;
+		}
+		nb_edges += k == "Edges" ? n : 0;
 		uint32 size = 0;
 		if (k == "Tetrahedra")
 			size = 4;
@@ -113,7 +146,7 @@ MeshData read_medit(std::string_view text, const std::string& path)
 							   std::to_string(d.nb_vertices()) + " vertices)");
 					d.cell_vertices.push_back(v - 1);
 				}
-				r.read_int("a cell reference");
+				read_ref(cell_ref, "a cell reference");
 			}
 			cell_lines.push_back(section_line);
 			continue;
@@ -127,12 +160,40 @@ MeshData read_medit(std::string_view text, const std::string& path)
 	}
 	if (!have_vertices)
 		r.fail("no Vertices section");
-	for (uint32 v : d.cell_vertices)
-		if (v >= d.nb_vertices())
-			throw Error(path, "vertex index " + std::to_string(v + 1) + " out of range (the file has " +
-								  std::to_string(d.nb_vertices()) + " vertices)");
+	for (const auto* ids : {&d.cell_vertices, &d.face_vertices})
+		for (uint32 v : *ids)
+			if (v >= d.nb_vertices())
+				throw Error(path, "vertex index " + std::to_string(v + 1) + " out of range (the file has " +
+									  std::to_string(d.nb_vertices()) + " vertices)");
+	// the references, when one is not 0
+	auto keep = [](Column& c, std::vector<Column>& out) {
+		if (std::any_of(c.values.begin(), c.values.end(), [](double v) { return v != 0.0; }))
+			out.push_back(std::move(c));
+	};
+	keep(vertex_ref, d.vertex_columns);
+	keep(cell_ref, d.cell_columns);
+	keep(face_ref, d.face_columns);
+	if (nb_edges > 0)
+		d.dropped.push_back(std::to_string(nb_edges) + " edge(s) of the Edges section with their references: a "
+													   "volume map holds volumes and listed faces");
 	return d;
 }
+
+namespace
+{
+
+// The references of the rows of `columns`: `medit:ref`, else
+// `gmsh:physical`, else 0.
+std::vector<int64> references(const std::vector<Column>& columns, std::size_t rows)
+{
+	for (const char* name : {"medit:ref", "gmsh:physical"})
+		for (const Column& c : columns)
+			if (c.name == name && c.dim == 1 && c.values.size() == rows)
+				return std::vector<int64>(c.values.begin(), c.values.end());
+	return std::vector<int64>(rows, 0);
+}
+
+} // namespace
 
 std::string write_medit(const MeshData& d)
 {
@@ -140,6 +201,7 @@ std::string write_medit(const MeshData& d)
 	s.reserve(std::size_t(d.nb_vertices()) * 60 + d.cell_vertices.size() * 8);
 	append_uint(s, d.nb_vertices());
 	s += '\n';
+	const std::vector<int64> vertex_ref = references(d.vertex_columns, d.nb_vertices());
 	for (uint32 v = 0; v < d.nb_vertices(); ++v)
 	{
 		for (uint32 k = 0; k < 3; ++k)
@@ -147,42 +209,45 @@ std::string write_medit(const MeshData& d)
 			append_double(s, d.positions[3 * std::size_t(v) + k]);
 			s += ' ';
 		}
-		s += "0\n";
+		append_int(s, vertex_ref[v]);
+		s += '\n';
 	}
-	// cells grouped by kind, in the order of MEDIT's sections
-	std::vector<std::size_t> first(d.nb_cells());
-	std::size_t k = 0;
-	for (uint32 c = 0; c < d.nb_cells(); ++c)
-	{
-		first[c] = k;
-		k += d.cell_sizes[c];
-	}
-	const std::array<std::pair<uint32, const char*>, 4> kinds = {
-		{{4, "Tetrahedra"}, {5, "Pyramids"}, {6, "Prisms"}, {8, "Hexahedra"}}};
-	for (const auto& [size, name] : kinds)
-	{
-		uint32 count = 0;
-		for (uint32 n : d.cell_sizes)
-			count += n == size;
+	// records grouped by kind, in the order of MEDIT's sections: the listed
+	// faces of 3 and 4 vertices, then the cells
+	auto section = [&](const char* name, uint32 size, const std::vector<uint32>& sizes, const std::vector<uint32>& ids,
+					   const std::vector<int64>& ref) {
+		const auto count = std::count(sizes.begin(), sizes.end(), size);
 		if (count == 0)
-			continue;
+			return;
 		s += '\n';
 		s += name;
 		s += '\n';
-		append_uint(s, count);
+		append_uint(s, uint64(count));
 		s += '\n';
-		for (uint32 c = 0; c < d.nb_cells(); ++c)
+		std::size_t k = 0;
+		for (std::size_t c = 0; c < sizes.size(); ++c)
 		{
-			if (d.cell_sizes[c] != size)
-				continue;
-			for (uint32 i = 0; i < size; ++i)
+			if (sizes[c] == size)
 			{
-				append_uint(s, uint64(d.cell_vertices[first[c] + i]) + 1);
-				s += ' ';
+				for (uint32 i = 0; i < size; ++i)
+				{
+					append_uint(s, uint64(ids[k + i]) + 1);
+					s += ' ';
+				}
+				append_int(s, ref[c]);
+				s += '\n';
 			}
-			s += "0\n";
+			k += sizes[c];
 		}
-	}
+	};
+	const std::vector<int64> face_ref = references(d.face_columns, d.nb_faces());
+	section("Triangles", 3, d.face_sizes, d.face_vertices, face_ref);
+	section("Quadrilaterals", 4, d.face_sizes, d.face_vertices, face_ref);
+	const std::vector<int64> cell_ref = references(d.cell_columns, d.nb_cells());
+	section("Tetrahedra", 4, d.cell_sizes, d.cell_vertices, cell_ref);
+	section("Pyramids", 5, d.cell_sizes, d.cell_vertices, cell_ref);
+	section("Prisms", 6, d.cell_sizes, d.cell_vertices, cell_ref);
+	section("Hexahedra", 8, d.cell_sizes, d.cell_vertices, cell_ref);
 	s += "\nEnd\n";
 	return s;
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -62,6 +63,33 @@ decltype(auto) visit_value_type(ValueType t, const F& f)
 	return f.template operator()<double>();
 }
 
+/// The value type of the C++ type T (an integer type, or double).
+template <typename T>
+constexpr ValueType value_type_of()
+{
+	if constexpr (std::is_same_v<T, int8>)
+		return ValueType::Int8;
+	else if constexpr (std::is_same_v<T, uint8>)
+		return ValueType::UInt8;
+	else if constexpr (std::is_same_v<T, std::int16_t>)
+		return ValueType::Int16;
+	else if constexpr (std::is_same_v<T, uint16>)
+		return ValueType::UInt16;
+	else if constexpr (std::is_same_v<T, int32>)
+		return ValueType::Int32;
+	else if constexpr (std::is_same_v<T, uint32>)
+		return ValueType::UInt32;
+	else if constexpr (std::is_same_v<T, int64>)
+		return ValueType::Int64;
+	else if constexpr (std::is_same_v<T, uint64>)
+		return ValueType::UInt64;
+	else
+	{
+		static_assert(std::is_same_v<T, double>, "columns hold doubles and integers");
+		return ValueType::Float64;
+	}
+}
+
 /// The largest magnitude of a 64-bit integer value a column holds (its
 /// values are doubles): 2^53 - 1, below which every integer is exact. Loads
 /// refuse larger ones (a larger value may have been rounded already).
@@ -115,6 +143,15 @@ struct MeshData
 	std::vector<uint32> cell_nb_faces;
 	std::vector<uint32> polyhedron_face_sizes;
 	std::vector<uint32> polyhedron_face_vertices;
+	/// Faces a volume file lists beside its cells (gmsh's triangles and
+	/// quadrangles, VTK's triangle, quad and polygon cells, MEDIT's Triangles
+	/// and Quadrilaterals), usually boundary faces carrying tags, with one
+	/// row of `face_columns` each. A volume map holds the columns as face
+	/// attributes, on the faces of its volumes that have these vertices (in
+	/// any order); a writer lists the faces with a nonzero value there.
+	std::vector<uint32> face_sizes;
+	std::vector<uint32> face_vertices;
+	std::vector<Column> face_columns;
 	/// What a reader read but the map will not hold, each with why
 	/// (LoadReport::dropped).
 	std::vector<std::string> dropped;
@@ -126,6 +163,10 @@ struct MeshData
 	uint32 nb_cells() const
 	{
 		return uint32(cell_sizes.size());
+	}
+	uint32 nb_faces() const
+	{
+		return uint32(face_sizes.size());
 	}
 	/// Whether cell c is a polyhedron given by its faces.
 	bool is_polyhedron(uint32 c) const

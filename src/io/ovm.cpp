@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <string_view>
 
 namespace cgogn::io::detail
 {
@@ -49,45 +50,32 @@ uint32 components_of(const std::string& type)
 	return 0;
 }
 
+// The .ovm integer type names and their column types; each type's first
+// name is the one written.
+constexpr std::pair<std::string_view, ValueType> INTEGER_TYPES[] = {
+	{"char", ValueType::Int8},           {"uchar", ValueType::UInt8},
+	{"short", ValueType::Int16},         {"ushort", ValueType::UInt16},
+	{"int", ValueType::Int32},           {"uint", ValueType::UInt32},
+	{"long", ValueType::Int64},          {"ulong", ValueType::UInt64},
+	{"unsigned char", ValueType::UInt8}, {"unsigned short", ValueType::UInt16},
+	{"unsigned int", ValueType::UInt32}, {"unsigned long", ValueType::UInt64}};
+
 // The column type of an .ovm scalar type: its integer type, Float64 for
 // float, double and bool.
 ValueType ovm_value_type(const std::string& type)
 {
-	static const std::pair<const char*, ValueType> integers[] = {
-		{"int", ValueType::Int32},   {"unsigned int", ValueType::UInt32},   {"uint", ValueType::UInt32},
-		{"short", ValueType::Int16}, {"unsigned short", ValueType::UInt16}, {"ushort", ValueType::UInt16},
-		{"long", ValueType::Int64},  {"unsigned long", ValueType::UInt64},  {"ulong", ValueType::UInt64},
-		{"char", ValueType::Int8},   {"unsigned char", ValueType::UInt8},   {"uchar", ValueType::UInt8}};
-	for (const auto& [name, t] : integers)
+	for (const auto& [name, t] : INTEGER_TYPES)
 		if (type == name)
 			return t;
 	return ValueType::Float64;
 }
 
-// The .ovm name of an integer column type.
-const char* ovm_type_name(ValueType t)
+// The .ovm name of a column type.
+std::string_view ovm_type_name(ValueType t)
 {
-	switch (t)
-	{
-	case ValueType::Int8:
-		return "char";
-	case ValueType::UInt8:
-		return "uchar";
-	case ValueType::Int16:
-		return "short";
-	case ValueType::UInt16:
-		return "ushort";
-	case ValueType::Int32:
-		return "int";
-	case ValueType::UInt32:
-		return "uint";
-	case ValueType::Int64:
-		return "long";
-	case ValueType::UInt64:
-		return "ulong";
-	case ValueType::Float64:
-		break;
-	}
+	for (const auto& [name, v] : INTEGER_TYPES)
+		if (v == t)
+			return name;
 	return "double";
 }
 

@@ -123,26 +123,18 @@ double read_binary(ByteReader& b, PType t)
 	return 0.0;
 }
 
+// The PLY integer types and the column types they give, both ways.
+constexpr std::pair<PType, ValueType> INTEGER_TYPES[] = {
+	{PType::Int8, ValueType::Int8},     {PType::UInt8, ValueType::UInt8}, {PType::Int16, ValueType::Int16},
+	{PType::UInt16, ValueType::UInt16}, {PType::Int32, ValueType::Int32}, {PType::UInt32, ValueType::UInt32}};
+
 // The column type of a scalar property of type t.
 ValueType value_type(PType t)
 {
-	switch (t)
-	{
-	case PType::Int8:
-		return ValueType::Int8;
-	case PType::UInt8:
-		return ValueType::UInt8;
-	case PType::Int16:
-		return ValueType::Int16;
-	case PType::UInt16:
-		return ValueType::UInt16;
-	case PType::Int32:
-		return ValueType::Int32;
-	case PType::UInt32:
-		return ValueType::UInt32;
-	default:
-		return ValueType::Float64;
-	}
+	for (const auto& [p, v] : INTEGER_TYPES)
+		if (p == t)
+			return v;
+	return ValueType::Float64;
 }
 
 // Groups the scalar properties of an element into columns (see the file
@@ -477,26 +469,11 @@ struct ColumnLayout
 // nullopt (written as double, exactly: see Column) when none does.
 std::optional<PType> ply_integer_type(const Column& c)
 {
-	switch (c.type)
-	{
-	case ValueType::Float64:
+	for (const auto& [p, v] : INTEGER_TYPES)
+		if (v == c.type)
+			return p;
+	if (!is_integer_type(c.type))
 		return std::nullopt;
-	case ValueType::Int8:
-		return PType::Int8;
-	case ValueType::UInt8:
-		return PType::UInt8;
-	case ValueType::Int16:
-		return PType::Int16;
-	case ValueType::UInt16:
-		return PType::UInt16;
-	case ValueType::Int32:
-		return PType::Int32;
-	case ValueType::UInt32:
-		return PType::UInt32;
-	case ValueType::Int64:
-	case ValueType::UInt64:
-		break;
-	}
 	const auto [lo, hi] = std::minmax_element(c.values.begin(), c.values.end());
 	const bool empty = lo == c.values.end();
 	if (c.type == ValueType::Int64 && (empty || (*lo >= -2147483648.0 && *hi <= 2147483647.0)))
@@ -585,27 +562,7 @@ void put_columns(std::string& s, const std::vector<ColumnLayout>& cols, std::siz
 		{
 			const double v = l.col->values[i * l.col->dim + k];
 			if (l.integer && binary)
-				switch (*l.integer)
-				{
-				case PType::Int8:
-					append_raw(s, int8(v));
-					break;
-				case PType::UInt8:
-					append_raw(s, uint8(v));
-					break;
-				case PType::Int16:
-					append_raw(s, std::int16_t(v));
-					break;
-				case PType::UInt16:
-					append_raw(s, uint16(v));
-					break;
-				case PType::Int32:
-					append_raw(s, int32(v));
-					break;
-				default:
-					append_raw(s, uint32(v));
-					break;
-				}
+				visit_value_type(value_type(*l.integer), [&]<typename T>() { append_raw(s, T(v)); });
 			else if (l.integer)
 			{
 				s += ' ';

@@ -59,10 +59,11 @@ void validate(const MeshData& d, const std::string& path)
 		if (is_integer_type(c.type))
 			for (double v : c.values)
 				if (!holds_value(c.type, v))
-					throw Error(path,
-								std::string(of) + " data '" + c.name + "' of type " + value_type_name(c.type) +
-									" holds the value " + std::to_string(v) + ", which that type does not have" +
-									(std::abs(v) > MAX_EXACT_INTEGER ? " (64-bit values are read up to 2^53)" : ""));
+					throw Error(path, std::string(of) + " data '" + c.name + "' of type " + value_type_name(c.type) +
+										  " holds the value " + std::to_string(v) + ", which that type does not have" +
+										  (std::abs(v) > MAX_EXACT_INTEGER
+											   ? " (64-bit values are read below 2^53 in magnitude)"
+											   : ""));
 	};
 	std::vector<std::string> names;
 	for (const auto& c : d.vertex_columns)
@@ -80,6 +81,25 @@ void validate(const MeshData& d, const std::string& path)
 		if (c.values.size() != std::size_t(d.nb_cells()) * c.dim)
 			throw Error(path, "cell data '" + c.name + "' does not have one value per cell");
 		check_values(c, "cell");
+		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
+			throw Error(path, why);
+		names.push_back(c.name);
+	}
+	std::size_t nb_ids = 0;
+	for (uint32 n : d.face_sizes)
+		nb_ids += n;
+	if (nb_ids != d.face_vertices.size())
+		throw Error(path, "inconsistent listed faces");
+	for (uint32 v : d.face_vertices)
+		if (v >= nv)
+			throw Error(path, "a face refers to vertex " + std::to_string(v) + ", out of range (the file has " +
+								  std::to_string(nv) + " vertices)");
+	names.clear();
+	for (const auto& c : d.face_columns)
+	{
+		if (c.values.size() != std::size_t(d.nb_faces()) * c.dim)
+			throw Error(path, "face data '" + c.name + "' does not have one value per listed face");
+		check_values(c, "face");
 		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
 			throw Error(path, why);
 		names.push_back(c.name);

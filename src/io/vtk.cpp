@@ -335,13 +335,15 @@ std::string write_vtk(const MeshData& d, bool binary)
 	if (binary)
 		s += '\n';
 	const std::size_t nb_segments = d.segments.size();
+	// after the volume cells, the listed faces, then the segments
+	const std::size_t nb_cells = d.nb_cells() + d.nb_faces() + nb_segments;
 	// a polyhedron's entry is its face stream
 	const std::vector<std::vector<uint32>> streams = polyhedron_streams(d);
-	std::size_t size = d.nb_cells() + 3 * nb_segments;
+	std::size_t size = d.nb_cells() + d.nb_faces() + d.face_vertices.size() + 3 * nb_segments;
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 		size += d.is_polyhedron(c) ? streams[c].size() : d.cell_sizes[c];
 	s += "CELLS ";
-	append_uint(s, d.nb_cells() + nb_segments);
+	append_uint(s, nb_cells);
 	s += ' ';
 	append_uint(s, size);
 	s += '\n';
@@ -362,6 +364,13 @@ std::string write_vtk(const MeshData& d, bool binary)
 		for (uint32 i = 0; i < n; ++i)
 			put_int(v[vtk_order(n, i)], i + 1 == n);
 	}
+	k = 0;
+	for (uint32 n : d.face_sizes)
+	{
+		put_int(n, false);
+		for (uint32 i = 0; i < n; ++i)
+			put_int(d.face_vertices[k++], i + 1 == n);
+	}
 	for (const auto& [a, b] : d.segments)
 	{
 		put_int(2, false);
@@ -371,53 +380,58 @@ std::string write_vtk(const MeshData& d, bool binary)
 	if (binary)
 		s += '\n';
 	s += "CELL_TYPES ";
-	append_uint(s, d.nb_cells() + nb_segments);
+	append_uint(s, nb_cells);
 	s += '\n';
 	std::vector<uint32> types;
-	types.reserve(d.nb_cells() + nb_segments);
+	types.reserve(nb_cells);
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 		types.push_back(d.is_polyhedron(c) ? 42u : uint32(vtk_cell_type(d.cell_sizes[c])));
+	for (uint32 n : d.face_sizes)
+		types.push_back(vtk_face_type(n));
 	types.insert(types.end(), nb_segments, 3u); // VTK_LINE
 	for (uint32 t : types)
 		put_int(t, true);
 	if (binary)
 		s += '\n';
+	// every array in one FIELD block: VTK's reader keeps all the arrays of a
+	// FIELD, but only the first of several SCALARS (or VECTORS)
 	auto put_columns = [&](const std::vector<Column>& cols, const char* section, uint32 count) {
-		bool first = true;
+		std::vector<const Column*> written;
 		for (const auto& c : cols)
+			if (c.dim >= 1 && c.dim <= 3)
+				written.push_back(&c);
+		if (written.empty())
+			return;
+		s += section;
+		s += ' ';
+		append_uint(s, count);
+		s += "\nFIELD FieldData ";
+		append_uint(s, written.size());
+		s += '\n';
+		for (const Column* c : written)
 		{
-			if (c.dim < 1 || c.dim > 3)
-				continue;
-			if (first)
-			{
-				s += section;
-				s += ' ';
-				append_uint(s, count);
-				s += '\n';
-				first = false;
-			}
-			if (c.dim == 1 && is_integer_type(c.type))
-			{
-				s += "SCALARS " + c.name + " " + vtk_legacy_type_name(c.type) + " 1\nLOOKUP_TABLE default\n";
-				for (double v : c.values)
-					put_integer(v, c.type);
-			}
+			const bool integer = c->dim == 1 && is_integer_type(c->type);
+			s += c->name;
+			s += ' ';
+			append_uint(s, c->dim);
+			s += ' ';
+			append_uint(s, count);
+			s += ' ';
+			s += integer ? vtk_legacy_type_name(c->type) : "double";
+			s += '\n';
+			if (integer)
+				for (double v : c->values)
+					put_integer(v, c->type);
 			else
-			{
-				if (c.dim == 3)
-					s += "VECTORS " + c.name + " double\n";
-				else
-					s += "SCALARS " + c.name + " double " + std::to_string(c.dim) + "\nLOOKUP_TABLE default\n";
-				for (std::size_t i = 0; i < c.values.size(); ++i)
-					put_double(c.values[i], i % c.dim == c.dim - 1);
-			}
+				for (std::size_t i = 0; i < c->values.size(); ++i)
+					put_double(c->values[i], i % c->dim == c->dim - 1);
 			if (binary)
 				s += '\n';
 		}
 	};
 	put_columns(d.vertex_columns, "POINT_DATA", d.nb_vertices());
 	if (d.segments.empty()) // see MeshData::segments
-		put_columns(d.cell_columns, "CELL_DATA", d.nb_cells());
+		put_columns(vtk_cell_data(d), "CELL_DATA", d.nb_cells() + d.nb_faces());
 	return s;
 }
 

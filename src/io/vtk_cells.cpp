@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "vtk_cells.h"
 
+#include <algorithm>
 #include <array>
 
 namespace cgogn::io::detail
@@ -17,7 +18,8 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 	if (vtu_faces && face_offsets.size() != types.size())
 		fail("the faceoffsets array does not have one entry per cell");
 	const uint32 nv = d.nb_vertices();
-	std::vector<uint32> kept;
+	std::vector<uint32> kept, kept_faces;     // the cells kept as volumes, as listed faces
+	uint32 nb_ignored = 0;                    // vertex cells and triangle strips
 	int64 stream_start = 0;                   // where the next polyhedron's faces start in `faces`
 	std::vector<uint32> face_sizes, face_ids; // one polyhedron's
 	// A polyhedron's face stream: its number of faces, then each face's
@@ -126,16 +128,28 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 			for (int64 i = 0; i + 1 < (types[c] == 3 ? 2 : n); ++i)
 				d.segments.emplace_back(uint32(ids[i]), uint32(ids[i + 1]));
 			continue; // segments, not volume cells
+		case 5:       // triangle
+		case 22:      // quadratic triangle: its corners
+		case 9:       // quad
+		case 23:      // quadratic quad: its corners
+		case 8:       // pixel: lexicographic corners
+		case 7:       // polygon
+		{
+			const int64 corners = types[c] == 5 || types[c] == 22 ? 3 : types[c] == 7 ? n : 4;
+			if (n < std::max<int64>(corners, 3))
+				fail("cell " + std::to_string(c) + " of type " + std::to_string(types[c]) + " has only " +
+					 std::to_string(n) + " points");
+			for (int64 i = 0; i < corners; ++i)
+				d.face_vertices.push_back(uint32(ids[types[c] == 8 && i >= 2 ? 5 - i : i]));
+			d.face_sizes.push_back(uint32(corners));
+			kept_faces.push_back(uint32(c));
+			continue; // listed faces, not volume cells
+		}
 		case 1:
 		case 2:
-		case 5:
 		case 6:
-		case 7:
-		case 8:
-		case 9:
 		case 21:
-		case 22:
-		case 23:
+			++nb_ignored;
 			continue; // not volume cells
 		default:
 			fail("cell " + std::to_string(c) + ": unsupported VTK cell type " + std::to_string(types[c]));
@@ -145,16 +159,61 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 		kept.push_back(uint32(c));
 	}
 	d.finish_polyhedra();
+	auto rows = [](const Column& col, const std::vector<uint32>& cells) {
+		Column k{col.name, col.dim, {}, col.type};
+		for (uint32 c : cells)
+			k.values.insert(k.values.end(), col.values.begin() + std::ptrdiff_t(c) * col.dim,
+							col.values.begin() + std::ptrdiff_t(c + 1) * col.dim);
+		return k;
+	};
 	for (const auto& col : cell_data)
 	{
 		if (col.values.size() != types.size() * col.dim)
 			fail("cell data '" + col.name + "' does not have one value per cell");
-		Column k{col.name, col.dim, {}, col.type};
-		for (uint32 c : kept)
-			k.values.insert(k.values.end(), col.values.begin() + std::ptrdiff_t(c) * col.dim,
-							col.values.begin() + std::ptrdiff_t(c + 1) * col.dim);
-		d.cell_columns.push_back(std::move(k));
+		d.cell_columns.push_back(rows(col, kept));
+		if (!kept_faces.empty())
+			d.face_columns.push_back(rows(col, kept_faces));
 	}
+	if (nb_ignored > 0)
+		d.dropped.push_back(std::to_string(nb_ignored) +
+							" vertex, polyvertex, triangle strip or quadratic edge cell(s): a volume map holds "
+							"volumes, listed faces and segments");
+	if (!kept_faces.empty() && cell_data.empty())
+		d.dropped.push_back(std::to_string(kept_faces.size()) +
+							" polygon cell(s) without cell data: the volume map has its own faces");
+}
+
+std::vector<Column> vtk_cell_data(const MeshData& d)
+{
+	const std::size_t nc = d.nb_cells(), nf = d.nb_faces();
+	auto usable = [](const Column& c) { return c.dim >= 1 && c.dim <= 3; };
+	std::vector<Column> out;
+	for (const Column& c : d.cell_columns)
+		if (usable(c))
+		{
+			Column k = c;
+			k.values.resize((nc + nf) * c.dim, 0.0);
+			out.push_back(std::move(k));
+		}
+	for (const Column& f : d.face_columns)
+	{
+		if (!usable(f))
+			continue;
+		auto same = std::find_if(out.begin(), out.end(), [&](const Column& k) { return k.name == f.name; });
+		if (same == out.end())
+		{
+			Column k{f.name, f.dim, std::vector<double>(nc * f.dim, 0.0), f.type};
+			k.values.insert(k.values.end(), f.values.begin(), f.values.end());
+			out.push_back(std::move(k));
+		}
+		else if (same->dim == f.dim)
+		{
+			std::copy(f.values.begin(), f.values.end(), same->values.begin() + std::ptrdiff_t(nc * f.dim));
+			if (same->type != f.type)
+				same->type = ValueType::Float64;
+		}
+	}
+	return out;
 }
 
 std::vector<std::vector<uint32>> polyhedron_streams(const MeshData& d)

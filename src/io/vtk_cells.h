@@ -13,9 +13,11 @@ namespace cgogn::io::detail
 /// Appends the volume cells of a VTK cell list to d (tetra 10, voxel 11,
 /// hexahedron 12, wedge 13, pyramid 14, corners of quadratic tetra 24 and
 /// hexahedron 25, pentagonal and hexagonal prisms 15 and 16 and polyhedra 42
-/// as polyhedra; lines 3 and polylines 4 go to d.segments;
-/// polygons are ignored) and the matching rows of
-/// `cell_data` to d's cell columns. `offsets` has one more entry than `types`
+/// as polyhedra; lines 3 and polylines 4 go to d.segments; triangles 5,
+/// pixels 8, quads 9, polygons 7 and the corners of quadratic triangles 22
+/// and quads 23 go to d's listed faces; vertex cells and triangle strips
+/// are counted in d.dropped) and the matching rows of `cell_data` to d's
+/// cell columns and, when there are listed faces, to its face columns. `offsets` has one more entry than `types`
 /// (starting at 0). A polyhedron's faces are a face stream (its number of
 /// faces, then each face's number of points and point ids): its
 /// connectivity in a legacy file, where `face_offsets` is empty; in a VTU
@@ -25,6 +27,21 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 					   const std::vector<int64>& types, const std::vector<Column>& cell_data,
 					   const std::function<void(const std::string&)>& fail, const std::vector<int64>& faces = {},
 					   const std::vector<int64>& face_offsets = {});
+
+/// The VTK cell type of a listed face of n vertices: triangle 5, quad 9,
+/// polygon 7.
+inline uint32 vtk_face_type(uint32 n)
+{
+	return n == 3 ? 5 : n == 4 ? 9 : 7;
+}
+
+/// The cell data a VTK file holds for d: one row per cell, then one per
+/// listed face. A name of both the cells and the faces is one array (of the
+/// cells' type, double when the two types differ); a name of one of them
+/// has zeros on the other's rows. Columns of 1 to 3 components only; a face
+/// column whose component count differs from the cells' column of its name
+/// is left out. O(size of the columns).
+std::vector<Column> vtk_cell_data(const MeshData& d);
 
 /// The face stream of each polyhedron of d, by cell (empty for the cells of
 /// the standard kinds): its number of faces, then each face's number of

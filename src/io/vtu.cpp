@@ -434,7 +434,7 @@ std::string write_vtu(const MeshData& d, bool binary)
 					   "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece "
 					   "NumberOfPoints=\"" +
 					   std::to_string(d.nb_vertices()) + "\" NumberOfCells=\"" +
-					   std::to_string(d.nb_cells() + d.segments.size()) + "\">\n";
+					   std::to_string(d.nb_cells() + d.nb_faces() + d.segments.size()) + "\">\n";
 	std::string appended;
 	auto array = [&](const std::string& type, const std::string& name, uint32 dim, const auto& fill_text,
 					 const auto& fill_raw) {
@@ -527,6 +527,15 @@ std::string write_vtu(const MeshData& d, bool binary)
 		faces.insert(faces.end(), streams[c].begin(), streams[c].end());
 		face_offsets.push_back(polyhedron ? int64(faces.size()) : -1);
 	}
+	k = 0;
+	for (uint32 n : d.face_sizes) // the listed faces
+	{
+		for (uint32 i = 0; i < n; ++i)
+			conn.push_back(d.face_vertices[k++]);
+		offsets.push_back(int64(conn.size()));
+		types.push_back(vtk_face_type(n));
+		face_offsets.push_back(-1);
+	}
 	for (const auto& [a, b] : d.segments)
 	{
 		conn.insert(conn.end(), {int64(a), int64(b)});
@@ -555,7 +564,7 @@ std::string write_vtu(const MeshData& d, bool binary)
 		head += std::string("</") + section + ">\n";
 	};
 	data("PointData", d.vertex_columns);
-	data("CellData", d.segments.empty() ? d.cell_columns : std::vector<Column>{}); // see MeshData::segments
+	data("CellData", d.segments.empty() ? vtk_cell_data(d) : std::vector<Column>{}); // see MeshData::segments
 	head += "</Piece>\n</UnstructuredGrid>\n";
 	if (binary)
 	{

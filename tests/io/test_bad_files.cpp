@@ -223,6 +223,8 @@ INSTANTIATE_TEST_SUITE_P(
 		// MEDIT
 		BadCase{"mesh_index_out_of_range", "mesh_index_out_of_range.mesh", nullptr, Where::Line, "out of range"},
 		BadCase{"mesh_zero_index", "mesh_zero_index.mesh", nullptr, Where::Line, "start at 1"},
+		BadCase{"mesh_face_index_out_of_range", "mesh_face_index_out_of_range.mesh", nullptr, Where::Line,
+				"vertex index 9 out of range"},
 		BadCase{"mesh_truncated", "mesh_truncated.mesh", nullptr, Where::Line, "declared 2 cells"},
 		BadCase{"mesh_huge_count", "mesh_huge_count.mesh", nullptr, Where::Line, "declared 3000000000 vertices"},
 		BadCase{"mesh_unknown_section", "mesh_unknown_section.mesh", nullptr, Where::Line, "unknown MEDIT section"},
@@ -260,6 +262,10 @@ INSTANTIATE_TEST_SUITE_P(
 		BadCase{"vtu_garbage", "garbage.vtu", [] { return garbage(4096, 8); }, Where::Byte, ""},
 		// gmsh
 		BadCase{"msh_undefined_node", "msh_undefined_node.msh", nullptr, Where::Line, "node 7, which is not defined"},
+		BadCase{"msh_face_undefined_node", "msh_face_undefined_node.msh", nullptr, Where::Line,
+				"node 9, which is not defined"},
+		BadCase{"msh_entities_truncated", "msh_entities_truncated.msh", nullptr, Where::Line,
+				"expected a physical tag"},
 		BadCase{"msh_bad_version", "msh_bad_version.msh", nullptr, Where::Line, "version 3.0"},
 		BadCase{"msh_truncated", "msh_truncated.msh", nullptr, Where::Line, "unexpected end of file"},
 		BadCase{"msh_binary_truncated", "b.msh",
