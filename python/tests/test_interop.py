@@ -70,6 +70,8 @@ def test_gmsh_tags_seen_by_meshio_after_conversion(data, tmp_path, source, ext, 
     assert tag_histogram(written, "medit:ref" if ext == "mesh" else "gmsh:physical") == expected
     if ext != "mesh":
         assert tag_histogram(written, "gmsh:geometrical") == tag_histogram(original, "gmsh:geometrical")
+    if ext == "msh":  # the names of the physical groups: {name: [tag, dimension]}
+        assert {k: list(v) for k, v in written.field_data.items()} == {k: list(v) for k, v in original.field_data.items()}
 
 
 @pytest.mark.parametrize("ext,binary", [("vtu", False), ("vtu", True), ("vtk", False), ("vtk", True)])

@@ -103,7 +103,14 @@ void check_names(const MAP& m, const MeshData& d, const std::string& path)
 	check(d.vertex_columns, static_cast<Vertex*>(nullptr));
 	check(d.cell_columns, static_cast<Top*>(nullptr));
 	if constexpr (MAP::dimension == 3)
+	{
 		check(d.face_columns, static_cast<typename mesh_traits<MAP>::Face*>(nullptr));
+		if (!d.physical_names.empty())
+		{
+			check_free_name<Top>(m, "gmsh:physical_name", typeid(std::string), path);
+			check_free_name<typename mesh_traits<MAP>::Face>(m, "gmsh:physical_name", typeid(std::string), path);
+		}
+	}
 }
 
 // The attribute to load into. check_names has ruled out every case where
@@ -197,6 +204,26 @@ BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
 	}
 }
 
+// Gives the cells of `lines` whose int32 attribute `gmsh:physical` has a
+// name of dimension `dim` in d.physical_names that name, in the string
+// attribute `gmsh:physical_name`. O(lines).
+template <typename CELL, typename MAP>
+void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const std::vector<uint32>& lines,
+						  const std::string& path)
+{
+	std::unordered_map<int32, const std::string*> name_of;
+	for (const auto& p : d.physical_names)
+		if (p.dim == dim)
+			name_of.try_emplace(p.tag, &p.name);
+	auto tag = get_attribute<int32, CELL>(m, "gmsh:physical");
+	if (name_of.empty() || tag == nullptr)
+		return;
+	auto name = get_or_add<std::string, CELL>(m, "gmsh:physical_name", path);
+	for (uint32 line : lines)
+		if (const auto it = name_of.find((*tag)[line]); it != name_of.end())
+			(*name)[line] = *it->second;
+}
+
 // The key of a face by its vertex ids in any order: the sorted ids' bytes.
 std::string face_key(std::vector<uint32>& ids)
 {
@@ -263,6 +290,10 @@ void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const s
 						put(line, std::size_t(face));
 				},
 				path);
+	std::vector<uint32> lines;
+	for (const auto& [line, face] : found)
+		lines.push_back(line);
+	name_physical_groups<Face>(m, d, 2, lines, path);
 	const auto unmatched = std::count(matched.begin(), matched.end(), uint8(0));
 	if (unmatched > 0)
 		rep.dropped.push_back(std::to_string(unmatched) +
@@ -384,12 +415,24 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			};
 			fill_column<Top>(m, c, cell_lines, path);
 		}
+		if constexpr (dim == 3)
+		{
+			std::vector<uint32> lines;
+			for (const auto& [dart, cell] : firsts)
+				lines.push_back(index_of(m, Top(dart)));
+			name_physical_groups<Top>(m, d, 3, lines, path);
+		}
 	}
 
 	rep.dropped = d.dropped;
 	column_notes(d, dim == 2 ? "face" : "volume", rep.dropped);
 	if constexpr (dim == 3)
+	{
 		fill_listed_faces(m, d, br, path, rep);
+		if (std::any_of(d.physical_names.begin(), d.physical_names.end(), [](const auto& p) { return p.dim < 2; }))
+			rep.dropped.push_back("the names of physical groups of points and curves: a volume map names its volumes "
+								  "and listed faces");
+	}
 	rep.nb_vertices_read = d.nb_vertices();
 	rep.nb_cells_read = br.nb_cells_read;
 	rep.nb_cells_built = br.nb_cells_built;

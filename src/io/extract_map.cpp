@@ -7,6 +7,8 @@
 
 #include "map_transfer.h"
 
+#include <set>
+
 namespace cgogn::io::detail
 {
 
@@ -142,6 +144,30 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 	return d;
 }
 
+// Adds to d.physical_names the names of the physical groups of dimension
+// `dim` that the cells of `lines` carry: the string attribute
+// `gmsh:physical_name` beside the int32 `gmsh:physical` (see
+// MeshData::physical_names), each (dim, tag) once. Names a .msh file
+// cannot quote (with a quote or a line break) are left out. O(lines).
+template <typename CELL, typename MAP>
+void collect_physical_names(const MAP& m, const std::vector<uint32>& lines, int32 dim, MeshData& d)
+{
+	auto name = get_attribute<std::string, CELL>(m, "gmsh:physical_name");
+	auto tag = get_attribute<int32, CELL>(m, "gmsh:physical");
+	if (name == nullptr || tag == nullptr)
+		return;
+	std::set<int32> named;
+	for (const auto& p : d.physical_names)
+		if (p.dim == dim)
+			named.insert(p.tag);
+	for (uint32 l : lines)
+	{
+		const std::string& n = (*name)[l];
+		if (!n.empty() && n.find_first_of("\"\r\n") == std::string::npos && named.insert((*tag)[l]).second)
+			d.physical_names.push_back({dim, (*tag)[l], n});
+	}
+}
+
 // The faces of a volume map with a nonzero value in one of their attributes
 // a file can hold, as listed faces with those columns (MeshData::face_sizes),
 // each seen from a volume that is not a boundary one (on a 3-map,
@@ -178,6 +204,10 @@ void list_faces_with_data(const MAP& m, MeshData& d, const std::string& path, co
 						  c.values.begin() + std::ptrdiff_t(i + 1) * c.dim);
 		c.values = std::move(values);
 	}
+	std::vector<uint32> kept_lines;
+	for (uint32 i : kept)
+		kept_lines.push_back(lines[i]);
+	collect_physical_names<Face>(m, kept_lines, 2, d);
 	for (uint32 i : kept)
 	{
 		Dart x = darts[i];
@@ -327,7 +357,10 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 	});
 	d.finish_polyhedra();
 	if (attributes && volumes_indexed)
+	{
 		gather_columns(container_of<Volume::ORBIT>(m), volume_lines, d.cell_columns, false, path);
+		collect_physical_names<Volume>(m, volume_lines, 3, d);
+	}
 	if (attributes)
 		list_faces_with_data(m, d, path, origin, next);
 	return d;

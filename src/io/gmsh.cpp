@@ -146,6 +146,11 @@ public:
 				entities();
 				expect("$EndEntities");
 			}
+			else if (k == "$PhysicalNames")
+			{
+				physical_names();
+				expect("$EndPhysicalNames");
+			}
 			else if (k.size() > 1 && k[0] == '$')
 			{
 				// skip to the matching $End section (binary sections included)
@@ -221,6 +226,27 @@ private:
 	{
 		const auto it = physical_.find({dim, tag});
 		return it == physical_.end() ? 0 : it->second;
+	}
+
+	// $PhysicalNames (ascii in every file): dimension, tag and quoted name
+	// of each physical group.
+	void physical_names()
+	{
+		const uint32 n = t_.read_uint("a physical name count");
+		t_.check_count(n, 6, "physical names");
+		for (uint32 i = 0; i < n; ++i)
+		{
+			const int64 dim = t_.read_int("a dimension");
+			const int64 tag = t_.read_int("a physical tag");
+			const std::string_view rest = t_.rest_of_line();
+			const std::size_t q0 = rest.find('"'), q1 = rest.rfind('"');
+			if (q0 == std::string_view::npos || q1 == q0)
+				t_.fail("a physical name without its quotes");
+			if (dim < 0 || dim > 3 || tag < INT32_MIN || tag > INT32_MAX)
+				t_.fail("a physical name of dimension " + std::to_string(dim) + " and tag " + std::to_string(tag));
+			d_.physical_names.push_back({int32(dim), int32(tag), std::string(rest.substr(q0 + 1, q1 - q0 - 1))});
+			t_.next_line();
+		}
 	}
 
 	// $Entities (4.1): the physical tags of the points, curves, surfaces
@@ -634,7 +660,15 @@ std::string write_gmsh(const MeshData& d, bool binary)
 		append_raw(s, int32(1));
 		s += '\n';
 	}
-	s += "$EndMeshFormat\n$Entities\n";
+	s += "$EndMeshFormat\n";
+	if (!d.physical_names.empty())
+	{
+		s += "$PhysicalNames\n" + std::to_string(d.physical_names.size()) + "\n";
+		for (const auto& p : d.physical_names)
+			s += std::to_string(p.dim) + " " + std::to_string(p.tag) + " \"" + p.name + "\"\n";
+		s += "$EndPhysicalNames\n";
+	}
+	s += "$Entities\n";
 	std::array<double, 6> box = {0, 0, 0, 0, 0, 0}; // every entity's bounding box: the mesh's
 	for (std::size_t i = 0; i < d.positions.size(); ++i)
 	{

@@ -152,6 +152,17 @@ struct MeshData
 	std::vector<uint32> face_sizes;
 	std::vector<uint32> face_vertices;
 	std::vector<Column> face_columns;
+	/// The names of gmsh's physical groups ($PhysicalNames): a volume map
+	/// gives each volume (dimension 3) and listed face (dimension 2) whose
+	/// `gmsh:physical` tag has a name that name, in the string attribute
+	/// `gmsh:physical_name`; a writer takes them back from there.
+	struct PhysicalName
+	{
+		int32 dim;
+		int32 tag;
+		std::string name;
+	};
+	std::vector<PhysicalName> physical_names;
 	/// What a reader read but the map will not hold, each with why
 	/// (LoadReport::dropped).
 	std::vector<std::string> dropped;

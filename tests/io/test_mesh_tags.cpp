@@ -129,6 +129,43 @@ TEST_P(GmshBox, TagsSurviveEveryVolumeFormatThatHasThem)
 	}
 }
 
+// How many cells CELL have each name of physical group.
+template <typename CELL>
+std::map<std::string, uint32> names(const CMap3& m)
+{
+	std::map<std::string, uint32> h;
+	auto a = get_attribute<std::string, CELL>(m, "gmsh:physical_name");
+	if (a != nullptr)
+		foreach_cell(m, [&](CELL c) {
+			if (!(*a)[c].empty())
+				++h[(*a)[c]];
+		});
+	return h;
+}
+
+TEST_P(GmshBox, NamesOfPhysicalGroupsSurviveMsh)
+{
+	const Box& b = GetParam();
+	TempDir dir;
+	CMap3 m;
+	io::load_volume(m, cgogn_test_data::path(std::string("gmsh/") + b.file));
+	const std::map<std::string, uint32> volumes{{"solid", b.nb_volumes}};
+	const std::map<std::string, uint32> faces{{"bottom", b.per_side}, {"top", b.per_side}, {"walls", 4 * b.per_side}};
+	EXPECT_EQ(names<CMap3::Volume>(m), volumes);
+	EXPECT_EQ(names<CMap3::Face>(m), faces);
+	for (bool binary : {false, true})
+	{
+		io::SaveOptions o;
+		o.binary = binary;
+		io::save_volume(m, dir.file("box.msh"), o);
+		EXPECT_NE(read_text(dir.file("box.msh")).find("$PhysicalNames\n4\n"), std::string::npos);
+		CMap3 back;
+		io::load_volume(back, dir.file("box.msh"));
+		EXPECT_EQ(names<CMap3::Volume>(back), volumes);
+		EXPECT_EQ(names<CMap3::Face>(back), faces);
+	}
+}
+
 TEST(MeshTags, MeditReferencesOfVerticesCellsAndFaces)
 {
 	TempDir dir;
