@@ -78,6 +78,7 @@ void column_notes(const MeshData& d, const char* cell, std::vector<std::string>&
 	note(d.vertex_columns, "vertex");
 	note(d.cell_columns, cell);
 	note(d.face_columns, "listed face");
+	note(d.corner_columns, "corner");
 }
 
 // Everything about names that could make the build fail, checked before the
@@ -102,6 +103,8 @@ void check_names(const MAP& m, const MeshData& d, const std::string& path)
 	};
 	check(d.vertex_columns, static_cast<Vertex*>(nullptr));
 	check(d.cell_columns, static_cast<Top*>(nullptr));
+	if constexpr (MAP::dimension == 2)
+		check(d.corner_columns, static_cast<Cell<Orbit::DART>*>(nullptr));
 	if constexpr (MAP::dimension == 3)
 	{
 		check(d.face_columns, static_cast<typename mesh_traits<MAP>::Face*>(nullptr));
@@ -224,6 +227,65 @@ void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const std::vecto
 			(*name)[line] = *it->second;
 }
 
+// The file's id of the vertex lines a load made (split copies included),
+// INVALID_INDEX for the others.
+class FileVertexIds
+{
+public:
+	FileVertexIds(const BuildReport& br, uint32 nb_vertices)
+		: offset_(br.vertex_offset), nb_vertices_(nb_vertices),
+		  copy_of_(br.split_vertices.begin(), br.split_vertices.end())
+	{
+	}
+	uint32 operator()(uint32 line) const
+	{
+		if (line >= offset_ && line - offset_ < nb_vertices_)
+			return line - offset_;
+		const auto it = copy_of_.find(line);
+		return it == copy_of_.end() ? INVALID_INDEX : it->second;
+	}
+
+private:
+	uint32 offset_;
+	uint32 nb_vertices_;
+	std::unordered_map<uint32, uint32> copy_of_;
+};
+
+// Puts the corner columns of d on the darts of the faces just built: each
+// dart of face `cell` (reached from its first dart) gets the row of the
+// corner of that cell at the dart's vertex. O(corners).
+template <typename MAP>
+void fill_corners(MAP& m, const MeshData& d, const std::vector<std::pair<Dart, uint32>>& firsts,
+				  const FileVertexIds& file_id, const std::string& path)
+{
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	using Face = typename mesh_traits<MAP>::Face;
+	using HalfEdge = Cell<Orbit::DART>;
+	std::vector<std::size_t> first_corner(d.nb_cells() + 1, 0);
+	for (uint32 c = 0; c < d.nb_cells(); ++c)
+		first_corner[c + 1] = first_corner[c] + d.cell_sizes[c];
+	std::vector<std::pair<uint32, std::size_t>> rows; // (dart, corner)
+	for (const auto& [dart, cell] : firsts)
+		foreach_dart_of_orbit(m, Face(dart), [&](Dart x) {
+			const uint32 v = file_id(index_of(m, Vertex(x)));
+			for (std::size_t k = first_corner[cell]; k < first_corner[cell + 1]; ++k)
+				if (d.cell_vertices[k] == v)
+				{
+					rows.emplace_back(x.index, k);
+					break;
+				}
+		});
+	for (const auto& c : d.corner_columns)
+		if (usable(c))
+			fill_column<HalfEdge>(
+				m, c,
+				[&](const auto& put) {
+					for (const auto& [dart, corner] : rows)
+						put(dart, corner);
+				},
+				path);
+}
+
 // The key of a face by its vertex ids in any order: the sorted ids' bytes.
 std::string face_key(std::vector<uint32>& ids)
 {
@@ -253,14 +315,7 @@ void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const s
 		k += d.face_sizes[f];
 		listed.try_emplace(face_key(ids), f);
 	}
-	// the file's id of the vertex lines this load made
-	std::unordered_map<uint32, uint32> copy_of(br.split_vertices.begin(), br.split_vertices.end());
-	auto file_id = [&](uint32 line) -> uint32 {
-		if (line >= br.vertex_offset && line - br.vertex_offset < d.nb_vertices())
-			return line - br.vertex_offset;
-		const auto it = copy_of.find(line);
-		return it == copy_of.end() ? INVALID_INDEX : it->second;
-	};
+	const FileVertexIds file_id(br, d.nb_vertices());
 	std::vector<std::pair<uint32, uint32>> found; // (face line, listed face)
 	std::vector<uint8> matched(d.nb_faces(), 0);
 	index_cells<Face>(m);
@@ -390,9 +445,11 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	bool any_cell_column = false;
 	for (const auto& c : d.cell_columns)
 		any_cell_column = any_cell_column || usable(c);
-	if (any_cell_column)
+	const bool any_corner_column =
+		std::any_of(d.corner_columns.begin(), d.corner_columns.end(), [](const Column& c) { return usable(c); });
+	std::vector<std::pair<Dart, uint32>> firsts; // (first dart, cell)
+	if (any_cell_column || any_corner_column)
 	{
-		std::vector<std::pair<Dart, uint32>> firsts; // (first dart, cell)
 		uint64 k = 0;
 		for (uint32 c = 0; c < d.nb_cells(); ++c)
 			if (built[c])
@@ -400,6 +457,12 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 				firsts.emplace_back(predict(k), c);
 				k += nb_darts_of[c];
 			}
+	}
+	if constexpr (dim == 2)
+		if (any_corner_column)
+			fill_corners(m, d, firsts, FileVertexIds(br, d.nb_vertices()), path);
+	if (any_cell_column)
+	{
 		for (const auto& c : d.cell_columns)
 		{
 			if (!usable(c))
@@ -517,6 +580,8 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 
 	rep.dropped = d.dropped;
 	column_notes(d, "face", rep.dropped);
+	for (const auto& c : d.corner_columns)
+		rep.dropped.push_back("corner data '" + c.name + "': an incidence graph holds no per-corner data");
 	rep.build.nb_cells_read = d.nb_cells();
 	rep.build.vertex_offset = vertex.empty() ? 0 : vertex[0].dart.index;
 	rep.nb_vertices_read = d.nb_vertices();

@@ -128,12 +128,16 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 	MeshData d;
 	const std::vector<uint32> id = number_vertices(m, d, path, attributes);
 	std::vector<uint32> face_lines;
+	std::vector<uint32> corner_darts; // the dart of each corner, in the order of cell_vertices
 	const bool faces_indexed = is_indexed<Face>(m);
 	foreach_cell(m, [&](Face f) {
 		uint32 n = 0;
 		foreach_dart_of_orbit(m, f, [&](Dart x) {
 			if (n++ % step == 0)
+			{
 				d.cell_vertices.push_back(id[index_of(m, vertex_of_dart(m, x))]);
+				corner_darts.push_back(x.index);
+			}
 		});
 		d.cell_sizes.push_back(n / step);
 		if (faces_indexed)
@@ -141,6 +145,10 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 	});
 	if (attributes && faces_indexed)
 		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false, path);
+	// the dart attributes, as per-corner data (an incidence graph's uses are
+	// not corners of the files' faces)
+	if (attributes && !std::is_same_v<MAP, IncidenceGraph>)
+		gather_columns(container_of<Orbit::DART>(m), corner_darts, d.corner_columns, false, path);
 	return d;
 }
 

@@ -143,6 +143,12 @@ struct MeshData
 	std::vector<uint32> cell_nb_faces;
 	std::vector<uint32> polyhedron_face_sizes;
 	std::vector<uint32> polyhedron_face_vertices;
+	/// Per-corner data of a surface: one row per entry of cell_vertices (the
+	/// corner of that cell at that vertex), such as the texture coordinates
+	/// and normals of an OBJ file that differ between the corners of a
+	/// vertex (seams, creases). A map holds them as dart attributes (every
+	/// dart of the face at that vertex).
+	std::vector<Column> corner_columns;
 	/// Faces a volume file lists beside its cells (gmsh's triangles and
 	/// quadrangles, VTK's triangle, quad and polygon cells, MEDIT's Triangles
 	/// and Quadrilaterals), usually boundary faces carrying tags, with one

@@ -3,14 +3,17 @@
 // corners and negative (relative) indices. o, g, s, usemtl, mtllib, l, p and
 // the free-form geometry statements are ignored; any other keyword is an error.
 // Texture coordinates and normals become vertex attributes (`tex_coord` Vec2,
-// `normal` Vec3) when every corner of a vertex uses the same one; otherwise
-// they are not kept.
+// `normal` Vec3) when every corner of a vertex uses the same value;
+// otherwise (seams, creases) corner attributes of those names, on the darts.
+// Writing, corner attributes give vt/vn lines shared by the corners of equal
+// value.
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
 
 #include <algorithm>
 #include <array>
+#include <map>
 
 namespace cgogn::io::detail
 {
@@ -40,31 +43,45 @@ uint32 resolve(const TextReader& r, int64 i, std::size_t count, const char* what
 
 constexpr uint32 NONE = INVALID_INDEX;
 
-// Per-vertex attribute from per-corner indices, when consistent.
+// The data of per-corner indices into `values` (dim values each): a vertex
+// column when every corner of a vertex has the same value, else a corner
+// column (a corner without an index: zeros).
 void corner_column(MeshData& d, const std::vector<uint32>& corner, const std::vector<double>& values, uint32 dim,
 				   const char* name)
 {
 	if (values.empty() || corner.empty())
 		return;
+	auto value = [&](uint32 i) { return values.begin() + std::ptrdiff_t(i) * dim; };
 	std::vector<uint32> of_vertex(d.nb_vertices(), NONE);
-	for (std::size_t c = 0; c < corner.size(); ++c)
+	bool per_vertex = true;
+	for (std::size_t c = 0; c < corner.size() && per_vertex; ++c)
 	{
 		const uint32 v = d.cell_vertices[c];
 		if (corner[c] == NONE)
-			return;
-		if (of_vertex[v] == NONE)
+			per_vertex = false;
+		else if (of_vertex[v] == NONE)
 			of_vertex[v] = corner[c];
-		else if (of_vertex[v] != corner[c] && !std::equal(values.begin() + std::ptrdiff_t(of_vertex[v]) * dim,
-														  values.begin() + std::ptrdiff_t(of_vertex[v] + 1) * dim,
-														  values.begin() + std::ptrdiff_t(corner[c]) * dim))
-			return;
+		else if (of_vertex[v] != corner[c] &&
+				 !std::equal(value(of_vertex[v]), value(of_vertex[v] + 1), value(corner[c])))
+			per_vertex = false;
 	}
-	Column col{name, dim, std::vector<double>(std::size_t(d.nb_vertices()) * dim, 0.0)};
-	for (uint32 v = 0; v < d.nb_vertices(); ++v)
-		if (of_vertex[v] != NONE)
-			std::copy_n(values.begin() + std::ptrdiff_t(of_vertex[v]) * dim, dim,
-						col.values.begin() + std::ptrdiff_t(v) * dim);
-	d.vertex_columns.push_back(std::move(col));
+	if (per_vertex)
+	{
+		Column col{name, dim, std::vector<double>(std::size_t(d.nb_vertices()) * dim, 0.0)};
+		for (uint32 v = 0; v < d.nb_vertices(); ++v)
+			if (of_vertex[v] != NONE)
+				std::copy_n(value(of_vertex[v]), dim, col.values.begin() + std::ptrdiff_t(v) * dim);
+		d.vertex_columns.push_back(std::move(col));
+		return;
+	}
+	Column col{name, dim, {}};
+	col.values.reserve(corner.size() * dim);
+	for (uint32 c : corner)
+		if (c == NONE)
+			col.values.insert(col.values.end(), dim, 0.0);
+		else
+			col.values.insert(col.values.end(), value(c), value(c + 1));
+	d.corner_columns.push_back(std::move(col));
 }
 
 } // namespace
@@ -173,17 +190,62 @@ MeshData read_obj(std::string_view text, const std::string& path)
 	return d;
 }
 
+namespace
+{
+
+// The vt or vn lines of a writer and the index of each corner into them:
+// from a corner column (values shared by the corners that agree), else from
+// a vertex column (one line per vertex), else none.
+struct CornerIndices
+{
+	const double* values = nullptr; // the lines' values, dim each
+	std::vector<double> shared;     // the distinct values of a corner column
+	std::vector<uint32> of_corner;  // 0-based line of each corner
+	uint32 nb_lines = 0;
+};
+
+CornerIndices corner_indices(const MeshData& d, const char* name, uint32 dim)
+{
+	CornerIndices out;
+	for (const Column& c : d.corner_columns)
+		if (c.name == name && c.dim == dim)
+		{
+			std::map<std::vector<double>, uint32> line_of;
+			std::vector<double> v(dim);
+			out.of_corner.reserve(d.cell_vertices.size());
+			for (std::size_t k = 0; k < d.cell_vertices.size(); ++k)
+			{
+				std::copy_n(c.values.begin() + std::ptrdiff_t(k * dim), dim, v.begin());
+				const auto [it, added] = line_of.try_emplace(v, out.nb_lines);
+				if (added)
+				{
+					out.shared.insert(out.shared.end(), v.begin(), v.end());
+					++out.nb_lines;
+				}
+				out.of_corner.push_back(it->second);
+			}
+			out.values = out.shared.data();
+			return out;
+		}
+	const Column* c = d.find_vertex_column(name);
+	if (c != nullptr && c->dim == dim)
+	{
+		out.values = c->values.data();
+		out.nb_lines = d.nb_vertices();
+		out.of_corner.assign(d.cell_vertices.begin(), d.cell_vertices.end());
+	}
+	return out;
+}
+
+} // namespace
+
 std::string write_obj(const MeshData& d)
 {
 	std::string s;
 	s.reserve(std::size_t(d.nb_vertices()) * 40 + d.cell_vertices.size() * 8);
-	const Column* normal = d.find_vertex_column("normal");
-	const Column* tex = d.find_vertex_column("tex_coord");
+	const CornerIndices tex = corner_indices(d, "tex_coord", 2);
+	const CornerIndices normal = corner_indices(d, "normal", 3);
 	const Column* color = d.find_vertex_column("color");
-	if (normal && normal->dim != 3)
-		normal = nullptr;
-	if (tex && tex->dim != 2)
-		tex = nullptr;
 	if (color && color->dim != 3)
 		color = nullptr;
 	auto put_line = [&](const char* key, const double* v, uint32 n) {
@@ -193,10 +255,16 @@ std::string write_obj(const MeshData& d)
 			s += ' ';
 			append_double(s, v[k]);
 		}
+		s += '\n';
 	};
 	for (uint32 v = 0; v < d.nb_vertices(); ++v)
 	{
-		put_line("v", &d.positions[3 * std::size_t(v)], 3);
+		s += 'v';
+		for (uint32 k = 0; k < 3; ++k)
+		{
+			s += ' ';
+			append_double(s, d.positions[3 * std::size_t(v) + k]);
+		}
 		if (color)
 			for (uint32 k = 0; k < 3; ++k)
 			{
@@ -205,36 +273,28 @@ std::string write_obj(const MeshData& d)
 			}
 		s += '\n';
 	}
-	if (tex)
-		for (uint32 v = 0; v < d.nb_vertices(); ++v)
-		{
-			put_line("vt", &tex->values[2 * std::size_t(v)], 2);
-			s += '\n';
-		}
-	if (normal)
-		for (uint32 v = 0; v < d.nb_vertices(); ++v)
-		{
-			put_line("vn", &normal->values[3 * std::size_t(v)], 3);
-			s += '\n';
-		}
+	for (uint32 i = 0; i < tex.nb_lines; ++i)
+		put_line("vt", tex.values + 2 * std::size_t(i), 2);
+	for (uint32 i = 0; i < normal.nb_lines; ++i)
+		put_line("vn", normal.values + 3 * std::size_t(i), 3);
+	const bool with_tex = tex.values != nullptr, with_normal = normal.values != nullptr;
 	std::size_t k = 0;
 	for (uint32 f = 0; f < d.nb_cells(); ++f)
 	{
 		s += 'f';
-		for (uint32 i = 0; i < d.cell_sizes[f]; ++i)
+		for (uint32 i = 0; i < d.cell_sizes[f]; ++i, ++k)
 		{
-			const uint64 id = d.cell_vertices[k++] + 1;
 			s += ' ';
-			append_uint(s, id);
-			if (tex || normal)
+			append_uint(s, uint64(d.cell_vertices[k]) + 1);
+			if (with_tex || with_normal)
 			{
 				s += '/';
-				if (tex)
-					append_uint(s, id);
-				if (normal)
+				if (with_tex)
+					append_uint(s, uint64(tex.of_corner[k]) + 1);
+				if (with_normal)
 				{
 					s += '/';
-					append_uint(s, id);
+					append_uint(s, uint64(normal.of_corner[k]) + 1);
 				}
 			}
 		}

@@ -4,8 +4,9 @@
 // `vertex_index`) the polygons. Other scalar properties of vertices and faces
 // become columns: nx ny nz -> `normal`, red green blue -> `color`, u v (or s t,
 // texture_u texture_v) -> `tex_coord`, name_x name_y [name_z] -> Vec2/Vec3
-// `name`, anything else -> a scalar column of its name. Other elements and
-// list properties are read and dropped.
+// `name`, anything else -> a scalar column of its name. A face list
+// `texcoord` (MeshLab's u v per corner) -> the corner column `tex_coord`.
+// Other elements and list properties are read and reported as not loaded.
 #include "byte_reader.h"
 #include "formats.h"
 #include "text_reader.h"
@@ -85,7 +86,9 @@ struct Property
 	PType type = PType::Float32;
 	bool is_list = false;
 	PType count_type = PType::UInt8;
-	// where a scalar goes: -1 nowhere, -2 position, else a column
+	// where a scalar goes: -1 nowhere, -2 position (a list: the face's
+	// vertices), -3 (a face list) the per-corner texture coordinates, else a
+	// column
 	int column = -1;
 	uint32 component = 0;
 	uint64 header_line = 0;
@@ -332,12 +335,24 @@ MeshData read_ply(std::string_view data, const std::string& path)
 				}
 			if (!found)
 				throw Error(path, Error::Where::Line, e.header_line, "the face element has no vertex_indices list");
+			for (auto& p : e.props)
+				if (p.is_list && p.name == "texcoord" && !is_integer(p.type))
+					p.column = -3; // MeshLab's per-corner u v pairs
 		}
+		else
+			d.dropped.push_back("PLY element '" + e.name + "' (" + std::to_string(e.count) +
+								"): vertices and faces are loaded");
+		if (e.name == "vertex" || e.name == "face")
+			for (const auto& p : e.props)
+				if (p.is_list && p.column == -1)
+					d.dropped.push_back("PLY list property '" + p.name + "' of the " + e.name + " element");
 	}
 	if (!have_vertex)
 		throw Error(path, "PLY file without a vertex element");
 
 	// ---- body
+	std::vector<double> texcoords;       // the faces' texcoord lists, one after the other
+	std::vector<uint32> texcoord_counts; // and their lengths
 	auto face_index = [&](auto& reader, double v) {
 		if (!(v >= 0.0) || v >= double(nv) || v != std::floor(v))
 			reader.fail("vertex index " + std::to_string(int64(v)) + " out of range (the file has " +
@@ -382,6 +397,12 @@ MeshData read_ply(std::string_view data, const std::string& path)
 							for (int64 j = 0; j < n; ++j)
 								face_index(r, double(r.read_int("a vertex index")));
 						}
+						else if (is_face && p.column == -3)
+						{
+							texcoord_counts.push_back(uint32(n));
+							for (int64 j = 0; j < n; ++j)
+								texcoords.push_back(r.read_double("a texture coordinate"));
+						}
 						else
 							for (int64 j = 0; j < n; ++j)
 								r.read_double("a list value");
@@ -425,6 +446,16 @@ MeshData read_ply(std::string_view data, const std::string& path)
 							for (uint32 j = 0; j < k; ++j)
 								face_index(b, read_binary(b, p.type));
 						}
+						else if (is_face && p.column == -3)
+						{
+							texcoord_counts.push_back(k);
+							for (uint32 j = 0; j < k; ++j)
+							{
+								texcoords.push_back(read_binary(b, p.type));
+								if (!std::isfinite(texcoords.back()))
+									b.fail("a texture coordinate is not finite");
+							}
+						}
 						else
 							b.skip(std::size_t(k) * type_size(p.type));
 						continue;
@@ -441,6 +472,15 @@ MeshData read_ply(std::string_view data, const std::string& path)
 		}
 		if (b.remaining() != 0)
 			b.fail("unexpected " + std::to_string(b.remaining()) + " bytes after the declared elements");
+	}
+	if (!texcoord_counts.empty())
+	{
+		for (uint32 f = 0; f < d.nb_cells(); ++f)
+			if (texcoord_counts[f] != 2 * d.cell_sizes[f])
+				throw Error(path, "face " + std::to_string(f) + " has " + std::to_string(texcoord_counts[f]) +
+									  " texcoord values for " + std::to_string(d.cell_sizes[f]) +
+									  " corners (2 per corner)");
+		d.corner_columns.push_back(Column{"tex_coord", 2, std::move(texcoords)});
 	}
 	return d;
 }
@@ -601,7 +641,17 @@ std::string write_ply(const MeshData& d, bool binary, const std::string& path)
 	s += "element face ";
 	append_uint(s, d.nb_cells());
 	s += byte_count ? "\nproperty list uchar int vertex_indices\n" : "\nproperty list int int vertex_indices\n";
-	auto fcols = layout(d.cell_columns, s, "face", {{"vertex_indices", "the face's vertex list"}}, path);
+	// per-corner texture coordinates: MeshLab's face list `texcoord`
+	const Column* texcoord = nullptr;
+	for (const Column& c : d.corner_columns)
+		if (c.name == "tex_coord" && c.dim == 2)
+			texcoord = &c;
+	const bool texcoord_byte_count = 2 * max_degree < 256;
+	if (texcoord)
+		s += texcoord_byte_count ? "property list uchar double texcoord\n" : "property list int double texcoord\n";
+	auto fcols =
+		layout(d.cell_columns, s, "face",
+			   {{"vertex_indices", "the face's vertex list"}, {"texcoord", "the corners' texture coordinates"}}, path);
 	s += "end_header\n";
 	s.reserve(s.size() + std::size_t(d.nb_vertices()) * (binary ? 24 : 40) + d.cell_vertices.size() * 8);
 	for (uint32 v = 0; v < d.nb_vertices(); ++v)
@@ -642,6 +692,29 @@ std::string write_ply(const MeshData& d, bool binary, const std::string& path)
 			{
 				s += ' ';
 				append_uint(s, d.cell_vertices[k++]);
+			}
+		}
+		if (texcoord)
+		{
+			const double* uv = texcoord->values.data() + 2 * (k - n);
+			if (binary)
+			{
+				if (texcoord_byte_count)
+					s.push_back(char(uint8(2 * n)));
+				else
+					append_raw(s, int32(2 * n));
+				for (uint32 i = 0; i < 2 * n; ++i)
+					append_raw(s, uv[i]);
+			}
+			else
+			{
+				s += ' ';
+				append_uint(s, 2 * n);
+				for (uint32 i = 0; i < 2 * n; ++i)
+				{
+					s += ' ';
+					append_double(s, uv[i]);
+				}
 			}
 		}
 		put_columns(s, fcols, f, binary);

@@ -85,6 +85,16 @@ void validate(const MeshData& d, const std::string& path)
 			throw Error(path, why);
 		names.push_back(c.name);
 	}
+	names.clear();
+	for (const auto& c : d.corner_columns)
+	{
+		if (c.values.size() != d.cell_vertices.size() * c.dim)
+			throw Error(path, "corner data '" + c.name + "' does not have one value per face corner");
+		check_values(c, "corner");
+		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
+			throw Error(path, why);
+		names.push_back(c.name);
+	}
 	std::size_t nb_ids = 0;
 	for (uint32 n : d.face_sizes)
 		nb_ids += n;
