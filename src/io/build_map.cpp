@@ -265,8 +265,10 @@ void fill_corners(MAP& m, const MeshData& d, const std::vector<std::pair<Dart, u
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 		first_corner[c + 1] = first_corner[c] + d.cell_sizes[c];
 	std::vector<std::pair<uint32, std::size_t>> rows; // (dart, corner)
-	for (const auto& [dart, cell] : firsts)
-		foreach_dart_of_orbit(m, Face(dart), [&](Dart x) {
+	for (const auto& first : firsts)
+	{
+		const uint32 cell = first.second; // not a structured binding: a lambda captures it
+		foreach_dart_of_orbit(m, Face(first.first), [&](Dart x) {
 			const uint32 v = file_id(index_of(m, Vertex(x)));
 			for (std::size_t k = first_corner[cell]; k < first_corner[cell + 1]; ++k)
 				if (d.cell_vertices[k] == v)
@@ -275,6 +277,7 @@ void fill_corners(MAP& m, const MeshData& d, const std::vector<std::pair<Dart, u
 					break;
 				}
 		});
+	}
 	for (const auto& c : d.corner_columns)
 		if (usable(c))
 			fill_column<HalfEdge>(

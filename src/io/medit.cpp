@@ -66,6 +66,29 @@ MeshData read_medit(std::string_view text, const std::string& path)
 			r.fail("reference " + std::to_string(ref) + " out of the 32-bit range");
 		c.values.push_back(double(ref));
 	};
+	// n records of `size` 1-based vertex indices and a reference (cells or
+	// listed faces)
+	auto read_records = [&](uint32 n, uint32 size, std::vector<uint32>& sizes, std::vector<uint32>& ids, Column& ref,
+							const char* what, const char* ref_what) {
+		r.check_count(n, 2 * (size + 1), what);
+		sizes.reserve(sizes.size() + n);
+		ids.reserve(ids.size() + std::size_t(n) * size);
+		for (uint32 i = 0; i < n; ++i)
+		{
+			sizes.push_back(size);
+			for (uint32 j = 0; j < size; ++j)
+			{
+				const uint32 v = r.read_uint("a vertex index");
+				if (v == 0)
+					r.fail("vertex index 0 (MEDIT indices start at 1)");
+				if (have_vertices && v > d.nb_vertices())
+					r.fail("vertex index " + std::to_string(v) + " out of range (the file has " +
+						   std::to_string(d.nb_vertices()) + " vertices)");
+				ids.push_back(v - 1);
+			}
+			read_ref(ref, ref_what);
+		}
+	};
 	while (true)
 	{
 		k = r.token();
@@ -99,23 +122,8 @@ MeshData read_medit(std::string_view text, const std::string& path)
 		}
 		if (k == "Triangles" || k == "Quadrilaterals")
 		{
-			const uint32 size = k == "Triangles" ? 3 : 4;
-			r.check_count(n, 2 * (size + 1), "faces");
-			for (uint32 i = 0; i < n; ++i)
-			{
-				d.face_sizes.push_back(size);
-				for (uint32 j = 0; j < size; ++j)
-				{
-					const uint32 v = r.read_uint("a vertex index");
-					if (v == 0)
-						r.fail("vertex index 0 (MEDIT indices start at 1)");
-					if (have_vertices && v > d.nb_vertices())
-						r.fail("vertex index " + std::to_string(v) + " out of range (the file has " +
-							   std::to_string(d.nb_vertices()) + " vertices)");
-					d.face_vertices.push_back(v - 1);
-				}
-				read_ref(face_ref, "a face reference");
-			}
+			read_records(n, k == "Triangles" ? 3 : 4, d.face_sizes, d.face_vertices, face_ref, "faces",
+						 "a face reference");
 			continue;
 		}
 		nb_edges += k == "Edges" ? n : 0;
@@ -130,24 +138,7 @@ MeshData read_medit(std::string_view text, const std::string& path)
 			size = 8;
 		if (size > 0)
 		{
-			r.check_count(n, 2 * (size + 1), "cells");
-			d.cell_sizes.reserve(d.cell_sizes.size() + n);
-			d.cell_vertices.reserve(d.cell_vertices.size() + std::size_t(n) * size);
-			for (uint32 i = 0; i < n; ++i)
-			{
-				d.cell_sizes.push_back(size);
-				for (uint32 j = 0; j < size; ++j)
-				{
-					const uint32 v = r.read_uint("a vertex index");
-					if (v == 0)
-						r.fail("vertex index 0 (MEDIT indices start at 1)");
-					if (have_vertices && v > d.nb_vertices())
-						r.fail("vertex index " + std::to_string(v) + " out of range (the file has " +
-							   std::to_string(d.nb_vertices()) + " vertices)");
-					d.cell_vertices.push_back(v - 1);
-				}
-				read_ref(cell_ref, "a cell reference");
-			}
+			read_records(n, size, d.cell_sizes, d.cell_vertices, cell_ref, "cells", "a cell reference");
 			cell_lines.push_back(section_line);
 			continue;
 		}
