@@ -149,6 +149,26 @@ void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string&
 	});
 }
 
+// Writes column c into the attribute of CELL: row `row` into line `line`
+// for each (line, row) of `rows`.
+template <typename CELL, typename MAP, typename ROWS>
+void fill_rows(MAP& m, const Column& c, const ROWS& rows, const std::string& path)
+{
+	fill_column<CELL>(
+		m, c,
+		[&](const auto& put) {
+			for (const auto& [line, row] : rows)
+				put(line, std::size_t(row));
+		},
+		path);
+}
+
+// Whether a column of `columns` becomes an attribute.
+bool any_usable(const std::vector<Column>& columns)
+{
+	return std::any_of(columns.begin(), columns.end(), [](const Column& c) { return usable(c); });
+}
+
 // The dart ids add_dart will hand out next: free lines last-in first-out, then new ones.
 class DartPredictor
 {
@@ -207,12 +227,12 @@ BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
 	}
 }
 
-// Gives the cells of `lines` whose int32 attribute `gmsh:physical` has a
-// name of dimension `dim` in d.physical_names that name, in the string
-// attribute `gmsh:physical_name`. O(lines).
-template <typename CELL, typename MAP>
-void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const std::vector<uint32>& lines,
-						  const std::string& path)
+// Gives the cells of the lines of `rows` ((line, row) pairs) whose int32
+// attribute `gmsh:physical` has a name of dimension `dim` in
+// d.physical_names that name, in the string attribute `gmsh:physical_name`.
+// O(rows).
+template <typename CELL, typename MAP, typename ROWS>
+void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const ROWS& rows, const std::string& path)
 {
 	std::unordered_map<int32, const std::string*> name_of;
 	for (const auto& p : d.physical_names)
@@ -222,9 +242,9 @@ void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const std::vecto
 	if (name_of.empty() || tag == nullptr)
 		return;
 	auto name = get_or_add<std::string, CELL>(m, "gmsh:physical_name", path);
-	for (uint32 line : lines)
-		if (const auto it = name_of.find((*tag)[line]); it != name_of.end())
-			(*name)[line] = *it->second;
+	for (const auto& row : rows)
+		if (const auto it = name_of.find((*tag)[row.first]); it != name_of.end())
+			(*name)[row.first] = *it->second;
 }
 
 // The file's id of the vertex lines a load made (split copies included),
@@ -280,44 +300,63 @@ void fill_corners(MAP& m, const MeshData& d, const std::vector<std::pair<Dart, u
 	}
 	for (const auto& c : d.corner_columns)
 		if (usable(c))
-			fill_column<HalfEdge>(
-				m, c,
-				[&](const auto& put) {
-					for (const auto& [dart, corner] : rows)
-						put(dart, corner);
-				},
-				path);
+			fill_rows<HalfEdge>(m, c, rows, path);
 }
 
-// The key of a face by its vertex ids in any order: the sorted ids' bytes.
-std::string face_key(std::vector<uint32>& ids)
+// The listed faces of d by their lowest vertex, each with its vertex ids
+// sorted, to find the listed face of a given vertex set without a key per
+// face. O(listed corners).
+class ListedFaces
 {
-	std::sort(ids.begin(), ids.end());
-	return std::string(reinterpret_cast<const char*>(ids.data()), ids.size() * sizeof(uint32));
-}
+public:
+	explicit ListedFaces(const MeshData& d) : first_(d.nb_faces() + 1, 0), sorted_(d.face_vertices)
+	{
+		for (uint32 f = 0; f < d.nb_faces(); ++f)
+			first_[f + 1] = first_[f] + d.face_sizes[f];
+		std::vector<uint32> count(std::size_t(d.nb_vertices()) + 1, 0);
+		for (uint32 f = 0; f < d.nb_faces(); ++f)
+		{
+			std::sort(sorted_.begin() + std::ptrdiff_t(first_[f]), sorted_.begin() + std::ptrdiff_t(first_[f + 1]));
+			if (first_[f + 1] > first_[f])
+				++count[sorted_[first_[f]] + 1];
+		}
+		for (std::size_t v = 1; v < count.size(); ++v)
+			count[v] += count[v - 1];
+		at_vertex_first_ = count;
+		at_vertex_.resize(count.back());
+		for (uint32 f = 0; f < d.nb_faces(); ++f)
+			if (first_[f + 1] > first_[f])
+				at_vertex_[count[sorted_[first_[f]]]++] = f;
+	}
+	/// The listed face whose vertices are `ids` (sorted), or INVALID_INDEX.
+	uint32 find(const std::vector<uint32>& ids) const
+	{
+		const uint32 v = ids.front();
+		for (uint32 k = at_vertex_first_[v]; k < at_vertex_first_[v + 1]; ++k)
+		{
+			const uint32 f = at_vertex_[k];
+			if (first_[f + 1] - first_[f] == ids.size() &&
+				std::equal(ids.begin(), ids.end(), sorted_.begin() + std::ptrdiff_t(first_[f])))
+				return f;
+		}
+		return INVALID_INDEX;
+	}
 
-// Puts the face columns of d on the faces of m that the file lists: the
-// faces of the volumes just built whose vertices are a listed face's.
-// Listed faces that match no face (or a face of split vertices whose
-// copies no longer meet) are counted in the report. O(faces of m +
-// listed faces).
+private:
+	std::vector<std::size_t> first_;                  // where each listed face's ids start in sorted_
+	std::vector<uint32> sorted_;                      // each listed face's ids, sorted
+	std::vector<uint32> at_vertex_first_, at_vertex_; // the listed faces by lowest vertex (CSR)
+};
+
 template <typename MAP>
 void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const std::string& path, LoadReport& rep)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	using Face = typename mesh_traits<MAP>::Face;
-	if (std::none_of(d.face_columns.begin(), d.face_columns.end(), [](const Column& c) { return usable(c); }))
+	if (!any_usable(d.face_columns))
 		return;
-	std::unordered_map<std::string, uint32> listed; // face key -> listed face
+	const ListedFaces listed(d);
 	std::vector<uint32> ids;
-	std::size_t k = 0;
-	for (uint32 f = 0; f < d.nb_faces(); ++f)
-	{
-		ids.assign(d.face_vertices.begin() + std::ptrdiff_t(k),
-				   d.face_vertices.begin() + std::ptrdiff_t(k + d.face_sizes[f]));
-		k += d.face_sizes[f];
-		listed.try_emplace(face_key(ids), f);
-	}
 	const FileVertexIds file_id(br, d.nb_vertices());
 	std::vector<std::pair<uint32, uint32>> found; // (face line, listed face)
 	std::vector<uint8> matched(d.nb_faces(), 0);
@@ -332,26 +371,17 @@ void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const s
 		});
 		if (!ours)
 			return;
-		const auto it = listed.find(face_key(ids));
-		if (it != listed.end())
+		std::sort(ids.begin(), ids.end());
+		if (const uint32 listed_face = listed.find(ids); listed_face != INVALID_INDEX)
 		{
-			found.emplace_back(index_of(m, f), it->second);
-			matched[it->second] = 1;
+			found.emplace_back(index_of(m, f), listed_face);
+			matched[listed_face] = 1;
 		}
 	});
 	for (const auto& c : d.face_columns)
 		if (usable(c))
-			fill_column<Face>(
-				m, c,
-				[&](const auto& put) {
-					for (const auto& [line, face] : found)
-						put(line, std::size_t(face));
-				},
-				path);
-	std::vector<uint32> lines;
-	for (const auto& [line, face] : found)
-		lines.push_back(line);
-	name_physical_groups<Face>(m, d, 2, lines, path);
+			fill_rows<Face>(m, c, found, path);
+	name_physical_groups<Face>(m, d, 2, found, path);
 	const auto unmatched = std::count(matched.begin(), matched.end(), uint8(0));
 	if (unmatched > 0)
 		rep.dropped.push_back(std::to_string(unmatched) +
@@ -445,11 +475,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			fill_column<Vertex>(m, c, vertex_lines, path);
 
 	// 4. cell data: cell c's first dart is predictable from the dart container's state
-	bool any_cell_column = false;
-	for (const auto& c : d.cell_columns)
-		any_cell_column = any_cell_column || usable(c);
-	const bool any_corner_column =
-		std::any_of(d.corner_columns.begin(), d.corner_columns.end(), [](const Column& c) { return usable(c); });
+	const bool any_cell_column = any_usable(d.cell_columns), any_corner_column = any_usable(d.corner_columns);
 	std::vector<std::pair<Dart, uint32>> firsts; // (first dart, cell)
 	if (any_cell_column || any_corner_column)
 	{
@@ -466,28 +492,19 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 			fill_corners(m, d, firsts, FileVertexIds(br, d.nb_vertices()), path);
 	if (any_cell_column)
 	{
+		index_cells<Top>(m);
+		std::vector<std::pair<uint32, uint32>> rows; // (line, cell) of the built cells
+		rows.reserve(firsts.size());
+		for (const auto& [dart, cell] : firsts)
+		{
+			assert(is_dart_valid(m, dart) && !is_boundary(m, dart));
+			rows.emplace_back(index_of(m, Top(dart)), cell);
+		}
 		for (const auto& c : d.cell_columns)
-		{
-			if (!usable(c))
-				continue;
-			// creating the attribute indexes the orbit if needed
-			visit_attribute_type(c, [&]<typename T>() { get_or_add<T, Top>(m, c.name, path); });
-			auto cell_lines = [&](const auto& f) {
-				for (const auto& [dart, cell] : firsts)
-				{
-					assert(is_dart_valid(m, dart) && !is_boundary(m, dart));
-					f(index_of(m, Top(dart)), std::size_t(cell));
-				}
-			};
-			fill_column<Top>(m, c, cell_lines, path);
-		}
+			if (usable(c))
+				fill_rows<Top>(m, c, rows, path);
 		if constexpr (dim == 3)
-		{
-			std::vector<uint32> lines;
-			for (const auto& [dart, cell] : firsts)
-				lines.push_back(index_of(m, Top(dart)));
-			name_physical_groups<Top>(m, d, 3, lines, path);
-		}
+			name_physical_groups<Top>(m, d, 3, rows, path);
 	}
 
 	rep.dropped = d.dropped;
@@ -529,9 +546,7 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 		throw Error(path, "the mesh is too large for 32-bit indices");
 
 	LoadReport rep;
-	bool any_cell_column = false;
-	for (const auto& c : d.cell_columns)
-		any_cell_column = any_cell_column || usable(c);
+	const bool any_cell_column = any_usable(d.cell_columns);
 	if (any_cell_column)
 		index_cells<Face>(ig);
 	std::vector<Vertex> vertex(d.nb_vertices());
@@ -573,13 +588,7 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 			fill_column<Vertex>(ig, c, vertex_lines, path);
 	for (const auto& c : d.cell_columns)
 		if (usable(c))
-			fill_column<Face>(
-				ig, c,
-				[&](const auto& f) {
-					for (const auto& [line, cell] : faces)
-						f(line, std::size_t(cell));
-				},
-				path);
+			fill_rows<Face>(ig, c, faces, path);
 
 	rep.dropped = d.dropped;
 	column_notes(d, "face", rep.dropped);

@@ -37,10 +37,10 @@ MeshData read_gmsh(std::string_view data, const std::string& path);
 /// `node` and `ele` are the contents of the .node and .ele files.
 MeshData read_tetgen(std::string_view node, const std::string& node_path, std::string_view ele,
 					 const std::string& ele_path);
-std::string write_medit(const MeshData& d);
+std::string write_medit(const MeshData& d, const std::string& path);
 std::string write_vtk(const MeshData& d, bool binary);
 std::string write_vtu(const MeshData& d, bool binary);
-std::string write_gmsh(const MeshData& d, bool binary);
+std::string write_gmsh(const MeshData& d, bool binary, const std::string& path);
 /// The .node and .ele files.
 std::pair<std::string, std::string> write_tetgen(const MeshData& d);
 /// OpenVolumeMesh ascii (.ovm): every cell as a polyhedron (vertices, edges,

@@ -12,6 +12,7 @@
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
+#include "value_type_names.h"
 
 #include <climits>
 
@@ -595,26 +596,14 @@ namespace
 // The element tags a gmsh file gets for the rows of `columns`: the physical
 // tag from `gmsh:physical` (else `medit:ref`, else 0) and the elementary one
 // from `gmsh:geometrical` (else 1).
-std::vector<std::array<int32, 2>> element_tags(const std::vector<Column>& columns, std::size_t rows)
+std::vector<std::array<int32, 2>> element_tags(const std::vector<Column>& columns, std::size_t rows,
+											   const std::string& path)
 {
-	auto find = [&](const char* name) -> const Column* {
-		for (const Column& c : columns)
-			if (c.name == name && c.dim == 1 && c.values.size() == rows)
-				return &c;
-		return nullptr;
-	};
-	const Column* physical = find("gmsh:physical");
-	if (physical == nullptr)
-		physical = find("medit:ref");
-	const Column* elementary = find("gmsh:geometrical");
-	std::vector<std::array<int32, 2>> tags(rows, {0, 1});
+	const std::vector<int32> physical = int32_tags(columns, {"gmsh:physical", "medit:ref"}, rows, 0, path);
+	const std::vector<int32> elementary = int32_tags(columns, {"gmsh:geometrical"}, rows, 1, path);
+	std::vector<std::array<int32, 2>> tags(rows);
 	for (std::size_t i = 0; i < rows; ++i)
-	{
-		if (physical != nullptr)
-			tags[i][0] = int32(physical->values[i]);
-		if (elementary != nullptr)
-			tags[i][1] = int32(elementary->values[i]);
-	}
+		tags[i] = {physical[i], elementary[i]};
 	return tags;
 }
 
@@ -628,13 +617,13 @@ struct Entity
 
 } // namespace
 
-std::string write_gmsh(const MeshData& d, bool binary)
+std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 {
 	// the entities: one per (dimension, elementary tag, physical tag); an
 	// elementary tag used with several physical tags gets new tags for the
 	// others
-	const std::vector<std::array<int32, 2>> cell_tags = element_tags(d.cell_columns, d.nb_cells());
-	const std::vector<std::array<int32, 2>> face_tags = element_tags(d.face_columns, d.nb_faces());
+	const std::vector<std::array<int32, 2>> cell_tags = element_tags(d.cell_columns, d.nb_cells(), path);
+	const std::vector<std::array<int32, 2>> face_tags = element_tags(d.face_columns, d.nb_faces(), path);
 	std::vector<Entity> entities;
 	std::map<std::tuple<int32, int32, int32>, uint32> entity_of; // (dim, elementary, physical) -> entity
 	std::map<std::pair<int32, int32>, uint32> tag_users;         // (dim, tag) -> entities using it
@@ -715,14 +704,9 @@ std::string write_gmsh(const MeshData& d, bool binary)
 		s += '\n';
 	s += "$EndEntities\n$Nodes\n";
 	// the nodes: one block, in the first volume entity (or the first entity)
-	int32 node_dim = 3, node_tag = 1;
-	for (const Entity& e : entities)
-		if (e.dim == 3 || &e == &entities.back())
-		{
-			node_dim = e.dim;
-			node_tag = e.tag;
-			break;
-		}
+	const auto volume = std::find_if(entities.begin(), entities.end(), [](const Entity& e) { return e.dim == 3; });
+	const Entity nodes_in = volume != entities.end() ? *volume : entities.empty() ? Entity{3, 1, 0} : entities.front();
+	const int32 node_dim = nodes_in.dim, node_tag = nodes_in.tag;
 	const uint64 nv = d.nb_vertices();
 	if (binary)
 	{

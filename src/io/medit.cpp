@@ -7,6 +7,7 @@
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
+#include "value_type_names.h"
 
 #include <climits>
 
@@ -170,29 +171,17 @@ MeshData read_medit(std::string_view text, const std::string& path)
 	return d;
 }
 
-namespace
+// References come from `medit:ref`, else `gmsh:physical`, else 0.
+std::string write_medit(const MeshData& d, const std::string& path)
 {
-
-// The references of the rows of `columns`: `medit:ref`, else
-// `gmsh:physical`, else 0.
-std::vector<int64> references(const std::vector<Column>& columns, std::size_t rows)
-{
-	for (const char* name : {"medit:ref", "gmsh:physical"})
-		for (const Column& c : columns)
-			if (c.name == name && c.dim == 1 && c.values.size() == rows)
-				return std::vector<int64>(c.values.begin(), c.values.end());
-	return std::vector<int64>(rows, 0);
-}
-
-} // namespace
-
-std::string write_medit(const MeshData& d)
-{
+	auto references = [&](const std::vector<Column>& columns, std::size_t rows) {
+		return int32_tags(columns, {"medit:ref", "gmsh:physical"}, rows, 0, path);
+	};
 	std::string s = "MeshVersionFormatted 2\nDimension 3\n\nVertices\n";
 	s.reserve(std::size_t(d.nb_vertices()) * 60 + d.cell_vertices.size() * 8);
 	append_uint(s, d.nb_vertices());
 	s += '\n';
-	const std::vector<int64> vertex_ref = references(d.vertex_columns, d.nb_vertices());
+	const std::vector<int32> vertex_ref = references(d.vertex_columns, d.nb_vertices());
 	for (uint32 v = 0; v < d.nb_vertices(); ++v)
 	{
 		for (uint32 k = 0; k < 3; ++k)
@@ -206,7 +195,7 @@ std::string write_medit(const MeshData& d)
 	// records grouped by kind, in the order of MEDIT's sections: the listed
 	// faces of 3 and 4 vertices, then the cells
 	auto section = [&](const char* name, uint32 size, const std::vector<uint32>& sizes, const std::vector<uint32>& ids,
-					   const std::vector<int64>& ref) {
+					   const std::vector<int32>& ref) {
 		const auto count = std::count(sizes.begin(), sizes.end(), size);
 		if (count == 0)
 			return;
@@ -231,10 +220,10 @@ std::string write_medit(const MeshData& d)
 			k += sizes[c];
 		}
 	};
-	const std::vector<int64> face_ref = references(d.face_columns, d.nb_faces());
+	const std::vector<int32> face_ref = references(d.face_columns, d.nb_faces());
 	section("Triangles", 3, d.face_sizes, d.face_vertices, face_ref);
 	section("Quadrilaterals", 4, d.face_sizes, d.face_vertices, face_ref);
-	const std::vector<int64> cell_ref = references(d.cell_columns, d.nb_cells());
+	const std::vector<int32> cell_ref = references(d.cell_columns, d.nb_cells());
 	section("Tetrahedra", 4, d.cell_sizes, d.cell_vertices, cell_ref);
 	section("Pyramids", 5, d.cell_sizes, d.cell_vertices, cell_ref);
 	section("Prisms", 6, d.cell_sizes, d.cell_vertices, cell_ref);

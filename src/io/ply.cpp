@@ -34,45 +34,40 @@ enum class PType : uint8
 	Float64
 };
 
+// Each PLY scalar type: its names, its size in a binary file and the type
+// of the column a scalar property of it gives (floats: Float64). By PType.
+struct PlyType
+{
+	PType type;
+	std::string_view name, alias;
+	uint32 size;
+	ValueType column;
+};
+constexpr PlyType PLY_TYPES[] = {{PType::Int8, "char", "int8", 1, ValueType::Int8},
+								 {PType::UInt8, "uchar", "uint8", 1, ValueType::UInt8},
+								 {PType::Int16, "short", "int16", 2, ValueType::Int16},
+								 {PType::UInt16, "ushort", "uint16", 2, ValueType::UInt16},
+								 {PType::Int32, "int", "int32", 4, ValueType::Int32},
+								 {PType::UInt32, "uint", "uint32", 4, ValueType::UInt32},
+								 {PType::Float32, "float", "float32", 4, ValueType::Float64},
+								 {PType::Float64, "double", "float64", 8, ValueType::Float64}};
+
+const PlyType& ply_type(PType t)
+{
+	return PLY_TYPES[uint32(t)];
+}
+
 std::optional<PType> parse_type(std::string_view t)
 {
-	if (t == "char" || t == "int8")
-		return PType::Int8;
-	if (t == "uchar" || t == "uint8")
-		return PType::UInt8;
-	if (t == "short" || t == "int16")
-		return PType::Int16;
-	if (t == "ushort" || t == "uint16")
-		return PType::UInt16;
-	if (t == "int" || t == "int32")
-		return PType::Int32;
-	if (t == "uint" || t == "uint32")
-		return PType::UInt32;
-	if (t == "float" || t == "float32")
-		return PType::Float32;
-	if (t == "double" || t == "float64")
-		return PType::Float64;
+	for (const PlyType& p : PLY_TYPES)
+		if (t == p.name || t == p.alias)
+			return p.type;
 	return std::nullopt;
 }
 
 uint32 type_size(PType t)
 {
-	switch (t)
-	{
-	case PType::Int8:
-	case PType::UInt8:
-		return 1;
-	case PType::Int16:
-	case PType::UInt16:
-		return 2;
-	case PType::Int32:
-	case PType::UInt32:
-	case PType::Float32:
-		return 4;
-	case PType::Float64:
-		return 8;
-	}
-	return 1;
+	return ply_type(t).size;
 }
 
 bool is_integer(PType t)
@@ -126,18 +121,10 @@ double read_binary(ByteReader& b, PType t)
 	return 0.0;
 }
 
-// The PLY integer types and the column types they give, both ways.
-constexpr std::pair<PType, ValueType> INTEGER_TYPES[] = {
-	{PType::Int8, ValueType::Int8},     {PType::UInt8, ValueType::UInt8}, {PType::Int16, ValueType::Int16},
-	{PType::UInt16, ValueType::UInt16}, {PType::Int32, ValueType::Int32}, {PType::UInt32, ValueType::UInt32}};
-
 // The column type of a scalar property of type t.
 ValueType value_type(PType t)
 {
-	for (const auto& [p, v] : INTEGER_TYPES)
-		if (p == t)
-			return v;
-	return ValueType::Float64;
+	return ply_type(t).column;
 }
 
 // Groups the scalar properties of an element into columns (see the file
@@ -509,11 +496,11 @@ struct ColumnLayout
 // nullopt (written as double, exactly: see Column) when none does.
 std::optional<PType> ply_integer_type(const Column& c)
 {
-	for (const auto& [p, v] : INTEGER_TYPES)
-		if (v == c.type)
-			return p;
 	if (!is_integer_type(c.type))
 		return std::nullopt;
+	for (const PlyType& p : PLY_TYPES)
+		if (p.column == c.type)
+			return p.type;
 	const auto [lo, hi] = std::minmax_element(c.values.begin(), c.values.end());
 	const bool empty = lo == c.values.end();
 	if (c.type == ValueType::Int64 && (empty || (*lo >= -2147483648.0 && *hi <= 2147483647.0)))
@@ -521,30 +508,6 @@ std::optional<PType> ply_integer_type(const Column& c)
 	if (c.type == ValueType::UInt64 && (empty || *hi <= 4294967295.0))
 		return PType::UInt32;
 	return std::nullopt;
-}
-
-const char* ply_type_name(PType t)
-{
-	switch (t)
-	{
-	case PType::Int8:
-		return "char";
-	case PType::UInt8:
-		return "uchar";
-	case PType::Int16:
-		return "short";
-	case PType::UInt16:
-		return "ushort";
-	case PType::Int32:
-		return "int";
-	case PType::UInt32:
-		return "uint";
-	case PType::Float32:
-		return "float";
-	case PType::Float64:
-		break;
-	}
-	return "double";
 }
 
 // A property name of an element and what it writes, to refuse a second use.
@@ -567,14 +530,18 @@ std::vector<ColumnLayout> layout(const std::vector<Column>& cols, std::string& h
 			continue;
 		const bool as_byte = c.name == "color" && c.dim == 3 && byte_valued(c);
 		const std::optional<PType> integer = c.dim == 1 ? ply_integer_type(c) : std::nullopt;
-		const char* type = as_byte ? "uchar" : integer ? ply_type_name(*integer) : "double";
+		const std::string_view type = as_byte ? "uchar" : integer ? ply_type(*integer).name : "double";
 		auto prop = [&](const std::string& n) {
 			for (const auto& o : owners)
 				if (o.property == n)
 					throw Error(path, std::string("cannot write the ") + element + " attribute '" + c.name +
 										  "' as the PLY property '" + n + "': " + o.owner + " uses that name");
 			owners.push_back({n, "the " + std::string(element) + " attribute '" + c.name + "'"});
-			header += std::string("property ") + type + " " + n + "\n";
+			header += "property ";
+			header += type;
+			header += ' ';
+			header += n;
+			header += '\n';
 		};
 		if (c.name == "normal" && c.dim == 3)
 			for (auto n : {"nx", "ny", "nz"})

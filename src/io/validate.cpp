@@ -53,48 +53,6 @@ void validate(const MeshData& d, const std::string& path)
 		if (v >= nv)
 			throw Error(path, "vertex index " + std::to_string(v) + " out of range (the file has " +
 								  std::to_string(nv) + " vertices)");
-	// integer data must hold values of its type: an attribute of that type
-	// receives them
-	auto check_values = [&](const Column& c, const char* of) {
-		if (is_integer_type(c.type))
-			for (double v : c.values)
-				if (!holds_value(c.type, v))
-					throw Error(path, std::string(of) + " data '" + c.name + "' of type " + value_type_name(c.type) +
-										  " holds the value " + std::to_string(v) + ", which that type does not have" +
-										  (std::abs(v) > MAX_EXACT_INTEGER
-											   ? " (64-bit values are read below 2^53 in magnitude)"
-											   : ""));
-	};
-	std::vector<std::string> names;
-	for (const auto& c : d.vertex_columns)
-	{
-		if (c.values.size() != std::size_t(nv) * c.dim)
-			throw Error(path, "vertex data '" + c.name + "' does not have one value per vertex");
-		check_values(c, "vertex");
-		if (std::string why = data_name_conflict(names, c.name, true); !why.empty())
-			throw Error(path, why);
-		names.push_back(c.name);
-	}
-	names.clear();
-	for (const auto& c : d.cell_columns)
-	{
-		if (c.values.size() != std::size_t(d.nb_cells()) * c.dim)
-			throw Error(path, "cell data '" + c.name + "' does not have one value per cell");
-		check_values(c, "cell");
-		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
-			throw Error(path, why);
-		names.push_back(c.name);
-	}
-	names.clear();
-	for (const auto& c : d.corner_columns)
-	{
-		if (c.values.size() != d.cell_vertices.size() * c.dim)
-			throw Error(path, "corner data '" + c.name + "' does not have one value per face corner");
-		check_values(c, "corner");
-		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
-			throw Error(path, why);
-		names.push_back(c.name);
-	}
 	std::size_t nb_ids = 0;
 	for (uint32 n : d.face_sizes)
 		nb_ids += n;
@@ -104,16 +62,34 @@ void validate(const MeshData& d, const std::string& path)
 		if (v >= nv)
 			throw Error(path, "a face refers to vertex " + std::to_string(v) + ", out of range (the file has " +
 								  std::to_string(nv) + " vertices)");
-	names.clear();
-	for (const auto& c : d.face_columns)
-	{
-		if (c.values.size() != std::size_t(d.nb_faces()) * c.dim)
-			throw Error(path, "face data '" + c.name + "' does not have one value per listed face");
-		check_values(c, "face");
-		if (std::string why = data_name_conflict(names, c.name, false); !why.empty())
-			throw Error(path, why);
-		names.push_back(c.name);
-	}
+	// each kind of data: one row per element, integer data holding values of
+	// its type (an attribute of that type receives them), distinct names
+	auto check_columns = [&](const std::vector<Column>& columns, std::size_t rows, const char* of,
+							 const char* per_element, bool of_vertices) {
+		std::vector<std::string> names;
+		for (const auto& c : columns)
+		{
+			if (c.values.size() != rows * c.dim)
+				throw Error(path,
+							std::string(of) + " data '" + c.name + "' does not have one value per " + per_element);
+			if (is_integer_type(c.type))
+				for (double v : c.values)
+					if (!holds_value(c.type, v))
+						throw Error(path, std::string(of) + " data '" + c.name + "' of type " +
+											  value_type_name(c.type) + " holds the value " + std::to_string(v) +
+											  ", which that type does not have" +
+											  (std::abs(v) > MAX_EXACT_INTEGER
+												   ? " (64-bit values are read below 2^53 in magnitude)"
+												   : ""));
+			if (std::string why = data_name_conflict(names, c.name, of_vertices); !why.empty())
+				throw Error(path, why);
+			names.push_back(c.name);
+		}
+	};
+	check_columns(d.vertex_columns, nv, "vertex", "vertex", true);
+	check_columns(d.cell_columns, d.nb_cells(), "cell", "cell", false);
+	check_columns(d.corner_columns, d.cell_vertices.size(), "corner", "face corner", false);
+	check_columns(d.face_columns, d.nb_faces(), "face", "listed face", false);
 }
 
 void check_written_names(const MeshData& d, const std::string& path)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "value_type_names.h"
 
+#include <cgogn/io/error.h>
+
 #include <cmath>
 #include <limits>
 
@@ -87,6 +89,26 @@ bool holds_value(ValueType t, double v)
 		const double hi = std::min(double(std::numeric_limits<T>::max()), MAX_EXACT_INTEGER);
 		return v >= lo && v <= hi;
 	});
+}
+
+std::vector<int32> int32_tags(const std::vector<Column>& columns, std::initializer_list<const char*> names,
+							  std::size_t rows, int32 fallback, const std::string& path)
+{
+	for (const char* name : names)
+		for (const Column& c : columns)
+			if (c.name == name && c.dim == 1 && c.values.size() == rows)
+			{
+				std::vector<int32> tags(rows);
+				for (std::size_t i = 0; i < rows; ++i)
+				{
+					if (!holds_value(ValueType::Int32, c.values[i]))
+						throw Error(path, "the attribute '" + c.name + "' holds " + std::to_string(c.values[i]) +
+											  ", which is not a 32-bit integer tag");
+					tags[i] = int32(c.values[i]);
+				}
+				return tags;
+			}
+	return std::vector<int32>(rows, fallback);
 }
 
 } // namespace cgogn::io::detail

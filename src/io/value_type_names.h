@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The names that PLY, VTK legacy and VTK XML give the value types of columns
-// (ValueType), both ways.
+// The names that VTK legacy and VTK XML give the value types of columns
+// (ValueType), both ways, and what a value of each type may be.
 #pragma once
 
 #include "mesh_data.h"
 
+#include <initializer_list>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace cgogn::io::detail
@@ -27,5 +29,13 @@ const char* value_type_name(ValueType t);
 /// Whether v is a value of type t: integral and in t's range for an integer
 /// type (and, for 64-bit ones, within +-MAX_EXACT_INTEGER, see Column).
 bool holds_value(ValueType t, double v);
+
+/// The values of the first column of `columns` named one of `names` (in
+/// that order of preference) that has one component per row, as int32
+/// tags; `fallback` on every row when there is none. Throws io::Error
+/// naming `path` when a value is not an int32 (a writer's tags: gmsh
+/// physical and elementary tags, MEDIT references). O(rows).
+std::vector<int32> int32_tags(const std::vector<Column>& columns, std::initializer_list<const char*> names,
+							  std::size_t rows, int32 fallback, const std::string& path);
 
 } // namespace cgogn::io::detail

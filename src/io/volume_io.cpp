@@ -87,7 +87,7 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 	switch (f)
 	{
 	case Format::Medit:
-		detail::write_file(path, detail::write_medit(d));
+		detail::write_file(path, detail::write_medit(d, path));
 		break;
 	case Format::VtkLegacy:
 		detail::check_written_names(d, path);
@@ -98,7 +98,7 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 		detail::write_file(path, detail::write_vtu(d, options.binary));
 		break;
 	case Format::Gmsh:
-		detail::write_file(path, detail::write_gmsh(d, options.binary));
+		detail::write_file(path, detail::write_gmsh(d, options.binary, path));
 		break;
 	case Format::Ovm:
 		detail::check_written_names(d, path);

@@ -22,19 +22,6 @@ namespace cgogn::io::detail
 namespace
 {
 
-uint32 vtk_type_size(std::string_view t)
-{
-	if (t == "bit" || t == "unsigned_char" || t == "char")
-		return 1;
-	if (t == "unsigned_short" || t == "short")
-		return 2;
-	if (t == "unsigned_int" || t == "int" || t == "float" || t == "vtkIdType")
-		return 4;
-	if (t == "unsigned_long" || t == "long" || t == "double" || t == "vtktypeint64" || t == "vtktypeuint64")
-		return 8;
-	return 0;
-}
-
 class VtkReader
 {
 public:
@@ -212,51 +199,41 @@ public:
 private:
 	void read_array(uint64 count, std::string_view type, std::vector<double>& out, bool finite)
 	{
-		const uint32 size = vtk_type_size(type);
-		if (size == 0)
+		// the type, once: float is read as float and held as a double
+		const std::optional<ValueType> stored = vtk_legacy_value_type(type);
+		if (!stored)
 			t_.fail("unknown VTK data type '" + TextReader::printable(type) + "'");
+		const bool float32 = type == "float";
 		out.clear();
 		if (binary_)
 		{
 			// the values start after the end of the current line
 			t_.next_line();
 			ByteReader b(data_, std::size_t(t_.position() - data_.data()), path_, true);
+			const std::size_t size =
+				float32 ? sizeof(float) : visit_value_type(*stored, []<typename T>() { return sizeof(T); });
 			b.check_count(count, size, "values");
 			out.reserve(count);
-			for (uint64 i = 0; i < count; ++i)
-			{
-				double v = 0;
-				if (type == "float")
-					v = b.read<float>();
-				else if (type == "double")
-					v = b.read<double>();
-				else if (type == "unsigned_char" || type == "bit")
-					v = b.read<uint8>();
-				else if (type == "char")
-					v = b.read<int8>();
-				else if (type == "short")
-					v = b.read<int16_t>();
-				else if (type == "unsigned_short")
-					v = b.read<uint16>();
-				else if (type == "int" || type == "vtkIdType")
-					v = b.read<int32>();
-				else if (type == "unsigned_int")
-					v = b.read<uint32>();
-				else if (type == "unsigned_long" || type == "vtktypeuint64")
-					v = double(b.read<uint64>());
-				else
-					v = double(b.read<int64>());
-				if (finite && !std::isfinite(v))
-					b.fail("value is not finite: NaN and infinite values are rejected");
-				out.push_back(v);
-			}
+			auto read_all = [&]<typename T>() {
+				for (uint64 i = 0; i < count; ++i)
+				{
+					const double v = double(b.read<T>());
+					if (finite && !std::isfinite(v))
+						b.fail("value is not finite: NaN and infinite values are rejected");
+					out.push_back(v);
+				}
+			};
+			if (float32)
+				read_all.template operator()<float>();
+			else
+				visit_value_type(*stored, read_all);
 			t_.set_position(data_.data() + b.position());
 		}
 		else
 		{
 			t_.check_count(count, 2, "values");
 			out.reserve(count);
-			const bool integer = type != "float" && type != "double";
+			const bool integer = is_integer_type(*stored);
 			for (uint64 i = 0; i < count; ++i)
 				out.push_back(integer ? double(t_.read_int("an integer")) : t_.read_double("a value"));
 		}

@@ -17,8 +17,8 @@ namespace cgogn::io::detail
 /// pixels 8, quads 9, polygons 7 and the corners of quadratic triangles 22
 /// and quads 23 go to d's listed faces; vertex cells and triangle strips
 /// are counted in d.dropped) and the matching rows of `cell_data` to d's
-/// cell columns and, when there are listed faces, to its face columns. `offsets` has one more entry than `types`
-/// (starting at 0). A polyhedron's faces are a face stream (its number of
+/// cell columns and, when there are listed faces, to its face columns.
+/// `offsets` has one more entry than `types` (starting at 0). A polyhedron's faces are a face stream (its number of
 /// faces, then each face's number of points and point ids): its
 /// connectivity in a legacy file, where `face_offsets` is empty; in a VTU
 /// file, `faces` from the end of the previous polyhedron's stream to

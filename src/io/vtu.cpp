@@ -335,63 +335,45 @@ private:
 	std::vector<double> values(Tag& t, std::size_t content_end, uint64 count, bool finite)
 	{
 		const std::string type = t.attrs["type"];
+		// the type, once: Float32 is read as float and held as a double
+		const std::optional<ValueType> stored = vtu_value_type(type);
+		if (!stored)
+			fail_at(t.begin, "unknown DataArray type '" + TextReader::printable(type) + "'");
+		const bool float32 = type == "Float32";
 		std::vector<double> out;
 		if (t.attrs["format"] == "ascii")
 		{
 			TextReader r(data_.substr(t.end, content_end - t.end), path_, '\0');
 			r.check_count(count, 2, "values");
 			out.reserve(count);
-			const bool integer = type.find("Int") != std::string::npos;
+			const bool integer = is_integer_type(*stored);
 			for (uint64 i = 0; i < count; ++i)
 				out.push_back(integer ? double(r.read_int("an integer value")) : r.read_double("a value"));
 			return out;
 		}
 		const std::string raw = bytes(t, content_end);
 		ByteReader b(raw, 0, path_, big_endian_);
-		uint32 size = 0;
-		if (type == "Int8" || type == "UInt8")
-			size = 1;
-		else if (type == "Int16" || type == "UInt16")
-			size = 2;
-		else if (type == "Int32" || type == "UInt32" || type == "Float32")
-			size = 4;
-		else if (type == "Int64" || type == "UInt64" || type == "Float64")
-			size = 8;
-		else
-			fail_at(t.begin, "unknown DataArray type '" + TextReader::printable(type) + "'");
+		const std::size_t size =
+			float32 ? sizeof(float) : visit_value_type(*stored, []<typename T>() { return sizeof(T); });
 		if (count == 0)
 			count = raw.size() / size;
 		if (raw.size() / size < count)
 			fail_at(t.begin, "DataArray '" + t.attrs["Name"] + "' has " + std::to_string(raw.size() / size) +
 								 " values, " + std::to_string(count) + " expected");
 		out.reserve(count);
-		for (uint64 i = 0; i < count; ++i)
-		{
-			double v = 0.0;
-			if (type == "Float64")
-				v = b.read<double>();
-			else if (type == "Float32")
-				v = b.read<float>();
-			else if (type == "Int8")
-				v = b.read<int8>();
-			else if (type == "UInt8")
-				v = b.read<uint8>();
-			else if (type == "Int16")
-				v = b.read<int16_t>();
-			else if (type == "UInt16")
-				v = b.read<uint16>();
-			else if (type == "Int32")
-				v = b.read<int32>();
-			else if (type == "UInt32")
-				v = b.read<uint32>();
-			else if (type == "Int64")
-				v = double(b.read<int64>());
-			else
-				v = double(b.read<uint64>());
-			if (finite && !std::isfinite(v))
-				fail_at(t.begin, "a point coordinate is not finite: NaN and infinite values are rejected");
-			out.push_back(v);
-		}
+		auto read_all = [&]<typename T>() {
+			for (uint64 i = 0; i < count; ++i)
+			{
+				const double v = double(b.read<T>());
+				if (finite && !std::isfinite(v))
+					fail_at(t.begin, "a point coordinate is not finite: NaN and infinite values are rejected");
+				out.push_back(v);
+			}
+		};
+		if (float32)
+			read_all.template operator()<float>();
+		else
+			visit_value_type(*stored, read_all);
 		return out;
 	}
 
