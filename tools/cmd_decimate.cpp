@@ -27,6 +27,7 @@ int run_decimate(const DecimateOptions& o)
 	Progress progress;
 	CMap2 m;
 	load_surface_file(m, o.files.in, progress);
+	record_origins_if_asked(m, o.files);
 	modeling::DecimationOptions d;
 	if (o.ratio > 0.0)
 	{
@@ -50,6 +51,7 @@ Command add_decimate_command(CLI::App& app)
 	auto* sub = app.add_subcommand("decimate", "Decimate a triangle surface by quadric-error edge collapses");
 	auto o = std::make_shared<DecimateOptions>();
 	add_edit_files(*sub, o->files);
+	add_origin_option(*sub, o->files);
 	auto* faces = sub->add_option("--faces", o->faces, "number of faces to reach");
 	auto* ratio = sub->add_option("--ratio", o->ratio, "fraction of the faces to keep, in (0, 1]");
 	faces->excludes(ratio);

@@ -33,6 +33,7 @@ int run_fill_holes(const FillHolesOptions& o)
 		Progress progress;
 		CMap2 m;
 		load_surface_file(m, o.files.in, progress);
+		record_origins_if_asked(m, o.files);
 		r = modeling::fill_holes(m, *positions(m), options, progress.percent("filling holes"));
 		save_surface_file(m, o.files.out, o.files.binary, progress);
 	}
@@ -48,6 +49,7 @@ Command add_fill_holes_command(CLI::App& app)
 	auto* sub = app.add_subcommand("fill-holes", "Fill the holes of a surface (triangulate, refine, fair)");
 	auto o = std::make_shared<FillHolesOptions>();
 	add_edit_files(*sub, o->files);
+	add_origin_option(*sub, o->files);
 	sub->add_flag("--no-refine", o->no_refine, "only triangulate the holes, no new vertex");
 	sub->add_flag("--no-fair", o->no_fair, "keep the refined patches flat (no fairing)");
 	sub->add_option("--max-size", o->max_size, "leave open the holes of more boundary edges than this")

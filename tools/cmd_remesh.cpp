@@ -25,6 +25,7 @@ int run_remesh(const RemeshOptions& o)
 	Progress progress;
 	CMap2 m;
 	load_surface_file(m, o.files.in, progress);
+	record_origins_if_asked(m, o.files);
 	modeling::RemeshingOptions r;
 	r.target_edge_length = o.edge_length;
 	r.iterations = o.iterations;
@@ -41,6 +42,7 @@ Command add_remesh_command(CLI::App& app)
 	auto* sub = app.add_subcommand("remesh", "Isotropic remeshing of a triangle surface (Botsch-Kobbelt)");
 	auto o = std::make_shared<RemeshOptions>();
 	add_edit_files(*sub, o->files);
+	add_origin_option(*sub, o->files);
 	sub->add_option("--edge-length,-l", o->edge_length, "target edge length (default: the input's mean edge length)")
 		->check(CLI::PositiveNumber);
 	sub->add_option("--iterations,-n", o->iterations, "iterations (default 10)")->check(CLI::Range(1u, 1000000u));

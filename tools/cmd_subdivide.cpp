@@ -52,6 +52,7 @@ int run_subdivide(const SubdivideOptions& o)
 			progress.stage("loading " + o.files.in);
 			CMap3 m;
 			io::load_volume(m, o.files.in);
+			record_origins_if_asked(m, o.files);
 			auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
 			if (!pos)
 				throw std::runtime_error("the mesh has no vertex positions");
@@ -73,6 +74,7 @@ int run_subdivide(const SubdivideOptions& o)
 											   : o.scheme == Scheme::Sqrt3 ? modeling::SurfaceScheme::Sqrt3
 																		   : modeling::SurfaceScheme::CatmullClark;
 		with_surface_whole(o.files.in, progress, [&](auto& m) {
+			record_origins_if_asked(m, o.files);
 			modeling::subdivide(m, *positions(m), scheme, o.iterations, progress.percent("subdividing"));
 			save_surface_file(m, o.files.out, o.files.binary, progress);
 		});
@@ -92,6 +94,7 @@ Command add_subdivide_command(CLI::App& app)
 												"(volume meshes, 1-to-8)");
 	auto o = std::make_shared<SubdivideOptions>();
 	add_edit_files(*sub, o->files);
+	add_origin_option(*sub, o->files);
 	const std::map<std::string, Scheme> schemes = {{"loop", Scheme::Loop},
 												   {"catmull-clark", Scheme::CatmullClark},
 												   {"sqrt3", Scheme::Sqrt3},

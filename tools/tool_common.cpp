@@ -138,6 +138,13 @@ void add_edit_files(CLI::App& sub, EditFiles& files)
 	sub.add_flag("--binary", files.binary, "write binary where the format allows it (PLY, STL)");
 }
 
+void add_origin_option(CLI::App& sub, EditFiles& files)
+{
+	sub.add_option("--origin", files.origin,
+				   "record in this face (volume) attribute the index of the input face (volume) each output "
+				   "cell comes from");
+}
+
 std::shared_ptr<AttributeArray<Vec3>> positions(CMap2& m)
 {
 	return positions_of(m);

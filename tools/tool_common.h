@@ -3,6 +3,7 @@
 // a terminal, format dispatch, loading and saving.
 #pragma once
 
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/surface.h>
@@ -157,13 +158,31 @@ void save_surface_file(const CMap2& m, const std::string& path, bool binary, Pro
 /// The same for a GMap2.
 void save_surface_file(const GMap2& m, const std::string& path, bool binary, Progress& progress);
 
-/// The input/output options every editing subcommand has: IN, OUT, --binary.
+/// The input/output options every editing subcommand has: IN, OUT,
+/// --binary; and --origin NAME for those that change the connectivity (see
+/// record_origins_if_asked).
 struct EditFiles
 {
 	std::string in, out;
 	bool binary = false;
+	std::string origin;
 };
 void add_edit_files(CLI::App& sub, EditFiles& files);
+void add_origin_option(CLI::App& sub, EditFiles& files);
+
+/// With --origin NAME, records in a face attribute NAME (a volume attribute
+/// for volume meshes) the input face (volume) each output cell comes from:
+/// its index among the input's cells as loaded, 4294967295 for a cell that
+/// comes from none (a face filling a hole). Call it right after loading.
+template <typename MAP>
+void record_origins_if_asked(MAP& m, const EditFiles& files)
+{
+	if (files.origin.empty())
+		return;
+	using Cell = std::conditional_t<MAP::dimension == 3, typename MAP::Volume, typename MAP::Face>;
+	if (!record_origins<Cell>(m, files.origin))
+		throw std::invalid_argument("--origin " + files.origin + ": the input already has an attribute of this name");
+}
 
 /// The "position" attribute of a loaded surface (every reader creates it).
 std::shared_ptr<AttributeArray<Vec3>> positions(CMap2& m);

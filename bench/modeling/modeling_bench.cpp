@@ -120,10 +120,19 @@ void run(benchmark::State& state, const std::function<double(TriangleSoup&)>& op
 	measure(state, result);
 }
 
-double cgogn_decimate(TriangleSoup& out, modeling::CollapsePlacement placement)
+double cgogn_decimate(TriangleSoup& out, modeling::CollapsePlacement placement, bool rules = false)
 {
 	CMap2 m;
 	auto pos = build(m, input().soup);
+	if (rules)
+	{
+		// attributes that follow the edit: a colour per vertex (interpolated
+		// at the new position) and a region per face (copied)
+		auto colour = add_attribute<Vec3, CMap2::Vertex>(m, "colour");
+		auto region = add_attribute<int32, CMap2::Face>(m, "region");
+		foreach_cell(m, [&](CMap2::Vertex v) { value<Vec3>(m, colour, v) = (*pos)[index_of(m, v)]; });
+		foreach_cell(m, [&](CMap2::Face f) { value<int32>(m, region, f) = int32(index_of(m, f) % 7); });
+	}
 	modeling::DecimationOptions o;
 	o.target_faces = TARGET_FACES;
 	o.placement = placement;
@@ -166,6 +175,8 @@ int main(int argc, char** argv)
 		return 0;
 	}
 	add("decimate/cgogn", 5, [](TriangleSoup& o) { return cgogn_decimate(o, modeling::CollapsePlacement::Optimal); });
+	add("decimate/cgogn_rules", 5,
+		[](TriangleSoup& o) { return cgogn_decimate(o, modeling::CollapsePlacement::Optimal, true); });
 	add("decimate/cgogn_midedge", 5,
 		[](TriangleSoup& o) { return cgogn_decimate(o, modeling::CollapsePlacement::Midpoint); });
 #ifdef CGOGN_BENCH_HAS_OPENMESH

@@ -75,7 +75,20 @@ std::shared_ptr<AttributeArray<Vec3>> build_cgogn(CMap2& m)
 	return pos;
 }
 
-void cgogn_subdivision(benchmark::State& state, modeling::SurfaceScheme scheme)
+/// Attributes with rules, as a loaded mesh with data has them: a colour per
+/// vertex (interpolated), a region per face (copied), a texture coordinate
+/// per corner (interpolated).
+void add_ruled_attributes(CMap2& m, const AttributeArray<Vec3>& pos)
+{
+	auto colour = add_attribute<Vec3, CMap2::Vertex>(m, "colour");
+	auto region = add_attribute<int32, CMap2::Face>(m, "region");
+	auto uv = add_attribute<Vec2, CMap2::HalfEdge>(m, "uv");
+	foreach_cell(m, [&](CMap2::Vertex v) { value<Vec3>(m, colour, v) = pos[index_of(m, v)]; });
+	foreach_cell(m, [&](CMap2::Face f) { value<int32>(m, region, f) = int32(index_of(m, f) % 7); });
+	foreach_dart(m, [&](Dart d) { (*uv)[d.index] = pos[index_of(m, CMap2::Vertex(d))].head<2>(); });
+}
+
+void cgogn_subdivision(benchmark::State& state, modeling::SurfaceScheme scheme, bool rules)
 {
 	if (subdivision_input().faces.empty())
 	{
@@ -89,6 +102,8 @@ void cgogn_subdivision(benchmark::State& state, modeling::SurfaceScheme scheme)
 		{
 			CMap2 m;
 			auto pos = build_cgogn(m);
+			if (rules)
+				add_ruled_attributes(m, *pos);
 			state.ResumeTiming();
 			modeling::subdivide(m, *pos, scheme, 1);
 			state.PauseTiming();
@@ -156,9 +171,12 @@ void openmesh_subdivision(benchmark::State& state)
 
 const int registered = [] {
 	const auto unit = benchmark::kMillisecond;
-	benchmark::RegisterBenchmark("loop/cgogn", cgogn_subdivision, modeling::SurfaceScheme::Loop)->Unit(unit);
-	benchmark::RegisterBenchmark("sqrt3/cgogn", cgogn_subdivision, modeling::SurfaceScheme::Sqrt3)->Unit(unit);
-	benchmark::RegisterBenchmark("catmull_clark/cgogn", cgogn_subdivision, modeling::SurfaceScheme::CatmullClark)
+	benchmark::RegisterBenchmark("loop/cgogn", cgogn_subdivision, modeling::SurfaceScheme::Loop, false)->Unit(unit);
+	benchmark::RegisterBenchmark("sqrt3/cgogn", cgogn_subdivision, modeling::SurfaceScheme::Sqrt3, false)->Unit(unit);
+	benchmark::RegisterBenchmark("catmull_clark/cgogn", cgogn_subdivision, modeling::SurfaceScheme::CatmullClark, false)
+		->Unit(unit);
+	// the same with three attributes that follow the edit (rules)
+	benchmark::RegisterBenchmark("loop/cgogn_rules", cgogn_subdivision, modeling::SurfaceScheme::Loop, true)
 		->Unit(unit);
 #ifdef CGOGN_BENCH_HAS_OPENMESH
 	using namespace OpenMesh::Subdivider::Uniform;

@@ -6,6 +6,7 @@
 // operators, build, parallel; utils and detail serve them.
 #pragma once
 
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/conversion.h>
 #include <cgogn/core/build/generators.h>

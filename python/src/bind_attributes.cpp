@@ -96,6 +96,33 @@ py::array get_array(PyMap<MAP>& w, const std::string& name, Kind k)
 	});
 }
 
+AttributeRule rule_of(const std::string& name)
+{
+	if (name == "none")
+		return AttributeRule::None;
+	if (name == "copy")
+		return AttributeRule::Copy;
+	if (name == "interpolate")
+		return AttributeRule::Interpolate;
+	throw py::value_error("unknown attribute rule '" + name + "' (none, copy or interpolate)");
+}
+
+const char* rule_name(AttributeRule r)
+{
+	switch (r)
+	{
+	case AttributeRule::None:
+		return "none";
+	case AttributeRule::Copy:
+		return "copy";
+	case AttributeRule::Interpolate:
+		return "interpolate";
+	case AttributeRule::Callback:
+		break;
+	}
+	return "callback";
+}
+
 template <typename MAP>
 void bind_attribute_methods(py::class_<PyMap<MAP>>& c)
 {
@@ -149,6 +176,49 @@ void bind_attribute_methods(py::class_<PyMap<MAP>>& c)
 			},
 			py::arg("name"), py::arg("kind"),
 			"Removes an attribute. Arrays already returned keep the values (they own a reference).")
+		.def(
+			"set_attribute_rule",
+			[](W& w, const std::string& name, const std::string& kind, const std::string& rule) {
+				const Kind k = kind_of(kind);
+				const AttributeRule r = rule_of(rule);
+				with_kind<MAP>(k, [&]<typename CELL>() {
+					if (!with_existing<MAP, CELL>(w.m, name, [&](auto a) { set_attribute_rule(w.m, a, r); }))
+						throw py::key_error(std::string("no ") + kind_name(k) + " attribute named '" + name + "'");
+				});
+			},
+			py::arg("name"), py::arg("kind"), py::arg("rule"),
+			"Sets what cells made by the operators and algorithms get in an attribute: 'copy' (a part of a "
+			"cell takes its value, a new vertex its edge's first end's), 'interpolate' (the weighted mean of "
+			"the parents for float attributes, else copy) or 'none' (the default value). New attributes have "
+			"'copy' for integers and bool, 'interpolate' for floats.")
+		.def(
+			"attribute_rule",
+			[](W& w, const std::string& name, const std::string& kind) {
+				const Kind k = kind_of(kind);
+				std::string out;
+				with_kind<MAP>(k, [&]<typename CELL>() {
+					if (!with_existing<MAP, CELL>(w.m, name, [&](auto a) { out = rule_name(attribute_rule(*a)); }))
+						throw py::key_error(std::string("no ") + kind_name(k) + " attribute named '" + name + "'");
+				});
+				return out;
+			},
+			py::arg("name"), py::arg("kind"),
+			"The rule of an attribute: 'none', 'copy', 'interpolate' or 'callback' (set from C++).")
+		.def(
+			"record_origins",
+			[](W& w, const std::string& kind, const std::string& name) {
+				const Kind k = kind_of(kind);
+				with_kind<MAP>(k, [&]<typename CELL>() {
+					if (!record_origins<CELL>(w.m, name))
+						throw py::value_error(std::string("a ") + kind_name(k) + " attribute named '" + name +
+											  "' exists already (or the name is reserved)");
+				});
+				return get_array(w, name, k);
+			},
+			py::arg("kind") = "face", py::arg("name") = "origin",
+			"Adds a uint32 attribute holding each cell's own id, which the cells made later by operators and "
+			"algorithms copy from their parent: after an edit, it names the input cell each cell comes from "
+			"(4294967295 for none, e.g. a face filling a hole). Returns its array.")
 		.def(
 			"attributes",
 			[](W& w, const std::string& kind) {

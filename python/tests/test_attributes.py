@@ -55,12 +55,50 @@ def test_attribute_errors(data):
         m.remove_attribute("position", "vertex")
 
 
-def test_new_cells_get_default_values_and_survivors_keep_theirs(data):
+def test_new_cells_follow_the_rule_and_survivors_keep_their_values(data):
     m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
     m.triangulate()
     t = m.add_attribute("t", "vertex", "int32")
     t[:] = np.arange(len(t)) + 1
     v = m.cut_edge(0)
     t = m.attribute("t", "vertex")
-    assert t[v] == 0
+    assert t[v] in t[:v]  # copy: the value of an end of the edge
     assert np.array_equal(t[:v], np.arange(v) + 1)
+    m.set_attribute_rule("t", "vertex", "none")
+    w = m.cut_edge(0)
+    assert m.attribute("t", "vertex")[w] == 0  # none: the default value
+
+
+def test_attributes_follow_edits(data):
+    """Rules: a face region copies to the faces cut from it, a colour
+    interpolates at new vertices; record_origins names each face's input face."""
+    m = cgogn.load(str(data / "surface" / "spot_control_mesh.obj"))
+    m.triangulate()
+    region = m.add_attribute("region", "face", "int32")
+    region[:] = np.arange(region.size) % 4 + 1
+    colour = m.add_attribute("colour", "vertex", "float64", 3)
+    pos = m.attribute("position", "vertex")
+    colour[:] = (pos - pos.min(axis=0)) / np.ptp(pos, axis=0)
+    lo, hi = colour.min(axis=0), colour.max(axis=0)
+    flat = m.add_attribute("flat", "vertex", "float64")
+    flat[:] = 5.0
+    assert m.attribute_rule("region", "face") == "copy"
+    assert m.attribute_rule("colour", "vertex") == "interpolate"
+    m.set_attribute_rule("flat", "vertex", "none")
+    assert m.attribute_rule("flat", "vertex") == "none"
+    input_region = m.attribute("region", "face").copy()
+    origin = m.record_origins("face")
+    assert np.array_equal(origin, np.arange(origin.size, dtype=np.uint32))
+    n = m.nb_cells("vertex")
+    m.subdivide("loop", 1)
+    assert m.check_integrity()["ok"]
+    colour = m.attribute("colour", "vertex")
+    new = np.arange(n, m.id_bound("vertex"))
+    assert (colour[new] >= lo - 1e-12).all() and (colour[new] <= hi + 1e-12).all()
+    assert (m.attribute("flat", "vertex")[new] == 0.0).all()
+    region, origin = m.attribute("region", "face"), m.attribute("origin", "face")
+    assert np.array_equal(region, input_region[origin])
+    with pytest.raises(ValueError):
+        m.set_attribute_rule("region", "face", "average")
+    with pytest.raises(ValueError):
+        m.record_origins("face")  # the name is taken

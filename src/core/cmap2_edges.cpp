@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Edge operators of 2-maps: cut, collapse, flip.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 
@@ -95,6 +96,15 @@ CMap2::Vertex cut_edge(CMap2& m, CMap2::Edge e, bool set_indices)
 		detail::set_dart_index<E>(m, d2, INVALID_INDEX);
 		detail::index_new_cell(m, CMap2::Edge(n1));
 		detail::set_representative<E>(m, d);
+		// rules: the new vertex between the ends, its corners between the
+		// corners of the ends in their faces, the new half of the edge its copy
+		if (detail::has_rules(m))
+		{
+			detail::inherit_midpoint<V>(m, n1, d, phi1(m, n1));
+			detail::inherit<E>(m, n1, d);
+			detail::inherit_midpoint<Orbit::DART>(m, n1, d, phi1(m, n1));
+			detail::inherit_midpoint<Orbit::DART>(m, n2, d2, phi1(m, n2));
+		}
 	}
 	return CMap2::Vertex(n1);
 }
@@ -353,6 +363,13 @@ void fix_after_flip(CMap2& m, Dart d, Dart d2, Dart moved_to_f2, Dart moved_to_f
 	detail::set_representative<V>(m, rep_old_origin_d2);
 	detail::copy_dart_index<V>(m, d, origin_of_d);
 	detail::copy_dart_index<V>(m, d2, origin_of_d2);
+	// corners: d and d2 take the corner of the dart that started at their
+	// new origin in the face they joined
+	if (detail::has_rules(m))
+	{
+		detail::inherit<Orbit::DART>(m, d, origin_of_d);
+		detail::inherit<Orbit::DART>(m, d2, origin_of_d2);
+	}
 }
 } // namespace
 

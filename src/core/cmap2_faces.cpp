@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Face and vertex operators of 2-maps: cut and merge faces, merge edges,
 // split vertices, triangulate and remove faces.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/detail/dart_buffer.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
@@ -95,6 +96,14 @@ CMap2::Edge cut_face(CMap2& m, CMap2::Vertex v1, CMap2::Vertex v2, bool set_indi
 		detail::set_representative<F>(m, d);
 		if (detail::state_of(m).cell_index[orbit_index(F)] != nullptr)
 			detail::new_index(m, CMap2::Face(y));
+		// rules: the new face is a part of the old one; the new edge has no
+		// parent edge; each new corner is a part of the corner it cut
+		if (detail::has_rules(m))
+		{
+			detail::inherit<F>(m, y, d);
+			detail::inherit<Orbit::DART>(m, x, e);
+			detail::inherit<Orbit::DART>(m, y, d);
+		}
 	}
 	return CMap2::Edge(y);
 }
@@ -257,6 +266,14 @@ CMap2::Edge split_vertex(CMap2& m, Dart d1, Dart d2, bool set_indices)
 		detail::set_representative<V>(m, d2);
 		if (detail::state_of(m).cell_index[orbit_index(V)] != nullptr)
 			detail::new_index(m, CMap2::Vertex(d1));
+		// rules: the new vertex is a part of the old one, and each new corner
+		// a part of the corner it cut
+		if (detail::has_rules(m))
+		{
+			detail::inherit<V>(m, d1, d2);
+			detail::inherit<Orbit::DART>(m, x, d1);
+			detail::inherit<Orbit::DART>(m, y, d2);
+		}
 	}
 	return CMap2::Edge(x);
 }
@@ -306,6 +323,24 @@ CMap2::Vertex triangulate_face(CMap2& m, CMap2::Face f, bool set_indices)
 				detail::set_dart_index<F>(m, to_centre(i), line);
 				detail::set_dart_index<F>(m, from_centre(i), line);
 			}
+		// rules: the centre and its corners are the means of the face's
+		// vertices and corners, the triangles parts of the face, the corners
+		// at the old vertices parts of the old corners
+		if (detail::has_rules(m))
+		{
+			const std::span<const Dart> sides(darts.data(), k);
+			detail::inherit_mean<V>(m, from_centre(0), sides);
+			detail::inherit_mean<Orbit::DART>(m, from_centre(0), sides);
+			for (std::size_t i = 0; i < k; ++i)
+			{
+				if (i > 0)
+				{
+					detail::inherit<F>(m, side(i), side(0));
+					detail::inherit<Orbit::DART>(m, from_centre(i), from_centre(0));
+				}
+				detail::inherit<Orbit::DART>(m, to_centre(i), side(i + 1 == k ? 0 : i + 1));
+			}
+		}
 	}
 	return CMap2::Vertex(from_centre(0));
 }

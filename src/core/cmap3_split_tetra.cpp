@@ -2,6 +2,7 @@
 // The 1-to-4 split of a tetrahedron, written directly on the darts: the
 // generic cavity re-tetrahedralization (cmap3_cavity.cpp) builds hash maps per
 // call, this one touches 48 darts and allocates nothing.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/utils/error.h>
@@ -266,6 +267,8 @@ CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices)
 		throw TopologyError("split_tetra: the volume is a boundary volume (the outside of the mesh)");
 	if (!collect(m, w.dart, old, opp))
 		throw TopologyError("split_tetra: the volume is not a tetrahedron (four triangles glued pairwise)");
+	// the four vertices (old darts keep their origins)
+	const std::array<Dart, 4> corners{w.dart, phi1(m, w.dart), phi_1(m, w.dart), phi<2, 1, 1>(m, w.dart)};
 
 	// The old darts stay, each on the outer face of the new tet of its face
 	// (so phi3 to the outside, and every index of the outer faces, is kept);
@@ -302,7 +305,17 @@ CMap3::Vertex split_tetra(CMap3& m, CMap3::Volume w, bool set_indices)
 	// goes from the centre to the origin of w, in the tet that keeps w
 	const Dart centre = nd[0][2][2];
 	if (set_indices)
+	{
 		SplitIndexer(m, old, opp, nd).apply(centre);
+		// rules: the centre is the mean of the corners, each new tet a part
+		// of the old one (which the tet of `centre` keeps)
+		if (detail::has_rules(m))
+			detail::inherit_mean<CMap3::Vertex::ORBIT>(m, centre, corners);
+		if (detail::has_rules(m) && container_of<CMap3::Volume::ORBIT>(m).has_rules())
+			for (uint32 f = 0; f < 4; ++f)
+				if (index_of(m, CMap3::Volume(old[f][0])) != index_of(m, CMap3::Volume(centre)))
+					detail::inherit<CMap3::Volume::ORBIT>(m, old[f][0], centre);
+	}
 	return CMap3::Vertex(centre);
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Face operators of 2-G-maps: add a polygon, triangulate a face.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/gmap2.h>
 
 #include "gmap_darts.h"
@@ -53,6 +54,8 @@ GMap2::Vertex triangulate_face(GMap2& m, GMap2::Face f, bool set_indices)
 	for (Dart x : xs)
 		region.push_back(beta0(m, x));
 	detail::RegionReindexer<GMap2> reindex;
+	const bool rules = set_indices && detail::has_rules(m);
+	const uint32 face_line = rules ? detail::index_or_invalid<GMap2::Face::ORBIT>(m, f.dart) : INVALID_INDEX;
 	if (set_indices)
 		reindex.record(m, region);
 	// triangle i: x_i, y_i, then s_i (at y_i's vertex), its beta0 s0_i at the
@@ -82,7 +85,16 @@ GMap2::Vertex triangulate_face(GMap2& m, GMap2::Face f, bool set_indices)
 	for (std::size_t i = 0; i < n; ++i)
 		region.insert(region.end(), {s[i], s0[i], t[i], t0[i]});
 	if (set_indices)
+	{
 		reindex.apply(m, region);
+		// rules: the centre the mean of the face's vertices, each triangle a
+		// part of the face
+		if (rules)
+		{
+			detail::inherit_mean<GMap2::Vertex::ORBIT>(m, s0[0], xs);
+			detail::inherit_parts<GMap2::Face::ORBIT>(m, xs, face_line);
+		}
+	}
 	return GMap2::Vertex(s0[0]);
 }
 

@@ -14,7 +14,7 @@ namespace cgogn::io::detail
 {
 
 // Adds to `c` (the container of orbit o) an attribute of type T typed by o,
-// as add_attribute<T, Cell<o>> would.
+// with its type's default rule, as add_attribute<T, Cell<o>> would.
 template <typename T>
 std::shared_ptr<AttributeBase> add_attribute_of_orbit(AttributeContainer& c, Orbit o, const std::string& name,
 													  const T& default_value)
@@ -32,6 +32,8 @@ std::shared_ptr<AttributeBase> add_attribute_of_orbit(AttributeContainer& c, Orb
 			...);
 	}
 	(std::make_index_sequence<uint32(Orbit::NB_ORBITS)>{});
+	if (a && default_rule<T>() != AttributeRule::None)
+		c.set_rule(*a, default_rule<T>());
 	return a;
 }
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
@@ -235,6 +236,15 @@ private:
 				++stamp_[s.index];
 				++stamp_[phi2(m_, s).index];
 			});
+		// attribute rules: the kept end (origin of d2) gets the values at the
+		// parameter of x along the edge, before the other end goes
+		if (container_of<Vertex::ORBIT>(m_).has_rules())
+		{
+			const Vec3 &a = pos_[index_of(m_, Vertex(d2))], &b = pos_[index_of(m_, Vertex(d))];
+			const double l2 = (b - a).squaredNorm();
+			const double t = l2 > 0.0 ? std::clamp((x - a).dot(b - a) / l2, 0.0, 1.0) : 0.0;
+			apply_attribute_rules(m_, Vertex(d2), {Vertex(d2), Vertex(d)}, {1.0 - t, t});
+		}
 		const Vertex v = collapse_edge(m_, Edge(d));
 		pos_[index_of(m_, v)] = x;
 		quadric(v.dart) = q;
@@ -261,6 +271,7 @@ private:
 DecimationResult decimate(CMap2& m, AttributeArray<Vec3>& pos, const DecimationOptions& options,
 						  const ProgressCallback& progress)
 {
+	const SuspendedRule own_positions(pos);
 	return Decimator(m, pos, options, progress).run();
 }
 

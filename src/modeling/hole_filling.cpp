@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/utils/error.h>
@@ -92,6 +93,8 @@ void fill_loop(CMap2& m, AttributeArray<Vec3>& pos, const std::vector<Dart>& loo
 HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const HoleFillingOptions& options,
 							const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	if (!is_dart_valid(m, d) || !is_boundary(m, d))
 		throw TopologyError("modeling::fill_hole: dart " + std::to_string(d.index) +
 							" is not on a hole (boundary face)");
@@ -107,6 +110,8 @@ HoleFillingResult fill_hole(CMap2& m, AttributeArray<Vec3>& pos, Dart d, const H
 HoleFillingResult fill_holes(CMap2& m, AttributeArray<Vec3>& pos, const HoleFillingOptions& options,
 							 const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	// the loops first: filling one hole does not touch the darts of the others
 	std::vector<Dart> holes;
 	{

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
@@ -402,6 +403,8 @@ private:
 RemeshingResult isotropic_remeshing(CMap2& m, AttributeArray<Vec3>& pos, const RemeshingOptions& options,
 									const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	return Remesher(m, pos, options, progress).run();
 }
 

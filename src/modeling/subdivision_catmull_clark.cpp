@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Catmull-Clark subdivision of polygon meshes.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/gmap2.h>
 
@@ -80,6 +81,8 @@ GMap2::Vertex cut_into_quads(GMap2& m, Dart d0, std::vector<Dart>& midpoints)
 template <typename MAP>
 SubdivisionResult catmull_clark_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	using V = typename mesh_traits<MAP>::Vertex;
 	using E = typename mesh_traits<MAP>::Edge;
 	using F = typename mesh_traits<MAP>::Face;

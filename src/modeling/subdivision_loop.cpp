@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Loop subdivision of triangle meshes.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/gmap2.h>
 
@@ -77,6 +78,8 @@ void cut_hexagon(GMap2& m, Dart h0)
 template <typename MAP>
 SubdivisionResult loop_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	using V = typename mesh_traits<MAP>::Vertex;
 	using E = typename mesh_traits<MAP>::Edge;
 	constexpr uint32 k = darts_per_edge_at_vertex<MAP>;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // sqrt3 subdivision of triangle meshes (Kobbelt 2000).
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/gmap2.h>
 
@@ -74,6 +75,8 @@ bool shares_another_edge(const MAP& m, Dart d)
 template <typename MAP>
 SubdivisionResult sqrt3_step(MAP& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	using V = typename mesh_traits<MAP>::Vertex;
 	using E = typename mesh_traits<MAP>::Edge;
 	using F = typename mesh_traits<MAP>::Face;

@@ -4,6 +4,7 @@
 // cell as the scheme needs), then the map is rebuilt with build_volume: far
 // simpler and faster than cutting every cell with cut_edge / cut_face /
 // cut_volume, which would re-sew the same faces many times.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/map/indexing.h>
@@ -60,11 +61,28 @@ struct Refinement
 	std::vector<uint32> cell_vertices;
 	/// ids by dart of the old map (edges and faces) and by vertex line
 	std::vector<uint32> vertex_id, edge_id, face_id;
+	/// for the attribute rules: each new vertex's parents (old vertex
+	/// lines, equal weights) from parent_offsets[id], and each new cell's
+	/// old volume line
+	std::vector<uint32> parent_offsets{0}, parent_lines, cell_parent;
 
+	/// A new vertex at p whose parents are the old vertices of `lines`.
+	uint32 add(const Vec3& p, std::initializer_list<uint32> lines)
+	{
+		parent_lines.insert(parent_lines.end(), lines);
+		return add(p);
+	}
+	/// The same, its parents already pushed on parent_lines.
 	uint32 add(const Vec3& p)
 	{
+		parent_offsets.push_back(uint32(parent_lines.size()));
 		positions.push_back(p);
 		return uint32(positions.size() - 1);
+	}
+	/// The old vertex line of new vertex id (an old vertex's own id).
+	uint32 old_line(uint32 id) const
+	{
+		return parent_lines[parent_offsets[id]];
 	}
 };
 
@@ -73,15 +91,22 @@ const Vec3& position(const CMap3& m, const AttributeArray<Vec3>& pos, Dart d)
 	return pos[index_of(m, Vertex(d))];
 }
 
+/// The line of w, INVALID_INDEX when volumes are not indexed.
+uint32 volume_line(const CMap3& m, Volume w)
+{
+	return is_indexed<Volume>(m) ? index_of(m, w) : INVALID_INDEX;
+}
+
 /// A vertex per old vertex, then one per edge at its midpoint, then (with
 /// `faces`) one per face at its vertex centroid.
 void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos, Refinement& r, bool faces)
 {
 	r.vertex_id.assign(pos.container()->end_index(), INVALID_INDEX);
-	foreach_cell(m, [&](Vertex v) { r.vertex_id[index_of(m, v)] = r.add(position(m, pos, v.dart)); });
+	foreach_cell(m, [&](Vertex v) { r.vertex_id[index_of(m, v)] = r.add(position(m, pos, v.dart), {index_of(m, v)}); });
 	r.edge_id.assign(container_of<Orbit::DART>(m).end_index(), INVALID_INDEX);
 	foreach_cell(m, [&](Edge e) {
-		const uint32 id = r.add(0.5 * (position(m, pos, e.dart) + position(m, pos, phi1(m, e.dart))));
+		const uint32 id = r.add(0.5 * (position(m, pos, e.dart) + position(m, pos, phi1(m, e.dart))),
+								{index_of(m, Vertex(e.dart)), index_of(m, Vertex(phi1(m, e.dart)))});
 		foreach_dart_of_orbit(m, e, [&](Dart d) { r.edge_id[d.index] = id; });
 	});
 	if (!faces)
@@ -94,6 +119,7 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 		do
 		{
 			sum += position(m, pos, d);
+			r.parent_lines.push_back(index_of(m, Vertex(d)));
 			++n;
 			d = phi1(m, d);
 		} while (d != f.dart);
@@ -103,14 +129,36 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 }
 
 /// Removes every dart and cell of m, keeping its attributes (and whether each
-/// orbit is indexed), then builds the listed cells into it.
-void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 cell_size)
+/// orbit is indexed), then builds the listed cells into it. Attributes with
+/// a rule (attribute_rules.h): a new vertex gets it from its parents (equal
+/// weights), a new cell from its old volume; new faces and edges hold the
+/// default value.
+void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 cell_size, uint32 darts_per_cell)
 {
+	detail::RuleSnapshot vertex_rules(container_of<Vertex::ORBIT>(m));
+	detail::RuleSnapshot volume_rules(container_of<Volume::ORBIT>(m));
 	clear(m);
 	const std::vector<uint32> sizes(r.cell_vertices.size() / cell_size, cell_size);
 	const BuildReport report = build_volume(m, uint32(r.positions.size()), sizes, r.cell_vertices);
 	for (std::size_t i = 0; i < r.positions.size(); ++i)
 		pos[report.vertex_offset + uint32(i)] = r.positions[i];
+	std::vector<double> w;
+	if (!vertex_rules.empty())
+		for (uint32 i = 0; i + 1 < r.parent_offsets.size(); ++i)
+		{
+			const std::span<const uint32> parents(r.parent_lines.data() + r.parent_offsets[i],
+												  r.parent_offsets[i + 1] - r.parent_offsets[i]);
+			w.assign(parents.size(), 1.0 / double(parents.size()));
+			vertex_rules.apply(report.vertex_offset + i, parents, w);
+		}
+	// build_volume gives the cells' darts in their order, darts_per_cell each
+	if (!volume_rules.empty() && report.nb_cells_built == sizes.size())
+	{
+		const double one = 1.0;
+		for (uint32 k = 0; k < sizes.size(); ++k)
+			volume_rules.apply(index_of(m, Volume(Dart(k * darts_per_cell))), std::span(&r.cell_parent[k], 1),
+							   std::span(&one, 1));
+	}
 }
 
 // ---- tetrahedra
@@ -167,6 +215,8 @@ bool is_tet_mesh(const CMap3& m)
 
 SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	if (!is_tet_mesh(m))
 		throw SubdivisionError("tetrahedral subdivision: every volume must be a tetrahedron");
 	static const std::array<TetList, 3> patterns = make_tet_patterns();
@@ -207,19 +257,24 @@ SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 			}
 		}
 		for (const auto& t : patterns[best])
+		{
 			for (uint32 i : t)
 				r.cell_vertices.push_back(local[i]);
+			r.cell_parent.push_back(volume_line(m, w));
+		}
 		return true;
 	});
 	if (reporter.cancelled())
 		return {true, 0};
-	rebuild(m, pos, r, 4);
+	rebuild(m, pos, r, 4, 12);
 	reporter.report(1.0);
 	return {reporter.cancelled(), 1};
 }
 
 SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress)
 {
+	// positions are the algorithm's own: no rule interpolates them
+	const SuspendedRule own_positions(pos);
 	if (!is_hex_mesh(m))
 		throw SubdivisionError("hexahedral subdivision: every volume must be a hexahedron");
 	ProgressReporter reporter(progress);
@@ -257,7 +312,10 @@ SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 		for (uint32 x : {0u, 2u})
 			for (uint32 y : {0u, 2u})
 				for (uint32 z : {0u, 2u})
+				{
 					centre += r.positions[grid[x][y][z]];
+					r.parent_lines.push_back(r.old_line(grid[x][y][z]));
+				}
 		grid[1][1][1] = r.add(centre / 8.0);
 		// the outward cycle runs opposite to VTK's bottom quad: each child
 		// is listed as the parent would be, (q0, q3, q2, q1, then above)
@@ -267,11 +325,12 @@ SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 					for (uint32 z : {c, c + 1})
 						for (const auto& q : {std::array<uint32, 2>{a, b}, {a, b + 1}, {a + 1, b + 1}, {a + 1, b}})
 							r.cell_vertices.push_back(grid[q[0]][q[1]][z]);
+		r.cell_parent.insert(r.cell_parent.end(), 8, volume_line(m, w));
 		return true;
 	});
 	if (reporter.cancelled())
 		return {true, 0};
-	rebuild(m, pos, r, 8);
+	rebuild(m, pos, r, 8, 24);
 	reporter.report(1.0);
 	return {reporter.cancelled(), 1};
 }

@@ -164,8 +164,8 @@ TEST(OperatorContracts, CollapseRefusedAlongAPinchedTriangle)
 	}
 }
 
-// After compact() and reorder(), new cells start with default values, new
-// darts without indices.
+// After compact() and reorder(), new cells of attributes without a rule
+// start with default values, new darts without indices.
 TEST(OperatorContracts, NewLinesAfterCompactionHoldDefaults)
 {
 	for (bool use_reorder : {false, true})
@@ -181,6 +181,9 @@ TEST(OperatorContracts, NewLinesAfterCompactionHoldDefaults)
 		}
 		auto vtag = get_attribute<uint32, Vertex>(m, "vtag");
 		auto etag = get_attribute<uint32, Edge>(m, "etag");
+		// no rule: new cells hold the default, not a stale value of a freed line
+		set_attribute_rule(m, vtag, AttributeRule::None);
+		set_attribute_rule(m, etag, AttributeRule::None);
 		foreach_cell(m, [&](Vertex v) { value<uint32>(m, vtag, v) = 7; });
 		foreach_cell(m, [&](Edge e) { value<uint32>(m, etag, e) = 7; });
 		if (use_reorder)

@@ -402,6 +402,16 @@ CMap2 compatibility_map()
 	foreach_dart(m, [&](Dart d) {
 		(*get_attribute<Vec2, CMap2::HalfEdge>(m, "uv"))[CMap2::HalfEdge(d)] = Vec2(d.index, 0.125);
 	});
+	// the file was written before attribute rules existed: the cut's new
+	// cells hold default values
+	const auto no_rules = [](AttributeContainer& c) {
+		for (const auto& a : c.attributes())
+			c.set_rule(*a, AttributeRule::None);
+	};
+	no_rules(container_of<CMap2::Vertex::ORBIT>(m));
+	no_rules(container_of<CMap2::Edge::ORBIT>(m));
+	no_rules(container_of<CMap2::Face::ORBIT>(m));
+	no_rules(container_of<Orbit::DART>(m));
 	const CMap2::Vertex v = cut_edge(m, CMap2::Edge(Dart(0)));
 	collapse_edge(m, CMap2::Edge(v.dart)); // leaves free darts and lines
 	return m;

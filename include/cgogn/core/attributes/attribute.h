@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/attributes/attribute_rule.h>
 #include <cgogn/core/attributes/line_storage.h>
 #include <cgogn/core/map/cell.h>
 #include <cgogn/core/utils/numeric.h>
 
 #include <atomic>
 #include <cassert>
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <typeindex>
 #include <vector>
@@ -71,14 +74,30 @@ public:
 	/// Bytes of memory the values hold (see LineStorage::memory_bytes): all
 	/// allocated lines, live or not.
 	virtual std::size_t memory_bytes() const = 0;
-	/// A new attribute of the same type, name and default value in container
-	/// `to` (nullptr when the name is taken there).
+	/// A new attribute of the same type, name, default value and rule in
+	/// container `to` (nullptr when the name is taken there).
 	virtual std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const = 0;
+
+	/// What a cell created by an operator gets in this attribute (see
+	/// attribute_rules.h); set through the container, which keeps the list of
+	/// the attributes that have a rule.
+	AttributeRule rule() const
+	{
+		return rule_;
+	}
+	/// Applies the rule to line dst from the parent lines `src` and their
+	/// weights `w` (as many, summing to 1, dst possibly among the parents):
+	/// Copy takes the value of the parent of largest weight (the first of
+	/// equals), Interpolate the weighted sum for linear types (else as Copy),
+	/// Callback calls the attribute's callback. Nothing for None, or when src
+	/// is empty. O(number of parents).
+	virtual void apply_rule(uint32 dst, std::span<const uint32> src, std::span<const double> w) = 0;
 
 protected:
 	friend class AttributeContainer;
-	AttributeContainer* container_; ///< See container().
-	std::string name_;              ///< See name().
+	AttributeContainer* container_;            ///< See container().
+	std::string name_;                         ///< See name().
+	AttributeRule rule_ = AttributeRule::None; ///< See rule().
 	/// The container's cell index (see AttributeContainer::cell_index), kept
 	/// here so that `attr[c]` costs the loads value() costs.
 	const AttributeArray<uint32>* cell_index_ = nullptr;
@@ -95,6 +114,10 @@ class AttributeArray : public AttributeBase
 {
 public:
 	using value_type = T; ///< The type of the values.
+	/// A user rule: sets `value` (the new cell's, holding the default value
+	/// or, for a merge, the surviving cell's) from the parents' values and
+	/// weights.
+	using RuleCallback = std::function<void(T& value, std::span<const T> parents, std::span<const double> weights)>;
 
 	/// `contiguous_lines`: see LineStorage (tests lower it to exercise blocks).
 	AttributeArray(AttributeContainer* container, std::string name, T default_value = T(),
@@ -212,6 +235,50 @@ public:
 	}
 	std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const override;
 
+	void apply_rule(uint32 dst, std::span<const uint32> src, std::span<const double> w) override
+	{
+		if (src.empty())
+			return;
+		switch (rule_)
+		{
+		case AttributeRule::None:
+			return;
+		case AttributeRule::Interpolate:
+			if constexpr (LinearValue<T>)
+			{
+				(*this)[dst] = linear_combination<T>(
+					src.size(), [&](std::size_t k) -> const T& { return (*this)[src[k]]; }, w);
+				return;
+			}
+			[[fallthrough]];
+		case AttributeRule::Copy: {
+			const uint32 from = src[heaviest(w)];
+			if (from != dst)
+				(*this)[dst] = (*this)[from];
+			return;
+		}
+		case AttributeRule::Callback: {
+			// an array, not a std::vector (whose bool specialization has no span)
+			const auto parents = std::make_unique<T[]>(src.size());
+			for (std::size_t k = 0; k < src.size(); ++k)
+				parents[k] = (*this)[src[k]];
+			callback_((*this)[dst], std::span<const T>(parents.get(), src.size()), w);
+			return;
+		}
+		}
+	}
+	/// The user rule, when rule() is Callback.
+	const RuleCallback& rule_callback() const
+	{
+		return callback_;
+	}
+	/// Sets the user rule; the container's set_rule(attr, Callback) makes it
+	/// the attribute's rule.
+	void set_rule_callback(RuleCallback f)
+	{
+		callback_ = std::move(f);
+	}
+
 	/// Sets every allocated line (live or not) to v.
 	void fill(const T& v)
 	{
@@ -241,6 +308,7 @@ protected:
 private:
 	LineStorage<T, CHUNK_SHIFT> values_;
 	T default_value_;
+	RuleCallback callback_;
 };
 
 /// The attribute handle add_attribute<T, CELL> and get_attribute<T, CELL>
@@ -295,6 +363,10 @@ public:
 	}
 
 	std::shared_ptr<AttributeBase> clone_empty(AttributeContainer& to) const override;
+
+private:
+	/// clone_empty without the rule: an attribute of the orbit of `to`'s kind.
+	std::shared_ptr<AttributeBase> clone_of_kind(AttributeContainer& to) const;
 };
 
 /// A bit per line, growing by chunks of the same line count as attributes.

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <bit>
 #include <mutex>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -89,8 +90,44 @@ public:
 			return false;
 		(*it)->container_ = nullptr;
 		(*it)->cell_index_ = nullptr;
+		if (std::erase(ruled_, it->get()) > 0 && map_rule_count_ != nullptr)
+			--*map_rule_count_;
 		attributes_.erase(it);
 		return true;
+	}
+
+	/// Gives attribute a (one of this container's) rule r; Callback needs
+	/// the attribute's callback set first (asserted by apply_rule's caller).
+	/// O(attributes with a rule).
+	void set_rule(AttributeBase& a, AttributeRule r)
+	{
+		assert(a.container() == this);
+		a.rule_ = r;
+		const bool was_ruled = std::erase(ruled_, &a) > 0;
+		if (r != AttributeRule::None)
+			ruled_.push_back(&a);
+		if (map_rule_count_ != nullptr && was_ruled != (r != AttributeRule::None))
+			*map_rule_count_ = was_ruled ? *map_rule_count_ - 1 : *map_rule_count_ + 1;
+	}
+	/// Makes the container count its attributes with a rule in *count too
+	/// (the map's total, see MapState::nb_ruled_attributes).
+	void count_rules_in(uint32* count)
+	{
+		map_rule_count_ = count;
+	}
+	/// Whether some attribute has a rule: operators apply rules only then,
+	/// so that maps without rules pay one test per created cell. O(1).
+	bool has_rules() const
+	{
+		return !ruled_.empty();
+	}
+	/// Applies the rule of every attribute that has one to line dst, from
+	/// the parent lines src with weights w (see AttributeBase::apply_rule).
+	/// O(attributes with a rule x parents).
+	void apply_rules(uint32 dst, std::span<const uint32> src, std::span<const double> w)
+	{
+		for (AttributeBase* a : ruled_)
+			a->apply_rule(dst, src, w);
 	}
 
 	/// Every attribute of the container, the key included, in the order they
@@ -479,6 +516,8 @@ private:
 	Orbit orbit_ = Orbit::DART;
 	const AttributeArray<uint32>* cell_index_ = nullptr;
 	std::vector<std::shared_ptr<AttributeBase>> attributes_;
+	std::vector<AttributeBase*> ruled_; ///< The attributes whose rule is not None.
+	uint32* map_rule_count_ = nullptr;  ///< See count_rules_in.
 	AttributeArray<uint32>* key_ = nullptr;
 	uint32 size_ = 0;
 	uint32 nb_chunks_ = 0;
@@ -528,11 +567,29 @@ private:
 template <typename T>
 std::shared_ptr<AttributeBase> AttributeArray<T>::clone_empty(AttributeContainer& to) const
 {
-	return to.add_attribute<T>(name_, default_value_);
+	auto a = to.add_attribute<T>(name_, default_value_);
+	if (a)
+	{
+		a->set_rule_callback(callback_);
+		to.set_rule(*a, rule_);
+	}
+	return a;
 }
 
 template <typename T, Orbit O>
 std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContainer& to) const
+{
+	auto a = clone_of_kind(to);
+	if (a)
+	{
+		static_cast<AttributeArray<T>&>(*a).set_rule_callback(this->rule_callback());
+		to.set_rule(*a, this->rule());
+	}
+	return a;
+}
+
+template <typename T, Orbit O>
+std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_of_kind(AttributeContainer& to) const
 {
 	// a container of the same cell kind in the other model of surfaces (the
 	// CMap2 <-> GMap2 conversions) gets an attribute typed by its own orbit

@@ -39,6 +39,9 @@ T default_attribute_value()
 /// or when the name is reserved (names starting with "__" are the library's).
 /// The handle is a CellAttribute<T, CELL::ORBIT>: `(*attr)[c]` takes the cells
 /// of that orbit; it converts to std::shared_ptr<mesh_traits<MESH>::Attribute<T>>.
+/// The attribute's rule, what cells made by operators get, is its type's
+/// default_rule(): Copy for integers and strings, Interpolate for linear
+/// types, None for the rest (see attribute_rules.h to change it).
 template <typename T, typename CELL, typename MESH>
 std::shared_ptr<CellAttribute<T, CELL::ORBIT>> add_attribute(MESH& m, const std::string& name)
 {
@@ -50,8 +53,12 @@ std::shared_ptr<CellAttribute<T, CELL::ORBIT>> add_attribute(MESH& m, const std:
 		return nullptr;
 	if (!is_indexed<CELL>(map))
 		index_cells<CELL>(map);
-	return container_of<CELL::ORBIT>(map).template add_attribute<T, CellAttribute<T, CELL::ORBIT>>(
-		name, detail::default_attribute_value<T>());
+	auto& container = container_of<CELL::ORBIT>(map);
+	auto a =
+		container.template add_attribute<T, CellAttribute<T, CELL::ORBIT>>(name, detail::default_attribute_value<T>());
+	if constexpr (default_rule<T>() != AttributeRule::None)
+		container.set_rule(*a, default_rule<T>());
+	return a;
 }
 
 /// The attribute of type T on CELL named `name`; nullptr when there is none or

@@ -25,6 +25,11 @@ namespace detail
 /// for cell data. Not part of the API.
 struct MapState
 {
+	/// Number of attributes of the map whose rule is not None, kept by the
+	/// containers (AttributeContainer::set_rule): operators skip the rules
+	/// with one test when it is 0. On the heap so that containers keep its
+	/// address when the map moves; declared first, destroyed last.
+	std::unique_ptr<uint32> nb_ruled_attributes = std::make_unique<uint32>(0);
 	std::unique_ptr<AttributeContainer> darts;
 	std::array<std::unique_ptr<AttributeContainer>, NB_ORBITS> cells;
 	/// Per-orbit dart attribute holding each dart's cell index (nullptr while
@@ -91,6 +96,7 @@ protected:
 	explicit CMapBase(const std::string& key_name)
 	{
 		state_.darts = std::make_unique<AttributeContainer>(key_name);
+		state_.darts->count_rules_in(state_.nb_ruled_attributes.get());
 		state_.phi1 = &state_.darts->key();
 		state_.relations.push_back(state_.phi1);
 		state_.boundary = state_.darts->add_persistent_mark();
@@ -98,6 +104,7 @@ protected:
 		{
 			state_.cells[o] = std::make_unique<AttributeContainer>("__dart");
 			state_.cells[o]->set_orbit(Orbit(o));
+			state_.cells[o]->count_rules_in(state_.nb_ruled_attributes.get());
 		}
 	}
 
