@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Holes and boundary of 2-maps: close, fill, sew and unsew faces.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/properties/properties.h>
 
@@ -41,19 +42,26 @@ void reassign_vertex_lines(CMap2& m, const std::vector<Dart>& darts, Dart d1, st
 		if (done.is_marked(d))
 			return;
 		done.mark_orbit(CMap2::Vertex(d));
-		uint32 line = INVALID_INDEX;
+		uint32 line = INVALID_INDEX, seen = INVALID_INDEX;
 		for (uint32 l : preferred)
 			if (line == INVALID_INDEX && l != INVALID_INDEX && !is_claimed(l))
 				line = l;
 		if (line == INVALID_INDEX)
 			foreach_dart_of_orbit(m, CMap2::Vertex(d), [&](Dart x) {
 				const uint32 l = idx[x.index];
+				if (seen == INVALID_INDEX)
+					seen = l;
 				if (l != INVALID_INDEX && !is_claimed(l))
 					line = l;
 				return line == INVALID_INDEX;
 			});
 		if (line == INVALID_INDEX)
+		{
+			// a part of a vertex cut apart: its rules' values come from the
+			// line the vertex had
 			line = vc.new_line(d.index);
+			detail::inherit_line<V>(m, line, seen);
+		}
 		claimed.push_back(line);
 		detail::write_index(m, CMap2::Vertex(d), line);
 	};
@@ -275,12 +283,12 @@ void unsew_faces(CMap2& m, CMap2::Edge e, bool set_indices)
 		{
 			detail::set_representative<V>(m, d);
 			detail::set_dart_index<V>(m, b2, INVALID_INDEX);
-			detail::new_index(m, CMap2::Vertex(b2));
+			detail::inherit_line<V>(m, detail::new_index(m, CMap2::Vertex(b2)), detail::index_or_invalid<V>(m, d));
 		}
 		if (out_b.is_valid() && !same_orbit(m, CMap2::Vertex(d2), CMap2::Vertex(b1)))
 		{
 			detail::set_representative<V>(m, d2);
-			detail::new_index(m, CMap2::Vertex(b1));
+			detail::inherit_line<V>(m, detail::new_index(m, CMap2::Vertex(b1)), detail::index_or_invalid<V>(m, d2));
 		}
 	}
 	if (detail::state_of(m).cell_index[orbit_index(W)] != nullptr)

@@ -424,8 +424,8 @@ void remove_face(CMap2& m, CMap2::Face f, bool set_indices)
 				claimed.push_back(l);
 				detail::set_representative<V>(m, x);
 			}
-			else
-				detail::new_index(m, CMap2::Vertex(x));
+			else // a part of a vertex that came apart: its rules' values come from l
+				detail::inherit_line<V>(m, detail::new_index(m, CMap2::Vertex(x)), l);
 		}
 		std::sort(vertex_lines.begin(), vertex_lines.end());
 		vertex_lines.erase(std::unique(vertex_lines.begin(), vertex_lines.end()), vertex_lines.end());

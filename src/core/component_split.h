@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/marking/marker.h>
 
@@ -177,6 +178,7 @@ void split_component_lines(MAP& m, uint32 line, const std::vector<Dart>& seeds)
 			const uint32 l = cells.new_line(parts[i].seed.index);
 			for (Dart d : parts[i].darts)
 				idx[d.index] = l;
+			detail::inherit_line<O>(m, l, line); // a part of the component that came apart
 		}
 }
 

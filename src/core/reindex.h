@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/marking/marker.h>
 
@@ -103,16 +104,24 @@ private:
 				}
 				if (visited.is_marked(d))
 					continue;
-				uint32 line = INVALID_INDEX;
+				uint32 line = INVALID_INDEX, seen = INVALID_INDEX;
 				foreach_dart_of_orbit(m, CELL(d), [&](Dart x) {
 					walked += 2; // write_index walks the cell again
 					visited.mark(x);
 					const uint32 l = (*idx)[x.index];
+					if (seen == INVALID_INDEX && l != INVALID_INDEX && cells.is_live(l))
+						seen = l;
 					if (line == INVALID_INDEX && l != INVALID_INDEX && cells.is_live(l) && !claimed.count(l))
 						line = l;
 				});
 				if (line == INVALID_INDEX)
+				{
+					// a part of a cell that came apart (its line went to another
+					// part) gets its rules' values from that line; a cell of new
+					// darts only is the operator's to fill
 					line = cells.new_line(d.index);
+					detail::inherit_line<O>(m, line, seen);
+				}
 				claimed.insert(line);
 				write_index(m, CELL(d), line);
 			}

@@ -2,8 +2,11 @@
 // Randomized editing of real meshes: every 2-map and 3-map operator, each
 // guarded by its predicate, on meshes with boundaries, polygons, several
 // components and pinched vertices, with every orbit indexed and an incidence
-// cache built. After each step: check_integrity, and every line that survived
-// still holds the value it had (new lines hold the default).
+// cache built. After each step: check_integrity, every line that survived
+// still holds the value it had, and every new line holds the value of a
+// cell that existed before the step (the tags are integers: their rule
+// copies a parent's value) or the default (a cell with no parent of its
+// orbit, such as the edge cut_face adds).
 //
 // A step is an applied edit (draws the predicates refuse do not count). The
 // suite runs 20,000 steps per map type (the 3-map steps split 60/40 between
@@ -24,6 +27,7 @@
 #include <random>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 #include <vector>
 
 namespace cgogn_test_random_editing
@@ -43,7 +47,8 @@ uint32 steps_of_map_type(uint32 percent)
 }
 
 // The values of one indexed orbit's tag attribute, line by line: lines that
-// survive a step keep their value, new ones start at 0 and get a fresh tag.
+// survive a step keep their value, new ones copy a parent's tag (or hold 0)
+// and get a fresh tag at the next snapshot when they hold 0.
 template <typename CELL, typename MAP>
 class TagWatch
 {
@@ -57,12 +62,14 @@ public:
 	{
 		const AttributeContainer& c = container_of<CELL::ORBIT>(m_);
 		before_.assign(c.end_index(), 0);
+		values_.clear();
 		for (uint32 i = 0; i < c.end_index(); ++i)
 			if (c.is_live(i))
 			{
 				if ((*tag_)[i] == 0)
 					(*tag_)[i] = next_++;
 				before_[i] = (*tag_)[i];
+				values_.insert(before_[i]);
 			}
 	}
 	// Follows the lines moved by compact().
@@ -84,11 +91,23 @@ public:
 				return i;
 		return INVALID_INDEX;
 	}
+	// The first line that is live, was not live before and holds a value no
+	// line held before (nor 0): a value that no rule gives (or INVALID_INDEX).
+	uint32 orphan_line() const
+	{
+		const AttributeContainer& c = container_of<CELL::ORBIT>(m_);
+		for (uint32 i = 0; i < c.end_index(); ++i)
+			if (c.is_live(i) && (i >= before_.size() || before_[i] == 0) && (*tag_)[i] != 0 &&
+				!values_.contains((*tag_)[i]))
+				return i;
+		return INVALID_INDEX;
+	}
 
 private:
 	MAP& m_;
 	std::shared_ptr<AttributeArray<uint32>> tag_;
 	std::vector<uint32> before_;
+	std::unordered_set<uint32> values_; // every value before the step
 	uint32 next_ = 1;
 };
 
@@ -601,6 +620,20 @@ public:
 			return sub_->changed();
 		return {};
 	}
+	// The name of the first orbit with a new line whose value no rule gives
+	// (empty when none).
+	std::string orphan() const
+	{
+		if (v_.orphan_line() != INVALID_INDEX)
+			return "vertex";
+		if (e_.orphan_line() != INVALID_INDEX)
+			return "edge";
+		if (f_.orphan_line() != INVALID_INDEX)
+			return "face";
+		if (w_.orphan_line() != INVALID_INDEX)
+			return MAP::dimension == 2 ? "component" : "volume";
+		return {};
+	}
 
 private:
 	struct Sub3
@@ -663,6 +696,31 @@ void random_editing(MAP& m, uint32 steps, uint32 seed, uint32 max_draws_per_step
 	using Top = std::conditional_t<MAP::dimension == 2, F, W>;
 	test::index_everything(m);
 	TagWatches<MAP> tags(m);
+	// a field the operators interpolate: new vertices stay in the range of
+	// the old ones (or hold 0, the default, when they have no parent)
+	auto heat = add_attribute<double, V>(m, "heat");
+	std::mt19937 heat_rng(seed + 1);
+	// the range of the values, after giving one to the vertices without a
+	// parent (those of add_volume), as the tags get fresh values
+	const auto heat_range = [&] {
+		std::pair<double, double> r{1e300, -1e300};
+		foreach_cell(m, [&](V v) {
+			double& h = value<double>(m, heat, v);
+			if (h == 0.0)
+				h = std::uniform_real_distribution<double>(1.0, 2.0)(heat_rng);
+			r = {std::min(r.first, h), std::max(r.second, h)};
+		});
+		return r;
+	};
+	// the range of the values the step gave (the default, 0, left out)
+	const auto heat_given = [&] {
+		std::pair<double, double> r{1e300, -1e300};
+		foreach_cell(m, [&](V v) {
+			if (const double h = value<double>(m, heat, v); h != 0.0)
+				r = {std::min(r.first, h), std::max(r.second, h)};
+		});
+		return r;
+	};
 	const uint32 initial = nb_darts(m);
 	std::mt19937 rng(seed);
 	uint32 applied = 0;
@@ -670,6 +728,7 @@ void random_editing(MAP& m, uint32 steps, uint32 seed, uint32 max_draws_per_step
 	const uint64 max_draws = uint64(steps) * max_draws_per_step;
 	std::map<std::string, int> applied_by_operator;
 	tags.snapshot();
+	std::pair<double, double> heat_before = heat_range();
 	while (applied < steps && draws < max_draws)
 	{
 		++draws;
@@ -692,8 +751,16 @@ void random_editing(MAP& m, uint32 steps, uint32 seed, uint32 max_draws_per_step
 		const std::string changed = tags.changed();
 		ASSERT_TRUE(changed.empty()) << "step " << step << " (" << op << "): a surviving " << changed
 									 << " line changed its value";
+		const std::string orphan = tags.orphan();
+		ASSERT_TRUE(orphan.empty()) << "step " << step << " (" << op << "): a new " << orphan
+									<< " line holds a value no cell had before";
+		const std::pair<double, double> heat_after = heat_given();
+		ASSERT_TRUE(heat_after.first >= heat_before.first - 1e-12 && heat_after.second <= heat_before.second + 1e-12)
+			<< "step " << step << " (" << op << "): a vertex field left the range of its parents [" << heat_before.first
+			<< ", " << heat_before.second << "] -> [" << heat_after.first << ", " << heat_after.second << "]";
 		after(m, step);
 		tags.snapshot();
+		heat_before = heat_range();
 	}
 	EXPECT_EQ(applied, steps) << "the predicates refused too many draws (" << draws << ")";
 	::testing::Test::RecordProperty("applied", int(applied));

@@ -163,6 +163,20 @@ void inherit(CMapBase& m, Dart child, std::span<const Dart> parents, std::span<c
 	c.apply_rules(dst, std::span<const uint32>(lines, n), std::span<const double>(weights, n));
 }
 
+/// Line dst of orbit O, given to a part of a cell that came apart (a vertex
+/// cut in two by an unsew, a component split), gets the values of line src,
+/// the line the cell had (kept by another part). O(rules) when some
+/// attribute of O has a rule.
+template <Orbit O>
+void inherit_line(CMapBase& m, uint32 dst, uint32 src)
+{
+	AttributeContainer& c = container_of<O>(m);
+	if (!c.has_rules() || dst == INVALID_INDEX || src == INVALID_INDEX || dst == src)
+		return;
+	const double one = 1.0;
+	c.apply_rules(dst, std::span<const uint32>(&src, 1), std::span<const double>(&one, 1));
+}
+
 /// The same for one parent (a part of a split cell): its value, by any rule.
 template <Orbit O>
 void inherit(CMapBase& m, Dart child, Dart parent)
