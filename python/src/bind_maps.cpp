@@ -30,7 +30,10 @@ Kind kind_of(const std::string& name)
 		return Kind::Face;
 	if (name == "volume" || name == "volumes")
 		return Kind::Volume;
-	throw py::value_error("unknown cell kind '" + name + "': use \"vertex\", \"edge\", \"face\" or \"volume\"");
+	if (name == "corner" || name == "corners")
+		return Kind::Corner;
+	throw py::value_error("unknown cell kind '" + name +
+						  "': use \"vertex\", \"edge\", \"face\", \"volume\" or \"corner\"");
 }
 
 const char* kind_name(Kind k)
@@ -43,6 +46,8 @@ const char* kind_name(Kind k)
 		return "edge";
 	case Kind::Face:
 		return "face";
+	case Kind::Corner:
+		return "corner";
 	default:
 		return "volume";
 	}
@@ -176,19 +181,28 @@ void foreach_related(const MAP& m, FROM c, const F& f)
 
 // CSR of the relation from -> to: one row per live `from` cell in traversal
 // order, holding the ids of the related `to` cells in the map's local order.
+/// ValueError for relations with corners (see corners_csr).
+inline void refuse_corner_relations(Kind from, Kind to)
+{
+	if (from == Kind::Corner || to == Kind::Corner)
+		throw py::value_error("corners have no incidence relations: corners_csr() gives the corners of each face");
+}
+
 template <typename MAP>
 py::tuple incidence(MAP& m, Kind from, Kind to)
 {
 	if (MAP::dimension == 2 && (from == Kind::Volume || to == Kind::Volume))
 		throw py::value_error("a surface has no volume relations");
+	refuse_corner_relations(from, to);
 	ensure_indexed(m, from);
 	ensure_indexed(m, to);
 	return with_kind<MAP>(from, [&]<typename FROM>() {
 		std::vector<uint32> offsets{0}, indices;
 		offsets.reserve(nb_cells<FROM>(m) + 1);
 		with_kind<MAP>(to, [&]<typename TO>() {
-			if constexpr (MAP::dimension == 3 || (!std::is_same_v<FROM, typename mesh_traits<MAP>::Volume> &&
-												  !std::is_same_v<TO, typename mesh_traits<MAP>::Volume>))
+			if constexpr (FROM::ORBIT != Orbit::DART && TO::ORBIT != Orbit::DART &&
+						  (MAP::dimension == 3 || (!std::is_same_v<FROM, typename mesh_traits<MAP>::Volume> &&
+												   !std::is_same_v<TO, typename mesh_traits<MAP>::Volume>)))
 				foreach_cell(m, [&](FROM c) {
 					foreach_related<TO>(m, c, [&](TO x) { indices.push_back(index_of(m, x)); });
 					offsets.push_back(uint32(indices.size()));
@@ -235,7 +249,7 @@ void foreach_face_dart(const MAP& m, const F& f)
 
 // The vertex ids of the faces (surfaces) or of the boundary faces (volumes).
 template <typename MAP>
-py::tuple faces_csr(MAP& m)
+py::tuple faces_csr(MAP& m, bool corners = false)
 {
 	using Vertex = typename mesh_traits<MAP>::Vertex;
 	std::vector<uint32> offsets{0}, indices;
@@ -249,7 +263,7 @@ py::tuple faces_csr(MAP& m)
 		Dart d = first;
 		do
 		{
-			indices.push_back(index_of(m, Vertex(d)));
+			indices.push_back(corners ? d.index : index_of(m, Vertex(d)));
 			d = oriented_phi1(m, d);
 		} while (d != first);
 		offsets.push_back(uint32(indices.size()));
@@ -505,6 +519,10 @@ void bind_common(py::class_<PyMap<MAP>>& c)
 								  "face id k on a compact map). O(darts)."
 								: "(offsets, indices): the vertex ids of every boundary face, seen from outside.")
 		.def(
+			"corners_csr", [](W& w) { return faces_csr(w.m, true); },
+			"(offsets, indices): the corner ids of every face, in the order of faces_csr() (corner k of face f "
+			"is at vertex k of face f): the rows of 'corner' attributes such as texture coordinates. O(darts).")
+		.def(
 			"faces", [](W& w) { return triangles(w.m); },
 			MAP::dimension == 2 ? "(F, 3) uint32 array of the vertex ids of the triangles; ValueError when a face "
 								  "is not a triangle."
@@ -526,6 +544,7 @@ void bind_common(py::class_<PyMap<MAP>>& c)
 				const Kind from = kind_of(source), to = kind_of(target);
 				if (MAP::dimension == 2 && (from == Kind::Volume || to == Kind::Volume))
 					throw py::value_error("a surface has no volume relations");
+				refuse_corner_relations(from, to);
 				ensure_indexed(w.m, from);
 				ensure_indexed(w.m, to);
 				std::vector<uint32> out;
@@ -536,9 +555,10 @@ void bind_common(py::class_<PyMap<MAP>>& c)
 											  std::to_string(id));
 					const FROM cell{Dart(c.key()[uint32(id)])};
 					with_kind<MAP>(to, [&]<typename TO>() {
-						if constexpr (MAP::dimension == 3 ||
-									  (!std::is_same_v<FROM, typename mesh_traits<MAP>::Volume> &&
-									   !std::is_same_v<TO, typename mesh_traits<MAP>::Volume>))
+						if constexpr (FROM::ORBIT != Orbit::DART && TO::ORBIT != Orbit::DART &&
+									  (MAP::dimension == 3 ||
+									   (!std::is_same_v<FROM, typename mesh_traits<MAP>::Volume> &&
+										!std::is_same_v<TO, typename mesh_traits<MAP>::Volume>)))
 							foreach_related<TO>(w.m, cell, [&](TO x) { out.push_back(index_of(w.m, x)); });
 					});
 				});

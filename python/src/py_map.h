@@ -73,10 +73,12 @@ enum class Kind
 	Vertex,
 	Edge,
 	Face,
-	Volume
+	Volume,
+	Corner ///< a dart: a corner of a face (per-corner data: texture seams, split normals)
 };
 
-/// "vertex", "edge", "face" or "volume" (plurals accepted); ValueError otherwise.
+/// "vertex", "edge", "face", "volume" or "corner" (plurals accepted);
+/// ValueError otherwise.
 Kind kind_of(const std::string& name);
 const char* kind_name(Kind k);
 
@@ -93,6 +95,8 @@ decltype(auto) with_kind(Kind k, FUNC&& f)
 		return f.template operator()<typename T::Edge>();
 	case Kind::Face:
 		return f.template operator()<typename T::Face>();
+	case Kind::Corner:
+		return f.template operator()<Cell<Orbit::DART>>();
 	default:
 		if constexpr (requires { typename T::Volume; })
 			return f.template operator()<typename T::Volume>();

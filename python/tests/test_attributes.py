@@ -46,7 +46,7 @@ def test_attribute_errors(data):
     with pytest.raises(ValueError, match="unsupported"):
         m.add_attribute("y", "vertex", "complex128")
     with pytest.raises(ValueError, match="unknown cell kind"):
-        m.add_attribute("y", "corner")
+        m.add_attribute("y", "wedge")
     with pytest.raises(ValueError, match="library"):
         m.add_attribute("__y", "vertex")
     with pytest.raises(ValueError, match="shape"):
@@ -102,3 +102,38 @@ def test_attributes_follow_edits(data):
         m.set_attribute_rule("region", "face", "average")
     with pytest.raises(ValueError):
         m.record_origins("face")  # the name is taken
+
+
+def test_corner_attributes(data):
+    """Per-corner data: the OBJ's texture coordinates as a 'corner' attribute,
+    in the order of corners_csr(); seams stay through a subdivision."""
+    path = data / "surface" / "spot_control_mesh.obj"
+    vt, faces = [], []
+    for line in path.read_text().splitlines():
+        if line.startswith("vt "):
+            vt.append([float(x) for x in line.split()[1:3]])
+        elif line.startswith("f "):
+            faces.append([int(c.split("/")[1]) - 1 for c in line.split()[1:]])
+    vt = np.array(vt)
+    m = cgogn.load(str(path))
+    assert ("tex_coord", "float64", 2) in m.attributes("corner")
+    uv = m.attribute("tex_coord", "corner")
+    offsets, corners = m.corners_csr()
+    f_offsets, f_vertices = m.faces_csr()
+    assert np.array_equal(offsets, f_offsets) and len(faces) == len(offsets) - 1
+    for k, face in enumerate(faces):  # the file's faces in order, each from its first corner
+        assert np.allclose(uv[corners[offsets[k]:offsets[k + 1]]], vt[face])
+    assert m.nb_cells("corner") == len(corners)
+    with pytest.raises(ValueError):
+        m.incidence("corner", "vertex")
+    lo, hi = vt.min(axis=0), vt.max(axis=0)
+    m.subdivide("catmull-clark", 1)
+    uv = m.attribute("tex_coord", "corner")
+    offsets, corners = m.corners_csr()
+    _, vertices = m.faces_csr()
+    assert (uv[corners] >= lo - 1e-12).all() and (uv[corners] <= hi + 1e-12).all()
+    # a seam: some vertex has corners of different texture coordinates
+    per_vertex = {}
+    for v, c in zip(vertices, corners):
+        per_vertex.setdefault(v, set()).add(tuple(np.round(uv[c], 12)))
+    assert any(len(s) > 1 for s in per_vertex.values())

@@ -99,7 +99,10 @@ bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const
 		const auto phi1_of = detail::state_of(m).phi1->view();
 		const auto other_end = [phi1_of](uint32 d) -> uint32 {
 			if constexpr (is_gmap_v<MAP>)
+			{
+				(void)phi1_of; // captured for the 3-map branch
 				return d ^ 1u;
+			}
 			else
 				return phi1_of[d];
 		};
