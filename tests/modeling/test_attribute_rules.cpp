@@ -8,10 +8,12 @@
 // from (checked against record_origins), untouched cells keep their values.
 #include <cgogn/cgogn.h>
 
+#include "../core/map_test_utils.h"
 #include "modeling_test_utils.h"
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -28,29 +30,28 @@ using Corner = CMap2::HalfEdge;
 namespace
 {
 
-/// The first cell of type CELL for which pred holds.
+/// The first cell of type CELL (for which pred holds).
 template <typename CELL, typename MAP, typename PRED>
 CELL test_first(const MAP& m, const PRED& pred)
 {
-	CELL found;
-	foreach_cell(m, [&](CELL c) {
-		if (!pred(c))
-			return true;
-		found = c;
-		return false;
-	});
-	return found;
+	return test::find<CELL>(m, pred);
 }
 template <typename CELL, typename MAP>
 CELL test_first(const MAP& m)
 {
-	return test_first<CELL>(m, [](CELL) { return true; });
+	return test::find<CELL>(m, [](CELL) { return true; });
 }
 
-std::shared_ptr<AttributeArray<Vec3>> build_positioned(CMap2& m, const SurfaceSoup& s)
+/// Builds a surface or volume soup into m, with a "position" attribute.
+template <typename MAP, typename SOUP>
+std::shared_ptr<AttributeArray<Vec3>> build_positioned(MAP& m, const SOUP& s)
 {
-	const BuildReport r = build_surface(m, s);
-	auto pos = add_attribute<Vec3, Vertex>(m, "position");
+	BuildReport r;
+	if constexpr (std::is_same_v<SOUP, VolumeSoup>)
+		r = build_volume(m, s);
+	else
+		r = build_surface(m, s);
+	auto pos = add_attribute<Vec3, typename mesh_traits<MAP>::Vertex>(m, "position");
 	for (uint32 i = 0; i < s.nb_vertices; ++i)
 		(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	return pos;
@@ -259,11 +260,7 @@ TEST(AttributeRules, SplitsAndMergesOfVolumes)
 	// hexahedral subdivision: every child keeps its parent's material, new
 	// vertices stay in the range of the old values
 	CMap3 h;
-	auto pos = add_attribute<Vec3, CMap3::Vertex>(h, "position");
-	const VolumeSoup s = hex_grid_soup(2, 1, 1);
-	const BuildReport hr = build_volume(h, s);
-	for (uint32 i = 0; i < s.nb_vertices; ++i)
-		(*pos)[hr.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	auto pos = build_positioned(h, hex_grid_soup(2, 1, 1));
 	auto ht = add_attribute<double, CMap3::Vertex>(h, "temperature");
 	auto hm = add_attribute<int32, CMap3::Volume>(h, "material");
 	foreach_cell(h, [&](CMap3::Vertex x) { value<double>(h, ht, x) = value<Vec3>(h, pos, x).x(); });
@@ -284,11 +281,7 @@ TEST(AttributeRules, SplitsAndMergesOfVolumes)
 
 	// tetrahedra: split_tetra and tet subdivision
 	CMap3 t;
-	auto tpos = add_attribute<Vec3, CMap3::Vertex>(t, "position");
-	const VolumeSoup ts = tet_grid_soup(1, 1, 1);
-	const BuildReport tr = build_volume(t, ts);
-	for (uint32 i = 0; i < ts.nb_vertices; ++i)
-		(*tpos)[tr.vertex_offset + i] = Vec3(ts.positions[i][0], ts.positions[i][1], ts.positions[i][2]);
+	auto tpos = build_positioned(t, tet_grid_soup(1, 1, 1));
 	auto tt = add_attribute<double, CMap3::Vertex>(t, "temperature");
 	auto tm = add_attribute<int32, CMap3::Volume>(t, "material");
 	foreach_cell(t, [&](CMap3::Vertex x) { value<double>(t, tt, x) = value<Vec3>(t, tpos, x).sum(); });
@@ -301,6 +294,23 @@ TEST(AttributeRules, SplitsAndMergesOfVolumes)
 	ASSERT_TRUE(check_integrity(t).ok());
 	EXPECT_DOUBLE_EQ(value<double>(t, tt, centre), mean);
 	foreach_incident_volume(t, centre, [&](CMap3::Volume w) { EXPECT_EQ(value<int32>(t, tm, w), m0); });
+	// the positions interpolate too (their rule, outside an algorithm): the
+	// field is still the sum of the coordinates at the centre
+	EXPECT_NEAR(value<double>(t, tt, centre), value<Vec3>(t, tpos, centre).sum(), 1e-12);
+
+	// tet subdivision of the split mesh: the 8 children of each tetrahedron
+	// keep its material, the linear field stays linear (new vertices at edge
+	// midpoints)
+	std::map<int32, uint32> parents, children; // by material
+	foreach_cell(t, [&](CMap3::Volume w) { ++parents[value<int32>(t, tm, w)]; });
+	modeling::tet_subdivision(t, *tpos);
+	ASSERT_TRUE(check_integrity(t).ok());
+	foreach_cell(t,
+				 [&](CMap3::Vertex x) { EXPECT_NEAR(value<double>(t, tt, x), value<Vec3>(t, tpos, x).sum(), 1e-12); });
+	foreach_cell(t, [&](CMap3::Volume w) { ++children[value<int32>(t, tm, w)]; });
+	EXPECT_EQ(children.size(), parents.size());
+	for (const auto& [material, n] : parents)
+		EXPECT_EQ(children[material], 8 * n) << "material " << material;
 }
 
 TEST(AttributeRules, SubdivisionSchemesKeepRegionsAndColours)
@@ -486,11 +496,7 @@ TEST(AttributeRules, GMapOperatorsFollowTheRules)
 
 	{
 		GMap2 g;
-		const SurfaceSoup ts = torus_soup(6, 4, true);
-		const BuildReport tr = build_surface(g, ts);
-		auto pos = add_attribute<Vec3, GMap2::Vertex>(g, "position");
-		for (uint32 i = 0; i < ts.nb_vertices; ++i)
-			(*pos)[tr.vertex_offset + i] = Vec3(ts.positions[i][0], ts.positions[i][1], ts.positions[i][2]);
+		auto pos = build_positioned(g, torus_soup(6, 4, true));
 		auto gr = add_attribute<int32, GMap2::Face>(g, "region");
 		foreach_cell(g, [&](GMap2::Face x) { value<int32>(g, gr, x) = 1 + int32(index_of(g, x) % 3); });
 		auto origin = record_origins<GMap2::Face>(g);
