@@ -66,11 +66,14 @@ inline AttributeRule attribute_rule(const AttributeBase& attr)
 class SuspendedRule
 {
 public:
+	/// Sets the rule of attr to None (nothing when it has none or was
+	/// removed from its map). O(attributes with a rule).
 	explicit SuspendedRule(AttributeBase& attr) : attr_(attr), rule_(attr.rule())
 	{
 		if (rule_ != AttributeRule::None && attr_.container() != nullptr)
 			attr_.container()->set_rule(attr_, AttributeRule::None);
 	}
+	/// Gives the attribute its rule back. O(attributes with a rule).
 	~SuspendedRule()
 	{
 		if (rule_ != AttributeRule::None && attr_.container() != nullptr)
