@@ -5,7 +5,6 @@
 #include <cgogn/core/properties/properties.h>
 
 #include "cmap3_build.h"
-#include "index_lines.h"
 #include "reindex.h"
 
 #include <algorithm>
@@ -285,8 +284,6 @@ CMap3::Vertex cut_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 	std::vector<Dart> ring;
 	foreach_dart_of_orbit(m, e, [&](Dart d) { ring.push_back(d); });
 	detail::RegionReindexer<CMap3> reindexer;
-	const bool rules = set_indices && detail::has_rules(m);
-	const uint32 edge_line = rules ? detail::index_or_invalid<CMap3::Edge::ORBIT>(m, e.dart) : INVALID_INDEX;
 	if (set_indices)
 		reindexer.record(m, ring);
 	std::vector<Dart> p2(ring.size()), p3(ring.size()), added(ring.size());
@@ -314,12 +311,12 @@ CMap3::Vertex cut_edge(CMap3& m, CMap3::Edge e, bool set_indices)
 		std::vector<Dart> region = ring;
 		region.insert(region.end(), added.begin(), added.end());
 		reindexer.apply(m, region);
-		// rules: the new vertex between the ends (and each of its corners
-		// between the corners of the ends), the new half a copy of the edge
-		if (rules)
+		// rules: the new vertex between the ends, each of its corners between
+		// the corners of the ends (the reindexing gave the new half of the
+		// edge the edge's values)
+		if (detail::has_rules(m))
 		{
 			detail::inherit_midpoint<CMap3::Vertex::ORBIT>(m, added[0], ring[0], phi1(m, added[0]));
-			detail::inherit_split<CMap3::Edge::ORBIT>(m, ring[0], added[0], edge_line);
 			if (container_of<Orbit::DART>(m).has_rules())
 				for (std::size_t i = 0; i < ring.size(); ++i)
 					detail::inherit_midpoint<Orbit::DART>(m, added[i], ring[i], phi1(m, added[i]));
@@ -341,8 +338,6 @@ CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices)
 	std::vector<Dart> region = face_darts(m, d);
 	for (Dart x : face_darts(m, dB))
 		region.push_back(x);
-	const bool rules = set_indices && detail::has_rules(m);
-	const uint32 face_line = rules ? detail::index_or_invalid<CMap3::Face::ORBIT>(m, d) : INVALID_INDEX;
 	if (set_indices)
 		reindexer.record(m, region);
 	auto cut = [&](Dart a, Dart b) {
@@ -366,11 +361,11 @@ CMap3::Edge cut_face(CMap3& m, Dart d, Dart e, bool set_indices)
 	{
 		region.insert(region.end(), {x, y, xB, yB});
 		reindexer.apply(m, region);
-		// rules: each part of the face a copy of it, each new corner a part
-		// of the corner it cut; the new edge has no parent edge
-		if (rules)
+		// rules: each new corner a part of the corner it cut (the reindexing
+		// gave the new part of the face the face's values; the new edge has
+		// no parent edge)
+		if (detail::has_rules(m))
 		{
-			detail::inherit_split<CMap3::Face::ORBIT>(m, x, y, face_line);
 			detail::inherit<Orbit::DART>(m, x, e);
 			detail::inherit<Orbit::DART>(m, y, d);
 			detail::inherit<Orbit::DART>(m, xB, eB);
@@ -418,9 +413,6 @@ CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices
 	detail::RegionReindexer<CMap3> reindexer;
 	std::vector<Dart> region = path;
 	region.insert(region.end(), q.begin(), q.end());
-	const uint32 volume_line = set_indices && detail::has_rules(m)
-								   ? detail::index_or_invalid<CMap3::Volume::ORBIT>(m, path[0])
-								   : INVALID_INDEX;
 	if (set_indices)
 		reindexer.record(m, region);
 	for (std::size_t i = 0; i < k; ++i)
@@ -443,10 +435,9 @@ CMap3::Face cut_volume(CMap3& m, const std::vector<Dart>& path, bool set_indices
 	{
 		region.insert(region.end(), f.begin(), f.end());
 		region.insert(region.end(), g.begin(), g.end());
+		// the reindexing gives the new part of the volume the volume's
+		// values; the new face has no parent face
 		reindexer.apply(m, region);
-		// rules: each part of the volume a copy of it; the new face has no
-		// parent face
-		detail::inherit_split<CMap3::Volume::ORBIT>(m, path[0], q[0], volume_line);
 	}
 	return CMap3::Face(f[0]);
 }

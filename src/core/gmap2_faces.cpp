@@ -54,8 +54,6 @@ GMap2::Vertex triangulate_face(GMap2& m, GMap2::Face f, bool set_indices)
 	for (Dart x : xs)
 		region.push_back(beta0(m, x));
 	detail::RegionReindexer<GMap2> reindex;
-	const bool rules = set_indices && detail::has_rules(m);
-	const uint32 face_line = rules ? detail::index_or_invalid<GMap2::Face::ORBIT>(m, f.dart) : INVALID_INDEX;
 	if (set_indices)
 		reindex.record(m, region);
 	// triangle i: x_i, y_i, then s_i (at y_i's vertex), its beta0 s0_i at the
@@ -87,13 +85,10 @@ GMap2::Vertex triangulate_face(GMap2& m, GMap2::Face f, bool set_indices)
 	if (set_indices)
 	{
 		reindex.apply(m, region);
-		// rules: the centre the mean of the face's vertices, each triangle a
-		// part of the face
-		if (rules)
-		{
+		// rules: the centre is the mean of the face's vertices (the reindexing
+		// gave each new triangle the face's values)
+		if (detail::has_rules(m))
 			detail::inherit_mean<GMap2::Vertex::ORBIT>(m, s0[0], xs);
-			detail::inherit_parts<GMap2::Face::ORBIT>(m, xs, face_line);
-		}
 	}
 	return GMap2::Vertex(s0[0]);
 }

@@ -5,7 +5,6 @@
 #include <cgogn/core/operators/gmap2.h>
 
 #include "gmap_darts.h"
-#include "index_lines.h"
 #include "reindex.h"
 
 #include <cassert>
@@ -19,9 +18,8 @@ GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices)
 	std::vector<Dart> region(old.begin(), old.end());
 	detail::RegionReindexer<GMap2> reindex;
 	const bool rules = set_indices && detail::has_rules(m);
-	const uint32 edge_line = rules ? detail::index_or_invalid<GMap2::Edge::ORBIT>(m, e.dart) : INVALID_INDEX;
 	// a dart at the far end that the cut does not move: old[1], the beta0
-	// of e.dart, moves to the new vertex (the near half keeps both)
+	// of e.dart, moves to the new vertex
 	const Dart far_end = rules ? beta1(m, old[1]) : Dart();
 	if (set_indices)
 		reindex.record(m, region);
@@ -30,11 +28,13 @@ GMap2::Vertex cut_edge(GMap2& m, GMap2::Edge e, bool set_indices)
 	if (set_indices)
 	{
 		reindex.apply(m, region);
-		// rules: the new vertex between the ends, the new half a copy of the edge
+		// rules: the new vertex between the ends; the new half of the edge,
+		// made of new darts only (the reindexing cannot tell it is a part of
+		// the edge), a copy of the half that kept the edge's darts
 		if (rules)
 		{
 			detail::inherit_midpoint<GMap2::Vertex::ORBIT>(m, added[0], old[0], far_end);
-			detail::inherit_split<GMap2::Edge::ORBIT>(m, old[0], added[0], edge_line);
+			detail::inherit<GMap2::Edge::ORBIT>(m, added[0], old[0]);
 		}
 	}
 	return GMap2::Vertex(added[0]);
@@ -97,19 +97,12 @@ GMap2::Edge cut_face(GMap2& m, GMap2::Vertex v1, GMap2::Vertex v2, bool set_indi
 	const Dart d = v1.dart, e = v2.dart;
 	std::vector<Dart> region{d, beta1(m, d), e, beta1(m, e)};
 	detail::RegionReindexer<GMap2> reindex;
-	const uint32 face_line =
-		set_indices && detail::has_rules(m) ? detail::index_or_invalid<GMap2::Face::ORBIT>(m, d) : INVALID_INDEX;
 	if (set_indices)
 		reindex.record(m, region);
 	const detail::FaceSideCut c = detail::split_face_side(m, d, e);
 	region.insert(region.end(), {c.p, c.p0, c.q, c.q0});
 	if (set_indices)
-	{
 		reindex.apply(m, region);
-		// rules: each part of the face a copy of it (d and its old beta1,
-		// region[1], end up in the two parts); the new edge has no parent
-		detail::inherit_split<GMap2::Face::ORBIT>(m, d, region[1], face_line);
-	}
 	return GMap2::Edge(c.p);
 }
 

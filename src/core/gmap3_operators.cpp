@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Operators of 3-G-maps: cut and merge edges, faces and volumes; sew and
 // unsew volumes.
+#include <cgogn/core/attributes/attribute_rules.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/operators/gmap3.h>
 #include <cgogn/core/properties/gmap_properties.h>
@@ -36,12 +37,23 @@ GMap3::Vertex cut_edge(GMap3& m, GMap3::Edge e, bool set_indices)
 {
 	std::vector<Dart> region = detail::orbit_darts(m, e);
 	detail::RegionReindexer<GMap3> reindex;
+	const bool rules = set_indices && detail::has_rules(m);
+	// a dart at the far end that the cut does not move (it moves beta0 of
+	// e.dart to the new vertex)
+	const Dart far_end = rules ? beta1(m, beta0(m, e.dart)) : Dart();
 	if (set_indices)
 		reindex.record(m, region);
 	const std::vector<Dart> added = detail::insert_vertex_in_edge(m, e.dart);
 	region.insert(region.end(), added.begin(), added.end());
 	if (set_indices)
 		reindex.apply(m, region);
+	// rules, as in a 2-G-map: the new vertex between the ends, the new half
+	// of the edge (new darts only) a copy of the edge
+	if (rules)
+	{
+		detail::inherit_midpoint<GMap3::Vertex::ORBIT>(m, added[0], e.dart, far_end);
+		detail::inherit<GMap3::Edge::ORBIT>(m, added[0], e.dart);
+	}
 	return GMap3::Vertex(added[0]);
 }
 

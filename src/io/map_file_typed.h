@@ -32,8 +32,8 @@ std::shared_ptr<AttributeBase> add_attribute_of_orbit(AttributeContainer& c, Orb
 			...);
 	}
 	(std::make_index_sequence<uint32(Orbit::NB_ORBITS)>{});
-	if (a && default_rule<T>() != AttributeRule::None)
-		c.set_rule(*a, default_rule<T>());
+	if (a)
+		c.set_default_rule<T>(*a);
 	return a;
 }
 

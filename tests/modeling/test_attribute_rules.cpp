@@ -9,6 +9,7 @@
 #include <cgogn/cgogn.h>
 
 #include "../core/map_test_utils.h"
+#include "../io/io_test_utils.h"
 #include "modeling_test_utils.h"
 
 #include <gtest/gtest.h>
@@ -42,19 +43,12 @@ CELL test_first(const MAP& m)
 	return test::find<CELL>(m, [](CELL) { return true; });
 }
 
-/// Builds a surface or volume soup into m, with a "position" attribute.
+/// Builds a surface or volume soup into m; returns its "position" attribute.
 template <typename MAP, typename SOUP>
 std::shared_ptr<AttributeArray<Vec3>> build_positioned(MAP& m, const SOUP& s)
 {
-	BuildReport r;
-	if constexpr (std::is_same_v<SOUP, VolumeSoup>)
-		r = build_volume(m, s);
-	else
-		r = build_surface(m, s);
-	auto pos = add_attribute<Vec3, typename mesh_traits<MAP>::Vertex>(m, "position");
-	for (uint32 i = 0; i < s.nb_vertices; ++i)
-		(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
-	return pos;
+	io_test::build_with_positions(m, s);
+	return get_attribute<Vec3, typename mesh_traits<MAP>::Vertex>(m, "position");
 }
 
 /// A torus with a colour per vertex (from its position), a region per face

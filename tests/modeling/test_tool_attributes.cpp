@@ -34,11 +34,8 @@ struct Input
 Input write_input(const std::string& path, bool with_holes)
 {
 	CMap2 m;
-	const SurfaceSoup s = sphere_soup(16, 10, true);
-	const BuildReport b = build_surface(m, s);
-	auto pos = add_attribute<Vec3, CMap2::Vertex>(m, "position");
-	for (uint32 i = 0; i < s.nb_vertices; ++i)
-		(*pos)[b.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	build_with_positions(m, sphere_soup(16, 10, true));
+	auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
 	if (with_holes)
 	{
 		std::vector<CMap2::Face> faces;

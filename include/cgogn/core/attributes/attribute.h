@@ -246,13 +246,13 @@ public:
 		case AttributeRule::Interpolate:
 			if constexpr (LinearValue<T>)
 			{
-				(*this)[dst] = linear_combination<T>(
+				(*this)[dst] = detail::linear_combination<T>(
 					src.size(), [&](std::size_t k) -> const T& { return (*this)[src[k]]; }, w);
 				return;
 			}
 			[[fallthrough]];
 		case AttributeRule::Copy: {
-			const uint32 from = src[heaviest(w)];
+			const uint32 from = src[detail::heaviest(w)];
 			if (from != dst)
 				(*this)[dst] = (*this)[from];
 			return;

@@ -109,6 +109,14 @@ public:
 		if (map_rule_count_ != nullptr && was_ruled != (r != AttributeRule::None))
 			*map_rule_count_ = was_ruled ? *map_rule_count_ - 1 : *map_rule_count_ + 1;
 	}
+	/// Gives attribute a, of type T, its type's default rule (default_rule<T>():
+	/// what add_attribute and the map file reader give new attributes).
+	template <typename T>
+	void set_default_rule(AttributeBase& a)
+	{
+		if constexpr (default_rule<T>() != AttributeRule::None)
+			set_rule(a, default_rule<T>());
+	}
 	/// Makes the container count its attributes with a rule in *count too
 	/// (the map's total, see MapState::nb_ruled_attributes).
 	void count_rules_in(uint32* count)

@@ -54,6 +54,9 @@ template <typename T>
 concept LinearValue = std::floating_point<T> || detail::is_float_array<T>::value ||
 	(!std::is_arithmetic_v<T> && requires(const T& a, double w) { T(a * w + a * w); });
 
+namespace detail
+{
+
 /// sum_k w[k] * value(k) for k < n, computed in a temporary (so the result
 /// may overwrite a parent). O(n).
 template <LinearValue T, typename VALUE>
@@ -66,7 +69,7 @@ T linear_combination(std::size_t n, const VALUE& value, std::span<const double> 
 			sum += w[k] * double(value(k));
 		return T(sum);
 	}
-	else if constexpr (detail::is_float_array<T>::value)
+	else if constexpr (is_float_array<T>::value)
 	{
 		T sum{};
 		for (std::size_t k = 0; k < n; ++k)
@@ -92,6 +95,8 @@ inline std::size_t heaviest(std::span<const double> w)
 			best = k;
 	return best;
 }
+
+} // namespace detail
 
 /// The rule add_attribute gives a new attribute of type T: Copy for
 /// integers, booleans and strings (tags: a child cell is in its parent's

@@ -18,9 +18,7 @@
 
 #include <cgogn/core/attributes/attributes.h>
 
-#include <algorithm>
 #include <array>
-#include <initializer_list>
 #include <memory>
 #include <span>
 #include <string>
@@ -119,10 +117,11 @@ inline bool has_rules(const CMapBase& m)
 }
 
 /// Applies the rules of the attributes of orbit O to the cell of dart
-/// `child` from the cells of `parents` with weights `w` (summing to 1).
-/// Parents without a line (boundary cells) are left out and the others'
-/// weights scaled back to a sum of 1. One test when no attribute of O has a
-/// rule; else O(parents + rules x parents).
+/// `child` from the cells of `parents` with weights `w` (summing to 1; an
+/// empty `w` gives every parent the same weight). Parents without a line
+/// (boundary cells) are left out and the others' weights scaled back to a
+/// sum of 1. One test when no attribute of O has a rule; else O(parents +
+/// rules x parents), allocating only beyond 8 parents.
 template <Orbit O>
 void inherit(CMapBase& m, Dart child, std::span<const Dart> parents, std::span<const double> w)
 {
@@ -154,8 +153,8 @@ void inherit(CMapBase& m, Dart child, std::span<const Dart> parents, std::span<c
 		if (line == INVALID_INDEX)
 			continue;
 		lines[n] = line;
-		weights[n] = w[k];
-		sum += w[k];
+		weights[n] = w.empty() ? 1.0 : w[k];
+		sum += weights[n];
 		++n;
 	}
 	if (n == 0)
@@ -184,42 +183,8 @@ void inherit_line(CMapBase& m, uint32 dst, uint32 src)
 template <Orbit O>
 void inherit(CMapBase& m, Dart child, Dart parent)
 {
-	if (!container_of<O>(m).has_rules())
-		return;
-	const double one = 1.0;
-	inherit<O>(m, child, std::span<const Dart>(&parent, 1), std::span<const double>(&one, 1));
-}
-
-/// After an operator split the cell of orbit O that had line `old_line` in
-/// two, the cells of a and b: the part given a new line inherits from the
-/// part that kept old_line. Nothing when neither or both kept it.
-template <Orbit O>
-void inherit_split(CMapBase& m, Dart a, Dart b, uint32 old_line)
-{
-	if (!container_of<O>(m).has_rules() || old_line == INVALID_INDEX)
-		return;
-	const uint32 la = index_of(m, Cell<O>(a)), lb = index_of(m, Cell<O>(b));
-	if (la == old_line && lb != old_line)
-		inherit<O>(m, b, a);
-	else if (lb == old_line && la != old_line)
-		inherit<O>(m, a, b);
-}
-
-/// The same for a cell split in any number of parts, the cells of `parts`:
-/// those given a new line inherit from the one that kept old_line (nothing
-/// when none did). O(parts) when some attribute of O has a rule.
-template <Orbit O>
-void inherit_parts(CMapBase& m, std::span<const Dart> parts, uint32 old_line)
-{
-	if (!container_of<O>(m).has_rules() || old_line == INVALID_INDEX)
-		return;
-	const auto keeper =
-		std::find_if(parts.begin(), parts.end(), [&](Dart d) { return index_of(m, Cell<O>(d)) == old_line; });
-	if (keeper == parts.end())
-		return;
-	for (Dart d : parts)
-		if (index_of(m, Cell<O>(d)) != old_line)
-			inherit<O>(m, d, *keeper);
+	if (container_of<O>(m).has_rules())
+		inherit_line<O>(m, index_of(m, Cell<O>(child)), index_of(m, Cell<O>(parent)));
 }
 
 /// The same for two parents of equal weight (a vertex in the middle of an
@@ -239,10 +204,7 @@ void inherit_midpoint(CMapBase& m, Dart child, Dart a, Dart b)
 template <Orbit O>
 void inherit_mean(CMapBase& m, Dart child, std::span<const Dart> parents)
 {
-	if (!container_of<O>(m).has_rules() || parents.empty())
-		return;
-	const std::vector<double> w(parents.size(), 1.0 / double(parents.size()));
-	inherit<O>(m, child, parents, w);
+	inherit<O>(m, child, parents, {});
 }
 
 /// The values of the attributes of a container that have a rule, saved
@@ -295,21 +257,19 @@ private:
 } // namespace detail
 
 /// Applies the rules of the attributes of CELL's orbit to cell `dst` from
-/// cells `parents` with weights `w` (as many, summing to 1; dst may be one
-/// of them): for algorithms that know better parents than an operator,
+/// the N cells `parents` with weights `w` (summing to 1; dst may be one of
+/// the parents): for algorithms that know better parents than an operator,
 /// such as the kept end of a collapsed edge placed between its two ends.
-/// O(parents + rules x parents).
-template <typename CELL, typename MESH>
-void apply_attribute_rules(MESH& m, CELL dst, std::initializer_list<CELL> parents, std::initializer_list<double> w)
+/// Allocates nothing. O(N + rules x N).
+template <typename CELL, typename MESH, std::size_t N>
+void apply_attribute_rules(MESH& m, CELL dst, const CELL (&parents)[N], const double (&w)[N])
 {
-	assert(parents.size() == w.size());
 	if (!container_of<CELL::ORBIT>(map_of(m)).has_rules())
 		return;
-	std::vector<Dart> darts;
-	darts.reserve(parents.size());
-	for (CELL p : parents)
-		darts.push_back(p.dart);
-	detail::inherit<CELL::ORBIT>(map_of(m), dst.dart, darts, std::span<const double>(w.begin(), w.size()));
+	std::array<Dart, N> darts;
+	for (std::size_t k = 0; k < N; ++k)
+		darts[k] = parents[k].dart;
+	detail::inherit<CELL::ORBIT>(map_of(m), dst.dart, darts, std::span<const double>(w, N));
 }
 
 } // namespace cgogn

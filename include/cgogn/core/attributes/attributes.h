@@ -56,8 +56,7 @@ std::shared_ptr<CellAttribute<T, CELL::ORBIT>> add_attribute(MESH& m, const std:
 	auto& container = container_of<CELL::ORBIT>(map);
 	auto a =
 		container.template add_attribute<T, CellAttribute<T, CELL::ORBIT>>(name, detail::default_attribute_value<T>());
-	if constexpr (default_rule<T>() != AttributeRule::None)
-		container.set_rule(*a, default_rule<T>());
+	container.template set_default_rule<T>(*a);
 	return a;
 }
 
