@@ -124,7 +124,13 @@ requires is_nmap_v<MAP> CellD<0> insert_vertex_in_edge(MAP& m, CellD<1> e, bool 
 		}
 		if (set_indices)
 			reindexer.apply(m, region);
-		return CellD<0>(n[e.dart.index]);
+		// rules: the new vertex (new darts only) between the two ends; each
+		// half of the edge holds old and new darts, and the reindexing gives
+		// the half that lost the line the edge's values
+		const Dart nd = n[e.dart.index];
+		if (set_indices && detail::has_rules(m))
+			detail::inherit_midpoint<CellD<0>::ORBIT>(m, nd, e.dart, phi1(m, nd));
+		return CellD<0>(nd);
 	}
 	else
 	{
@@ -181,6 +187,10 @@ requires is_nmap_v<MAP> CellD<0> insert_vertex_in_edge(MAP& m, CellD<1> e, bool 
 		}
 		if (set_indices)
 			reindexer.apply(m, region);
+		// rules: the new vertex between e's end (A) and the far end (B, where
+		// the q darts stand)
+		if (set_indices && detail::has_rules(m))
+			detail::inherit_midpoint<CellD<0>::ORBIT>(m, Y[0], e.dart, beta0(m, P[0]));
 		return CellD<0>(Y[0]);
 	}
 }

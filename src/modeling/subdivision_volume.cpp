@@ -15,7 +15,9 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <vector>
 
 namespace cgogn::modeling
@@ -128,15 +130,91 @@ void number_vertices_edges_faces(const CMap3& m, const AttributeArray<Vec3>& pos
 	});
 }
 
+/// The old edges or faces of m by the sorted lines of their vertices, taken
+/// before the map is rebuilt: a new edge or face lies on the old one whose
+/// vertices are the old vertices its own vertices come from. O(cells x
+/// degree x log cells) to collect.
+class CellsByVertices
+{
+public:
+	template <typename CELL>
+	void collect(const CMap3& m)
+	{
+		std::vector<uint32> key;
+		foreach_cell(m, [&](CELL c) {
+			key.clear();
+			Dart d = c.dart;
+			do
+			{
+				key.push_back(index_of(m, Vertex(d)));
+				d = phi1(m, d);
+			} while (d != c.dart && std::is_same_v<CELL, Face>);
+			if constexpr (std::is_same_v<CELL, Edge>)
+				key.push_back(index_of(m, Vertex(phi1(m, c.dart))));
+			std::sort(key.begin(), key.end());
+			line_.emplace(key, index_of(m, c));
+		});
+	}
+	/// The old cell whose vertices are `lines` (sorted and made unique
+	/// here), or INVALID_INDEX.
+	uint32 find(std::vector<uint32>& lines) const
+	{
+		std::sort(lines.begin(), lines.end());
+		lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
+		const auto it = line_.find(lines);
+		return it == line_.end() ? INVALID_INDEX : it->second;
+	}
+
+private:
+	std::map<std::vector<uint32>, uint32> line_;
+};
+
+/// Applies the rules of the edges (faces) of the rebuilt map: a new cell
+/// lying on an old one copies it; the others (inside an old face or
+/// volume) keep the default value, as with cut_face and cut_volume.
+template <typename CELL>
+void apply_cell_rules(const CMap3& m, detail::RuleSnapshot& rules, const CellsByVertices& old, const Refinement& r,
+					  uint32 vertex_offset)
+{
+	std::vector<uint32> lines;
+	const double one = 1.0;
+	foreach_cell(m, [&](CELL c) {
+		lines.clear();
+		auto add_parents = [&](Dart d) {
+			const uint32 id = index_of(m, Vertex(d)) - vertex_offset;
+			lines.insert(lines.end(), r.parent_lines.begin() + r.parent_offsets[id],
+						 r.parent_lines.begin() + r.parent_offsets[id + 1]);
+		};
+		Dart d = c.dart;
+		do
+		{
+			add_parents(d);
+			d = phi1(m, d);
+		} while (d != c.dart && std::is_same_v<CELL, Face>);
+		if constexpr (std::is_same_v<CELL, Edge>)
+			add_parents(phi1(m, c.dart));
+		if (const uint32 parent = old.find(lines); parent != INVALID_INDEX)
+			rules.apply(index_of(m, c), std::span(&parent, 1), std::span(&one, 1));
+	});
+}
+
 /// Removes every dart and cell of m, keeping its attributes (and whether each
 /// orbit is indexed), then builds the listed cells into it. Attributes with
 /// a rule (attribute_rules.h): a new vertex gets it from its parents (equal
-/// weights), a new cell from its old volume; new faces and edges hold the
-/// default value.
+/// weights), a new cell from its old volume, a new edge or face that lies
+/// on an old one from it; edges and faces inside an old face or volume
+/// hold the default value.
 void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 cell_size, uint32 darts_per_cell)
 {
 	detail::RuleSnapshot vertex_rules(container_of<Vertex::ORBIT>(m));
 	detail::RuleSnapshot volume_rules(container_of<Volume::ORBIT>(m));
+	detail::RuleSnapshot edge_rules(container_of<Edge::ORBIT>(m));
+	detail::RuleSnapshot face_rules(container_of<Face::ORBIT>(m));
+	CellsByVertices old_edges, old_faces;
+	if (!edge_rules.empty())
+		old_edges.collect<Edge>(m);
+	if (!face_rules.empty())
+		old_faces.collect<Face>(m);
 	clear(m);
 	const std::vector<uint32> sizes(r.cell_vertices.size() / cell_size, cell_size);
 	const BuildReport report = build_volume(m, uint32(r.positions.size()), sizes, r.cell_vertices);
@@ -159,6 +237,10 @@ void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 ce
 			volume_rules.apply(index_of(m, Volume(Dart(k * darts_per_cell))), std::span(&r.cell_parent[k], 1),
 							   std::span(&one, 1));
 	}
+	if (!edge_rules.empty())
+		apply_cell_rules<Edge>(m, edge_rules, old_edges, r, report.vertex_offset);
+	if (!face_rules.empty())
+		apply_cell_rules<Face>(m, face_rules, old_faces, r, report.vertex_offset);
 }
 
 // ---- tetrahedra

@@ -327,7 +327,61 @@ void random_sewing(uint32 steps, uint32 seed)
 	EXPECT_GT(done[1], 0u);
 }
 
+// Attribute rules through insertions: a vertex inserted in an edge gets the
+// mean of the edge's two ends; both halves of the edge keep its tag; an
+// edge inserted across a face splits it into two faces of its tag, and
+// the new edge itself holds the default (0).
+template <typename MAP>
+void check_insertion_rules()
+{
+	SCOPED_TRACE(std::string(is_gmap_v<MAP> ? "GMapN<" : "CMapN<") + std::to_string(MAP::dimension) + ">");
+	MAP m;
+	generate_cube_grid(m, 2);
+	index_every_dimension(m);
+	auto heat = add_attribute<double, CellD<0>>(m, "heat");
+	auto edge_tag = add_attribute<int32, CellD<1>>(m, "tag");
+	auto face_tag = add_attribute<int32, CellD<2>>(m, "tag");
+	foreach_cell(m, [&](CellD<0> v) { (*heat)[index_of(m, v)] = 1.5 * double(index_of(m, v)); });
+	foreach_cell(m, [&](CellD<1> e) { (*edge_tag)[index_of(m, e)] = 1 + int32(index_of(m, e)); });
+	foreach_cell(m, [&](CellD<2> f) { (*face_tag)[index_of(m, f)] = 1 + int32(index_of(m, f)); });
+	auto count = [&](const auto& attribute, int32 value, auto cell) {
+		uint32 n = 0;
+		foreach_cell(m, [&](decltype(cell) c) { n += (*attribute)[index_of(m, c)] == value; });
+		return n;
+	};
+
+	const CellD<1> e = cells_of<1>(m)[3];
+	Dart far;
+	if constexpr (is_gmap_v<MAP>)
+		far = beta<0>(m, e.dart);
+	else
+		far = phi<1>(m, e.dart);
+	const double mean = 0.5 * ((*heat)[index_of(m, CellD<0>(e.dart))] + (*heat)[index_of(m, CellD<0>(far))]);
+	const int32 t = (*edge_tag)[index_of(m, e)];
+	const CellD<0> v = insert_vertex_in_edge(m, e);
+	expect_ok(m);
+	EXPECT_DOUBLE_EQ((*heat)[index_of(m, v)], mean);
+	EXPECT_EQ(count(edge_tag, t, CellD<1>()), 2u);
+
+	const CellD<2> f = cells_of<2>(m)[2];
+	const int32 ft = (*face_tag)[index_of(m, f)];
+	const CellD<1> across = insert_edge_in_face(m, f.dart, next_corner(m, f.dart, 2));
+	expect_ok(m);
+	EXPECT_EQ(count(face_tag, ft, CellD<2>()), 2u);
+	EXPECT_EQ((*edge_tag)[index_of(m, across)], 0);
+}
+
 } // namespace
+
+TEST(NMapOperators, InsertionsFollowTheAttributeRules)
+{
+	check_insertion_rules<CMapN<2>>();
+	check_insertion_rules<GMapN<2>>();
+	check_insertion_rules<CMapN<3>>();
+	check_insertion_rules<GMapN<3>>();
+	check_insertion_rules<CMapN<4>>();
+	check_insertion_rules<GMapN<4>>();
+}
 
 TEST(NMapOperators, InsertionsAreUndoneByRemovalAndContraction)
 {

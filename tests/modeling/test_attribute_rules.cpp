@@ -12,6 +12,7 @@
 #include "../io/io_test_utils.h"
 #include "modeling_test_utils.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <map>
@@ -305,6 +306,71 @@ TEST(AttributeRules, SplitsAndMergesOfVolumes)
 	EXPECT_EQ(children.size(), parents.size());
 	for (const auto& [material, n] : parents)
 		EXPECT_EQ(children[material], 8 * n) << "material " << material;
+}
+
+// Volume subdivision of a grid with a tag on every face and edge: each
+// new face (edge) on an old one has its tag, and lies inside its box;
+// faces and edges inside old faces or volumes have none (0).
+template <typename SUBDIVIDE>
+void expect_faces_and_edges_copied(CMap3& m, std::shared_ptr<AttributeArray<Vec3>> pos, const SUBDIVIDE& subdivide,
+								   uint32 faces_inside_per_volume)
+{
+	using Box = Eigen::AlignedBox<double, 3>;
+	auto bc = add_attribute<int32, CMap3::Face>(m, "bc");
+	auto crease = add_attribute<int32, CMap3::Edge>(m, "crease");
+	std::map<int32, Box> face_box, edge_box;
+	foreach_cell(m, [&](CMap3::Face f) {
+		const int32 tag = 1 + int32(index_of(m, f));
+		value<int32>(m, bc, f) = tag;
+		foreach_incident_vertex(m, f, [&](CMap3::Vertex v) { face_box[tag].extend(value<Vec3>(m, pos, v)); });
+	});
+	foreach_cell(m, [&](CMap3::Edge e) {
+		const int32 tag = 1 + int32(index_of(m, e));
+		value<int32>(m, crease, e) = tag;
+		foreach_incident_vertex(m, e, [&](CMap3::Vertex v) { edge_box[tag].extend(value<Vec3>(m, pos, v)); });
+	});
+	const uint32 nb_volumes = nb_cells<CMap3::Volume>(m);
+	subdivide(m, *pos);
+	ASSERT_TRUE(check_integrity(m).ok());
+	auto check = [&](auto cell, const std::shared_ptr<AttributeArray<int32>>& tag, std::map<int32, Box>& boxes,
+					 uint32 children) {
+		using CELL = decltype(cell);
+		std::map<int32, uint32> count;
+		uint32 outside = 0;
+		foreach_cell(m, [&](CELL c) {
+			const int32 t = value<int32>(m, tag, c);
+			++count[t];
+			if (t != 0)
+				foreach_incident_vertex(m, c, [&](CMap3::Vertex v) {
+					outside += boxes[t].exteriorDistance(value<Vec3>(m, pos, v)) > 1e-12;
+				});
+		});
+		EXPECT_EQ(outside, 0u);
+		for (const auto& [t, box] : boxes)
+			EXPECT_EQ(count[t], children) << "tag " << t;
+		return count[0];
+	};
+	EXPECT_EQ(check(CMap3::Face(), bc, face_box, 4), faces_inside_per_volume * nb_volumes);
+	const uint32 edges_inside = check(CMap3::Edge(), crease, edge_box, 2);
+	EXPECT_EQ(edges_inside + 2 * edge_box.size(), nb_cells<CMap3::Edge>(m));
+}
+
+TEST(AttributeRules, VolumeSubdivisionsCopyFacesAndEdgesOnOldOnes)
+{
+	{
+		SCOPED_TRACE("hexahedra");
+		CMap3 h;
+		auto pos = build_positioned(h, hex_grid_soup(2, 2, 1));
+		expect_faces_and_edges_copied(
+			h, pos, [](CMap3& m, AttributeArray<Vec3>& p) { modeling::hex_subdivision(m, p); }, 12);
+	}
+	{
+		SCOPED_TRACE("tetrahedra");
+		CMap3 t;
+		auto pos = build_positioned(t, tet_grid_soup(2, 1, 1));
+		expect_faces_and_edges_copied(
+			t, pos, [](CMap3& m, AttributeArray<Vec3>& p) { modeling::tet_subdivision(m, p); }, 8);
+	}
 }
 
 TEST(AttributeRules, SubdivisionSchemesKeepRegionsAndColours)
