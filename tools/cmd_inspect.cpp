@@ -329,7 +329,7 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 		});
 		return 0;
 	}
-	const bool volume_out = is_volume_format(format_of(out));
+	const io::Format out_format = format_of(out);
 	io::SaveOptions options;
 	options.binary = binary;
 	options.attributes = attributes;
@@ -337,14 +337,14 @@ int run_convert(const std::string& in, const std::string& out, bool binary, bool
 		progress.stage("writing " + out);
 		if constexpr (std::decay_t<decltype(m)>::dimension == 3)
 		{
-			if (!volume_out)
+			if (!is_volume_format(out_format))
 				throw io::Error(out, "a volume mesh cannot be written in a surface format");
 			io::save_volume(m, out, options);
 		}
 		else
 		{
-			if (volume_out)
-				throw io::Error(out, "a surface mesh cannot be written in a volume format");
+			if (!holds_surfaces(out_format))
+				throw io::Error(out, "a surface mesh cannot be written in a volume-only format (.node/.ele, .ovm)");
 			if (r.manifold())
 				io::save_surface(m, out, options);
 			else

@@ -38,7 +38,7 @@ bool is_volume_scheme(Scheme s)
 int run_subdivide(const SubdivideOptions& o)
 {
 	Progress progress;
-	const bool volume_in = is_volume_format(format_of(o.files.in));
+	const bool volume_in = is_volume_file(o.files.in);
 	if (volume_in != is_volume_scheme(o.scheme))
 		throw std::invalid_argument(o.files.in +
 									": the schemes loop, catmull-clark and sqrt3 take surfaces, hex and tet "

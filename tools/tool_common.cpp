@@ -45,6 +45,20 @@ bool is_volume_format(io::Format f)
 		   f == io::Format::TetGen || f == io::Format::Ovm;
 }
 
+bool holds_surfaces(io::Format f)
+{
+	return f != io::Format::TetGen && f != io::Format::Ovm;
+}
+
+bool is_volume_file(const std::string& path)
+{
+	const io::Format f = format_of(path);
+	if (!is_volume_format(f) || !holds_surfaces(f))
+		return is_volume_format(f);
+	CMap3 m;
+	return io::load_volume(m, path).nb_cells_read > 0;
+}
+
 namespace
 {
 // The extension of path from its last dot, lower-cased; empty without a dot.
@@ -92,7 +106,7 @@ io::Format format_of(const std::string& path)
 
 io::LoadReport load_surface_file(CMap2& m, const std::string& path, Progress& progress)
 {
-	if (is_volume_format(format_of(path)))
+	if (!holds_surfaces(format_of(path)))
 		throw io::Error(path, "this command works on surfaces; the file is a volume mesh");
 	progress.stage("loading " + path);
 	return io::load_surface(m, path);
@@ -103,8 +117,8 @@ namespace
 template <typename MAP>
 void save_surface_to(const MAP& m, const std::string& path, bool binary, Progress& progress)
 {
-	if (is_volume_format(format_of(path)))
-		throw io::Error(path, "a surface mesh cannot be written in a volume format");
+	if (!holds_surfaces(format_of(path)))
+		throw io::Error(path, "a surface mesh cannot be written in a volume-only format (.node/.ele, .ovm)");
 	progress.stage("writing " + path);
 	io::SaveOptions options;
 	options.binary = binary;

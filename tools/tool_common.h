@@ -48,7 +48,14 @@ private:
 	bool shown_ = false;
 };
 
+/// Whether f holds volume meshes (.mesh .vtk .vtu .msh .node/.ele .ovm).
 bool is_volume_format(io::Format f);
+/// Whether f holds surfaces: every format but .node/.ele and .ovm.
+bool holds_surfaces(io::Format f);
+/// Whether the file at path is a volume mesh: one of a volume-only format,
+/// or one of a format of both (.mesh .vtk .vtu .msh) with volume cells,
+/// which this loads to find out.
+bool is_volume_file(const std::string& path);
 
 /// Whether path names a .nmap file, a map of any dimension (by its
 /// extension, any case).
@@ -65,23 +72,27 @@ bool is_incidence_graph_file(const std::string& path);
 /// The format of path by its extension; throws io::Error when unknown.
 io::Format format_of(const std::string& path);
 
-/// Loads path into a CMap2 or a CMap3 (by format) and calls f(map, report).
+/// Loads path into a CMap3 when it is a volume mesh, else into a CMap2, and
+/// calls f(map, report). A file of a format of both (.mesh .vtk .vtu .msh)
+/// without volume cells is a surface: it is read twice.
 template <typename FUNC>
 void with_loaded(const std::string& path, Progress& progress, const FUNC& f)
 {
 	progress.stage("loading " + path);
-	if (is_volume_format(format_of(path)))
+	const io::Format format = format_of(path);
+	if (is_volume_format(format))
 	{
 		CMap3 m;
 		const io::LoadReport r = io::load_volume(m, path);
-		f(m, r);
+		if (r.nb_cells_read > 0 || !holds_surfaces(format))
+		{
+			f(m, r);
+			return;
+		}
 	}
-	else
-	{
-		CMap2 m;
-		const io::LoadReport r = io::load_surface(m, path);
-		f(m, r);
-	}
+	CMap2 m;
+	const io::LoadReport r = io::load_surface(m, path);
+	f(m, r);
 }
 
 /// As with_loaded, except that a mesh that cannot be oriented is loaded into
@@ -130,7 +141,8 @@ void with_loaded_whole(const std::string& path, Progress& progress, const FUNC& 
 	});
 }
 
-/// Loads a surface file (throws io::Error naming the file when it is a volume format).
+/// Loads a surface file (throws io::Error naming the file when it is a
+/// volume mesh).
 io::LoadReport load_surface_file(CMap2& m, const std::string& path, Progress& progress);
 
 /// Loads a surface file into a CMap2 and calls f(map), or, when the surface
@@ -153,7 +165,7 @@ void with_surface_whole(const std::string& path, Progress& progress, const FUNC&
 	f(g);
 }
 
-/// Saves a surface (throws io::Error when out names a volume format).
+/// Saves a surface (throws io::Error when out names a volume-only format).
 void save_surface_file(const CMap2& m, const std::string& path, bool binary, Progress& progress);
 /// The same for a GMap2.
 void save_surface_file(const GMap2& m, const std::string& path, bool binary, Progress& progress);

@@ -669,6 +669,12 @@ bool is_volume_format(io::Format f)
 		   f == io::Format::TetGen || f == io::Format::Ovm;
 }
 
+// Every format but the volume-only ones (node/ele, ovm).
+bool holds_surfaces(io::Format f)
+{
+	return f != io::Format::TetGen && f != io::Format::Ovm;
+}
+
 } // namespace
 
 void bind_maps(py::module_& mod)
@@ -697,7 +703,8 @@ void bind_maps(py::module_& mod)
 				io::save_surface(w.m, path, o);
 			},
 			py::arg("path"), py::arg("binary") = false,
-			"Writes the surface in the format of the extension (off, obj, ply, stl; binary for ply and stl), or "
+			"Writes the surface in the format of the extension (off, obj, ply, stl, msh, mesh, vtk, vtu; binary "
+			"for ply, stl, msh, vtk and vtu), or "
 			"the whole map to a .cgmap file (every attribute; cgogn.load reads it back). Raises cgogn.IOError on "
 			"failure.");
 
@@ -842,14 +849,21 @@ void bind_maps(py::module_& mod)
 				const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 				return map_from_bytes(bytes, path);
 			}
-			const bool volumes = is_volume_format(io::format_from_extension(path));
-			if (gmap)
-				return volumes ? py::cast(load_into<GMap3>(path)) : py::cast(load_into<GMap2>(path));
-			return volumes ? py::cast(load_into<CMap3>(path)) : py::cast(load_into<CMap2>(path));
+			const io::Format format = io::format_from_extension(path);
+			if (is_volume_format(format))
+			{
+				// a file of a format of both without volume cells is a surface
+				auto volume = gmap ? py::cast(load_into<GMap3>(path)) : py::cast(load_into<CMap3>(path));
+				if (!holds_surfaces(format) || volume.attr("nb_cells")("volume").cast<uint32>() > 0)
+					return volume;
+			}
+			return gmap ? py::cast(load_into<GMap2>(path)) : py::cast(load_into<CMap2>(path));
 		},
 		py::arg("path"), py::arg("gmap") = false,
 		"Loads a mesh file: a CMap2 for the surface formats (off, obj, ply, stl), a CMap3 for the volume "
-		"formats (mesh, vtk, vtu, msh, node/ele, ovm); with gmap=True a GMap2 or a GMap3, which keep a mesh that "
+		"formats (mesh, vtk, vtu, msh, node/ele, ovm), a CMap2 for a mesh, vtk, vtu or msh file without "
+		"volume cells (read twice: the faces and edges keep their tags); with gmap=True a GMap2 or a GMap3, which keep "
+		"a mesh that "
 		"cannot be oriented whole. A .nmap file gives the map of any dimension it holds (CMapN1 ... CMapN4, "
 		"GMapN1 ... GMapN4; with gmap=True a GMapN also for a CMapN file). A .cgmap file gives the map it "
 		"holds, exactly as saved (CMap2, CMap3, GMap2, GMap3, Graph, CMapN, GMapN). Raises cgogn.IOError "

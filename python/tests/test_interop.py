@@ -51,7 +51,7 @@ def test_pyvista_and_trimesh_when_installed(data):
 def tag_histogram(mesh, name):
     """{(cell kind, tag): count} of a meshio mesh's integer cell data `name`."""
     counts = {}
-    kinds = {"triangle": "face", "quad": "face", "tetra": "volume", "hexahedron": "volume"}
+    kinds = {"line": "edge", "triangle": "face", "quad": "face", "tetra": "volume", "hexahedron": "volume"}
     for block, values in zip(mesh.cells, mesh.cell_data[name]):
         for tag in values:
             key = (kinds[block.type], int(tag))
@@ -71,6 +71,22 @@ def test_gmsh_tags_seen_by_meshio_after_conversion(data, tmp_path, source, ext, 
     if ext != "mesh":
         assert tag_histogram(written, "gmsh:geometrical") == tag_histogram(original, "gmsh:geometrical")
     if ext == "msh":  # the names of the physical groups: {name: [tag, dimension]}
+        assert {k: list(v) for k, v in written.field_data.items()} == {k: list(v) for k, v in original.field_data.items()}
+
+
+@pytest.mark.parametrize("ext,binary", [("msh", False), ("msh", True), ("vtu", False), ("vtu", True), ("vtk", False), ("vtk", True), ("mesh", False)])
+def test_surface_tags_of_faces_and_edges_seen_by_meshio(data, tmp_path, ext, binary):
+    source = data / "gmsh" / "plate_v41.msh"
+    original = meshio.read(str(source))
+    expected = tag_histogram(original, "gmsh:physical")
+    assert {k for k, _ in expected} == {"face", "edge"}
+    m = cgogn.load(str(source))
+    assert isinstance(m, cgogn.CMap2)
+    out = tmp_path / ("plate." + ext)
+    m.save(str(out), binary=binary)
+    written = meshio.read(str(out))
+    assert tag_histogram(written, "medit:ref" if ext == "mesh" else "gmsh:physical") == expected
+    if ext == "msh":
         assert {k: list(v) for k, v in written.field_data.items()} == {k: list(v) for k, v in original.field_data.items()}
 
 

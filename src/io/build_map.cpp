@@ -79,6 +79,7 @@ void column_notes(const MeshData& d, const char* cell, std::vector<std::string>&
 	note(d.cell_columns, cell);
 	note(d.face_columns, "listed face");
 	note(d.corner_columns, "corner");
+	note(d.segment_columns, "listed edge");
 }
 
 // Everything about names that could make the build fail, checked before the
@@ -103,8 +104,17 @@ void check_names(const MAP& m, const MeshData& d, const std::string& path)
 	};
 	check(d.vertex_columns, static_cast<Vertex*>(nullptr));
 	check(d.cell_columns, static_cast<Top*>(nullptr));
-	if constexpr (MAP::dimension == 2)
+	if constexpr (MAP::dimension == 2 && !std::is_same_v<MAP, IncidenceGraph>)
+	{
+		using Edge = typename mesh_traits<MAP>::Edge;
 		check(d.corner_columns, static_cast<Cell<Orbit::DART>*>(nullptr));
+		check(d.segment_columns, static_cast<Edge*>(nullptr));
+		if (!d.physical_names.empty())
+		{
+			check_free_name<Top>(m, "gmsh:physical_name", typeid(std::string), path);
+			check_free_name<Edge>(m, "gmsh:physical_name", typeid(std::string), path);
+		}
+	}
 	if constexpr (MAP::dimension == 3)
 	{
 		check(d.face_columns, static_cast<typename mesh_traits<MAP>::Face*>(nullptr));
@@ -388,6 +398,54 @@ void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const s
 							  " listed face(s) with their data: no face of the volumes has their vertices");
 }
 
+// The listed edges of a surface (MeshData::segments) on the edges of m
+// between the same two vertices, with their columns and physical names;
+// what matches no edge is reported. O(edges of m + listed edges).
+template <typename MAP>
+void fill_listed_edges(MAP& m, const MeshData& d, const BuildReport& br, const std::string& path, LoadReport& rep)
+{
+	using Edge = typename mesh_traits<MAP>::Edge;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	if (!any_usable(d.segment_columns))
+		return;
+	auto key = [](uint32 a, uint32 b) { return (uint64(std::min(a, b)) << 32) | std::max(a, b); };
+	std::unordered_map<uint64, uint32> listed; // (lower, higher vertex) -> first listed edge
+	listed.reserve(d.segments.size());
+	uint32 nb_repeated = 0;
+	for (uint32 e = 0; e < uint32(d.segments.size()); ++e)
+		nb_repeated += !listed.try_emplace(key(d.segments[e].first, d.segments[e].second), e).second;
+	const FileVertexIds file_id(br, d.nb_vertices());
+	std::vector<std::pair<uint32, uint32>> found; // (edge line, listed edge)
+	std::vector<uint8> matched(d.segments.size(), 0);
+	index_cells<Edge>(m);
+	foreach_cell(m, [&](Edge e) {
+		Dart other;
+		if constexpr (is_gmap_v<MAP>)
+			other = beta0(m, e.dart);
+		else
+			other = phi1(m, e.dart);
+		const uint32 a = file_id(index_of(m, Vertex(e.dart))), b = file_id(index_of(m, Vertex(other)));
+		if (a == INVALID_INDEX || b == INVALID_INDEX)
+			return;
+		if (const auto it = listed.find(key(a, b)); it != listed.end())
+		{
+			found.emplace_back(index_of(m, e), it->second);
+			matched[it->second] = 1;
+		}
+	});
+	for (const auto& c : d.segment_columns)
+		if (usable(c))
+			fill_rows<Edge>(m, c, found, path);
+	name_physical_groups<Edge>(m, d, 1, found, path);
+	const auto unmatched = std::count(matched.begin(), matched.end(), uint8(0)) - nb_repeated;
+	if (unmatched > 0)
+		rep.dropped.push_back(std::to_string(unmatched) +
+							  " listed edge(s) with their data: no edge of the faces has their vertices");
+	if (nb_repeated > 0)
+		rep.dropped.push_back(std::to_string(nb_repeated) +
+							  " listed edge(s) repeating an earlier one: the edge holds the first one's data");
+}
+
 template <typename MAP>
 LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 {
@@ -503,8 +561,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 		for (const auto& c : d.cell_columns)
 			if (usable(c))
 				fill_rows<Top>(m, c, rows, path);
-		if constexpr (dim == 3)
-			name_physical_groups<Top>(m, d, 3, rows, path);
+		name_physical_groups<Top>(m, d, dim, rows, path);
 	}
 
 	rep.dropped = d.dropped;
@@ -512,9 +569,23 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	if constexpr (dim == 3)
 	{
 		fill_listed_faces(m, d, br, path, rep);
+		if (d.nb_faces() > 0 && d.face_columns.empty())
+			rep.dropped.push_back(std::to_string(d.nb_faces()) +
+								  " listed face(s) without data: the volume map has its own faces");
+		if (!d.segments.empty())
+			rep.dropped.push_back(std::to_string(d.segments.size()) +
+								  " listed edge(s) with their data: a volume map holds volumes and listed faces");
 		if (std::any_of(d.physical_names.begin(), d.physical_names.end(), [](const auto& p) { return p.dim < 2; }))
 			rep.dropped.push_back("the names of physical groups of points and curves: a volume map names its volumes "
 								  "and listed faces");
+	}
+	else
+	{
+		fill_listed_edges(m, d, br, path, rep);
+		if (std::any_of(d.physical_names.begin(), d.physical_names.end(),
+						[](const auto& p) { return p.dim != 1 && p.dim != 2; }))
+			rep.dropped.push_back("the names of physical groups of points and volumes: a surface map names its faces "
+								  "and listed edges");
 	}
 	rep.nb_vertices_read = d.nb_vertices();
 	rep.nb_cells_read = br.nb_cells_read;
@@ -594,6 +665,9 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 	column_notes(d, "face", rep.dropped);
 	for (const auto& c : d.corner_columns)
 		rep.dropped.push_back("corner data '" + c.name + "': an incidence graph holds no per-corner data");
+	if (!d.segments.empty())
+		rep.dropped.push_back(std::to_string(d.segments.size()) +
+							  " listed edge(s) with their data: an incidence graph holds faces and their edges");
 	rep.build.nb_cells_read = d.nb_cells();
 	rep.build.vertex_offset = vertex.empty() ? 0 : vertex[0].dart.index;
 	rep.nb_vertices_read = d.nb_vertices();

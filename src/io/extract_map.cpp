@@ -118,6 +118,30 @@ typename mesh_traits<MAP>::Vertex vertex_of_dart(const MAP& m, Dart x)
 		return typename mesh_traits<MAP>::Vertex(x);
 }
 
+// Adds to d.physical_names the names of the physical groups of dimension
+// `dim` that the cells of `lines` carry: the string attribute
+// `gmsh:physical_name` beside the int32 `gmsh:physical` (see
+// MeshData::physical_names), each (dim, tag) once. Names a .msh file
+// cannot quote (with a quote or a line break) are left out. O(lines).
+template <typename CELL, typename MAP>
+void collect_physical_names(const MAP& m, const std::vector<uint32>& lines, int32 dim, MeshData& d)
+{
+	auto name = get_attribute<std::string, CELL>(m, "gmsh:physical_name");
+	auto tag = get_attribute<int32, CELL>(m, "gmsh:physical");
+	if (name == nullptr || tag == nullptr)
+		return;
+	std::set<int32> named;
+	for (const auto& p : d.physical_names)
+		if (p.dim == dim)
+			named.insert(p.tag);
+	for (uint32 l : lines)
+	{
+		const std::string& n = (*name)[l];
+		if (!n.empty() && n.find_first_of("\"\r\n") == std::string::npos && named.insert((*tag)[l]).second)
+			d.physical_names.push_back({dim, (*tag)[l], n});
+	}
+}
+
 template <typename MAP>
 MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 {
@@ -144,7 +168,10 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 			face_lines.push_back(index_of(m, f));
 	});
 	if (attributes && faces_indexed)
+	{
 		gather_columns(container_of<Face::ORBIT>(m), face_lines, d.cell_columns, false, path);
+		collect_physical_names<Face>(m, face_lines, 2, d);
+	}
 	// the dart attributes, as per-corner data (an incidence graph's uses are
 	// not corners of the files' faces)
 	if (attributes && !std::is_same_v<MAP, IncidenceGraph>)
@@ -152,28 +179,27 @@ MeshData extract_faces(const MAP& m, const std::string& path, bool attributes)
 	return d;
 }
 
-// Adds to d.physical_names the names of the physical groups of dimension
-// `dim` that the cells of `lines` carry: the string attribute
-// `gmsh:physical_name` beside the int32 `gmsh:physical` (see
-// MeshData::physical_names), each (dim, tag) once. Names a .msh file
-// cannot quote (with a quote or a line break) are left out. O(lines).
-template <typename CELL, typename MAP>
-void collect_physical_names(const MAP& m, const std::vector<uint32>& lines, int32 dim, MeshData& d)
+// Rows i of `columns` (of `nb_rows` rows) with a nonzero value in one of
+// them; the columns keep those rows only. O(size of the columns).
+std::vector<uint32> keep_nonzero_rows(std::vector<Column>& columns, uint32 nb_rows)
 {
-	auto name = get_attribute<std::string, CELL>(m, "gmsh:physical_name");
-	auto tag = get_attribute<int32, CELL>(m, "gmsh:physical");
-	if (name == nullptr || tag == nullptr)
-		return;
-	std::set<int32> named;
-	for (const auto& p : d.physical_names)
-		if (p.dim == dim)
-			named.insert(p.tag);
-	for (uint32 l : lines)
+	std::vector<uint32> kept;
+	for (uint32 i = 0; i < nb_rows; ++i)
+		if (std::any_of(columns.begin(), columns.end(), [&](const Column& c) {
+				return std::any_of(c.values.begin() + std::ptrdiff_t(i) * c.dim,
+								   c.values.begin() + std::ptrdiff_t(i + 1) * c.dim, [](double v) { return v != 0.0; });
+			}))
+			kept.push_back(i);
+	for (Column& c : columns)
 	{
-		const std::string& n = (*name)[l];
-		if (!n.empty() && n.find_first_of("\"\r\n") == std::string::npos && named.insert((*tag)[l]).second)
-			d.physical_names.push_back({dim, (*tag)[l], n});
+		std::vector<double> values;
+		values.reserve(kept.size() * c.dim);
+		for (uint32 i : kept)
+			values.insert(values.end(), c.values.begin() + std::ptrdiff_t(i) * c.dim,
+						  c.values.begin() + std::ptrdiff_t(i + 1) * c.dim);
+		c.values = std::move(values);
 	}
+	return kept;
 }
 
 // The faces of a volume map with a nonzero value in one of their attributes
@@ -196,22 +222,7 @@ void list_faces_with_data(const MAP& m, MeshData& d, const std::string& path, co
 	gather_columns(container_of<Face::ORBIT>(m), lines, columns, false, path);
 	if (columns.empty())
 		return;
-	std::vector<uint32> kept;
-	for (uint32 i = 0; i < uint32(lines.size()); ++i)
-		if (std::any_of(columns.begin(), columns.end(), [&](const Column& c) {
-				return std::any_of(c.values.begin() + std::ptrdiff_t(i) * c.dim,
-								   c.values.begin() + std::ptrdiff_t(i + 1) * c.dim, [](double v) { return v != 0.0; });
-			}))
-			kept.push_back(i);
-	for (Column& c : columns)
-	{
-		std::vector<double> values;
-		values.reserve(kept.size() * c.dim);
-		for (uint32 i : kept)
-			values.insert(values.end(), c.values.begin() + std::ptrdiff_t(i) * c.dim,
-						  c.values.begin() + std::ptrdiff_t(i + 1) * c.dim);
-		c.values = std::move(values);
-	}
+	const std::vector<uint32> kept = keep_nonzero_rows(columns, uint32(lines.size()));
 	std::vector<uint32> kept_lines;
 	for (uint32 i : kept)
 		kept_lines.push_back(lines[i]);
@@ -374,7 +385,55 @@ MeshData extract_volumes(const MAP& m, const std::string& path, bool attributes)
 	return d;
 }
 
+// See list_edges_with_data in map_transfer.h.
+template <typename MAP>
+void list_edges_of(const MAP& m, MeshData& d, const std::string& path)
+{
+	using Edge = typename mesh_traits<MAP>::Edge;
+	using Vertex = typename mesh_traits<MAP>::Vertex;
+	if (!is_indexed<Edge>(m))
+		return;
+	const AttributeContainer& vc = container_of<Vertex::ORBIT>(m);
+	std::vector<uint32> id(vc.end_index(), INVALID_INDEX);
+	uint32 next_id = 0;
+	foreach_cell(m, [&](Vertex v) { id[index_of(m, v)] = next_id++; }); // as number_vertices
+	std::vector<uint32> lines;
+	std::vector<std::pair<uint32, uint32>> ends;
+	foreach_cell(m, [&](Edge e) {
+		Dart other;
+		if constexpr (is_gmap_v<MAP>)
+			other = beta0(m, e.dart);
+		else
+			other = phi1(m, e.dart);
+		lines.push_back(index_of(m, e));
+		ends.emplace_back(id[index_of(m, Vertex(e.dart))], id[index_of(m, Vertex(other))]);
+	});
+	std::vector<Column> columns;
+	gather_columns(container_of<Edge::ORBIT>(m), lines, columns, false, path);
+	if (columns.empty())
+		return;
+	const std::vector<uint32> kept = keep_nonzero_rows(columns, uint32(lines.size()));
+	std::vector<uint32> kept_lines;
+	for (uint32 i : kept)
+	{
+		kept_lines.push_back(lines[i]);
+		d.segments.push_back(ends[i]);
+	}
+	collect_physical_names<Edge>(m, kept_lines, 1, d);
+	d.segment_columns = std::move(columns);
+}
+
 } // namespace
+
+void list_edges_with_data(const CMap2& m, MeshData& d, const std::string& path)
+{
+	list_edges_of(m, d, path);
+}
+
+void list_edges_with_data(const GMap2& m, MeshData& d, const std::string& path)
+{
+	list_edges_of(m, d, path);
+}
 
 MeshData extract_surface(const CMap2& m, const std::string& path, bool attributes)
 {

@@ -2,12 +2,12 @@
 // gmsh .msh versions 2.2 and 4.1, ascii and binary. Volume elements
 // (tetrahedron 4, hexahedron 5, prism 6, pyramid 7, and the corner nodes of
 // second-order ones) are the cells; surface elements (triangle 2,
-// quadrangle 3, and the corners of second-order ones) are listed faces;
-// both keep their physical and elementary tags as the columns
+// quadrangle 3, and the corners of second-order ones) are listed faces, and
+// line elements (1, and the ends of 8) listed edges (MeshData::segments);
+// all keep their physical and elementary tags as the columns
 // `gmsh:physical` and `gmsh:geometrical` (the names meshio gives them), the
-// physical tags of a 4.1 file coming from its $Entities. Line and point
-// elements are counted in the report; other sections ($NodeData, ...) are
-// skipped.
+// physical tags of a 4.1 file coming from its $Entities. Point elements are
+// counted in the report; other sections ($NodeData, ...) are skipped.
 #include "byte_reader.h"
 #include "formats.h"
 #include "text_reader.h"
@@ -36,14 +36,15 @@ struct ElementType
 {
 	uint32 nodes;
 	uint32 corners;          // of a volume cell
-	uint32 face_corners = 0; // of a surface element
+	uint32 face_corners = 0; // of a surface element, or 2 for a line
+	bool line = false;
 };
 ElementType element_type(int64 t)
 {
 	switch (t)
 	{
 	case 1:
-		return {2, 0};
+		return {2, 0, 2, true};
 	case 2:
 		return {3, 0, 3};
 	case 3:
@@ -57,7 +58,7 @@ ElementType element_type(int64 t)
 	case 7:
 		return {5, 5};
 	case 8:
-		return {3, 0};
+		return {3, 0, 2, true};
 	case 9:
 		return {6, 0, 3};
 	case 10:
@@ -194,7 +195,7 @@ private:
 		d_.positions.insert(d_.positions.end(), {x, y, z});
 	}
 	// Adds an element with its physical and elementary tags: a volume cell,
-	// a listed face, or a line or point element (counted).
+	// a listed face, a listed edge, or a point element (counted).
 	template <typename READER>
 	void add_element(int64 type, const uint64* nodes, int64 physical, int64 elementary, READER& reader)
 	{
@@ -204,21 +205,30 @@ private:
 		const uint32 corners = et.corners > 0 ? et.corners : et.face_corners;
 		if (corners == 0)
 		{
-			++nb_lower_elements_;
+			++nb_point_elements_;
 			return;
 		}
 		if (physical < INT32_MIN || physical > INT32_MAX || elementary < INT32_MIN || elementary > INT32_MAX)
 			reader.fail("an element tag out of the 32-bit range");
-		std::vector<uint32>& ids = et.corners > 0 ? d_.cell_vertices : d_.face_vertices;
+		std::array<uint32, 8> ids;
 		for (uint32 i = 0; i < corners; ++i)
 		{
 			auto it = index_.find(nodes[i]);
 			if (it == index_.end())
 				reader.fail("element refers to node " + std::to_string(nodes[i]) + ", which is not defined");
-			ids.push_back(it->second);
+			ids[i] = it->second;
 		}
+		const std::array<double, 2> tags = {double(physical), double(elementary)};
+		if (et.line)
+		{
+			d_.segments.emplace_back(ids[0], ids[1]);
+			segment_tags_.push_back(tags);
+			return;
+		}
+		std::vector<uint32>& to = et.corners > 0 ? d_.cell_vertices : d_.face_vertices;
+		to.insert(to.end(), ids.begin(), ids.begin() + corners);
 		(et.corners > 0 ? d_.cell_sizes : d_.face_sizes).push_back(corners);
-		(et.corners > 0 ? cell_tags_ : face_tags_).push_back({double(physical), double(elementary)});
+		(et.corners > 0 ? cell_tags_ : face_tags_).push_back(tags);
 	}
 
 	// The physical tag of the entity (dim, tag) of a 4.1 file: the first of
@@ -338,9 +348,10 @@ private:
 		};
 		columns(cell_tags_, d_.cell_columns);
 		columns(face_tags_, d_.face_columns);
-		if (nb_lower_elements_ > 0)
-			d_.dropped.push_back(std::to_string(nb_lower_elements_) +
-								 " line or point element(s): a volume map holds volumes and listed faces");
+		columns(segment_tags_, d_.segment_columns);
+		if (nb_point_elements_ > 0)
+			d_.dropped.push_back(std::to_string(nb_point_elements_) +
+								 " point element(s): a map holds volumes, faces and edges");
 		if (nb_multi_physical_ > 0)
 			d_.dropped.push_back(std::to_string(nb_multi_physical_) +
 								 " entit(ies) of several physical groups: their elements keep the first");
@@ -576,10 +587,10 @@ private:
 	uint32 size_t_size_ = 8;
 	MeshData d_;
 	std::unordered_map<uint64, uint32> index_;
-	std::map<std::pair<int64, int64>, int64> physical_;        // (dim, entity tag) -> physical tag (4.1)
-	bool has_tags_ = false;                                    // whether the elements carry tags
-	std::vector<std::array<double, 2>> cell_tags_, face_tags_; // (physical, elementary) of each
-	uint64 nb_lower_elements_ = 0;
+	std::map<std::pair<int64, int64>, int64> physical_;                       // (dim, entity tag) -> physical tag (4.1)
+	bool has_tags_ = false;                                                   // whether the elements carry tags
+	std::vector<std::array<double, 2>> cell_tags_, face_tags_, segment_tags_; // (physical, elementary) of each
+	uint64 nb_point_elements_ = 0;
 	uint64 nb_multi_physical_ = 0;
 };
 
@@ -624,11 +635,12 @@ std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 	// others
 	const std::vector<std::array<int32, 2>> cell_tags = element_tags(d.cell_columns, d.nb_cells(), path);
 	const std::vector<std::array<int32, 2>> face_tags = element_tags(d.face_columns, d.nb_faces(), path);
+	const std::vector<std::array<int32, 2>> segment_tags = element_tags(d.segment_columns, d.segments.size(), path);
 	std::vector<Entity> entities;
 	std::map<std::tuple<int32, int32, int32>, uint32> entity_of; // (dim, elementary, physical) -> entity
 	std::map<std::pair<int32, int32>, uint32> tag_users;         // (dim, tag) -> entities using it
 	int32 next_tag = 1;
-	for (const auto* tags : {&face_tags, &cell_tags})
+	for (const auto* tags : {&segment_tags, &face_tags, &cell_tags})
 		for (const auto& t : *tags)
 			next_tag = std::max(next_tag, t[1] + 1);
 	auto entity = [&](int32 dim, const std::array<int32, 2>& t) {
@@ -642,6 +654,12 @@ std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 		face_entity[f] = entity(2, face_tags[f]);
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 		cell_entity[c] = entity(3, cell_tags[c]);
+	std::vector<uint32> segment_entity(d.segments.size()), segment_ids;
+	for (std::size_t e = 0; e < d.segments.size(); ++e)
+	{
+		segment_entity[e] = entity(1, segment_tags[e]);
+		segment_ids.insert(segment_ids.end(), {d.segments[e].first, d.segments[e].second});
+	}
 
 	std::string s = binary ? "$MeshFormat\n4.1 1 8\n" : "$MeshFormat\n4.1 0 8\n";
 	if (binary)
@@ -672,8 +690,9 @@ std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 		for (uint64 n : nb_of_dim)
 			append_raw(s, n);
 	else
-		s += "0 0 " + std::to_string(nb_of_dim[2]) + " " + std::to_string(nb_of_dim[3]) + "\n";
-	for (int32 dim : {2, 3})
+		s += "0 " + std::to_string(nb_of_dim[1]) + " " + std::to_string(nb_of_dim[2]) + " " +
+			 std::to_string(nb_of_dim[3]) + "\n";
+	for (int32 dim : {1, 2, 3})
 		for (const Entity& e : entities)
 		{
 			if (e.dim != dim)
@@ -703,9 +722,10 @@ std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 	if (binary)
 		s += '\n';
 	s += "$EndEntities\n$Nodes\n";
-	// the nodes: one block, in the first volume entity (or the first entity)
-	const auto volume = std::find_if(entities.begin(), entities.end(), [](const Entity& e) { return e.dim == 3; });
-	const Entity nodes_in = volume != entities.end() ? *volume : entities.empty() ? Entity{3, 1, 0} : entities.front();
+	// the nodes: one block, in the first entity of the highest dimension
+	const auto highest = std::max_element(entities.begin(), entities.end(),
+										  [](const Entity& a, const Entity& b) { return a.dim < b.dim; });
+	const Entity nodes_in = highest != entities.end() ? *highest : Entity{3, 1, 0};
 	const int32 node_dim = nodes_in.dim, node_tag = nodes_in.tag;
 	const uint64 nv = d.nb_vertices();
 	if (binary)
@@ -739,7 +759,8 @@ std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 	}
 	s += "$EndNodes\n$Elements\n";
 	// the elements, in blocks of one entity and one element type: the
-	// listed faces (triangles 2, quadrangles 3), then the cells
+	// listed edges (lines 1), the listed faces (triangles 2, quadrangles 3),
+	// then the cells
 	struct Element
 	{
 		uint32 entity;
@@ -748,7 +769,9 @@ std::string write_gmsh(const MeshData& d, bool binary, const std::string& path)
 		uint32 size;
 	};
 	std::vector<Element> elements;
-	elements.reserve(d.nb_faces() + d.nb_cells());
+	elements.reserve(d.segments.size() + d.nb_faces() + d.nb_cells());
+	for (std::size_t e = 0; e < d.segments.size(); ++e)
+		elements.push_back({segment_entity[e], 1, segment_ids.data() + 2 * e, 2});
 	std::size_t k = 0;
 	for (uint32 f = 0; f < d.nb_faces(); ++f)
 	{

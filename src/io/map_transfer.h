@@ -58,4 +58,13 @@ MeshData extract_surface(const IncidenceGraph& ig, const std::string& path, bool
 MeshData extract_volume(const CMap3& m, const std::string& path, bool attributes);
 MeshData extract_volume(const GMap3& m, const std::string& path, bool attributes);
 
+/// Adds to d (extracted from the surface map m) the edges of m with a
+/// nonzero value in one of their attributes a file can hold, as listed
+/// edges (MeshData::segments, over d's vertex numbering) with those
+/// columns, and the names of their physical groups (dimension 1). For the
+/// writers of the formats that list edges (.msh, .mesh, .vtk, .vtu).
+/// O(cells of m).
+void list_edges_with_data(const CMap2& m, MeshData& d, const std::string& path);
+void list_edges_with_data(const GMap2& m, MeshData& d, const std::string& path);
+
 } // namespace cgogn::io::detail

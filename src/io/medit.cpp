@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // MEDIT ascii .mesh: keyword sections (Vertices, Tetrahedra, Pyramids, Prisms,
-// Hexahedra; Triangles and Quadrilaterals as listed faces; Edges and the
-// annotation sections are read and ignored), 1-based indices, a reference
-// number after each record, kept as the column `medit:ref` of the
-// vertices, cells and listed faces when one of them is not 0.
+// Hexahedra; Triangles and Quadrilaterals as listed faces; Edges as listed
+// edges; the annotation sections are read and ignored), 1-based indices, a
+// reference number after each record, kept as the column `medit:ref` of the
+// vertices, cells, listed faces and listed edges when one of them is not 0.
 #include "formats.h"
 #include "text_reader.h"
 #include "text_writer.h"
@@ -29,16 +29,15 @@ int skipped_record_size(std::string_view k, uint32 dim)
 		std::string_view name;
 		int size;
 	};
-	static constexpr std::array<S, 10> sections = {{{"Edges", 3},
-													{"Corners", 1},
-													{"Ridges", 1},
-													{"RequiredVertices", 1},
-													{"RequiredEdges", 1},
-													{"RequiredTriangles", 1},
-													{"Normals", 0},
-													{"Tangents", 0},
-													{"NormalAtVertices", 2},
-													{"TangentAtVertices", 2}}};
+	static constexpr std::array<S, 9> sections = {{{"Corners", 1},
+												   {"Ridges", 1},
+												   {"RequiredVertices", 1},
+												   {"RequiredEdges", 1},
+												   {"RequiredTriangles", 1},
+												   {"Normals", 0},
+												   {"Tangents", 0},
+												   {"NormalAtVertices", 2},
+												   {"TangentAtVertices", 2}}};
 	for (const auto& s : sections)
 		if (s.name == k)
 			return s.size == 0 ? int(dim) : s.size;
@@ -59,8 +58,8 @@ MeshData read_medit(std::string_view text, const std::string& path)
 	bool have_vertices = false;
 	// cells are checked against the vertex count at the end (sections may come in any order)
 	std::vector<uint64> cell_lines;
-	Column vertex_ref{"medit:ref", 1, {}, ValueType::Int32}, cell_ref = vertex_ref, face_ref = vertex_ref;
-	uint64 nb_edges = 0;
+	Column vertex_ref{"medit:ref", 1, {}, ValueType::Int32}, cell_ref = vertex_ref, face_ref = vertex_ref,
+															 edge_ref = vertex_ref;
 	auto read_ref = [&](Column& c, const char* what) {
 		const int64 ref = r.read_int(what);
 		if (ref < INT32_MIN || ref > INT32_MAX)
@@ -127,7 +126,14 @@ MeshData read_medit(std::string_view text, const std::string& path)
 						 "a face reference");
 			continue;
 		}
-		nb_edges += k == "Edges" ? n : 0;
+		if (k == "Edges")
+		{
+			std::vector<uint32> sizes, ids;
+			read_records(n, 2, sizes, ids, edge_ref, "edges", "an edge reference");
+			for (std::size_t i = 0; i < ids.size(); i += 2)
+				d.segments.emplace_back(ids[i], ids[i + 1]);
+			continue;
+		}
 		uint32 size = 0;
 		if (k == "Tetrahedra")
 			size = 4;
@@ -157,6 +163,10 @@ MeshData read_medit(std::string_view text, const std::string& path)
 			if (v >= d.nb_vertices())
 				throw Error(path, "vertex index " + std::to_string(v + 1) + " out of range (the file has " +
 									  std::to_string(d.nb_vertices()) + " vertices)");
+	for (const auto& [a, b] : d.segments)
+		if (std::max(a, b) >= d.nb_vertices())
+			throw Error(path, "vertex index " + std::to_string(std::max(a, b) + 1) + " out of range (the file has " +
+								  std::to_string(d.nb_vertices()) + " vertices)");
 	// the references, when one is not 0
 	auto keep = [](Column& c, std::vector<Column>& out) {
 		if (std::any_of(c.values.begin(), c.values.end(), [](double v) { return v != 0.0; }))
@@ -165,9 +175,7 @@ MeshData read_medit(std::string_view text, const std::string& path)
 	keep(vertex_ref, d.vertex_columns);
 	keep(cell_ref, d.cell_columns);
 	keep(face_ref, d.face_columns);
-	if (nb_edges > 0)
-		d.dropped.push_back(std::to_string(nb_edges) + " edge(s) of the Edges section with their references: a "
-													   "volume map holds volumes and listed faces");
+	keep(edge_ref, d.segment_columns);
 	return d;
 }
 
@@ -193,7 +201,7 @@ std::string write_medit(const MeshData& d, const std::string& path)
 		s += '\n';
 	}
 	// records grouped by kind, in the order of MEDIT's sections: the listed
-	// faces of 3 and 4 vertices, then the cells
+	// edges, the listed faces of 3 and 4 vertices, then the cells
 	auto section = [&](const char* name, uint32 size, const std::vector<uint32>& sizes, const std::vector<uint32>& ids,
 					   const std::vector<int32>& ref) {
 		const auto count = std::count(sizes.begin(), sizes.end(), size);
@@ -220,6 +228,22 @@ std::string write_medit(const MeshData& d, const std::string& path)
 			k += sizes[c];
 		}
 	};
+	if (!d.segments.empty())
+	{
+		const std::vector<int32> edge_ref = references(d.segment_columns, d.segments.size());
+		s += "\nEdges\n";
+		append_uint(s, d.segments.size());
+		s += '\n';
+		for (std::size_t e = 0; e < d.segments.size(); ++e)
+		{
+			append_uint(s, uint64(d.segments[e].first) + 1);
+			s += ' ';
+			append_uint(s, uint64(d.segments[e].second) + 1);
+			s += ' ';
+			append_int(s, edge_ref[e]);
+			s += '\n';
+		}
+	}
 	const std::vector<int32> face_ref = references(d.face_columns, d.nb_faces());
 	section("Triangles", 3, d.face_sizes, d.face_vertices, face_ref);
 	section("Quadrilaterals", 4, d.face_sizes, d.face_vertices, face_ref);

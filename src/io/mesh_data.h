@@ -129,9 +129,13 @@ struct MeshData
 	/// Line cells, as vertex pairs: read by the VTK readers (a line, type 3;
 	/// a polyline, type 4, as its consecutive segments), which do not count
 	/// them as cells; written by the VTK writers after the cells, as lines.
-	/// Graphs are stored here. A writer drops the cell columns when there are
-	/// segments (the columns have one row per cell, none for the segments).
+	/// Graphs are stored here. Also the edges a file lists with data (gmsh's
+	/// line elements, MEDIT's Edges, VTK's line cells), with one row of
+	/// `segment_columns` each: a surface map holds those columns as edge
+	/// attributes, on its edges between these two vertices; a writer lists
+	/// the edges with a nonzero value there.
 	std::vector<std::pair<uint32, uint32>> segments;
+	std::vector<Column> segment_columns;
 	/// Polyhedra (VTK's general polyhedron, cell type 42), beside the cells
 	/// of the standard kinds. Empty when there is none; otherwise one entry
 	/// per cell: 0 for a standard cell, else the polyhedron's number of
@@ -158,10 +162,11 @@ struct MeshData
 	std::vector<uint32> face_sizes;
 	std::vector<uint32> face_vertices;
 	std::vector<Column> face_columns;
-	/// The names of gmsh's physical groups ($PhysicalNames): a volume map
-	/// gives each volume (dimension 3) and listed face (dimension 2) whose
-	/// `gmsh:physical` tag has a name that name, in the string attribute
-	/// `gmsh:physical_name`; a writer takes them back from there.
+	/// The names of gmsh's physical groups ($PhysicalNames): a map gives
+	/// each volume (dimension 3), face (dimension 2) and listed edge
+	/// (dimension 1) whose `gmsh:physical` tag has a name that name, in the
+	/// string attribute `gmsh:physical_name`; a writer takes them back from
+	/// there.
 	struct PhysicalName
 	{
 		int32 dim;
@@ -185,6 +190,13 @@ struct MeshData
 	{
 		return uint32(face_sizes.size());
 	}
+	/// A surface read from a volume format: its listed faces become the
+	/// cells, with their columns. Throws io::Error (naming path) when the
+	/// file has volume cells. O(size of the faces).
+	void faces_as_cells(const std::string& path);
+	/// The reverse, for a volume format's writer: the cells (polygons)
+	/// become listed faces, with their columns. O(size of the cells).
+	void cells_as_faces();
 	/// Whether cell c is a polyhedron given by its faces.
 	bool is_polyhedron(uint32 c) const
 	{

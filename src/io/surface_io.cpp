@@ -5,6 +5,8 @@
 #include "formats.h"
 #include "map_transfer.h"
 
+#include <algorithm>
+
 namespace cgogn::io
 {
 
@@ -15,10 +17,17 @@ Format resolve(Format f, const std::string& path)
 	if (f == Format::Auto)
 		f = format_from_extension(path);
 	if (f == Format::Auto)
-		throw Error(path, "unknown surface format: use .off, .obj, .ply or .stl, or give the format");
-	if (f != Format::Off && f != Format::Obj && f != Format::Ply && f != Format::Stl)
+		throw Error(path, "unknown surface format: use .off, .obj, .ply, .stl, .msh, .mesh, .vtk or .vtu, or give "
+						  "the format");
+	if (f == Format::TetGen || f == Format::Ovm)
 		throw Error(path, std::string(format_name(f)) + " is not a surface format (use load_volume/save_volume)");
 	return f;
+}
+
+// Formats of volumes and surfaces, which list faces and edges beside the cells.
+bool lists_faces(Format f)
+{
+	return f == Format::Gmsh || f == Format::Medit || f == Format::VtkLegacy || f == Format::Vtu;
 }
 
 template <typename MAP>
@@ -38,10 +47,24 @@ LoadReport load_surface_into(MAP& m, const std::string& path, const LoadOptions&
 	case Format::Ply:
 		d = detail::read_ply(data, path);
 		break;
-	default:
+	case Format::Stl:
 		d = detail::read_stl(data, path);
 		break;
+	case Format::Gmsh:
+		d = detail::read_gmsh(data, path);
+		break;
+	case Format::Medit:
+		d = detail::read_medit(data, path);
+		break;
+	case Format::VtkLegacy:
+		d = detail::read_vtk(data, path);
+		break;
+	default:
+		d = detail::read_vtu(data, path);
+		break;
 	}
+	if (lists_faces(f))
+		d.faces_as_cells(path);
 	detail::validate(d, path);
 	LoadReport r = detail::build_map(m, d, path);
 	r.format = f;
@@ -52,7 +75,22 @@ template <typename MAP>
 void save_surface_of(const MAP& m, const std::string& path, const SaveOptions& options)
 {
 	const Format f = resolve(options.format, path);
-	const detail::MeshData d = detail::extract_surface(m, path, options.attributes);
+	detail::MeshData d = detail::extract_surface(m, path, options.attributes);
+	if (lists_faces(f))
+	{
+		if (f == Format::Gmsh || f == Format::Medit)
+		{
+			const auto nb = std::count_if(d.cell_sizes.begin(), d.cell_sizes.end(), [](uint32 n) { return n > 4; });
+			if (nb > 0)
+				throw Error(path, "the map has " + std::to_string(nb) +
+									  " face(s) of more than 4 vertices: the format holds triangles and quadrangles "
+									  "(triangulate first, or write .vtk, .vtu, .obj or .ply)");
+		}
+		if constexpr (!std::is_same_v<MAP, IncidenceGraph>)
+			if (options.attributes)
+				detail::list_edges_with_data(m, d, path);
+		d.cells_as_faces();
+	}
 	std::string out;
 	switch (f)
 	{
@@ -66,8 +104,22 @@ void save_surface_of(const MAP& m, const std::string& path, const SaveOptions& o
 		detail::check_written_names(d, path);
 		out = detail::write_ply(d, options.binary, path);
 		break;
-	default:
+	case Format::Stl:
 		out = detail::write_stl(d, options.binary);
+		break;
+	case Format::Gmsh:
+		out = detail::write_gmsh(d, options.binary, path);
+		break;
+	case Format::Medit:
+		out = detail::write_medit(d, path);
+		break;
+	case Format::VtkLegacy:
+		detail::check_written_names(d, path);
+		out = detail::write_vtk(d, options.binary);
+		break;
+	default:
+		detail::check_written_names(d, path);
+		out = detail::write_vtu(d, options.binary);
 		break;
 	}
 	detail::write_file(path, out);

@@ -4,6 +4,7 @@
 #include "formats.h"
 #include "value_type_names.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cgogn::io::detail
@@ -90,6 +91,35 @@ void validate(const MeshData& d, const std::string& path)
 	check_columns(d.cell_columns, d.nb_cells(), "cell", "cell", false);
 	check_columns(d.corner_columns, d.cell_vertices.size(), "corner", "face corner", false);
 	check_columns(d.face_columns, d.nb_faces(), "face", "listed face", false);
+	for (const auto& [a, b] : d.segments)
+		if (a >= nv || b >= nv)
+			throw Error(path, "an edge refers to vertex " + std::to_string(std::max(a, b)) +
+								  ", out of range (the file has " + std::to_string(nv) + " vertices)");
+	check_columns(d.segment_columns, d.segments.size(), "edge", "listed edge", false);
+}
+
+void MeshData::faces_as_cells(const std::string& path)
+{
+	if (nb_cells() > 0)
+		throw Error(path, "the file has " + std::to_string(nb_cells()) +
+							  " volume cell(s): load it into a volume map (load_volume)");
+	cell_sizes = std::move(face_sizes);
+	cell_vertices = std::move(face_vertices);
+	cell_columns = std::move(face_columns);
+	face_sizes.clear();
+	face_vertices.clear();
+	face_columns.clear();
+}
+
+void MeshData::cells_as_faces()
+{
+	face_sizes = std::move(cell_sizes);
+	face_vertices = std::move(cell_vertices);
+	face_columns = std::move(cell_columns);
+	cell_sizes.clear();
+	cell_vertices.clear();
+	cell_columns.clear();
+	corner_columns.clear();
 }
 
 void check_written_names(const MeshData& d, const std::string& path)

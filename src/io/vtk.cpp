@@ -407,8 +407,7 @@ std::string write_vtk(const MeshData& d, bool binary)
 		}
 	};
 	put_columns(d.vertex_columns, "POINT_DATA", d.nb_vertices());
-	if (d.segments.empty()) // see MeshData::segments
-		put_columns(vtk_cell_data(d), "CELL_DATA", d.nb_cells() + d.nb_faces());
+	put_columns(vtk_cell_data(d), "CELL_DATA", uint32(d.nb_cells() + d.nb_faces() + d.segments.size()));
 	return s;
 }
 

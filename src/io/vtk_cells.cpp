@@ -18,10 +18,10 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 	if (vtu_faces && face_offsets.size() != types.size())
 		fail("the faceoffsets array does not have one entry per cell");
 	const uint32 nv = d.nb_vertices();
-	std::vector<uint32> kept, kept_faces;     // the cells kept as volumes, as listed faces
-	uint32 nb_ignored = 0;                    // vertex cells and triangle strips
-	int64 stream_start = 0;                   // where the next polyhedron's faces start in `faces`
-	std::vector<uint32> face_sizes, face_ids; // one polyhedron's
+	std::vector<uint32> kept, kept_faces, kept_segments; // the cells kept as volumes, listed faces, segments
+	uint32 nb_ignored = 0;                               // vertex cells and triangle strips
+	int64 stream_start = 0;                              // where the next polyhedron's faces start in `faces`
+	std::vector<uint32> face_sizes, face_ids;            // one polyhedron's
 	// A polyhedron's face stream: its number of faces, then each face's
 	// number of points and point ids, exactly.
 	auto add_polyhedron = [&](std::size_t c, const int64* stream, int64 length) {
@@ -126,7 +126,10 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 				fail("cell " + std::to_string(c) + " of type " + std::to_string(types[c]) + " has " +
 					 std::to_string(n) + " point(s) (a line has 2 or more)");
 			for (int64 i = 0; i + 1 < (types[c] == 3 ? 2 : n); ++i)
+			{
 				d.segments.emplace_back(uint32(ids[i]), uint32(ids[i + 1]));
+				kept_segments.push_back(uint32(c));
+			}
 			continue; // segments, not volume cells
 		case 5:       // triangle
 		case 22:      // quadratic triangle: its corners
@@ -173,46 +176,43 @@ void vtk_cells_to_mesh(MeshData& d, const std::vector<int64>& offsets, const std
 		d.cell_columns.push_back(rows(col, kept));
 		if (!kept_faces.empty())
 			d.face_columns.push_back(rows(col, kept_faces));
+		if (!kept_segments.empty())
+			d.segment_columns.push_back(rows(col, kept_segments));
 	}
 	if (nb_ignored > 0)
 		d.dropped.push_back(std::to_string(nb_ignored) +
-							" vertex, polyvertex, triangle strip or quadratic edge cell(s): a volume map holds "
-							"volumes, listed faces and segments");
-	if (!kept_faces.empty() && cell_data.empty())
-		d.dropped.push_back(std::to_string(kept_faces.size()) +
-							" polygon cell(s) without cell data: the volume map has its own faces");
+							" vertex, polyvertex, triangle strip or quadratic edge cell(s): a map holds volumes, "
+							"faces and edges");
 }
 
 std::vector<Column> vtk_cell_data(const MeshData& d)
 {
-	const std::size_t nc = d.nb_cells(), nf = d.nb_faces();
+	// rows: the cells, the listed faces, then the segments; a column of one
+	// kind is 0 on the rows of the others
+	const std::size_t nc = d.nb_cells(), nf = d.nb_faces(), ns = d.segments.size(), rows = nc + nf + ns;
 	auto usable = [](const Column& c) { return c.dim >= 1 && c.dim <= 3; };
 	std::vector<Column> out;
-	for (const Column& c : d.cell_columns)
-		if (usable(c))
+	auto add = [&](const std::vector<Column>& columns, std::size_t first) {
+		for (const Column& c : columns)
 		{
-			Column k = c;
-			k.values.resize((nc + nf) * c.dim, 0.0);
-			out.push_back(std::move(k));
-		}
-	for (const Column& f : d.face_columns)
-	{
-		if (!usable(f))
-			continue;
-		auto same = std::find_if(out.begin(), out.end(), [&](const Column& k) { return k.name == f.name; });
-		if (same == out.end())
-		{
-			Column k{f.name, f.dim, std::vector<double>(nc * f.dim, 0.0), f.type};
-			k.values.insert(k.values.end(), f.values.begin(), f.values.end());
-			out.push_back(std::move(k));
-		}
-		else if (same->dim == f.dim)
-		{
-			std::copy(f.values.begin(), f.values.end(), same->values.begin() + std::ptrdiff_t(nc * f.dim));
-			if (same->type != f.type)
+			if (!usable(c))
+				continue;
+			auto same = std::find_if(out.begin(), out.end(), [&](const Column& k) { return k.name == c.name; });
+			if (same == out.end())
+			{
+				out.push_back(Column{c.name, c.dim, std::vector<double>(rows * c.dim, 0.0), c.type});
+				same = out.end() - 1;
+			}
+			else if (same->dim != c.dim)
+				continue;
+			else if (same->type != c.type)
 				same->type = ValueType::Float64;
+			std::copy(c.values.begin(), c.values.end(), same->values.begin() + std::ptrdiff_t(first * c.dim));
 		}
-	}
+	};
+	add(d.cell_columns, 0);
+	add(d.face_columns, nc);
+	add(d.segment_columns, nc + nf);
 	return out;
 }
 

@@ -36,10 +36,10 @@ inline uint32 vtk_face_type(uint32 n)
 }
 
 /// The cell data a VTK file holds for d: one row per cell, then one per
-/// listed face. A name of both the cells and the faces is one array (of the
-/// cells' type, double when the two types differ); a name of one of them
-/// has zeros on the other's rows. Columns of 1 to 3 components only; a face
-/// column whose component count differs from the cells' column of its name
+/// listed face, then one per segment. A name of several kinds is one array
+/// (of the first kind's type, double when the types differ); a name of one
+/// kind has zeros on the others' rows. Columns of 1 to 3 components only; a
+/// column whose component count differs from the first column of its name
 /// is left out. O(size of the columns).
 std::vector<Column> vtk_cell_data(const MeshData& d);
 

@@ -546,7 +546,7 @@ std::string write_vtu(const MeshData& d, bool binary)
 		head += std::string("</") + section + ">\n";
 	};
 	data("PointData", d.vertex_columns);
-	data("CellData", d.segments.empty() ? vtk_cell_data(d) : std::vector<Column>{}); // see MeshData::segments
+	data("CellData", vtk_cell_data(d));
 	head += "</Piece>\n</UnstructuredGrid>\n";
 	if (binary)
 	{

@@ -288,7 +288,7 @@ TEST(BadFile, MissingFileAndUnknownExtension)
 	CMap2 m;
 	EXPECT_THROW(io::load_surface(m, "/nonexistent/file.off"), io::Error);
 	EXPECT_THROW(io::load_surface(m, "mesh.xyz"), io::Error);
-	EXPECT_THROW(io::load_surface(m, "mesh.mesh"), io::Error); // a volume format
+	EXPECT_THROW(io::load_surface(m, "mesh.ovm"), io::Error); // a volume format
 	CMap3 v;
 	EXPECT_THROW(io::load_volume(v, "mesh.off"), io::Error);
 	EXPECT_EQ(nb_darts(m), 0u);

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sys/wait.h>
 #include <vector>
 
@@ -118,6 +119,41 @@ void expect_counts(const nlohmann::json& j, std::vector<int> cells, int boundary
 	EXPECT_EQ(j["euler_characteristic"], chi);
 }
 } // namespace
+
+TEST(Tool, SurfacesInVolumeFormatsKeepTheirTags)
+{
+	TempDir dir;
+	const std::string plate = cgogn_test_data::path("gmsh/plate_v41.msh");
+	ToolRun r = run_tool("info --json '" + plate + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["dimension"], 2);
+	EXPECT_EQ(j["faces"], 44);
+	// to VTU and back to .msh, then Loop subdivision: each face's tag is
+	// its parent's, each tagged edge's two halves keep its tag
+	r = run_tool("convert '" + plate + "' '" + dir.file("p.vtu") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("subdivide --scheme loop '" + dir.file("p.vtu") + "' '" + dir.file("p.msh") + "' --binary", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	CMap2 m;
+	io::load_surface(m, dir.file("p.msh"));
+	std::map<int32, uint32> faces, edges;
+	auto face_tag = get_attribute<int32, CMap2::Face>(m, "gmsh:physical");
+	auto edge_tag = get_attribute<int32, CMap2::Edge>(m, "gmsh:physical");
+	ASSERT_NE(face_tag, nullptr);
+	ASSERT_NE(edge_tag, nullptr);
+	foreach_cell(m, [&](CMap2::Face f) { ++faces[(*face_tag)[f]]; });
+	foreach_cell(m, [&](CMap2::Edge e) {
+		if ((*edge_tag)[e] != 0)
+			++edges[(*edge_tag)[e]];
+	});
+	EXPECT_EQ(faces, (std::map<int32, uint32>{{1, 88}, {2, 88}}));
+	EXPECT_EQ(edges, (std::map<int32, uint32>{{5, 8}, {6, 8}, {7, 8}}));
+	// a volume-only format takes no surface
+	r = run_tool("convert '" + plate + "' '" + dir.file("p.ovm") + "'", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("volume-only format"), std::string::npos) << r.err;
+}
 
 TEST(Tool, NonOrientableSurfacesAreLoadedWhole)
 {

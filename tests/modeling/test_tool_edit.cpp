@@ -126,9 +126,9 @@ TEST(ToolModeling, TriangulateErrors)
 	ToolRun r = run_tool("triangulate " + quoted(write_volume(dir)) + " " + quoted(dir.file("t.off")), dir);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_NE(r.err.find("volume"), std::string::npos) << r.err;
-	r = run_tool("triangulate " + spot() + " " + quoted(dir.file("t.mesh")), dir);
+	r = run_tool("triangulate " + spot() + " " + quoted(dir.file("t.ovm")), dir);
 	EXPECT_EQ(r.status, 2);
-	EXPECT_NE(r.err.find("volume format"), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find("volume-only format"), std::string::npos) << r.err;
 	r = run_tool("triangulate " + spot(), dir);
 	EXPECT_EQ(r.status, 2) << "OUT is required";
 	r = run_tool("triangulate " + quoted(dir.file("missing.off")) + " " + quoted(dir.file("t.off")), dir);
