@@ -68,6 +68,13 @@ void commit_pages(void* p, std::size_t bytes)
 {
 	if (mprotect(p, bytes, PROT_READ | PROT_WRITE) != 0)
 		throw std::bad_alloc();
+#ifdef MADV_POPULATE_WRITE
+	// the caller writes every element of the range at once (LineStorage
+	// fills new lines): the kernel maps the pages in one call instead of one
+	// fault per page. A kernel without it (before Linux 5.14) faults them in.
+	if (bytes >= 64 * page_size())
+		madvise(p, bytes, MADV_POPULATE_WRITE);
+#endif
 	committed_bytes.fetch_add(bytes, std::memory_order_relaxed);
 }
 

@@ -8,6 +8,7 @@
 #include "file_io.h"
 #include "map_file_values.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -302,10 +303,19 @@ private:
 	{
 		const uint32 nb_darts = s_.darts->end_index();
 		auto check = [&](const AttributeArray<uint32>& a, uint32 end, const std::string& what) {
-			for (uint32 i = 0; i < a.container()->end_index(); ++i)
-				if (a[i] != INVALID_INDEX && a[i] >= end)
-					in_.fail(what + " " + a.name() + " of line " + std::to_string(i) + " is " + std::to_string(a[i]) +
-							 ", out of the " + std::to_string(end) + " lines it refers to");
+			// run by run through pointers: this walks every relation and index
+			const uint32 n = a.container()->end_index();
+			for (uint32 i = 0; i < n;)
+			{
+				const uint32 run = std::min(a.run_end(i), n);
+				const uint32* values = &a[i];
+				for (uint32 k = 0; k < run - i; ++k)
+					if (values[k] != INVALID_INDEX && values[k] >= end)
+						in_.fail(what + " " + a.name() + " of line " + std::to_string(i + k) + " is " +
+								 std::to_string(values[k]) + ", out of the " + std::to_string(end) +
+								 " lines it refers to");
+				i = run;
+			}
 		};
 		for (const AttributeArray<uint32>* r : s_.relations)
 			check(*r, nb_darts, "relation");

@@ -3,6 +3,7 @@
 
 #include <cgogn/core/utils/numeric.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cstddef>
 #include <memory>
@@ -65,9 +66,15 @@ public:
 	}
 	~LineStorage()
 	{
-		resize(0, T());
+		// the committed pages given back in one call, not block by block
+		blocks_.clear();
 		if (base_ != nullptr)
+		{
+			std::destroy_n(base_, contiguous_);
+			if (committed_bytes_ > 0)
+				detail::decommit_pages(base_, committed_bytes_);
 			detail::release_address_space(base_, reserved_bytes());
+		}
 	}
 	LineStorage(const LineStorage&) = delete;
 	LineStorage& operator=(const LineStorage&) = delete;
@@ -155,15 +162,30 @@ public:
 
 	/// Grows or shrinks to n elements (a multiple of BLOCK_SIZE): new elements
 	/// are copies of `value`, removed ones are destroyed and their memory given
-	/// back. Throws std::bad_alloc when memory runs out (the size is then
-	/// unchanged).
+	/// back. The pages of the reserved range are committed (decommitted) in one
+	/// call per resize, not one per block: a load that sizes a container of
+	/// 10^6 lines at once makes one system call, not hundreds. Throws
+	/// std::bad_alloc when memory runs out (the size is then unchanged).
 	void resize(uint32 n, const T& value)
 	{
 		assert(n % BLOCK_SIZE == 0);
-		while (size_ < n)
-			grow_one_block(value);
-		while (size_ > n)
-			shrink_one_block();
+		if (n > size_)
+		{
+			commit_contiguous(n);
+			while (size_ < n)
+				grow_one_block(value);
+		}
+		else if (n < size_)
+		{
+			while (size_ > n)
+				shrink_one_block();
+			const std::size_t kept = round_to_pages(std::size_t(contiguous_) * sizeof(T));
+			if (kept < committed_bytes_)
+			{
+				detail::decommit_pages(reinterpret_cast<char*>(base_) + kept, committed_bytes_ - kept);
+				committed_bytes_ = kept;
+			}
+		}
 	}
 
 	/// Bytes of memory held: committed pages and blocks.
@@ -183,24 +205,38 @@ private:
 		return (bytes + p - 1) / p * p;
 	}
 
+	// Commits the pages of the reserved range that n elements need (those
+	// of the range; the others go to blocks), reserving the range first.
+	void commit_contiguous(uint32 n)
+	{
+		if (size_ >= contiguous_target_)
+			return;
+		if (base_ == nullptr)
+		{
+			base_ = static_cast<T*>(detail::reserve_address_space(reserved_bytes()));
+			if (base_ == nullptr)
+			{
+				contiguous_target_ = 0; // no virtual memory: blocks only
+				return;
+			}
+		}
+		const std::size_t needed = round_to_pages(std::size_t(std::min<uint64>(n, contiguous_target_)) * sizeof(T));
+		if (needed > committed_bytes_)
+		{
+			detail::commit_pages(reinterpret_cast<char*>(base_) + committed_bytes_, needed - committed_bytes_);
+			committed_bytes_ = needed;
+		}
+	}
+
+	// Precondition: commit_contiguous covered the new block when it goes to
+	// the reserved range.
 	void grow_one_block(const T& value)
 	{
 		if (size_ < contiguous_target_)
 		{
-			if (base_ == nullptr)
-			{
-				base_ = static_cast<T*>(detail::reserve_address_space(reserved_bytes()));
-				if (base_ == nullptr)
-					contiguous_target_ = 0; // no virtual memory: blocks only
-			}
 			if (base_ != nullptr)
 			{
-				const std::size_t needed = round_to_pages(std::size_t(size_ + BLOCK_SIZE) * sizeof(T));
-				if (needed > committed_bytes_)
-				{
-					detail::commit_pages(reinterpret_cast<char*>(base_) + committed_bytes_, needed - committed_bytes_);
-					committed_bytes_ = needed;
-				}
+				assert(round_to_pages(std::size_t(size_ + BLOCK_SIZE) * sizeof(T)) <= committed_bytes_);
 				T* first = base_ + size_;
 				std::uninitialized_fill_n(first, BLOCK_SIZE, value);
 				size_ += BLOCK_SIZE;
@@ -226,12 +262,6 @@ private:
 		size_ -= BLOCK_SIZE;
 		contiguous_ = size_;
 		std::destroy_n(base_ + size_, BLOCK_SIZE);
-		const std::size_t kept = round_to_pages(std::size_t(size_) * sizeof(T));
-		if (kept < committed_bytes_)
-		{
-			detail::decommit_pages(reinterpret_cast<char*>(base_) + kept, committed_bytes_ - kept);
-			committed_bytes_ = kept;
-		}
 	}
 
 	// Inline, no call: a call in a traversal loop, even on this cold path,
