@@ -4,7 +4,9 @@
 #include <cgogn/core/build/map_builder.h>
 #include <cgogn/core/operators/incidence_graph.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap2.h>
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/core/traversals/local_gmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/error.h>
@@ -418,16 +420,13 @@ void fill_listed_edges(MAP& m, const MeshData& d, const BuildReport& br, const s
 	std::vector<std::pair<uint32, uint32>> found; // (edge line, listed edge)
 	std::vector<uint8> matched(d.segments.size(), 0);
 	index_cells<Edge>(m);
+	std::vector<uint32> ends; // the file ids of the edge's two vertices
 	foreach_cell(m, [&](Edge e) {
-		Dart other;
-		if constexpr (is_gmap_v<MAP>)
-			other = beta0(m, e.dart);
-		else
-			other = phi1(m, e.dart);
-		const uint32 a = file_id(index_of(m, Vertex(e.dart))), b = file_id(index_of(m, Vertex(other)));
-		if (a == INVALID_INDEX || b == INVALID_INDEX)
+		ends.clear();
+		foreach_incident_vertex(m, e, [&](Vertex v) { ends.push_back(file_id(index_of(m, v))); });
+		if (ends.size() != 2 || ends[0] == INVALID_INDEX || ends[1] == INVALID_INDEX)
 			return;
-		if (const auto it = listed.find(key(a, b)); it != listed.end())
+		if (const auto it = listed.find(key(ends[0], ends[1])); it != listed.end())
 		{
 			found.emplace_back(index_of(m, e), it->second);
 			matched[it->second] = 1;

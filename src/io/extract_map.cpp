@@ -2,6 +2,8 @@
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap2.h>
+#include <cgogn/core/traversals/local_gmap2.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/error.h>
 
@@ -202,6 +204,25 @@ std::vector<uint32> keep_nonzero_rows(std::vector<Column>& columns, uint32 nb_ro
 	return kept;
 }
 
+// The columns of the attributes of the cells CELL of `lines` that a file
+// can hold, reduced to the rows of the cells with a nonzero value, with the
+// names of those cells' physical groups (dimension dim) added to d. Returns
+// the kept positions in `lines` (none when no attribute is held).
+template <typename CELL, typename MAP>
+std::vector<uint32> cells_with_data(const MAP& m, const std::vector<uint32>& lines, int32 dim,
+									std::vector<Column>& columns, MeshData& d, const std::string& path)
+{
+	gather_columns(container_of<CELL::ORBIT>(m), lines, columns, false, path);
+	if (columns.empty())
+		return {};
+	std::vector<uint32> kept = keep_nonzero_rows(columns, uint32(lines.size()));
+	std::vector<uint32> kept_lines;
+	for (uint32 i : kept)
+		kept_lines.push_back(lines[i]);
+	collect_physical_names<CELL>(m, kept_lines, dim, d);
+	return kept;
+}
+
 // The faces of a volume map with a nonzero value in one of their attributes
 // a file can hold, as listed faces with those columns (MeshData::face_sizes),
 // each seen from a volume that is not a boundary one (on a 3-map,
@@ -219,14 +240,9 @@ void list_faces_with_data(const MAP& m, MeshData& d, const std::string& path, co
 		darts.push_back(f.dart);
 	});
 	std::vector<Column> columns;
-	gather_columns(container_of<Face::ORBIT>(m), lines, columns, false, path);
+	const std::vector<uint32> kept = cells_with_data<Face>(m, lines, 2, columns, d, path);
 	if (columns.empty())
 		return;
-	const std::vector<uint32> kept = keep_nonzero_rows(columns, uint32(lines.size()));
-	std::vector<uint32> kept_lines;
-	for (uint32 i : kept)
-		kept_lines.push_back(lines[i]);
-	collect_physical_names<Face>(m, kept_lines, 2, d);
 	for (uint32 i : kept)
 	{
 		Dart x = darts[i];
@@ -397,29 +413,14 @@ void list_edges_of(const MAP& m, MeshData& d, const std::string& path)
 	std::vector<uint32> id(vc.end_index(), INVALID_INDEX);
 	uint32 next_id = 0;
 	foreach_cell(m, [&](Vertex v) { id[index_of(m, v)] = next_id++; }); // as number_vertices
-	std::vector<uint32> lines;
-	std::vector<std::pair<uint32, uint32>> ends;
+	std::vector<uint32> lines, ends;                                    // two vertex ids per edge
 	foreach_cell(m, [&](Edge e) {
-		Dart other;
-		if constexpr (is_gmap_v<MAP>)
-			other = beta0(m, e.dart);
-		else
-			other = phi1(m, e.dart);
 		lines.push_back(index_of(m, e));
-		ends.emplace_back(id[index_of(m, Vertex(e.dart))], id[index_of(m, Vertex(other))]);
+		foreach_incident_vertex(m, e, [&](Vertex v) { ends.push_back(id[index_of(m, v)]); });
 	});
 	std::vector<Column> columns;
-	gather_columns(container_of<Edge::ORBIT>(m), lines, columns, false, path);
-	if (columns.empty())
-		return;
-	const std::vector<uint32> kept = keep_nonzero_rows(columns, uint32(lines.size()));
-	std::vector<uint32> kept_lines;
-	for (uint32 i : kept)
-	{
-		kept_lines.push_back(lines[i]);
-		d.segments.push_back(ends[i]);
-	}
-	collect_physical_names<Edge>(m, kept_lines, 1, d);
+	for (uint32 i : cells_with_data<Edge>(m, lines, 1, columns, d, path))
+		d.segments.emplace_back(ends[2 * i], ends[2 * i + 1]);
 	d.segment_columns = std::move(columns);
 }
 

@@ -3,6 +3,8 @@
 // io::Error (file, line or byte, cause); writers return the file's content.
 #pragma once
 
+#include <cgogn/io/options.h>
+
 #include "mesh_data.h"
 
 #include <string>
@@ -49,6 +51,10 @@ std::pair<std::string, std::string> write_tetgen(const MeshData& d);
 /// map cannot hold (other properties, faces in no cell) goes to d.dropped.
 MeshData read_ovm(std::string_view text, const std::string& path);
 std::string write_ovm(const MeshData& d);
+
+/// The mesh in `data` by the reader of format f: every format held in one
+/// file (not TetGen's two). O(size of data).
+MeshData read_mesh(Format f, std::string_view data, const std::string& path);
 
 /// Throws io::Error (no position) when a cell refers to a vertex that does not
 /// exist, a column does not have one value per element, or two columns of the

@@ -34,35 +34,7 @@ template <typename MAP>
 LoadReport load_surface_into(MAP& m, const std::string& path, const LoadOptions& options)
 {
 	const Format f = resolve(options.format, path);
-	const std::string data = detail::read_file(path);
-	detail::MeshData d;
-	switch (f)
-	{
-	case Format::Off:
-		d = detail::read_off(data, path);
-		break;
-	case Format::Obj:
-		d = detail::read_obj(data, path);
-		break;
-	case Format::Ply:
-		d = detail::read_ply(data, path);
-		break;
-	case Format::Stl:
-		d = detail::read_stl(data, path);
-		break;
-	case Format::Gmsh:
-		d = detail::read_gmsh(data, path);
-		break;
-	case Format::Medit:
-		d = detail::read_medit(data, path);
-		break;
-	case Format::VtkLegacy:
-		d = detail::read_vtk(data, path);
-		break;
-	default:
-		d = detail::read_vtu(data, path);
-		break;
-	}
+	detail::MeshData d = detail::read_mesh(f, detail::read_file(path), path);
 	if (lists_faces(f))
 		d.faces_as_cells(path);
 	detail::validate(d, path);

@@ -43,27 +43,7 @@ LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& 
 		d = detail::read_tetgen(node, node_path, ele, ele_path);
 	}
 	else
-	{
-		const std::string data = detail::read_file(path);
-		switch (f)
-		{
-		case Format::Medit:
-			d = detail::read_medit(data, path);
-			break;
-		case Format::VtkLegacy:
-			d = detail::read_vtk(data, path);
-			break;
-		case Format::Vtu:
-			d = detail::read_vtu(data, path);
-			break;
-		case Format::Ovm:
-			d = detail::read_ovm(data, path);
-			break;
-		default:
-			d = detail::read_gmsh(data, path);
-			break;
-		}
-	}
+		d = detail::read_mesh(f, detail::read_file(path), path);
 	detail::validate(d, path);
 	const uint32 flipped = detail::orient_cells(d);
 	LoadReport r = detail::build_map(m, d, path);
