@@ -38,38 +38,48 @@ bool is_volume_scheme(Scheme s)
 int run_subdivide(const SubdivideOptions& o)
 {
 	Progress progress;
-	const bool volume_in = is_volume_file(o.files.in);
-	if (volume_in != is_volume_scheme(o.scheme))
-		throw std::invalid_argument(o.files.in +
-									": the schemes loop, catmull-clark and sqrt3 take surfaces, hex and tet "
-									"take volume meshes");
-	if (volume_in && !is_volume_format(format_of(o.files.out)))
-		throw io::Error(o.files.out, "not a volume format");
+	const io::Format in_format = format_of(o.files.in);
+	const auto wrong_scheme = [&] {
+		return std::invalid_argument(o.files.in +
+									 ": the schemes loop, catmull-clark and sqrt3 take surfaces, hex and tet "
+									 "take volume meshes");
+	};
 	try
 	{
-		if (volume_in)
+		// a file of a format of both (.mesh .vtk .vtu .msh) is a volume mesh
+		// when it has volume cells: loaded once as such to find out
+		if (is_volume_format(in_format) && (is_volume_scheme(o.scheme) || holds_surfaces(in_format)))
 		{
 			progress.stage("loading " + o.files.in);
 			CMap3 m;
-			io::load_volume(m, o.files.in);
-			record_origins_if_asked(m, o.files);
-			auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
-			if (!pos)
-				throw std::runtime_error("the mesh has no vertex positions");
-			for (uint32 i = 0; i < o.iterations; ++i)
+			const io::LoadReport r = io::load_volume(m, o.files.in);
+			if (r.nb_cells_read > 0 || !holds_surfaces(in_format))
 			{
-				const auto callback = progress.percent("subdividing, step " + std::to_string(i + 1));
-				if (o.scheme == Scheme::Hex)
-					modeling::hex_subdivision(m, *pos, callback);
-				else
-					modeling::tet_subdivision(m, *pos, callback);
+				if (!is_volume_scheme(o.scheme))
+					throw wrong_scheme();
+				if (!is_volume_format(format_of(o.files.out)))
+					throw io::Error(o.files.out, "not a volume format");
+				record_origins_if_asked(m, o.files);
+				auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+				if (!pos)
+					throw std::runtime_error("the mesh has no vertex positions");
+				for (uint32 i = 0; i < o.iterations; ++i)
+				{
+					const auto callback = progress.percent("subdividing, step " + std::to_string(i + 1));
+					if (o.scheme == Scheme::Hex)
+						modeling::hex_subdivision(m, *pos, callback);
+					else
+						modeling::tet_subdivision(m, *pos, callback);
+				}
+				progress.stage("saving " + o.files.out);
+				io::SaveOptions so;
+				so.binary = o.files.binary;
+				io::save_volume(m, o.files.out, so);
+				return 0;
 			}
-			progress.stage("saving " + o.files.out);
-			io::SaveOptions so;
-			so.binary = o.files.binary;
-			io::save_volume(m, o.files.out, so);
-			return 0;
 		}
+		if (is_volume_scheme(o.scheme))
+			throw wrong_scheme();
 		const modeling::SurfaceScheme scheme = o.scheme == Scheme::Loop    ? modeling::SurfaceScheme::Loop
 											   : o.scheme == Scheme::Sqrt3 ? modeling::SurfaceScheme::Sqrt3
 																		   : modeling::SurfaceScheme::CatmullClark;

@@ -50,15 +50,6 @@ bool holds_surfaces(io::Format f)
 	return f != io::Format::TetGen && f != io::Format::Ovm;
 }
 
-bool is_volume_file(const std::string& path)
-{
-	const io::Format f = format_of(path);
-	if (!is_volume_format(f) || !holds_surfaces(f))
-		return is_volume_format(f);
-	CMap3 m;
-	return io::load_volume(m, path).nb_cells_read > 0;
-}
-
 namespace
 {
 // The extension of path from its last dot, lower-cased; empty without a dot.

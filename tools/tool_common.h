@@ -52,10 +52,6 @@ private:
 bool is_volume_format(io::Format f);
 /// Whether f holds surfaces: every format but .node/.ele and .ovm.
 bool holds_surfaces(io::Format f);
-/// Whether the file at path is a volume mesh: one of a volume-only format,
-/// or one of a format of both (.mesh .vtk .vtu .msh) with volume cells,
-/// which this loads to find out.
-bool is_volume_file(const std::string& path);
 
 /// Whether path names a .nmap file, a map of any dimension (by its
 /// extension, any case).

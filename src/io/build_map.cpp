@@ -581,6 +581,9 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	else
 	{
 		fill_listed_edges(m, d, br, path, rep);
+		if (!d.segments.empty() && !any_usable(d.segment_columns))
+			rep.dropped.push_back(std::to_string(d.segments.size()) +
+								  " listed edge(s) without data: the surface has its own edges");
 		if (std::any_of(d.physical_names.begin(), d.physical_names.end(),
 						[](const auto& p) { return p.dim != 1 && p.dim != 2; }))
 			rep.dropped.push_back("the names of physical groups of points and volumes: a surface map names its faces "

@@ -165,6 +165,13 @@ TEST(SurfaceTags, EdgesThatNoFaceHasAreReported)
 	ASSERT_FALSE(r.dropped.empty());
 	EXPECT_NE(r.summary("CMap2").find("1 listed edge(s) with their data: no edge of the faces"), std::string::npos)
 		<< r.summary("CMap2");
+	// edges with no reference: nothing to hold, but said
+	write_text(dir.file("u.mesh"), "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\n0 1 0 0\n"
+								   "Triangles\n1\n1 2 3 0\nEdges\n1\n1 2 0\nEnd\n");
+	CMap2 u;
+	const io::LoadReport ru = io::load_surface(u, dir.file("u.mesh"));
+	EXPECT_EQ((get_attribute<int32, CMap2::Edge>(u, "medit:ref")), nullptr);
+	EXPECT_NE(ru.summary("CMap2").find("1 listed edge(s) without data"), std::string::npos) << ru.summary("CMap2");
 }
 
 TEST(SurfaceTags, AVolumeFileIsRefusedAndTheMapIsUnchanged)
