@@ -11,6 +11,7 @@
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_cmap3.h>
 #include <cgogn/modeling/subdivision.h>
 
 #include <Eigen/Geometry>
@@ -143,14 +144,7 @@ public:
 		std::vector<uint32> key;
 		foreach_cell(m, [&](CELL c) {
 			key.clear();
-			Dart d = c.dart;
-			do
-			{
-				key.push_back(index_of(m, Vertex(d)));
-				d = phi1(m, d);
-			} while (d != c.dart && std::is_same_v<CELL, Face>);
-			if constexpr (std::is_same_v<CELL, Edge>)
-				key.push_back(index_of(m, Vertex(phi1(m, c.dart))));
+			foreach_incident_vertex(m, c, [&](Vertex v) { key.push_back(index_of(m, v)); });
 			std::sort(key.begin(), key.end());
 			line_.emplace(key, index_of(m, c));
 		});
@@ -180,19 +174,11 @@ void apply_cell_rules(const CMap3& m, detail::RuleSnapshot& rules, const CellsBy
 	const double one = 1.0;
 	foreach_cell(m, [&](CELL c) {
 		lines.clear();
-		auto add_parents = [&](Dart d) {
-			const uint32 id = index_of(m, Vertex(d)) - vertex_offset;
+		foreach_incident_vertex(m, c, [&](Vertex v) {
+			const uint32 id = index_of(m, v) - vertex_offset;
 			lines.insert(lines.end(), r.parent_lines.begin() + r.parent_offsets[id],
 						 r.parent_lines.begin() + r.parent_offsets[id + 1]);
-		};
-		Dart d = c.dart;
-		do
-		{
-			add_parents(d);
-			d = phi1(m, d);
-		} while (d != c.dart && std::is_same_v<CELL, Face>);
-		if constexpr (std::is_same_v<CELL, Edge>)
-			add_parents(phi1(m, c.dart));
+		});
 		if (const uint32 parent = old.find(lines); parent != INVALID_INDEX)
 			rules.apply(index_of(m, c), std::span(&parent, 1), std::span(&one, 1));
 	});
