@@ -4,6 +4,7 @@
 #include <cgogn/core/properties/integrity.h>
 
 #include "incidence_graph_records.h"
+#include "integrity_quick.h"
 
 #include <algorithm>
 #include <array>
@@ -353,6 +354,9 @@ void check_relations(const MAP& m, Checker& ck)
 template <typename MAP>
 void check_phi_relations(const MAP& m, Checker& ck)
 {
+	if (detail::phi_relations_hold(m))
+		return;
+	// the detailed check, which names what is wrong
 	const AttributeContainer& darts = *detail::state_of(m).darts;
 	std::vector<uint8> phi1_preimages(darts.end_index(), 0);
 	bool relations_ok = true;
@@ -563,46 +567,6 @@ void foreach_orbit_neighbour(const MAP& m, Dart d, const FUNC& f)
 	}
 }
 
-// Whether the indexing of orbit O holds, in two linear passes and no
-// error message: every dart of a non-boundary cell has a live line and
-// every boundary one none, and the walk of the orbit of each line's
-// representative meets only darts of that line, as many in all as there are
-// indexed darts. The walks are then disjoint and cover every indexed dart:
-// each cell has one line, constant on its darts, and no two cells share a
-// line. About half the cost of checking each dart's neighbours as well.
-template <Orbit O, typename MAP>
-bool orbit_indexing_holds(const MAP& m, const AttributeArray<uint32>& idx, const AttributeContainer& cells)
-{
-	uint64 indexed = 0;
-	bool ok = true;
-	foreach_dart(m, [&](Dart d) {
-		const uint32 i = idx[d.index];
-		if (is_boundary_cell(m, Cell<O>(d)))
-			ok = ok && i == INVALID_INDEX;
-		else
-		{
-			ok = ok && i != INVALID_INDEX && cells.is_live(i);
-			++indexed;
-		}
-		return ok;
-	});
-	if (!ok)
-		return false;
-	uint64 walked = 0;
-	for (uint32 i = cells.first_index(); ok && i < cells.end_index(); i = cells.next_index(i))
-	{
-		const Dart rep(cells.key()[i]);
-		if (!is_dart_valid(m, rep) || idx[rep.index] != i)
-			return false;
-		foreach_dart_of_orbit(m, Cell<O>(rep), [&](Dart x) {
-			++walked;
-			ok = idx[x.index] == i;
-			return ok;
-		});
-	}
-	return ok && walked == indexed;
-}
-
 template <typename MAP, Orbit O>
 void check_orbit_indexing(const MAP& m, Checker& ck)
 {
@@ -611,7 +575,7 @@ void check_orbit_indexing(const MAP& m, Checker& ck)
 		return;
 	const AttributeContainer& cells = *detail::state_of(m).cells[orbit_index(O)];
 	check_container_free_list(cells, O, ck);
-	if (orbit_indexing_holds<O>(m, *idx, cells))
+	if (detail::orbit_indexing_holds<O>(m, *idx, cells))
 		return;
 	// the detailed check, which names what is wrong
 	std::vector<uint32> count(cells.end_index(), 0);
