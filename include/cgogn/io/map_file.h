@@ -4,6 +4,7 @@
 #include <cgogn/core/map/cmap3.h>
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/graph.h>
+#include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/nmap.h>
 #include <cgogn/io/error.h>
 
