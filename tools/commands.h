@@ -19,5 +19,8 @@ Command add_fill_holes_command(CLI::App& app);
 Command add_dual_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_view_command(CLI::App& app);
+#ifdef CGOGN_TOOL_HAS_PARTITION
+Command add_partition_command(CLI::App& app); // with the distributed layer only
+#endif
 
 } // namespace cgogn::tool

@@ -13,10 +13,13 @@ int main(int argc, char** argv)
 	CLI::App app{"cgogn: inspect, check, convert and process surface and volume mesh files"};
 	app.require_subcommand(1);
 	const std::vector<tool::Command> commands = {
-		tool::add_info_command(app),   tool::add_check_command(app),       tool::add_convert_command(app),
-		tool::add_smooth_command(app), tool::add_triangulate_command(app), tool::add_decimate_command(app),
-		tool::add_remesh_command(app), tool::add_subdivide_command(app),   tool::add_fill_holes_command(app),
-		tool::add_dual_command(app),   tool::add_render_command(app),      tool::add_view_command(app),
+		tool::add_info_command(app),      tool::add_check_command(app),       tool::add_convert_command(app),
+		tool::add_smooth_command(app),    tool::add_triangulate_command(app), tool::add_decimate_command(app),
+		tool::add_remesh_command(app),    tool::add_subdivide_command(app),   tool::add_fill_holes_command(app),
+		tool::add_dual_command(app),      tool::add_render_command(app),      tool::add_view_command(app),
+#ifdef CGOGN_TOOL_HAS_PARTITION
+		tool::add_partition_command(app),
+#endif
 	};
 	try
 	{

@@ -154,6 +154,9 @@ void bind_incidence_graph(py::module_& m);
 /// Whole-map files (.cgmap) and pickling of every map class (bind_map_files.cpp);
 /// bound last, once the classes exist.
 void bind_map_files(py::module_& m);
+#ifdef CGOGN_PYTHON_HAS_DISTRIBUTED
+void bind_distributed(py::module_& m); // with the distributed layer only
+#endif
 /// Whether path ends with .cgmap (any case).
 bool has_map_file_extension(const std::string& path);
 /// The map of .cgmap bytes as an instance of its Python class; io::Error for
