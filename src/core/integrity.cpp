@@ -406,12 +406,7 @@ void check_phi_relations(const MAP& m, Checker& ck)
 		foreach_dart(m, [&](Dart d) {
 			const bool b = is_boundary(m, d);
 			marked += b;
-			Dart top;
-			if constexpr (MAP::dimension == 2)
-				top = phi2(m, d);
-			else
-				top = phi3(m, d);
-			if (b && is_boundary(m, top))
+			if (b && is_boundary(m, detail::last_phi(m, d)))
 				ck.add(Kind::BoundaryLinked, Orbit::DART, d.index, INVALID_INDEX,
 					   "phi" + std::to_string(MAP::dimension) + " links two boundary darts");
 			bool constant = is_boundary(m, phi1(m, d)) == b;

@@ -85,6 +85,17 @@ bool phi1_is_injective(const MAP& m)
 	return ok.load();
 }
 
+/// phi_n of d in a CMap2 or CMap3 (phi2, phi3): the relation across which a
+/// boundary dart must never face another. O(1).
+template <typename MAP>
+Dart last_phi(const MAP& m, Dart d)
+{
+	if constexpr (MAP::dimension == 2)
+		return phi2(m, d);
+	else
+		return phi3(m, d);
+}
+
 /// Whether the relations of a CMap1, CMap2 or CMap3 hold (see
 /// check_phi_relations in integrity.cpp for the list). O(darts), in parallel.
 template <typename MAP>
@@ -131,12 +142,7 @@ bool phi_relations_hold(const MAP& m)
 						return false;
 				const bool boundary = is_boundary(m, d);
 				marked_here += boundary;
-				Dart top;
-				if constexpr (MAP::dimension == 2)
-					top = phi2(m, d);
-				else
-					top = phi3(m, d);
-				if (boundary && is_boundary(m, top))
+				if (boundary && is_boundary(m, last_phi(m, d)))
 					return false;
 				if (is_boundary(m, phi1(m, d)) != boundary)
 					return false;

@@ -207,9 +207,9 @@ PartitionReport partition_cells(MAP& m, uint32 nb_parts, const PartitionOptions&
 		{
 			if (added)
 				remove_attribute(m, part_attr);
-			throw std::runtime_error("partition: METIS failed (" +
-									 std::string(status == METIS_ERROR_MEMORY ? "out of memory" : "error code ") +
-									 (status == METIS_ERROR_MEMORY ? "" : std::to_string(status)) + ")");
+			throw std::runtime_error(status == METIS_ERROR_MEMORY
+										 ? "partition: METIS ran out of memory"
+										 : "partition: METIS failed (status " + std::to_string(status) + ")");
 		}
 	}
 

@@ -37,6 +37,19 @@ CELL find(const MAP& m, P pred)
 	return r;
 }
 
+/// Swaps the phi3 partners of the inner dart d of a 3-map and of phi1(d):
+/// phi3 stays a fixed-point-free involution, but phi3 o phi1 no longer is
+/// (the faces do not match across phi3), which check_integrity must see.
+inline void cross_phi3_inside_face(CMap3& m, Dart d)
+{
+	const Dart e = phi1(m, d);
+	const Dart d3 = phi3(m, d), e3 = phi3(m, e);
+	phi3_unsew(m, d);
+	phi3_unsew(m, e);
+	phi3_sew(m, d, e3);
+	phi3_sew(m, e, d3);
+}
+
 /// Indexes every orbit of m (an attribute per orbit), so that the operators'
 /// index maintenance is exercised on all of them.
 inline void index_everything(CMap2& m)

@@ -1,6 +1,8 @@
 // check_integrity must catch every kind of corruption it claims to catch.
 #include <cgogn/core.h>
 
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 namespace cgogn_test_integrity
@@ -206,12 +208,7 @@ TEST(Integrity, Phi3Phi1NotInvolution)
 		return false;
 	});
 	ASSERT_TRUE(d.is_valid());
-	const Dart e = phi1(m, d);
-	const Dart d3 = phi3(m, d), e3 = phi3(m, e);
-	phi3_unsew(m, d);
-	phi3_unsew(m, e);
-	phi3_sew(m, d, e3);
-	phi3_sew(m, e, d3);
+	cgogn::test::cross_phi3_inside_face(m, d);
 	const IntegrityReport r = check_integrity(m);
 	EXPECT_TRUE(r.has(Kind::Phi1Phi3NotInvolution));
 }

@@ -4,6 +4,8 @@
 // chunk, in the first or the last worker's range of phi1 targets).
 #include <cgogn/core.h>
 
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -153,18 +155,13 @@ TEST_P(ParallelIntegrity, Phi3Phi1NotInvolution)
 {
 	CMap3 m;
 	build_volume(m, tet_grid_soup(12, 12, 12));
-	// the last inner dart: re-pair phi3 inside its face
+	// the last inner dart
 	Dart d;
 	foreach_dart(m, [&](Dart x) {
 		if (!is_boundary(m, x) && !is_boundary(m, phi3(m, x)))
 			d = x;
 	});
-	const Dart e = phi1(m, d);
-	const Dart d3 = phi3(m, d), e3 = phi3(m, e);
-	phi3_unsew(m, d);
-	phi3_unsew(m, e);
-	phi3_sew(m, d, e3);
-	phi3_sew(m, e, d3);
+	cgogn::test::cross_phi3_inside_face(m, d);
 	EXPECT_TRUE(check_integrity(m).has(Kind::Phi1Phi3NotInvolution));
 }
 
