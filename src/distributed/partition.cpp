@@ -5,10 +5,10 @@
 #include <cgogn/distributed/partition.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <metis.h>
 #include <numeric>
+#include <utility>
 
 namespace cgogn::dist
 {
@@ -43,18 +43,20 @@ struct DualOf<CMap2>
 };
 
 // The dual graph in compressed rows, as METIS takes it: the neighbours of
-// cell i are adjacency[offsets[i], offsets[i + 1]), sorted, each once.
+// cell i are adjacency[offsets[i], offsets[i + 1]), sorted, each once. The
+// facets are kept too, one pair of cell numbers each (several between one
+// pair of cells count each), for the cut count.
 struct DualGraph
 {
 	std::vector<idx_t> offsets;
 	std::vector<idx_t> adjacency;
-	uint64 nb_facets = 0; // facets between two cells (several between one pair count each)
+	std::vector<std::pair<uint32, uint32>> facets;
 };
 
 // Numbers the cells 0 .. n-1 in traversal order (number[line] = k).
 // Precondition: the cells are indexed.
 template <typename MAP>
-std::vector<uint32> number_cells(const MAP& m, uint32& nb_cells_out)
+std::vector<uint32> number_cells(const MAP& m)
 {
 	using Cell = typename DualOf<MAP>::Cell;
 	std::vector<uint32> number;
@@ -65,10 +67,10 @@ std::vector<uint32> number_cells(const MAP& m, uint32& nb_cells_out)
 			number.resize(std::max<std::size_t>(line + 1, 2 * number.size()), INVALID_INDEX);
 		number[line] = k++;
 	});
-	nb_cells_out = k;
 	return number;
 }
 
+// One walk of the map's facets; the rows are then built from the pairs.
 template <typename MAP>
 DualGraph dual_graph(const MAP& m, const std::vector<uint32>& number, uint32 n)
 {
@@ -76,32 +78,30 @@ DualGraph dual_graph(const MAP& m, const std::vector<uint32>& number, uint32 n)
 	DualGraph g;
 	// the two cells on either side of each interior facet; a facet with the
 	// same cell on both sides adds no edge
-	const auto foreach_pair = [&](const auto& f) {
-		foreach_cell(m, [&](typename D::Facet facet) {
-			const Dart d = facet.dart, e = D::across(m, d);
-			if (is_boundary(m, d) || is_boundary(m, e))
-				return;
-			const uint32 a = number[index_of(m, typename D::Cell(d))];
-			const uint32 b = number[index_of(m, typename D::Cell(e))];
-			if (a != b)
-				f(a, b);
-		});
-	};
-	std::vector<idx_t> degree(n + 1, 0);
-	foreach_pair([&](uint32 a, uint32 b) {
-		++degree[a];
-		++degree[b];
-		++g.nb_facets;
+	foreach_cell(m, [&](typename D::Facet facet) {
+		const Dart d = facet.dart, e = D::across(m, d);
+		if (is_boundary(m, d) || is_boundary(m, e))
+			return;
+		const uint32 a = number[index_of(m, typename D::Cell(d))];
+		const uint32 b = number[index_of(m, typename D::Cell(e))];
+		if (a != b)
+			g.facets.emplace_back(a, b);
 	});
 	g.offsets.assign(n + 1, 0);
+	for (const auto& [a, b] : g.facets)
+	{
+		++g.offsets[a + 1];
+		++g.offsets[b + 1];
+	}
 	for (uint32 i = 0; i < n; ++i)
-		g.offsets[i + 1] = g.offsets[i] + degree[i];
+		g.offsets[i + 1] += g.offsets[i];
 	std::vector<idx_t> cursor(g.offsets.begin(), g.offsets.end() - 1);
 	g.adjacency.resize(std::size_t(g.offsets[n]));
-	foreach_pair([&](uint32 a, uint32 b) {
+	for (const auto& [a, b] : g.facets)
+	{
 		g.adjacency[std::size_t(cursor[a]++)] = idx_t(b);
 		g.adjacency[std::size_t(cursor[b]++)] = idx_t(a);
-	});
+	}
 	// METIS takes each neighbour once: two cells sharing several facets
 	// (possible with polyhedra) are one edge
 	idx_t out = 0;
@@ -178,14 +178,12 @@ PartitionReport partition_cells(MAP& m, uint32 nb_parts, const PartitionOptions&
 		added = true;
 	}
 
-	uint32 numbered = 0;
-	const std::vector<uint32> number = number_cells(m, numbered);
-	assert(numbered == n);
+	const std::vector<uint32> number = number_cells(m);
 	DualGraph g = dual_graph(m, number, n);
 
 	PartitionReport report;
 	report.nb_parts = nb_parts;
-	report.nb_interior_facets = g.nb_facets;
+	report.nb_interior_facets = g.facets.size();
 	report.nb_map_components = components_per_label(g, std::vector<idx_t>(n, 0), 1)[0];
 
 	std::vector<idx_t> part(n, 0);
@@ -219,12 +217,8 @@ PartitionReport partition_cells(MAP& m, uint32 nb_parts, const PartitionOptions&
 	const uint64 largest = *std::max_element(report.part_sizes.begin(), report.part_sizes.end());
 	report.imbalance = double(largest) * double(nb_parts) / double(n);
 	// counted per facet: two cells may share several (polyhedra)
-	foreach_cell(m, [&](typename DualOf<MAP>::Facet facet) {
-		const Dart d = facet.dart, e = DualOf<MAP>::across(m, d);
-		if (!is_boundary(m, d) && !is_boundary(m, e) &&
-			part[number[index_of(m, Cell(d))]] != part[number[index_of(m, Cell(e))]])
-			++report.nb_cut_facets;
-	});
+	for (const auto& [a, b] : g.facets)
+		report.nb_cut_facets += part[a] != part[b];
 	report.part_components = components_per_label(g, part, nb_parts);
 
 	foreach_cell(m, [&](Cell c) { (*part_attr)[c] = uint32(part[number[index_of(m, c)]]); });
