@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/utils/numeric.h>
+
+#include <cstddef>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+namespace cgogn::dist::detail
+{
+
+/// What the root sends one rank: its top cells (owned and ghost) as a cell
+/// soup over local vertex numbers, with the global id and owner of every
+/// vertex, of every top cell, and of the edges (and faces) of every corner.
+struct PartMessage
+{
+	std::vector<uint64> vertex_gid;
+	std::vector<int32> vertex_owner;
+	std::vector<double> positions; ///< x, y, z per vertex; empty without positions.
+	std::vector<uint64> cell_gid;
+	std::vector<int32> cell_owner;
+	std::vector<uint32> cell_nb_faces; ///< Faces of each volume (empty for surfaces).
+	std::vector<uint32> face_sizes;    ///< Corners of each face, face after face.
+	std::vector<uint32> corner_vertex; ///< The local vertex of each corner (a face's corners in phi1 order).
+	/// Per corner, the cell of dimension k + 1 (the edge, then the face of a
+	/// volume) of the dart leaving the corner's vertex in its face.
+	std::vector<uint64> corner_gid[2];
+	std::vector<int32> corner_owner[2];
+};
+
+/// Appends vectors to a byte buffer, each after its length.
+class ByteWriter
+{
+public:
+	template <typename T>
+	void put(const std::vector<T>& v)
+	{
+		const uint64 n = v.size();
+		append(&n, sizeof n);
+		append(v.data(), n * sizeof(T));
+	}
+	std::vector<std::byte>& bytes()
+	{
+		return bytes_;
+	}
+
+private:
+	void append(const void* p, std::size_t n)
+	{
+		const std::size_t at = bytes_.size();
+		bytes_.resize(at + n);
+		if (n != 0)
+			std::memcpy(bytes_.data() + at, p, n);
+	}
+	std::vector<std::byte> bytes_;
+};
+
+/// Reads back what a ByteWriter wrote, in the same order.
+class ByteReader
+{
+public:
+	explicit ByteReader(const std::vector<std::byte>& bytes) : bytes_(bytes)
+	{
+	}
+	template <typename T>
+	void get(std::vector<T>& v)
+	{
+		uint64 n = 0;
+		take(&n, sizeof n);
+		v.resize(n);
+		take(v.data(), n * sizeof(T));
+	}
+
+private:
+	void take(void* p, std::size_t n)
+	{
+		if (at_ + n > bytes_.size())
+			throw std::runtime_error("distribute: truncated part message");
+		if (n != 0)
+			std::memcpy(p, bytes_.data() + at_, n);
+		at_ += n;
+	}
+	const std::vector<std::byte>& bytes_;
+	std::size_t at_ = 0;
+};
+
+inline std::vector<std::byte> serialize(const PartMessage& m)
+{
+	ByteWriter w;
+	w.put(m.vertex_gid);
+	w.put(m.vertex_owner);
+	w.put(m.positions);
+	w.put(m.cell_gid);
+	w.put(m.cell_owner);
+	w.put(m.cell_nb_faces);
+	w.put(m.face_sizes);
+	w.put(m.corner_vertex);
+	for (int k = 0; k < 2; ++k)
+	{
+		w.put(m.corner_gid[k]);
+		w.put(m.corner_owner[k]);
+	}
+	return std::move(w.bytes());
+}
+
+inline PartMessage deserialize(const std::vector<std::byte>& bytes)
+{
+	PartMessage m;
+	ByteReader r(bytes);
+	r.get(m.vertex_gid);
+	r.get(m.vertex_owner);
+	r.get(m.positions);
+	r.get(m.cell_gid);
+	r.get(m.cell_owner);
+	r.get(m.cell_nb_faces);
+	r.get(m.face_sizes);
+	r.get(m.corner_vertex);
+	for (int k = 0; k < 2; ++k)
+	{
+		r.get(m.corner_gid[k]);
+		r.get(m.corner_owner[k]);
+	}
+	return m;
+}
+
+} // namespace cgogn::dist::detail
