@@ -8,7 +8,10 @@
 
 using namespace cgogn;
 
-int main(int argc, char** argv)
+namespace
+{
+
+int serial_main(int argc, char** argv)
 {
 	CLI::App app{"cgogn: inspect, check, convert and process surface and volume mesh files"};
 	app.require_subcommand(1);
@@ -17,7 +20,7 @@ int main(int argc, char** argv)
 		tool::add_smooth_command(app),    tool::add_triangulate_command(app), tool::add_decimate_command(app),
 		tool::add_remesh_command(app),    tool::add_subdivide_command(app),   tool::add_fill_holes_command(app),
 		tool::add_dual_command(app),      tool::add_render_command(app),      tool::add_view_command(app),
-#ifdef CGOGN_TOOL_HAS_PARTITION
+#ifdef CGOGN_TOOL_HAS_DISTRIBUTED
 		tool::add_partition_command(app),
 #endif
 	};
@@ -42,4 +45,15 @@ int main(int argc, char** argv)
 		std::cerr << "cgogn: " << e.what() << "\n";
 		return tool::EXIT_ERROR;
 	}
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+#ifdef CGOGN_TOOL_HAS_DISTRIBUTED
+	if (tool::launched_by_mpiexec())
+		return tool::distributed_main(argc, argv, serial_main);
+#endif
+	return serial_main(argc, argv);
 }

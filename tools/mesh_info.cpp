@@ -340,7 +340,10 @@ std::string info_text(const json& j)
 						  "face_degrees",
 						  "bbox",
 						  "edge_length",
-						  "repaired_map"})
+						  "repaired_map",
+						  "ranks",
+						  "owned_cells_per_rank",
+						  "ghost_cells_per_rank"})
 		if (j.contains(k))
 			line(k, j[k]);
 	return s.str();

@@ -42,7 +42,7 @@ modeling::ProgressCallback Progress::percent(const std::string& what)
 bool is_volume_format(io::Format f)
 {
 	return f == io::Format::Medit || f == io::Format::VtkLegacy || f == io::Format::Vtu || f == io::Format::Gmsh ||
-		   f == io::Format::TetGen || f == io::Format::Ovm;
+		   f == io::Format::TetGen || f == io::Format::Ovm || f == io::Format::Pvtu;
 }
 
 bool holds_surfaces(io::Format f)
@@ -91,7 +91,7 @@ io::Format format_of(const std::string& path)
 	const io::Format f = io::format_from_extension(path);
 	if (f == io::Format::Auto)
 		throw io::Error(path, "unknown file extension (surfaces: .off .obj .ply .stl; volumes: .mesh .vtk .vtu "
-							  ".msh .node/.ele .ovm; maps of any dimension: .nmap)");
+							  ".pvtu .msh .node/.ele .ovm; maps of any dimension: .nmap)");
 	return f;
 }
 

@@ -666,7 +666,7 @@ void bind_conversions(py::class_<PyMap<CMAP>>& c, py::class_<PyMap<GMAP>>& g)
 bool is_volume_format(io::Format f)
 {
 	return f == io::Format::Medit || f == io::Format::VtkLegacy || f == io::Format::Vtu || f == io::Format::Gmsh ||
-		   f == io::Format::TetGen || f == io::Format::Ovm;
+		   f == io::Format::TetGen || f == io::Format::Ovm || f == io::Format::Pvtu;
 }
 
 // Every format but the volume-only ones (node/ele, ovm).

@@ -9,8 +9,10 @@
 #include "part_message.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <string>
+#include <tuple>
 
 namespace cgogn::dist
 {
@@ -23,6 +25,35 @@ constexpr int MESSAGE_TAG = 8101;
 
 template <typename MAP>
 using Top = typename DistributedMap<MAP>::TopCell;
+
+// The attribute types distribute() carries to the ranks, by index.
+using CarriedTypes =
+	std::tuple<double, float, int8, uint8, std::int16_t, uint16, int32, uint32, int64, uint64, Vec2, Vec3, Vec4>;
+
+// Calls f.template operator()<T>() with the carried type of index i.
+template <typename F, std::size_t I = 0>
+void visit_carried_type(uint8 i, const F& f)
+{
+	if constexpr (I < std::tuple_size_v<CarriedTypes>)
+	{
+		if (i == I)
+			f.template operator()<std::tuple_element_t<I, CarriedTypes>>();
+		else
+			visit_carried_type<F, I + 1>(i, f);
+	}
+}
+
+// The index of a's type among the carried types; -1 when it is not carried.
+inline int carried_type_of(const AttributeBase& a)
+{
+	int found = -1;
+	for (uint8 i = 0; i < std::tuple_size_v<CarriedTypes>; ++i)
+		visit_carried_type(i, [&]<typename T>() {
+			if (a.type() == typeid(T))
+				found = i;
+		});
+	return found;
+}
 
 // The cell of dimension k of dart d (k < the map's dimension).
 template <typename MAP, typename FUNC>
@@ -68,7 +99,6 @@ struct RootSplit
 	uint64 count[D + 1] = {};
 	std::vector<int32> owner[D + 1]; // by global id
 	std::vector<Dart> top_dart;      // by global id
-	std::shared_ptr<AttributeArray<Vec3>> position;
 	// the parts of the top cells around each vertex (compressed rows by vertex gid)
 	std::vector<uint64> vertex_part_starts;
 	std::vector<int32> vertex_parts;
@@ -80,14 +110,13 @@ struct RootSplit
 		return g;
 	}
 
-	RootSplit(MAP& map, const AttributeArray<uint32>& part, const std::string& position_name) : m(map)
+	RootSplit(MAP& map, const AttributeArray<uint32>& part) : m(map)
 	{
 		gid[0] = number_cells<MAP, typename MAP::Vertex>(m, count[0]);
 		gid[1] = number_cells<MAP, typename MAP::Edge>(m, count[1]);
 		gid[2] = number_cells<MAP, typename MAP::Face>(m, count[2]);
 		if constexpr (D == 3)
 			gid[3] = number_cells<MAP, CMap3::Volume>(m, count[3]);
-		position = get_attribute<Vec3, typename MAP::Vertex>(m, position_name);
 
 		top_dart.resize(count[D]);
 		for (uint32 k = 0; k <= D; ++k)
@@ -147,6 +176,7 @@ struct RootSplit
 								std::vector<uint64>& vertex_stamp, uint64 stamp) const
 	{
 		detail::PartMessage msg;
+		std::vector<uint32> vertex_lines, top_lines;
 		DartMarker<MAP> visited(m);
 		auto add_corner = [&](Dart x) {
 			const uint64 v = gid_of(0, x);
@@ -156,11 +186,7 @@ struct RootSplit
 				local_vertex[v] = uint32(msg.vertex_gid.size());
 				msg.vertex_gid.push_back(v);
 				msg.vertex_owner.push_back(owner[0][v]);
-				if (position != nullptr)
-				{
-					const Vec3& p = (*position)[index_of(m, typename MAP::Vertex(x))];
-					msg.positions.insert(msg.positions.end(), {p[0], p[1], p[2]});
-				}
+				vertex_lines.push_back(index_of(m, typename MAP::Vertex(x)));
 			}
 			msg.corner_vertex.push_back(local_vertex[v]);
 			for (uint32 k = 1; k < D; ++k)
@@ -187,6 +213,7 @@ struct RootSplit
 		{
 			msg.cell_gid.push_back(g);
 			msg.cell_owner.push_back(owner[D][g]);
+			top_lines.push_back(index_of(m, Top<MAP>(top_dart[g])));
 			if constexpr (D == 3)
 			{
 				darts.clear();
@@ -209,7 +236,54 @@ struct RootSplit
 				foreach_dart_of_orbit(m, CMap2::Face(top_dart[g]), [&](Dart x) { visited.unmark(x); });
 			}
 		}
+		add_columns(msg, container_of<MAP::Vertex::ORBIT>(m), vertex_lines, 0);
+		add_columns(msg, container_of<Top<MAP>::ORBIT>(m), top_lines, 1);
+		name_attributes_of<typename MAP::Edge>(msg.not_carried, "edge");
+		if constexpr (D == 3)
+			name_attributes_of<CMap3::Face>(msg.not_carried, "face");
+		std::sort(msg.not_carried.begin(), msg.not_carried.end());
 		return msg;
+	}
+
+	// Names the user attributes of the cells of type CELL as not carried.
+	template <typename CELL>
+	void name_attributes_of(std::vector<std::string>& names, const char* cells) const
+	{
+		if (!is_indexed<CELL>(m))
+			return;
+		const AttributeContainer& c = container_of<CELL::ORBIT>(m);
+		for (const auto& a : c.attributes())
+			if (a.get() != &c.key() && a->name().rfind("__", 0) != 0)
+				names.push_back(std::string(cells) + " attribute '" + a->name() + "'");
+	}
+
+	// The values of the container's attributes on the given lines, those of
+	// a carried type; the others are named in msg.not_carried.
+	void add_columns(detail::PartMessage& msg, const AttributeContainer& c, const std::vector<uint32>& lines,
+					 uint8 of_top_cells) const
+	{
+		for (const auto& a : c.attributes())
+		{
+			if (a.get() == &c.key() || a->name().rfind("__", 0) == 0)
+				continue;
+			const int type = carried_type_of(*a);
+			if (type < 0)
+			{
+				msg.not_carried.push_back(std::string(of_top_cells ? (D == 3 ? "volume" : "face") : "vertex") +
+										  " attribute '" + a->name() + "' (of a type not carried)");
+				continue;
+			}
+			detail::PartMessage::Column& col = msg.columns.emplace_back();
+			col.name = a->name();
+			col.of_top_cells = of_top_cells;
+			col.type = uint8(type);
+			visit_carried_type(col.type, [&]<typename T>() {
+				const auto& values = static_cast<const AttributeArray<T>&>(*a);
+				col.values.resize(lines.size() * sizeof(T));
+				for (std::size_t i = 0; i < lines.size(); ++i)
+					std::memcpy(col.values.data() + i * sizeof(T), &values[lines[i]], sizeof(T));
+			});
+		}
 	}
 };
 
@@ -277,7 +351,7 @@ void share_root_error(MPI_Comm comm, int root, std::string& error, int& kind)
 // Rebuilds a rank's part from its message and gives every cell its global
 // id and owner.
 template <typename MAP>
-void build_part(DistributedMap<MAP>& dm, int rank, const detail::PartMessage& msg, const std::string& position_name)
+void build_part(DistributedMap<MAP>& dm, int rank, const detail::PartMessage& msg)
 {
 	constexpr uint32 D = MAP::dimension;
 	MAP& m = dm.map();
@@ -315,16 +389,23 @@ void build_part(DistributedMap<MAP>& dm, int rank, const detail::PartMessage& ms
 		soup_of[report.vertex_offset + i] = i;
 	for (const auto& [line, i] : report.split_vertices)
 		soup_of[line] = i;
-	std::shared_ptr<CellAttribute<Vec3, MAP::Vertex::ORBIT>> position;
-	if (!msg.positions.empty())
-		position = add_attribute<Vec3, typename MAP::Vertex>(m, position_name);
 	foreach_cell(m, [&](typename MAP::Vertex v) {
 		const uint32 line = index_of(m, v), i = soup_of[line];
 		(*gids[0])[line] = msg.vertex_gid[i];
 		(*owners[0])[line] = msg.vertex_owner[i];
-		if (position != nullptr)
-			(*position)[line] = Vec3(msg.positions[3 * i], msg.positions[3 * i + 1], msg.positions[3 * i + 2]);
 	});
+	for (const detail::PartMessage::Column& col : msg.columns)
+		if (col.of_top_cells == 0)
+			visit_carried_type(col.type, [&]<typename T>() {
+				auto a = add_attribute<T, typename MAP::Vertex>(m, col.name);
+				if (a == nullptr || col.values.size() != nb_vertices * sizeof(T))
+					throw std::runtime_error("distribute: the vertex attribute '" + col.name + "' cannot be rebuilt");
+				foreach_cell(m, [&](typename MAP::Vertex v) {
+					std::memcpy(static_cast<void*>(&(*a)[v]), col.values.data() + soup_of[index_of(m, v)] * sizeof(T),
+								sizeof(T));
+				});
+			});
+	dm.set_not_carried(msg.not_carried);
 
 	// the other cells, through the corner of each dart: a corner is known by
 	// its vertex and the next two (the next one on a surface), unique in a
@@ -367,6 +448,7 @@ void build_part(DistributedMap<MAP>& dm, int rank, const detail::PartMessage& ms
 			throw std::runtime_error("distribute: two faces of rank " + std::to_string(rank) +
 									 " share three consecutive vertices (not supported)");
 	uint64 nb_unmatched = 0;
+	std::vector<uint32> top_cell_of_line(container_of<Top<MAP>::ORBIT>(m).end_index(), INVALID_INDEX);
 	foreach_dart(m, [&](Dart d) {
 		if (is_boundary(m, d))
 			return;
@@ -391,7 +473,19 @@ void build_part(DistributedMap<MAP>& dm, int rank, const detail::PartMessage& ms
 		const uint32 line = index_of(m, Top<MAP>(d));
 		(*gids[D])[line] = msg.cell_gid[corner_cell[corner]];
 		(*owners[D])[line] = msg.cell_owner[corner_cell[corner]];
+		top_cell_of_line[line] = corner_cell[corner];
 	});
+	for (const detail::PartMessage::Column& col : msg.columns)
+		if (col.of_top_cells == 1)
+			visit_carried_type(col.type, [&]<typename T>() {
+				auto a = add_attribute<T, Top<MAP>>(m, col.name);
+				if (a == nullptr || col.values.size() != msg.cell_gid.size() * sizeof(T))
+					throw std::runtime_error("distribute: the cell attribute '" + col.name + "' cannot be rebuilt");
+				foreach_cell(m, [&](Top<MAP> t) {
+					std::memcpy(static_cast<void*>(&(*a)[t]),
+								col.values.data() + top_cell_of_line[index_of(m, t)] * sizeof(T), sizeof(T));
+				});
+			});
 	if (nb_unmatched != 0)
 		throw std::runtime_error("distribute: rank " + std::to_string(rank) + " could not match " +
 								 std::to_string(nb_unmatched) + " darts to their cells");
@@ -435,7 +529,7 @@ DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeO
 			kind = 2;
 		}
 		share_root_error(comm, root, error, kind);
-		const RootSplit<MAP> split(*serial, *parts, options.position);
+		const RootSplit<MAP> split(*serial, *parts);
 		const auto cells = split.cells_per_rank(nb_ranks);
 		std::vector<uint32> local_vertex(split.count[0]);
 		std::vector<uint64> stamp(split.count[0], NO_GID);
@@ -461,7 +555,7 @@ DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeO
 	std::string error;
 	try
 	{
-		build_part(dm, rank, detail::deserialize(mine), options.position);
+		build_part(dm, rank, detail::deserialize(mine));
 	}
 	catch (const std::exception& e)
 	{

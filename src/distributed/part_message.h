@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace cgogn::dist::detail
@@ -18,7 +19,6 @@ struct PartMessage
 {
 	std::vector<uint64> vertex_gid;
 	std::vector<int32> vertex_owner;
-	std::vector<double> positions; ///< x, y, z per vertex; empty without positions.
 	std::vector<uint64> cell_gid;
 	std::vector<int32> cell_owner;
 	std::vector<uint32> cell_nb_faces; ///< Faces of each volume (empty for surfaces).
@@ -28,6 +28,18 @@ struct PartMessage
 	/// volume) of the dart leaving the corner's vertex in its face.
 	std::vector<uint64> corner_gid[2];
 	std::vector<int32> corner_owner[2];
+	/// The attributes of the vertices and of the top cells, in the order of
+	/// the vertices and cells above.
+	struct Column
+	{
+		std::string name;
+		uint8 of_top_cells = 0; ///< 0: a vertex attribute, 1: a top cell attribute.
+		uint8 type = 0;         ///< Index in the list of types distribute() carries.
+		std::vector<std::byte> values;
+	};
+	std::vector<Column> columns;
+	/// The attributes of the root's map that distribute() did not carry.
+	std::vector<std::string> not_carried;
 };
 
 /// Appends vectors to a byte buffer, each after its length.
@@ -40,6 +52,10 @@ public:
 		const uint64 n = v.size();
 		append(&n, sizeof n);
 		append(v.data(), n * sizeof(T));
+	}
+	void put(const std::string& text)
+	{
+		put(std::vector<char>(text.begin(), text.end()));
 	}
 	std::vector<std::byte>& bytes()
 	{
@@ -72,6 +88,12 @@ public:
 		v.resize(n);
 		take(v.data(), n * sizeof(T));
 	}
+	void get(std::string& text)
+	{
+		std::vector<char> chars;
+		get(chars);
+		text.assign(chars.begin(), chars.end());
+	}
 
 private:
 	void take(void* p, std::size_t n)
@@ -91,7 +113,6 @@ inline std::vector<std::byte> serialize(const PartMessage& m)
 	ByteWriter w;
 	w.put(m.vertex_gid);
 	w.put(m.vertex_owner);
-	w.put(m.positions);
 	w.put(m.cell_gid);
 	w.put(m.cell_owner);
 	w.put(m.cell_nb_faces);
@@ -102,6 +123,15 @@ inline std::vector<std::byte> serialize(const PartMessage& m)
 		w.put(m.corner_gid[k]);
 		w.put(m.corner_owner[k]);
 	}
+	w.put(std::vector<uint64>{m.columns.size(), m.not_carried.size()});
+	for (const PartMessage::Column& c : m.columns)
+	{
+		w.put(c.name);
+		w.put(std::vector<uint8>{c.of_top_cells, c.type});
+		w.put(c.values);
+	}
+	for (const std::string& name : m.not_carried)
+		w.put(name);
 	return std::move(w.bytes());
 }
 
@@ -111,7 +141,6 @@ inline PartMessage deserialize(const std::vector<std::byte>& bytes)
 	ByteReader r(bytes);
 	r.get(m.vertex_gid);
 	r.get(m.vertex_owner);
-	r.get(m.positions);
 	r.get(m.cell_gid);
 	r.get(m.cell_owner);
 	r.get(m.cell_nb_faces);
@@ -122,6 +151,25 @@ inline PartMessage deserialize(const std::vector<std::byte>& bytes)
 		r.get(m.corner_gid[k]);
 		r.get(m.corner_owner[k]);
 	}
+	std::vector<uint64> sizes;
+	r.get(sizes);
+	if (sizes.size() != 2)
+		throw std::runtime_error("distribute: malformed part message");
+	m.columns.resize(sizes[0]);
+	for (PartMessage::Column& c : m.columns)
+	{
+		r.get(c.name);
+		std::vector<uint8> kind;
+		r.get(kind);
+		if (kind.size() != 2)
+			throw std::runtime_error("distribute: malformed part message");
+		c.of_top_cells = kind[0];
+		c.type = kind[1];
+		r.get(c.values);
+	}
+	m.not_carried.resize(sizes[1]);
+	for (std::string& name : m.not_carried)
+		r.get(name);
 	return m;
 }
 

@@ -15,12 +15,12 @@ namespace cgogn::dist
 namespace
 {
 
+// `iterations` times, one Jacobi step per factor.
 template <typename MAP>
 void smooth(const DistributedMap<MAP>& dm, CellAttribute<Vec3, MAP::Vertex::ORBIT>& pos, uint32 iterations,
-			const SmoothingOptions& options)
+			const std::vector<double>& factors, const SmoothingOptions& options)
 {
 	using Vertex = typename MAP::Vertex;
-	assert(options.lambda > 0.0 && options.lambda <= 1.0);
 	const MAP& m = dm.map();
 	// the owned vertices that move and their neighbours' lines, once
 	std::vector<uint32> moving, starts{0}, neighbours;
@@ -40,20 +40,21 @@ void smooth(const DistributedMap<MAP>& dm, CellAttribute<Vec3, MAP::Vertex::ORBI
 	});
 	std::vector<Vec3> delta(moving.size());
 	for (uint32 it = 0; it < iterations; ++it)
-	{
-		// the serial filter's arithmetic, term for term
-		for (std::size_t i = 0; i < moving.size(); ++i)
+		for (double factor : factors)
 		{
-			Vec3 s = Vec3::Zero();
-			const uint32 n = starts[i + 1] - starts[i];
-			for (uint32 k = starts[i]; k < starts[i + 1]; ++k)
-				s += pos[neighbours[k]];
-			delta[i] = n > 0 ? Vec3(options.lambda * (s / n - pos[moving[i]])) : Vec3::Zero();
+			// the serial filter's arithmetic, term for term
+			for (std::size_t i = 0; i < moving.size(); ++i)
+			{
+				Vec3 s = Vec3::Zero();
+				const uint32 n = starts[i + 1] - starts[i];
+				for (uint32 k = starts[i]; k < starts[i + 1]; ++k)
+					s += pos[neighbours[k]];
+				delta[i] = n > 0 ? Vec3(factor * (s / n - pos[moving[i]])) : Vec3::Zero();
+			}
+			for (std::size_t i = 0; i < moving.size(); ++i)
+				pos[moving[i]] += delta[i];
+			exchange(dm, pos, options.transport);
 		}
-		for (std::size_t i = 0; i < moving.size(); ++i)
-			pos[moving[i]] += delta[i];
-		exchange(dm, pos, options.transport);
-	}
 }
 
 } // namespace
@@ -61,13 +62,29 @@ void smooth(const DistributedMap<MAP>& dm, CellAttribute<Vec3, MAP::Vertex::ORBI
 void laplacian_smoothing(const DistributedCMap3& dm, CellAttribute<Vec3, CMap3::Vertex::ORBIT>& pos, uint32 iterations,
 						 const SmoothingOptions& options)
 {
-	smooth(dm, pos, iterations, options);
+	assert(options.lambda > 0.0 && options.lambda <= 1.0);
+	smooth(dm, pos, iterations, {options.lambda}, options);
 }
 
 void laplacian_smoothing(const DistributedCMap2& dm, CellAttribute<Vec3, CMap2::Vertex::ORBIT>& pos, uint32 iterations,
 						 const SmoothingOptions& options)
 {
-	smooth(dm, pos, iterations, options);
+	assert(options.lambda > 0.0 && options.lambda <= 1.0);
+	smooth(dm, pos, iterations, {options.lambda}, options);
+}
+
+void taubin_smoothing(const DistributedCMap3& dm, CellAttribute<Vec3, CMap3::Vertex::ORBIT>& pos, uint32 iterations,
+					  double mu, const SmoothingOptions& options)
+{
+	assert(options.lambda > 0.0 && mu < -options.lambda);
+	smooth(dm, pos, iterations, {options.lambda, mu}, options);
+}
+
+void taubin_smoothing(const DistributedCMap2& dm, CellAttribute<Vec3, CMap2::Vertex::ORBIT>& pos, uint32 iterations,
+					  double mu, const SmoothingOptions& options)
+{
+	assert(options.lambda > 0.0 && mu < -options.lambda);
+	smooth(dm, pos, iterations, {options.lambda, mu}, options);
 }
 
 } // namespace cgogn::dist

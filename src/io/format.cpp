@@ -48,6 +48,8 @@ Format format_from_extension(const std::string& path)
 		return Format::TetGen;
 	if (ext == "ovm")
 		return Format::Ovm;
+	if (ext == "pvtu")
+		return Format::Pvtu;
 	return Format::Auto;
 }
 
@@ -77,6 +79,8 @@ const char* format_name(Format f)
 		return "TetGen";
 	case Format::Ovm:
 		return "OVM";
+	case Format::Pvtu:
+		return "PVTU";
 	}
 	return "unknown";
 }

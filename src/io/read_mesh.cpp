@@ -29,6 +29,7 @@ MeshData read_mesh(Format f, std::string_view data, const std::string& path)
 	case Format::Ovm:
 		return read_ovm(data, path);
 	case Format::TetGen:
+	case Format::Pvtu:
 	case Format::Auto:
 		break;
 	}

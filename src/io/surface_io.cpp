@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <cgogn/io/pvtu.h>
 #include <cgogn/io/surface.h>
 
 #include "file_io.h"
@@ -6,6 +7,7 @@
 #include "map_transfer.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace cgogn::io
 {
@@ -17,8 +19,8 @@ Format resolve(Format f, const std::string& path)
 	if (f == Format::Auto)
 		f = format_from_extension(path);
 	if (f == Format::Auto)
-		throw Error(path, "unknown surface format: use .off, .obj, .ply, .stl, .msh, .mesh, .vtk or .vtu, or give "
-						  "the format");
+		throw Error(path, "unknown surface format: use .off, .obj, .ply, .stl, .msh, .mesh, .vtk, .vtu or .pvtu, or "
+						  "give the format");
 	if (f == Format::TetGen || f == Format::Ovm)
 		throw Error(path, std::string(format_name(f)) + " is not a surface format (use load_volume/save_volume)");
 	return f;
@@ -27,15 +29,16 @@ Format resolve(Format f, const std::string& path)
 // Formats of volumes and surfaces, which list faces and edges beside the cells.
 bool lists_faces(Format f)
 {
-	return f == Format::Gmsh || f == Format::Medit || f == Format::VtkLegacy || f == Format::Vtu;
+	return f == Format::Gmsh || f == Format::Medit || f == Format::VtkLegacy || f == Format::Vtu || f == Format::Pvtu;
 }
 
 template <typename MAP>
 LoadReport load_surface_into(MAP& m, const std::string& path, const LoadOptions& options)
 {
 	const Format f = resolve(options.format, path);
-	detail::MeshData d = detail::read_mesh(f, detail::read_file(path), path);
-	if (lists_faces(f))
+	detail::MeshData d =
+		f == Format::Pvtu ? detail::read_pvtu(path, true) : detail::read_mesh(f, detail::read_file(path), path);
+	if (lists_faces(f) && f != Format::Pvtu)
 		d.faces_as_cells(path);
 	detail::validate(d, path);
 	LoadReport r = detail::build_map(m, d, path);
@@ -89,6 +92,13 @@ void save_surface_of(const MAP& m, const std::string& path, const SaveOptions& o
 		detail::check_written_names(d, path);
 		out = detail::write_vtk(d, options.binary);
 		break;
+	case Format::Pvtu: {
+		detail::check_written_names(d, path);
+		const std::string piece = detail::single_piece_name(path);
+		detail::write_file(piece, detail::write_vtu(d, options.binary));
+		write_pvtu_index(path, {std::filesystem::path(piece).filename().string()}, 0);
+		return;
+	}
 	default:
 		detail::check_written_names(d, path);
 		out = detail::write_vtu(d, options.binary);

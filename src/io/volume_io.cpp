@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <cgogn/io/pvtu.h>
 #include <cgogn/io/volume.h>
 
 #include "file_io.h"
@@ -6,6 +7,7 @@
 #include "map_transfer.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace cgogn::io
 {
@@ -17,9 +19,10 @@ Format resolve(Format f, const std::string& path)
 	if (f == Format::Auto)
 		f = format_from_extension(path);
 	if (f == Format::Auto)
-		throw Error(path, "unknown volume format: use .mesh, .vtk, .vtu, .msh, .node/.ele or .ovm, or give the format");
+		throw Error(
+			path, "unknown volume format: use .mesh, .vtk, .vtu, .pvtu, .msh, .node/.ele or .ovm, or give the format");
 	if (f != Format::Medit && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Gmsh && f != Format::TetGen &&
-		f != Format::Ovm)
+		f != Format::Ovm && f != Format::Pvtu)
 		throw Error(path, std::string(format_name(f)) + " is not a volume format (use load_surface/save_surface)");
 	return f;
 }
@@ -42,6 +45,8 @@ LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& 
 		const std::string node = detail::read_file(node_path), ele = detail::read_file(ele_path);
 		d = detail::read_tetgen(node, node_path, ele, ele_path);
 	}
+	else if (f == Format::Pvtu)
+		d = detail::read_pvtu(path, false);
 	else
 		d = detail::read_mesh(f, detail::read_file(path), path);
 	detail::validate(d, path);
@@ -57,7 +62,7 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 {
 	const Format f = resolve(options.format, path);
 	const detail::MeshData d = detail::extract_volume(m, path, options.attributes);
-	if (!d.cell_nb_faces.empty() && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Ovm)
+	if (!d.cell_nb_faces.empty() && f != Format::VtkLegacy && f != Format::Vtu && f != Format::Pvtu && f != Format::Ovm)
 	{
 		const auto nb = std::count_if(d.cell_nb_faces.begin(), d.cell_nb_faces.end(), [](uint32 n) { return n > 0; });
 		throw Error(path, "the map has " + std::to_string(nb) +
@@ -77,6 +82,13 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 		detail::check_written_names(d, path);
 		detail::write_file(path, detail::write_vtu(d, options.binary));
 		break;
+	case Format::Pvtu: {
+		detail::check_written_names(d, path);
+		const std::string piece = detail::single_piece_name(path);
+		detail::write_file(piece, detail::write_vtu(d, options.binary));
+		write_pvtu_index(path, {std::filesystem::path(piece).filename().string()}, 0);
+		break;
+	}
 	case Format::Gmsh:
 		detail::write_file(path, detail::write_gmsh(d, options.binary, path));
 		break;

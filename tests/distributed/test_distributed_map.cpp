@@ -9,14 +9,17 @@
 #include <cgogn/core.h>
 #include <cgogn/distributed/distribute.h>
 #include <cgogn/distributed/exchange.h>
+#include <cgogn/distributed/files.h>
 #include <cgogn/distributed/reductions.h>
 #include <cgogn/distributed/smoothing.h>
 #include <cgogn/geometry.h>
+#include <cgogn/io/volume.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <vector>
 
@@ -435,6 +438,113 @@ TEST(DistributedSurface, TorusCountsExchangeAndSmoothing)
 			same = std::memcmp(&spread[i + 1], by_gid[uint64(spread[i])].data(), 3 * sizeof(double)) == 0;
 	}
 	EXPECT_TRUE(everywhere(same));
+}
+
+} // namespace cgogn_test_distributed_map
+
+namespace cgogn_test_distributed_map
+{
+
+// A folder all ranks share, made by rank 0 and removed by the caller's end.
+std::filesystem::path shared_folder(const std::string& name)
+{
+	const std::filesystem::path dir =
+		std::filesystem::temp_directory_path() / ("cgogn_" + name + "_" + std::to_string(world_size()));
+	if (world_rank() == 0)
+	{
+		std::filesystem::remove_all(dir);
+		std::filesystem::create_directories(dir);
+	}
+	MPI_Barrier(MPI_COMM_WORLD);
+	return dir;
+}
+
+// Written with all the ranks, read back on one rank as one mesh and with
+// every number of ranks from 1 to all: the same f-vector, and each vertex
+// at its serial position (found through the GlobalNodeIds the pieces carry).
+TEST(DistributedFiles, PvtuReadsBackWithAnyNumberOfRanks)
+{
+	Serial serial(6);
+	auto temperature = add_attribute<double, CMap3::Vertex>(serial.m, "temperature");
+	auto material = add_attribute<int32, CMap3::Volume>(serial.m, "material");
+	for (uint64 g = 0; g < serial.cell[0].size(); ++g)
+		(*temperature)[CMap3::Vertex(serial.cell[0][g])] = 0.5 * double(g);
+	for (uint64 g = 0; g < serial.cell[3].size(); ++g)
+		(*material)[CMap3::Volume(serial.cell[3][g])] = int32(g % 7);
+	dist::DistributedCMap3 dm = dist::distribute(MPI_COMM_WORLD, world_rank() == 0 ? &serial.m : nullptr);
+	EXPECT_TRUE(dm.not_carried().empty());
+	const std::filesystem::path dir = shared_folder("pvtu");
+	const std::string path = (dir / "grid.pvtu").string();
+	io::save_pvtu(dm, path);
+
+	bool ok = true;
+	if (world_rank() == 0)
+	{
+		CMap3 whole;
+		io::load_volume(whole, path);
+		ok = nb_cells<CMap3::Vertex>(whole) == serial.cell[0].size() &&
+			 nb_cells<CMap3::Edge>(whole) == serial.cell[1].size() &&
+			 nb_cells<CMap3::Face>(whole) == serial.cell[2].size() &&
+			 nb_cells<CMap3::Volume>(whole) == serial.cell[3].size();
+		auto ids = get_attribute<uint64, CMap3::Vertex>(whole, "GlobalNodeIds");
+		auto pos = get_attribute<Vec3, CMap3::Vertex>(whole, "position");
+		auto t = get_attribute<double, CMap3::Vertex>(whole, "temperature");
+		ok = ok && ids && pos && t && get_attribute<uint8, CMap3::Vertex>(whole, "vtkGhostType") == nullptr;
+		if (ok)
+			foreach_cell(whole, [&](CMap3::Vertex v) {
+				const uint64 g = (*ids)[v];
+				ok = ok && g < serial.cell[0].size() && (*pos)[v] == (*serial.pos)[CMap3::Vertex(serial.cell[0][g])] &&
+					 (*t)[v] == 0.5 * double(g);
+			});
+	}
+	EXPECT_TRUE(everywhere(ok));
+
+	for (int q = 1; q <= world_size(); ++q)
+	{
+		MPI_Comm sub;
+		MPI_Comm_split(MPI_COMM_WORLD, world_rank() < q ? 0 : MPI_UNDEFINED, world_rank(), &sub);
+		bool same = true;
+		if (sub != MPI_COMM_NULL)
+		{
+			{
+				dist::DistributedCMap3 back = dist::load_volume(sub, path);
+				same = dist::global_nb_cells<CMap3::Vertex>(back) == serial.cell[0].size() &&
+					   dist::global_nb_cells<CMap3::Edge>(back) == serial.cell[1].size() &&
+					   dist::global_nb_cells<CMap3::Face>(back) == serial.cell[2].size() &&
+					   dist::global_nb_cells<CMap3::Volume>(back) == serial.cell[3].size();
+				auto ids = get_attribute<uint64, CMap3::Vertex>(back.map(), "GlobalNodeIds");
+				auto pos = get_attribute<Vec3, CMap3::Vertex>(back.map(), "position");
+				same = same && ids && pos;
+				if (same)
+					foreach_cell(back.map(), [&](CMap3::Vertex v) {
+						same = same && (*pos)[v] == (*serial.pos)[CMap3::Vertex(serial.cell[0][(*ids)[v]])];
+					});
+				auto m = get_attribute<int32, CMap3::Volume>(back.map(), "material");
+				auto cell_ids = get_attribute<uint64, CMap3::Volume>(back.map(), "GlobalCellIds");
+				same = same && m && cell_ids;
+				if (same)
+					foreach_cell(back.map(),
+								 [&](CMap3::Volume w) { same = same && (*m)[w] == int32((*cell_ids)[w] % 7); });
+			}
+			MPI_Comm_free(&sub);
+		}
+		EXPECT_TRUE(everywhere(same)) << "read back with " << q << " ranks";
+	}
+	MPI_Barrier(MPI_COMM_WORLD);
+	if (world_rank() == 0)
+		std::filesystem::remove_all(dir);
+}
+
+TEST(DistributedFiles, AttributesOfOtherTypesAreNamed)
+{
+	Serial serial(3);
+	add_attribute<std::string, CMap3::Vertex>(serial.m, "label");
+	add_attribute<double, CMap3::Edge>(serial.m, "sharpness");
+	dist::DistributedCMap3 dm = dist::distribute(MPI_COMM_WORLD, world_rank() == 0 ? &serial.m : nullptr);
+	const std::vector<std::string> expected = {"edge attribute 'sharpness'",
+											   "vertex attribute 'label' (of a type not carried)"};
+	EXPECT_TRUE(everywhere(dm.not_carried() == expected)) << ::testing::PrintToString(dm.not_carried());
+	EXPECT_TRUE(everywhere(get_attribute<Vec3, CMap3::Vertex>(dm.map(), "position") != nullptr));
 }
 
 } // namespace cgogn_test_distributed_map

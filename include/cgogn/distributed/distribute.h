@@ -18,15 +18,15 @@ struct DistributeOptions
 	/// Use the root map's uint32 top-cell attribute `partition.attribute` as
 	/// it is (values in [0, number of ranks)) instead of calling METIS.
 	bool use_existing_parts = false;
-	/// The Vec3 vertex attribute copied to every rank (under the same name);
-	/// nothing is copied when the root's map has none.
-	std::string position = "position";
 };
 
 /// Splits the root's map over the ranks of comm: the root partitions its
 /// volumes (faces of a CMap2) into one part per rank, and each rank gets a
 /// DistributedMap of its part plus one vertex ghost layer, with global ids,
-/// owners, halo plans and the positions. Global ids are the cells' ranks in
+/// owners and halo plans. The vertex and top-cell attributes of the root's
+/// map whose type is an arithmetic type or Vec2/3/4 come along, under their
+/// names, on owned and ghost cells alike; the others (and the edge and
+/// face attributes of a volume map) are listed by not_carried(). Global ids are the cells' ranks in
 /// the root map's foreach_cell order (vertex k of that order has global id
 /// k, and so on for each dimension). Collective over comm; `serial` is read
 /// on the root only (other ranks may pass nullptr) and must be a manifold

@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <mpi.h>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -183,10 +184,23 @@ public:
 	/// Internal to distribute(): builds the halo plans from the filled ids.
 	void finish(MPI_Comm comm);
 
+	/// The attributes of the distributed map that distribute() did not bring
+	/// to the ranks ("edge attribute 'crease'", ...), the same on every rank.
+	const std::vector<std::string>& not_carried() const
+	{
+		return not_carried_;
+	}
+	/// Internal to distribute().
+	void set_not_carried(std::vector<std::string> names)
+	{
+		not_carried_ = std::move(names);
+	}
+
 private:
 	std::unique_ptr<MAP> map_;
 	std::array<std::shared_ptr<AttributeArray<uint64>>, dimension + 1> gids_;
 	std::array<std::shared_ptr<AttributeArray<int32>>, dimension + 1> owners_;
+	std::vector<std::string> not_carried_;
 };
 
 using DistributedCMap2 = DistributedMap<CMap2>;

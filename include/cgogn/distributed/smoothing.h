@@ -33,4 +33,15 @@ void laplacian_smoothing(const DistributedCMap3& dm, CellAttribute<Vec3, CMap3::
 void laplacian_smoothing(const DistributedCMap2& dm, CellAttribute<Vec3, CMap2::Vertex::ORBIT>& pos, uint32 iterations,
 						 const SmoothingOptions& options = {});
 
+/// Taubin's lambda|mu smoothing of a distributed map, as
+/// geometry::taubin_smoothing: each iteration is a Jacobi step of factor
+/// options.lambda then one of factor mu, each followed by an exchange.
+/// Collective; cost as laplacian_smoothing, twice. Preconditions:
+/// options.lambda > 0, mu < -options.lambda.
+void taubin_smoothing(const DistributedCMap3& dm, CellAttribute<Vec3, CMap3::Vertex::ORBIT>& pos, uint32 iterations,
+					  double mu, const SmoothingOptions& options = {});
+/// The same on a distributed surface.
+void taubin_smoothing(const DistributedCMap2& dm, CellAttribute<Vec3, CMap2::Vertex::ORBIT>& pos, uint32 iterations,
+					  double mu, const SmoothingOptions& options = {});
+
 } // namespace cgogn::dist

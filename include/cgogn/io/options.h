@@ -24,11 +24,14 @@ enum class Format
 	Vtu,
 	Gmsh,
 	TetGen,
-	Ovm ///< OpenVolumeMesh's ascii files (polyhedra)
+	Ovm, ///< OpenVolumeMesh's ascii files (polyhedra)
+	/// Parallel VTU: an index naming one .vtu piece per rank, read as one
+	/// mesh (see io/pvtu.h).
+	Pvtu
 };
 
 /// The format of a path by its extension (case-insensitive): .off .obj .ply
-/// .stl .mesh .vtk .vtu .msh .node/.ele .ovm. Returns Format::Auto when unknown.
+/// .stl .mesh .vtk .vtu .pvtu .msh .node/.ele .ovm. Returns Format::Auto when unknown.
 /// O(length of the path).
 Format format_from_extension(const std::string& path);
 
