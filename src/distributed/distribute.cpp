@@ -122,6 +122,9 @@ struct RootSplit
 		for (uint32 k = 0; k <= D; ++k)
 			owner[k].assign(count[k], std::numeric_limits<int32>::max());
 		std::vector<std::pair<uint64, int32>> incidences; // (vertex gid, part)
+		// the part that last named each vertex: neighbouring volumes mostly
+		// share their part, so most repeats are dropped before the sort
+		std::vector<int32> last_part(count[0], -1);
 		foreach_cell(m, [&](Top<MAP> t) {
 			const uint64 g = gid[D][index_of(m, t)];
 			const int32 p = int32(part[index_of(m, t)]);
@@ -133,7 +136,12 @@ struct RootSplit
 					int32& o = owner[k][gid_of(k, d)];
 					o = std::min(o, p);
 				}
-				incidences.emplace_back(gid_of(0, d), p);
+				const uint64 v = gid_of(0, d);
+				if (last_part[v] != p)
+				{
+					last_part[v] = p;
+					incidences.emplace_back(v, p);
+				}
 			});
 		});
 		std::sort(incidences.begin(), incidences.end());
@@ -506,7 +514,7 @@ DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeO
 	MPI_Comm_rank(comm, &rank);
 	MPI_Comm_size(comm, &nb_ranks);
 	DistributedMap<MAP> dm;
-	std::vector<std::byte> mine;
+	detail::PartMessage own;
 	if (rank == root)
 	{
 		std::string error;
@@ -535,12 +543,11 @@ DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeO
 		std::vector<uint64> stamp(split.count[0], NO_GID);
 		for (int r = 0; r < nb_ranks; ++r)
 		{
-			std::vector<std::byte> bytes =
-				detail::serialize(split.message(cells[std::size_t(r)], local_vertex, stamp, uint64(r)));
+			detail::PartMessage msg = split.message(cells[std::size_t(r)], local_vertex, stamp, uint64(r));
 			if (r == root)
-				mine = std::move(bytes);
+				own = std::move(msg);
 			else
-				send_bytes(comm, r, bytes);
+				send_bytes(comm, r, detail::serialize(msg));
 		}
 	}
 	else
@@ -548,14 +555,15 @@ DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeO
 		std::string error;
 		int kind = 0;
 		share_root_error(comm, root, error, kind);
-		mine = receive_bytes(comm, root);
+		own = detail::deserialize(receive_bytes(comm, root));
 	}
 	// every rank builds; a failure anywhere is raised everywhere after the
 	// plans' collective calls would otherwise wait forever
 	std::string error;
 	try
 	{
-		build_part(dm, rank, detail::deserialize(mine));
+		build_part(dm, rank, own);
+		own = detail::PartMessage(); // the map holds it all now
 	}
 	catch (const std::exception& e)
 	{

@@ -49,7 +49,9 @@ public:
 	DistributedMapBase() = default;
 	DistributedMapBase(const DistributedMapBase&) = delete;
 	DistributedMapBase& operator=(const DistributedMapBase&) = delete;
+	/// Takes other's communicators and plans; other is left empty.
 	DistributedMapBase(DistributedMapBase&& other) noexcept;
+	/// Frees this map's communicators, then takes other's.
 	DistributedMapBase& operator=(DistributedMapBase&& other) noexcept;
 	/// Frees the communicators: a distributed map must be destroyed before
 	/// MPI_Finalize.
@@ -60,10 +62,12 @@ public:
 	{
 		return comm_;
 	}
+	/// This rank in comm().
 	int rank() const
 	{
 		return rank_;
 	}
+	/// The number of ranks of comm().
 	int nb_ranks() const
 	{
 		return nb_ranks_;
@@ -87,17 +91,19 @@ public:
 					 void* recv, std::size_t elem_size, Transport transport) const;
 
 protected:
-	/// Builds the halo plans of cells of dimension 0..D (cells[k] are the local
-	/// cells of dimension k: line, global id, owner) and the graph
-	/// communicator. Collective over comm.
+	/// A cell of the local map, for build_plans.
 	struct LocalCell
 	{
-		uint64 gid;
-		uint32 line;
-		int32 owner;
+		uint64 gid;  ///< Its global id.
+		uint32 line; ///< Its line in its orbit's container.
+		int32 owner; ///< Its owner rank.
 	};
+	/// Duplicates comm, builds the halo plans of the cells of dimension
+	/// 0..D (cells[k]: the local cells of dimension k, reordered) and the
+	/// graph communicator of the neighbouring ranks. Collective over comm.
 	void build_plans(MPI_Comm comm, std::vector<std::vector<LocalCell>>& cells);
 
+private:
 	MPI_Comm comm_ = MPI_COMM_NULL;
 	MPI_Comm graph_ = MPI_COMM_NULL;
 	int rank_ = 0;
@@ -122,7 +128,7 @@ class DistributedMap : public DistributedMapBase
 				  "DistributedMap: MAP must be CMap2 or CMap3");
 
 public:
-	static constexpr uint32 dimension = MAP::dimension;
+	static constexpr uint32 dimension = MAP::dimension; ///< 3 for a CMap3, 2 for a CMap2.
 	/// The top cells, partitioned: volumes of a CMap3, faces of a CMap2.
 	using TopCell = std::conditional_t<dimension == 3, CMap3::Volume, CMap2::Face>;
 
@@ -144,6 +150,7 @@ public:
 		}
 	}
 
+	/// An empty map on no communicator; distribute() makes the real ones.
 	DistributedMap() : map_(std::make_unique<MAP>())
 	{
 	}
@@ -154,6 +161,7 @@ public:
 	{
 		return *map_;
 	}
+	/// This rank's map, read-only.
 	const MAP& map() const
 	{
 		return *map_;
@@ -171,12 +179,13 @@ public:
 		return *owners_[k];
 	}
 
-	/// Internal to distribute(): adds the reserved attributes and returns
-	/// them, for the builder to fill.
+	/// Internal to distribute(): the global id attributes of each dimension,
+	/// for the builder to add and fill.
 	std::array<std::shared_ptr<AttributeArray<uint64>>, dimension + 1>& gid_attributes()
 	{
 		return gids_;
 	}
+	/// Internal to distribute(): the owner attributes of each dimension.
 	std::array<std::shared_ptr<AttributeArray<int32>>, dimension + 1>& owner_attributes()
 	{
 		return owners_;

@@ -59,8 +59,8 @@ double global_sum_of(const DistributedMap<MAP>& dm, const FUNC& f)
 /// An axis-aligned box.
 struct BoundingBox
 {
-	Vec3 min = Vec3::Zero();
-	Vec3 max = Vec3::Zero();
+	Vec3 min = Vec3::Zero(); ///< The lowest corner.
+	Vec3 max = Vec3::Zero(); ///< The highest corner.
 };
 
 /// The box of the positions of all the vertices of the whole map (of no

@@ -17,7 +17,7 @@ struct SmoothingOptions
 	/// 1-rank run). Otherwise they are added in the local map's order, which
 	/// differs from rank to rank in the last bits only.
 	bool deterministic = false;
-	Transport transport = Transport::NeighborhoodCollective;
+	Transport transport = Transport::NeighborhoodCollective; ///< How the positions are exchanged.
 };
 
 /// Explicit uniform Laplacian smoothing of a distributed map, as
