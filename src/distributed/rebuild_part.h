@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+// distribute() on each rank: its part rebuilt from the root's message, with
+// the global id and owner of every cell and the carried attributes.
+#pragma once
+
+#include <cgogn/core/build/map_builder.h>
+#include <cgogn/core/map/indexing.h>
+#include <cgogn/core/traversals/global.h>
+
+#include "distribute_common.h"
+#include "part_message.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cgogn::dist::detail
+{
+
+// Rebuilds a rank's part from its message and gives every cell its global
+// id and owner.
+template <typename MAP>
+void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
+{
+	constexpr uint32 D = MAP::dimension;
+	MAP& m = dm.map();
+	const uint32 nb_vertices = uint32(msg.vertex_gid.size());
+	BuildReport report;
+	if constexpr (D == 3)
+		report = build_polyhedra(m, nb_vertices, msg.cell_nb_faces, msg.face_sizes, msg.corner_vertex);
+	else
+		report = build_surface(m, nb_vertices, msg.face_sizes, msg.corner_vertex);
+	if (report.nb_cells_built != msg.cell_gid.size())
+		throw std::runtime_error("distribute: rank " + std::to_string(rank) + " rebuilt " +
+								 std::to_string(report.nb_cells_built) + " of its " +
+								 std::to_string(msg.cell_gid.size()) + " cells (is the map manifold?)");
+
+	index_cells<typename MAP::Edge>(m);
+	index_cells<typename MAP::Face>(m);
+	if constexpr (D == 3)
+		index_cells<CMap3::Volume>(m);
+	auto& gids = dm.gid_attributes();
+	auto& owners = dm.owner_attributes();
+	auto add_ids = [&](auto cell, uint32 k) {
+		constexpr Orbit O = decltype(cell)::ORBIT;
+		gids[k] = container_of<O>(m).template add_attribute<uint64, CellAttribute<uint64, O>>("__gid", NO_GID);
+		owners[k] = container_of<O>(m).template add_attribute<int32, CellAttribute<int32, O>>("__owner", -1);
+	};
+	add_ids(typename MAP::Vertex(), 0);
+	add_ids(typename MAP::Edge(), 1);
+	add_ids(typename MAP::Face(), 2);
+	if constexpr (D == 3)
+		add_ids(CMap3::Volume(), 3);
+
+	// vertices: soup vertex i is line offset + i, or a line split from it
+	std::vector<uint32> soup_of(container_of<MAP::Vertex::ORBIT>(m).end_index(), INVALID_INDEX);
+	for (uint32 i = 0; i < nb_vertices; ++i)
+		soup_of[report.vertex_offset + i] = i;
+	for (const auto& [line, i] : report.split_vertices)
+		soup_of[line] = i;
+	foreach_cell(m, [&](typename MAP::Vertex v) {
+		const uint32 line = index_of(m, v), i = soup_of[line];
+		(*gids[0])[line] = msg.vertex_gid[i];
+		(*owners[0])[line] = msg.vertex_owner[i];
+	});
+	for (const PartMessage::Column& col : msg.columns)
+		if (col.of_top_cells == 0)
+			visit_carried_type(col.type, [&]<typename T>() {
+				auto a = add_attribute<T, typename MAP::Vertex>(m, col.name);
+				if (a == nullptr || col.values.size() != nb_vertices * sizeof(T))
+					throw std::runtime_error("distribute: the vertex attribute '" + col.name + "' cannot be rebuilt");
+				foreach_cell(m, [&](typename MAP::Vertex v) {
+					std::memcpy(static_cast<void*>(&(*a)[v]), col.values.data() + soup_of[index_of(m, v)] * sizeof(T),
+								sizeof(T));
+				});
+			});
+	dm.set_not_carried(msg.not_carried);
+
+	// the other cells, through the corner of each dart: a corner is known by
+	// its vertex and the next two (the next one on a surface), unique in a
+	// manifold map whose faces share at most two consecutive vertices
+	struct Key
+	{
+		uint32 u, v, w, corner;
+		bool operator<(const Key& o) const
+		{
+			return u != o.u ? u < o.u : v != o.v ? v < o.v : w < o.w;
+		}
+		bool same_corner(const Key& o) const
+		{
+			return u == o.u && v == o.v && w == o.w;
+		}
+	};
+	std::vector<Key> keys;
+	std::vector<uint32> corner_cell(msg.corner_vertex.size());
+	{
+		uint32 corner = 0, face = 0;
+		for (uint32 c = 0; c < msg.cell_gid.size(); ++c)
+		{
+			const uint32 nb_faces = D == 3 ? msg.cell_nb_faces[c] : 1;
+			for (uint32 f = 0; f < nb_faces; ++f, ++face)
+			{
+				const uint32 n = msg.face_sizes[face];
+				for (uint32 i = 0; i < n; ++i)
+				{
+					corner_cell[corner + i] = c;
+					keys.push_back({msg.corner_vertex[corner + i], msg.corner_vertex[corner + (i + 1) % n],
+									D == 3 ? msg.corner_vertex[corner + (i + 2) % n] : 0, corner + i});
+				}
+				corner += n;
+			}
+		}
+	}
+	std::sort(keys.begin(), keys.end());
+	for (std::size_t i = 1; i < keys.size(); ++i)
+		if (keys[i].same_corner(keys[i - 1]))
+			throw std::runtime_error("distribute: two faces of rank " + std::to_string(rank) +
+									 " share three consecutive vertices (not supported)");
+	uint64 nb_unmatched = 0;
+	std::vector<uint32> top_cell_of_line(container_of<Top<MAP>::ORBIT>(m).end_index(), INVALID_INDEX);
+	foreach_dart(m, [&](Dart d) {
+		if (is_boundary(m, d))
+			return;
+		const Dart e = phi1(m, d);
+		const Key k{soup_of[index_of(m, typename MAP::Vertex(d))], soup_of[index_of(m, typename MAP::Vertex(e))],
+					D == 3 ? soup_of[index_of(m, typename MAP::Vertex(phi1(m, e)))] : 0, 0};
+		const auto it = std::lower_bound(keys.begin(), keys.end(), k);
+		if (it == keys.end() || !it->same_corner(k))
+		{
+			++nb_unmatched;
+			return;
+		}
+		const uint32 corner = it->corner;
+		auto set_ids = [&](auto c, uint32 k) {
+			const uint32 line = index_of(m, c);
+			(*gids[k])[line] = msg.corner_gid[k - 1][corner];
+			(*owners[k])[line] = msg.corner_owner[k - 1][corner];
+		};
+		set_ids(typename MAP::Edge(d), 1);
+		if constexpr (D == 3)
+			set_ids(CMap3::Face(d), 2);
+		const uint32 line = index_of(m, Top<MAP>(d));
+		(*gids[D])[line] = msg.cell_gid[corner_cell[corner]];
+		(*owners[D])[line] = msg.cell_owner[corner_cell[corner]];
+		top_cell_of_line[line] = corner_cell[corner];
+	});
+	for (const PartMessage::Column& col : msg.columns)
+		if (col.of_top_cells == 1)
+			visit_carried_type(col.type, [&]<typename T>() {
+				auto a = add_attribute<T, Top<MAP>>(m, col.name);
+				if (a == nullptr || col.values.size() != msg.cell_gid.size() * sizeof(T))
+					throw std::runtime_error("distribute: the cell attribute '" + col.name + "' cannot be rebuilt");
+				foreach_cell(m, [&](Top<MAP> t) {
+					std::memcpy(static_cast<void*>(&(*a)[t]),
+								col.values.data() + top_cell_of_line[index_of(m, t)] * sizeof(T), sizeof(T));
+				});
+			});
+	if (nb_unmatched != 0)
+		throw std::runtime_error("distribute: rank " + std::to_string(rank) + " could not match " +
+								 std::to_string(nb_unmatched) + " darts to their cells");
+	for (uint32 k = 0; k <= D; ++k)
+		with_cell_of_dimension<MAP>(k, Dart(), [&](auto cell) {
+			foreach_cell(m, [&](decltype(cell) c) {
+				if ((*gids[k])[index_of(m, c)] == NO_GID)
+					throw std::runtime_error("distribute: rank " + std::to_string(rank) +
+											 " has a cell without global id");
+			});
+		});
+}
+
+} // namespace cgogn::dist::detail
