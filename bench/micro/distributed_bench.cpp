@@ -104,28 +104,29 @@ void BM_PartitionAndDistribute(benchmark::State& state)
 	spread_counters(state, dm, n);
 }
 
+// The tet grid of side n spread over the ranks, the root's map freed.
+dist::DistributedCMap3 spread_grid(uint32 n)
+{
+	auto serial = grid_on_root(n);
+	return dist::distribute(MPI_COMM_WORLD, rank() == 0 ? serial.get() : nullptr);
+}
+
 void BM_ExchangePositions(benchmark::State& state)
 {
-	const uint32 n = uint32(state.range(0));
-	auto serial = grid_on_root(n);
-	dist::DistributedCMap3 dm = dist::distribute(MPI_COMM_WORLD, rank() == 0 ? serial.get() : nullptr);
-	serial.reset();
+	dist::DistributedCMap3 dm = spread_grid(uint32(state.range(0)));
 	auto pos = get_attribute<Vec3, CMap3::Vertex>(dm.map(), "position");
 	for (auto _ : state)
 		state.SetIterationTime(slowest([&] { dist::exchange(dm, *pos); }));
-	spread_counters(state, dm, n);
+	spread_counters(state, dm, uint32(state.range(0)));
 }
 
 void BM_TenSmoothingSteps(benchmark::State& state)
 {
-	const uint32 n = uint32(state.range(0));
-	auto serial = grid_on_root(n);
-	dist::DistributedCMap3 dm = dist::distribute(MPI_COMM_WORLD, rank() == 0 ? serial.get() : nullptr);
-	serial.reset();
+	dist::DistributedCMap3 dm = spread_grid(uint32(state.range(0)));
 	auto pos = get_attribute<Vec3, CMap3::Vertex>(dm.map(), "position");
 	for (auto _ : state)
 		state.SetIterationTime(slowest([&] { dist::laplacian_smoothing(dm, *pos, 10); }));
-	spread_counters(state, dm, n);
+	spread_counters(state, dm, uint32(state.range(0)));
 }
 
 BENCHMARK(BM_PartitionAndDistribute)->Arg(56)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);

@@ -108,21 +108,28 @@ private:
 	std::size_t at_ = 0;
 };
 
+// Calls f on each array of a message, in the order of the bytes.
+template <typename MESSAGE, typename F>
+void foreach_array(MESSAGE& m, const F& f)
+{
+	f(m.vertex_gid);
+	f(m.vertex_owner);
+	f(m.cell_gid);
+	f(m.cell_owner);
+	f(m.cell_nb_faces);
+	f(m.face_sizes);
+	f(m.corner_vertex);
+	for (int k = 0; k < 2; ++k)
+	{
+		f(m.corner_gid[k]);
+		f(m.corner_owner[k]);
+	}
+}
+
 inline std::vector<std::byte> serialize(const PartMessage& m)
 {
 	ByteWriter w;
-	w.put(m.vertex_gid);
-	w.put(m.vertex_owner);
-	w.put(m.cell_gid);
-	w.put(m.cell_owner);
-	w.put(m.cell_nb_faces);
-	w.put(m.face_sizes);
-	w.put(m.corner_vertex);
-	for (int k = 0; k < 2; ++k)
-	{
-		w.put(m.corner_gid[k]);
-		w.put(m.corner_owner[k]);
-	}
+	foreach_array(m, [&](const auto& v) { w.put(v); });
 	w.put(std::vector<uint64>{m.columns.size(), m.not_carried.size()});
 	for (const PartMessage::Column& c : m.columns)
 	{
@@ -139,18 +146,7 @@ inline PartMessage deserialize(const std::vector<std::byte>& bytes)
 {
 	PartMessage m;
 	ByteReader r(bytes);
-	r.get(m.vertex_gid);
-	r.get(m.vertex_owner);
-	r.get(m.cell_gid);
-	r.get(m.cell_owner);
-	r.get(m.cell_nb_faces);
-	r.get(m.face_sizes);
-	r.get(m.corner_vertex);
-	for (int k = 0; k < 2; ++k)
-	{
-		r.get(m.corner_gid[k]);
-		r.get(m.corner_owner[k]);
-	}
+	foreach_array(m, [&](auto& v) { r.get(v); });
 	std::vector<uint64> sizes;
 	r.get(sizes);
 	if (sizes.size() != 2)
