@@ -18,6 +18,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 
 namespace cgogn::tool
 {
@@ -27,45 +28,46 @@ namespace
 
 using nlohmann::json;
 
-// Whether the file is a volume mesh: by format, and for the formats of
-// both, by whether it has volume cells (read on rank 0).
-bool is_volume_file(MPI_Comm comm, const std::string& path)
+// Runs f on the distributed map of path: rank 0 reads the file once, as a
+// volume mesh when its format holds volumes and it has volume cells, else
+// as a surface (the formats of both are read twice for a surface only, as
+// with_loaded reads them).
+template <typename FUNC>
+void with_distributed(MPI_Comm comm, const std::string& path, const FUNC& f)
 {
-	int volume = 0;
 	int rank = 0;
 	MPI_Comm_rank(comm, &rank);
+	auto volume = std::make_unique<CMap3>();
+	int is_volume = 0; // -1: the volume file could not be read
+	std::string error;
 	if (rank == 0)
 	{
 		try
 		{
-			const io::Format f = format_of(path);
-			volume = is_volume_format(f);
-			if (volume && holds_surfaces(f))
-			{
-				CMap3 m;
-				volume = io::load_volume(m, path).nb_cells_read > 0;
-			}
+			const io::Format format = format_of(path);
+			if (is_volume_format(format))
+				is_volume = io::load_volume(*volume, path).nb_cells_read > 0 || !holds_surfaces(format);
 		}
-		catch (const std::exception&)
+		catch (const std::exception& e)
 		{
-			volume = 0; // the surface load reports the error on every rank
+			// a format of both is read as a surface below, which reports its errors
+			is_volume = -1;
+			error = e.what();
 		}
+		if (is_volume == -1 && holds_surfaces(io::format_from_extension(path)))
+			is_volume = 0;
 	}
-	MPI_Bcast(&volume, 1, MPI_INT, 0, comm);
-	return volume != 0;
-}
-
-// Runs f on the distributed volume or surface map of path.
-template <typename FUNC>
-void with_distributed(MPI_Comm comm, const std::string& path, const FUNC& f)
-{
-	if (is_volume_file(comm, path))
+	MPI_Bcast(&is_volume, 1, MPI_INT, 0, comm);
+	if (is_volume == -1) // rank 0 prints the error
+		throw std::runtime_error(rank == 0 ? error : "rank 0 could not read the file");
+	if (is_volume == 1)
 	{
-		dist::DistributedCMap3 dm = dist::load_volume(comm, path);
+		dist::DistributedCMap3 dm = dist::distribute(comm, rank == 0 ? volume.get() : nullptr);
 		f(dm);
 	}
 	else
 	{
+		volume.reset();
 		dist::DistributedCMap2 dm = dist::load_surface(comm, path);
 		f(dm);
 	}

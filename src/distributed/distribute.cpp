@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/distributed/distribute.h>
 
+#include "collective_failure.h"
 #include "rebuild_part.h"
 #include "root_split.h"
 
@@ -59,51 +60,23 @@ std::vector<std::byte> receive_bytes(MPI_Comm comm, int from)
 	return bytes;
 }
 
-// Whether the root failed, and why, on every rank: every rank throws alike.
-void share_root_error(MPI_Comm comm, int root, std::string& error, int& kind)
-{
-	MPI_Bcast(&kind, 1, MPI_INT, root, comm);
-	if (kind == 0)
-		return;
-	int length = int(error.size());
-	MPI_Bcast(&length, 1, MPI_INT, root, comm);
-	error.resize(std::size_t(length));
-	MPI_Bcast(error.data(), length, MPI_CHAR, root, comm);
-	if (kind == 1)
-		throw PartitionError(error);
-	throw std::runtime_error(error);
-}
-
 template <typename MAP>
 DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeOptions& options, int root)
 {
 	int rank = 0, nb_ranks = 1;
 	MPI_Comm_rank(comm, &rank);
 	MPI_Comm_size(comm, &nb_ranks);
-	DistributedMap<MAP> dm;
+	std::shared_ptr<CellAttribute<uint32, Top<MAP>::ORBIT>> parts;
+	detail::on_every_rank(comm, [&] {
+		if (rank != root)
+			return;
+		if (serial == nullptr)
+			throw PartitionError("distribute: the root has no map");
+		parts = root_parts(*serial, nb_ranks, options);
+	});
 	detail::PartMessage own;
 	if (rank == root)
 	{
-		std::string error;
-		int kind = 0;
-		std::shared_ptr<CellAttribute<uint32, Top<MAP>::ORBIT>> parts;
-		try
-		{
-			if (serial == nullptr)
-				throw PartitionError("distribute: the root has no map");
-			parts = root_parts(*serial, nb_ranks, options);
-		}
-		catch (const PartitionError& e)
-		{
-			error = e.what();
-			kind = 1;
-		}
-		catch (const std::exception& e)
-		{
-			error = e.what();
-			kind = 2;
-		}
-		share_root_error(comm, root, error, kind);
 		const detail::RootSplit<MAP> split(*serial, *parts);
 		const auto cells = split.cells_per_rank(nb_ranks);
 		std::vector<uint32> local_vertex(split.count[0]);
@@ -118,28 +91,10 @@ DistributedMap<MAP> distribute_map(MPI_Comm comm, MAP* serial, const DistributeO
 		}
 	}
 	else
-	{
-		std::string error;
-		int kind = 0;
-		share_root_error(comm, root, error, kind);
 		own = detail::deserialize(receive_bytes(comm, root));
-	}
-	// every rank builds; a failure anywhere is raised everywhere after the
-	// plans' collective calls would otherwise wait forever
-	std::string error;
-	try
-	{
-		detail::build_part(dm, rank, own);
-		own = detail::PartMessage(); // the map holds it all now
-	}
-	catch (const std::exception& e)
-	{
-		error = e.what();
-	}
-	int failed = !error.empty(), any_failed = 0;
-	MPI_Allreduce(&failed, &any_failed, 1, MPI_INT, MPI_MAX, comm);
-	if (any_failed)
-		throw std::runtime_error(failed ? error : "distribute: another rank could not rebuild its part");
+	DistributedMap<MAP> dm;
+	detail::on_every_rank(comm, [&] { detail::build_part(dm, rank, own); });
+	own = detail::PartMessage(); // the map holds it all now
 	dm.finish(comm);
 	return dm;
 }

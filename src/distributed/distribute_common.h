@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // What the root and the ranks of distribute() share: the attribute types it
-// carries, and the cell of each dimension of a dart.
+// carries.
 #pragma once
 
 #include <cgogn/core/attributes/attribute.h>
@@ -45,25 +45,6 @@ inline int carried_type_of(const AttributeBase& a)
 				found = i;
 		});
 	return found;
-}
-
-// Calls f with the cell of dimension k (0 .. the map's dimension) of dart d.
-template <typename MAP, typename FUNC>
-void with_cell_of_dimension(uint32 k, Dart d, const FUNC& f)
-{
-	if (k == 0)
-		f(typename MAP::Vertex(d));
-	else if (k == 1)
-		f(typename MAP::Edge(d));
-	else if constexpr (MAP::dimension == 3)
-	{
-		if (k == 2)
-			f(CMap3::Face(d));
-		else
-			f(CMap3::Volume(d));
-	}
-	else
-		f(CMap2::Face(d));
 }
 
 } // namespace cgogn::dist::detail

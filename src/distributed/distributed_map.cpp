@@ -199,18 +199,12 @@ template <typename MAP>
 void DistributedMap<MAP>::finish(MPI_Comm comm)
 {
 	std::vector<std::vector<LocalCell>> cells(dimension + 1);
-	auto collect = [&](auto cell, uint32 k) {
-		using CELL = decltype(cell);
-		foreach_cell(*map_, [&](CELL c) {
+	detail::foreach_cell_type<MAP>([&](auto cell, uint32 k) {
+		foreach_cell(*map_, [&](decltype(cell) c) {
 			const uint32 line = index_of(*map_, c);
 			cells[k].push_back({(*gids_[k])[line], line, (*owners_[k])[line]});
 		});
-	};
-	collect(typename MAP::Vertex(), 0);
-	collect(typename MAP::Edge(), 1);
-	collect(typename MAP::Face(), 2);
-	if constexpr (dimension == 3)
-		collect(CMap3::Volume(), 3);
+	});
 	build_plans(comm, cells);
 }
 

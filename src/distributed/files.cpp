@@ -6,6 +6,8 @@
 #include <cgogn/io/surface.h>
 #include <cgogn/io/volume.h>
 
+#include "collective_failure.h"
+
 #include <filesystem>
 
 namespace cgogn
@@ -14,31 +16,39 @@ namespace cgogn
 namespace
 {
 
-// Every rank learns whether one failed; all throw io::Error (the failing
-// rank's own message, or a pointer to the rank that failed).
-void raise_everywhere(MPI_Comm comm, const std::string& path, const std::string& error)
-{
-	int rank = 0;
-	MPI_Comm_rank(comm, &rank);
-	const int mine = error.empty() ? -1 : rank;
-	int first = -1;
-	MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MAX, comm);
-	if (first < 0)
-		return;
-	throw io::Error(path, error.empty() ? "rank " + std::to_string(first) + " failed to write its piece" : error);
-}
-
-// An attribute of the given name and type, added when absent (`added` is
-// then set); nullptr when the name is taken by another type.
+// An array a piece carries while it is written: the map's attribute of
+// that name and type, or one added for the write and removed after it.
 template <typename T, typename CELL, typename MAP>
-std::shared_ptr<CellAttribute<T, CELL::ORBIT>> scratch_attribute(MAP& m, const std::string& name, bool& added)
+class PieceArray
 {
-	auto a = get_attribute<T, CELL>(m, name);
-	added = a == nullptr;
-	if (a == nullptr)
-		a = add_attribute<T, CELL>(m, name);
-	return a;
-}
+public:
+	PieceArray(MAP& m, const std::string& name, const std::string& path) : m_(m), attr_(get_attribute<T, CELL>(m, name))
+	{
+		if (attr_ == nullptr)
+		{
+			attr_ = add_attribute<T, CELL>(m, name);
+			added_ = true;
+		}
+		if (attr_ == nullptr)
+			throw io::Error(path, "the map has an attribute named " + name + " of another type");
+	}
+	PieceArray(const PieceArray&) = delete;
+	PieceArray& operator=(const PieceArray&) = delete;
+	~PieceArray()
+	{
+		if (added_)
+			remove_attribute(m_, attr_);
+	}
+	T& operator[](CELL c)
+	{
+		return (*attr_)[c];
+	}
+
+private:
+	MAP& m_;
+	std::shared_ptr<CellAttribute<T, CELL::ORBIT>> attr_;
+	bool added_ = false;
+};
 
 template <typename MAP>
 void save_pieces(dist::DistributedMap<MAP>& dm, const std::string& path, const io::SaveOptions& options)
@@ -47,73 +57,36 @@ void save_pieces(dist::DistributedMap<MAP>& dm, const std::string& path, const i
 	using Top = typename dist::DistributedMap<MAP>::TopCell;
 	MAP& m = dm.map();
 	const std::filesystem::path p(path);
-	const std::string stem = p.stem().string();
-	auto piece_name = [&](int r) { return stem + "_" + std::to_string(r) + ".vtu"; };
-	std::string error;
-	try
-	{
-		bool added[4] = {};
-		auto node_ids = scratch_attribute<uint64, Vertex>(m, "GlobalNodeIds", added[0]);
-		auto node_ghost = scratch_attribute<uint8, Vertex>(m, "vtkGhostType", added[1]);
-		auto cell_ids = scratch_attribute<uint64, Top>(m, "GlobalCellIds", added[2]);
-		auto cell_ghost = scratch_attribute<uint8, Top>(m, "vtkGhostType", added[3]);
-		if (!node_ids || !node_ghost || !cell_ids || !cell_ghost)
-			throw io::Error(path, "the map has an attribute named GlobalNodeIds, GlobalCellIds or vtkGhostType of "
-								  "another type");
+	auto piece_name = [&](int r) { return p.stem().string() + "_" + std::to_string(r) + ".vtu"; };
+	dist::detail::on_every_rank(dm.comm(), [&] {
+		PieceArray<uint64, Vertex, MAP> node_ids(m, "GlobalNodeIds", path);
+		PieceArray<uint8, Vertex, MAP> node_ghost(m, "vtkGhostType", path);
+		PieceArray<uint64, Top, MAP> cell_ids(m, "GlobalCellIds", path);
+		PieceArray<uint8, Top, MAP> cell_ghost(m, "vtkGhostType", path);
 		foreach_cell(m, [&](Vertex v) {
-			(*node_ids)[v] = dist::global_id(dm, v);
-			(*node_ghost)[v] = dist::is_owned(dm, v) ? 0 : 1;
+			node_ids[v] = dist::global_id(dm, v);
+			node_ghost[v] = dist::is_owned(dm, v) ? 0 : 1;
 		});
 		foreach_cell(m, [&](Top c) {
-			(*cell_ids)[c] = dist::global_id(dm, c);
-			(*cell_ghost)[c] = dist::is_owned(dm, c) ? 0 : 1;
+			cell_ids[c] = dist::global_id(dm, c);
+			cell_ghost[c] = dist::is_owned(dm, c) ? 0 : 1;
 		});
 		io::SaveOptions piece = options;
 		piece.format = io::Format::Vtu;
 		const std::string piece_path = (p.parent_path() / piece_name(dm.rank())).string();
-		std::exception_ptr failure;
-		try
-		{
-			if constexpr (MAP::dimension == 3)
-				io::save_volume(m, piece_path, piece);
-			else
-				io::save_surface(m, piece_path, piece);
-		}
-		catch (...)
-		{
-			failure = std::current_exception();
-		}
-		if (added[0])
-			remove_attribute(m, node_ids);
-		if (added[1])
-			remove_attribute(m, node_ghost);
-		if (added[2])
-			remove_attribute(m, cell_ids);
-		if (added[3])
-			remove_attribute(m, cell_ghost);
-		if (failure)
-			std::rethrow_exception(failure);
-	}
-	catch (const std::exception& e)
-	{
-		error = e.what();
-	}
-	raise_everywhere(dm.comm(), path, error);
-	if (dm.rank() == 0)
-	{
-		try
-		{
-			std::vector<std::string> sources;
-			for (int r = 0; r < dm.nb_ranks(); ++r)
-				sources.push_back(piece_name(r));
-			io::write_pvtu_index(path, sources, 1);
-		}
-		catch (const std::exception& e)
-		{
-			error = e.what();
-		}
-	}
-	raise_everywhere(dm.comm(), path, error);
+		if constexpr (MAP::dimension == 3)
+			io::save_volume(m, piece_path, piece);
+		else
+			io::save_surface(m, piece_path, piece);
+	});
+	dist::detail::on_every_rank(dm.comm(), [&] {
+		if (dm.rank() != 0)
+			return;
+		std::vector<std::string> sources;
+		for (int r = 0; r < dm.nb_ranks(); ++r)
+			sources.push_back(piece_name(r));
+		io::write_pvtu_index(path, sources, 1);
+	});
 }
 
 template <typename MAP>
@@ -123,22 +96,14 @@ dist::DistributedMap<MAP> load_and_distribute(MPI_Comm comm, const std::string& 
 	int rank = 0;
 	MPI_Comm_rank(comm, &rank);
 	MAP serial;
-	std::string error;
-	if (rank == root)
-	{
-		try
-		{
-			if constexpr (MAP::dimension == 3)
-				io::load_volume(serial, path);
-			else
-				io::load_surface(serial, path);
-		}
-		catch (const std::exception& e)
-		{
-			error = e.what();
-		}
-	}
-	raise_everywhere(comm, path, error);
+	dist::detail::on_every_rank(comm, [&] {
+		if (rank != root)
+			return;
+		if constexpr (MAP::dimension == 3)
+			io::load_volume(serial, path);
+		else
+			io::load_surface(serial, path);
+	});
 	return dist::distribute(comm, rank == root ? &serial : nullptr, options, root);
 }
 

@@ -37,22 +37,14 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 								 std::to_string(report.nb_cells_built) + " of its " +
 								 std::to_string(msg.cell_gid.size()) + " cells (is the map manifold?)");
 
-	index_cells<typename MAP::Edge>(m);
-	index_cells<typename MAP::Face>(m);
-	if constexpr (D == 3)
-		index_cells<CMap3::Volume>(m);
+	foreach_cell_type<MAP>([&](auto cell, uint32) { index_cells<decltype(cell)>(m); });
 	auto& gids = dm.gid_attributes();
 	auto& owners = dm.owner_attributes();
-	auto add_ids = [&](auto cell, uint32 k) {
+	foreach_cell_type<MAP>([&](auto cell, uint32 k) {
 		constexpr Orbit O = decltype(cell)::ORBIT;
 		gids[k] = container_of<O>(m).template add_attribute<uint64, CellAttribute<uint64, O>>("__gid", NO_GID);
 		owners[k] = container_of<O>(m).template add_attribute<int32, CellAttribute<int32, O>>("__owner", -1);
-	};
-	add_ids(typename MAP::Vertex(), 0);
-	add_ids(typename MAP::Edge(), 1);
-	add_ids(typename MAP::Face(), 2);
-	if constexpr (D == 3)
-		add_ids(CMap3::Volume(), 3);
+	});
 
 	// vertices: soup vertex i is line offset + i, or a line split from it
 	std::vector<uint32> soup_of(container_of<MAP::Vertex::ORBIT>(m).end_index(), INVALID_INDEX);
@@ -160,14 +152,12 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 	if (nb_unmatched != 0)
 		throw std::runtime_error("distribute: rank " + std::to_string(rank) + " could not match " +
 								 std::to_string(nb_unmatched) + " darts to their cells");
-	for (uint32 k = 0; k <= D; ++k)
-		with_cell_of_dimension<MAP>(k, Dart(), [&](auto cell) {
-			foreach_cell(m, [&](decltype(cell) c) {
-				if ((*gids[k])[index_of(m, c)] == NO_GID)
-					throw std::runtime_error("distribute: rank " + std::to_string(rank) +
-											 " has a cell without global id");
-			});
+	foreach_cell_type<MAP>([&](auto cell, uint32 k) {
+		foreach_cell(m, [&](decltype(cell) c) {
+			if ((*gids[k])[index_of(m, c)] == NO_GID)
+				throw std::runtime_error("distribute: rank " + std::to_string(rank) + " has a cell without global id");
 		});
+	});
 }
 
 } // namespace cgogn::dist::detail

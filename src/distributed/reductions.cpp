@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/distributed/reductions.h>
 
-#include <limits>
 #include <vector>
 
 namespace cgogn::dist
@@ -26,20 +25,11 @@ double global_sum(MPI_Comm comm, double local)
 	return total;
 }
 
-BoundingBox global_bounding_box(const DistributedMapBase& dm, const AttributeArray<Vec3>& pos,
-								const std::vector<uint32>& vertex_lines)
+BoundingBox global_union(MPI_Comm comm, const BoundingBox& local)
 {
-	constexpr double inf = std::numeric_limits<double>::infinity();
-	double low[3] = {inf, inf, inf}, high[3] = {-inf, -inf, -inf};
-	for (uint32 line : vertex_lines)
-		for (int i = 0; i < 3; ++i)
-		{
-			low[i] = std::min(low[i], pos[line][i]);
-			high[i] = std::max(high[i], pos[line][i]);
-		}
 	BoundingBox box;
-	MPI_Allreduce(low, box.min.data(), 3, MPI_DOUBLE, MPI_MIN, dm.comm());
-	MPI_Allreduce(high, box.max.data(), 3, MPI_DOUBLE, MPI_MAX, dm.comm());
+	MPI_Allreduce(local.min.data(), box.min.data(), 3, MPI_DOUBLE, MPI_MIN, comm);
+	MPI_Allreduce(local.max.data(), box.max.data(), 3, MPI_DOUBLE, MPI_MAX, comm);
 	return box;
 }
 

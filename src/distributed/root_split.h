@@ -38,7 +38,7 @@ struct RootSplit
 {
 	static constexpr uint32 D = MAP::dimension;
 	MAP& m;
-	std::vector<uint64> gid[D + 1]; // by line
+	std::vector<uint64> gid[D + 1]; // by line, per dimension
 	uint64 count[D + 1] = {};
 	std::vector<int32> owner[D + 1]; // by global id
 	std::vector<Dart> top_dart;      // by global id
@@ -46,20 +46,16 @@ struct RootSplit
 	std::vector<uint64> vertex_part_starts;
 	std::vector<int32> vertex_parts;
 
-	uint64 gid_of(uint32 k, Dart d) const
+	// The global id of the cell of type CELL of dart d.
+	template <typename CELL>
+	uint64 gid_of(Dart d) const
 	{
-		uint64 g = NO_GID;
-		with_cell_of_dimension<MAP>(k, d, [&](auto c) { g = gid[k][index_of(m, c)]; });
-		return g;
+		return gid[DistributedMap<MAP>::template dimension_of<CELL>()][index_of(m, CELL(d))];
 	}
 
 	RootSplit(MAP& map, const AttributeArray<uint32>& part) : m(map)
 	{
-		gid[0] = number_cells<MAP, typename MAP::Vertex>(m, count[0]);
-		gid[1] = number_cells<MAP, typename MAP::Edge>(m, count[1]);
-		gid[2] = number_cells<MAP, typename MAP::Face>(m, count[2]);
-		if constexpr (D == 3)
-			gid[3] = number_cells<MAP, CMap3::Volume>(m, count[3]);
+		foreach_cell_type<MAP>([&](auto cell, uint32 k) { gid[k] = number_cells<MAP, decltype(cell)>(m, count[k]); });
 
 		top_dart.resize(count[D]);
 		for (uint32 k = 0; k <= D; ++k)
@@ -74,12 +70,14 @@ struct RootSplit
 			top_dart[g] = t.dart;
 			owner[D][g] = p;
 			foreach_dart_of_orbit(m, t, [&](Dart d) {
-				for (uint32 k = 0; k < D; ++k)
-				{
-					int32& o = owner[k][gid_of(k, d)];
-					o = std::min(o, p);
-				}
-				const uint64 v = gid_of(0, d);
+				foreach_cell_type<MAP>([&](auto cell, uint32 k) {
+					if (k < D)
+					{
+						int32& o = owner[k][gid_of<decltype(cell)>(d)];
+						o = std::min(o, p);
+					}
+				});
+				const uint64 v = gid_of<typename MAP::Vertex>(d);
 				if (last_part[v] != p)
 				{
 					last_part[v] = p;
@@ -109,7 +107,7 @@ struct RootSplit
 		{
 			ranks.clear();
 			foreach_dart_of_orbit(m, Top<MAP>(top_dart[g]), [&](Dart d) {
-				const uint64 v = gid_of(0, d);
+				const uint64 v = gid_of<typename MAP::Vertex>(d);
 				for (uint64 i = vertex_part_starts[v]; i < vertex_part_starts[v + 1]; ++i)
 					ranks.push_back(vertex_parts[i]);
 			});
@@ -130,7 +128,7 @@ struct RootSplit
 		std::vector<uint32> vertex_lines, top_lines;
 		DartMarker<MAP> visited(m);
 		auto add_corner = [&](Dart x) {
-			const uint64 v = gid_of(0, x);
+			const uint64 v = gid_of<typename MAP::Vertex>(x);
 			if (vertex_stamp[v] != stamp)
 			{
 				vertex_stamp[v] = stamp;
@@ -140,19 +138,22 @@ struct RootSplit
 				vertex_lines.push_back(index_of(m, typename MAP::Vertex(x)));
 			}
 			msg.corner_vertex.push_back(local_vertex[v]);
-			for (uint32 k = 1; k < D; ++k)
-			{
-				const uint64 g = gid_of(k, x);
+			auto add_cell = [&](auto cell, uint32 k) {
+				const uint64 g = gid_of<decltype(cell)>(x);
 				msg.corner_gid[k - 1].push_back(g);
 				msg.corner_owner[k - 1].push_back(owner[k][g]);
-			}
+			};
+			add_cell(typename MAP::Edge(), 1);
+			if constexpr (D == 3)
+				add_cell(CMap3::Face(), 2);
 		};
 		auto add_face = [&](Dart x) {
 			uint32 n = 0;
 			Dart it = x;
 			do
 			{
-				visited.mark(it);
+				if constexpr (D == 3)
+					visited.mark(it);
 				add_corner(it);
 				++n;
 				it = phi1(m, it);
@@ -182,10 +183,7 @@ struct RootSplit
 				msg.cell_nb_faces.push_back(nb_faces);
 			}
 			else
-			{
-				add_face(top_dart[g]);
-				foreach_dart_of_orbit(m, CMap2::Face(top_dart[g]), [&](Dart x) { visited.unmark(x); });
-			}
+				add_face(top_dart[g]); // a face is one phi1 cycle
 		}
 		add_columns(msg, container_of<MAP::Vertex::ORBIT>(m), vertex_lines, 0);
 		add_columns(msg, container_of<Top<MAP>::ORBIT>(m), top_lines, 1);
@@ -204,7 +202,7 @@ struct RootSplit
 			return;
 		const AttributeContainer& c = container_of<CELL::ORBIT>(m);
 		for (const auto& a : c.attributes())
-			if (a.get() != &c.key() && a->name().rfind("__", 0) != 0)
+			if (a.get() != &c.key() && !cgogn::detail::is_reserved_name(a->name()))
 				names.push_back(std::string(cells) + " attribute '" + a->name() + "'");
 	}
 
@@ -215,7 +213,7 @@ struct RootSplit
 	{
 		for (const auto& a : c.attributes())
 		{
-			if (a.get() == &c.key() || a->name().rfind("__", 0) == 0)
+			if (a.get() == &c.key() || cgogn::detail::is_reserved_name(a->name()))
 				continue;
 			const int type = carried_type_of(*a);
 			if (type < 0)
@@ -237,7 +235,5 @@ struct RootSplit
 		}
 	}
 };
-
-// The parts: the attribute partition() writes, or the user's.
 
 } // namespace cgogn::dist::detail

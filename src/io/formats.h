@@ -52,15 +52,15 @@ std::pair<std::string, std::string> write_tetgen(const MeshData& d);
 MeshData read_ovm(std::string_view text, const std::string& path);
 
 /// The pieces of the parallel VTU index at `path`, merged into one mesh:
-/// vertices by their GlobalNodeIds point array when every piece has one,
-/// cells flagged in a vtkGhostType cell array dropped, the rest ordered by
-/// GlobalCellIds when every piece has them; listed faces and edges shared
-/// by pieces come once. Each piece's polygons become cells for a
-/// `surface`. Throws io::Error naming the index or the piece. O(size of the
-/// pieces x log).
-MeshData read_pvtu(const std::string& path, bool surface);
-/// The .vtu piece written beside a .pvtu of one piece: foo.pvtu -> foo_0.vtu.
-std::string single_piece_name(const std::string& pvtu_path);
+/// vertices by their GlobalNodeIds point array when every piece has one;
+/// cells and listed faces (a surface's polygons) flagged in a vtkGhostType
+/// array dropped, the rest ordered by GlobalCellIds when every piece has
+/// them; listed faces and edges shared by pieces come once. Throws
+/// io::Error naming the index or the piece. O(size of the pieces x log).
+MeshData read_pvtu(const std::string& path);
+/// Writes d as a .pvtu of one piece: the piece foo_0.vtu beside path, then
+/// the index. Throws io::Error as write_file and write_pvtu_index do.
+void write_single_piece_pvtu(const MeshData& d, const std::string& path, bool binary);
 std::string write_ovm(const MeshData& d);
 
 /// The mesh in `data` by the reader of format f: every format held in one

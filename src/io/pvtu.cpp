@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Parallel VTU (.pvtu): an XML index naming one .vtu piece per rank. The
 // pieces are read and merged into one mesh: vertices by their GlobalNodeIds
-// point array (when every piece has one), ghost cells (vtkGhostType != 0)
-// dropped, cells ordered by their GlobalCellIds when every piece has them.
+// point array (when every piece has one), ghost cells and ghost listed
+// faces (vtkGhostType != 0) dropped, both ordered by their GlobalCellIds
+// when every piece has them.
 #include <cgogn/io/error.h>
 
 #include "file_io.h"
@@ -86,6 +87,41 @@ void append_row(Column& to, const Column& from, std::size_t row)
 					 from.values.begin() + std::ptrdiff_t((row + 1) * from.dim));
 }
 
+// Where each element's entries start in a list of sizes, element after element.
+std::vector<uint32> starts_of(const std::vector<uint32>& sizes)
+{
+	std::vector<uint32> starts(sizes.size());
+	uint32 at = 0;
+	for (std::size_t i = 0; i < sizes.size(); ++i)
+	{
+		starts[i] = at;
+		at += sizes[i];
+	}
+	return starts;
+}
+
+// An element of a piece: (its global id, or the order it was met; piece; row).
+using Row = std::tuple<double, std::size_t, uint32>;
+
+// The elements of the pieces whose vtkGhostType in `columns` is 0 (all of
+// them without the array), in increasing global id (the `ids` array) when
+// `by_ids`, else piece after piece.
+std::vector<Row> owned_rows(const std::vector<MeshData>& pieces, std::vector<Column> MeshData::*columns,
+							uint32 (MeshData::*count)() const, bool by_ids)
+{
+	std::vector<Row> rows;
+	for (std::size_t p = 0; p < pieces.size(); ++p)
+	{
+		const Column* ghost = find_column(pieces[p].*columns, GHOST);
+		const Column* ids = by_ids ? find_column(pieces[p].*columns, CELL_IDS) : nullptr;
+		for (uint32 r = 0, n = (pieces[p].*count)(); r < n; ++r)
+			if (ghost == nullptr || ghost->values[r * ghost->dim] == 0)
+				rows.emplace_back(ids != nullptr ? ids->values[r * ids->dim] : double(rows.size()), p, r);
+	}
+	std::sort(rows.begin(), rows.end());
+	return rows;
+}
+
 // Listed faces or segments: the same element on both sides of a cut comes
 // once, the first time it is met (keyed by its sorted merged vertices).
 struct ElementMerge
@@ -100,7 +136,7 @@ struct ElementMerge
 
 } // namespace
 
-MeshData read_pvtu(const std::string& path, bool surface)
+MeshData read_pvtu(const std::string& path)
 {
 	const std::string index = read_file(path);
 	if (index.find("PUnstructuredGrid") == std::string::npos)
@@ -116,8 +152,6 @@ MeshData read_pvtu(const std::string& path, bool surface)
 		paths.push_back((dir / s).string());
 		pieces.push_back(read_vtu(read_file(paths.back()), paths.back()));
 		validate(pieces.back(), paths.back());
-		if (surface)
-			pieces.back().faces_as_cells(paths.back());
 		if (!pieces.back().corner_columns.empty())
 			throw Error(paths.back(), "per-corner data in a piece");
 	}
@@ -128,7 +162,6 @@ MeshData read_pvtu(const std::string& path, bool surface)
 	out.face_columns = shared_columns(pieces, paths, &MeshData::face_columns, "face");
 	out.segment_columns = shared_columns(pieces, paths, &MeshData::segment_columns, "edge");
 	const bool by_node_ids = find_column(out.vertex_columns, NODE_IDS) != nullptr;
-	const bool by_cell_ids = find_column(out.cell_columns, CELL_IDS) != nullptr;
 
 	// merged vertex numbers: by global id (increasing), or piece after piece
 	std::vector<std::vector<uint32>> merged(pieces.size());
@@ -160,33 +193,26 @@ MeshData read_pvtu(const std::string& path, bool surface)
 				origin.emplace_back(p, v);
 			}
 
-	// the owned cells: (global id or order, piece, cell)
-	std::vector<std::tuple<double, std::size_t, uint32>> cells;
-	for (std::size_t p = 0; p < pieces.size(); ++p)
-	{
-		const Column* ghost = find_column(pieces[p].cell_columns, GHOST);
-		const Column* ids = by_cell_ids ? find_column(pieces[p].cell_columns, CELL_IDS) : nullptr;
-		for (uint32 c = 0; c < pieces[p].nb_cells(); ++c)
-			if (ghost == nullptr || ghost->values[c * ghost->dim] == 0)
-				cells.emplace_back(ids != nullptr ? ids->values[c * ids->dim] : double(cells.size()), p, c);
-	}
-	std::sort(cells.begin(), cells.end());
+	// the owned cells and listed faces (a surface's polygons)
+	const std::vector<Row> cells = owned_rows(pieces, &MeshData::cell_columns, &MeshData::nb_cells,
+											  find_column(out.cell_columns, CELL_IDS) != nullptr);
+	const std::vector<Row> faces = owned_rows(pieces, &MeshData::face_columns, &MeshData::nb_faces,
+											  find_column(out.face_columns, CELL_IDS) != nullptr);
 
-	// the vertices the owned cells use, renumbered in merged order
-	std::vector<std::vector<uint32>> first_corner(pieces.size());
+	// the vertices they use, renumbered in merged order
+	std::vector<std::vector<uint32>> first_corner(pieces.size()), first_face_corner(pieces.size());
 	for (std::size_t p = 0; p < pieces.size(); ++p)
 	{
-		uint32 k = 0;
-		for (uint32 c = 0; c < pieces[p].nb_cells(); ++c)
-		{
-			first_corner[p].push_back(k);
-			k += pieces[p].cell_sizes[c];
-		}
+		first_corner[p] = starts_of(pieces[p].cell_sizes);
+		first_face_corner[p] = starts_of(pieces[p].face_sizes);
 	}
 	std::vector<uint32> used(origin.size(), INVALID_INDEX);
 	for (const auto& [id, p, c] : cells)
 		for (uint32 i = 0; i < pieces[p].cell_sizes[c]; ++i)
 			used[merged[p][pieces[p].cell_vertices[first_corner[p][c] + i]]] = 0;
+	for (const auto& [id, p, f] : faces)
+		for (uint32 i = 0; i < pieces[p].face_sizes[f]; ++i)
+			used[merged[p][pieces[p].face_vertices[first_face_corner[p][f] + i]]] = 0;
 	uint32 nb_used = 0;
 	for (uint32 v = 0; v < used.size(); ++v)
 		if (used[v] == 0)
@@ -241,28 +267,29 @@ MeshData read_pvtu(const std::string& path, bool surface)
 	}
 	out.finish_polyhedra();
 
-	// listed faces and edges with data, once each
-	ElementMerge faces, segments;
+	// listed faces (in order) and edges with data, the same one from two
+	// pieces once
+	ElementMerge merged_faces, merged_segments;
+	for (const auto& [id, p, f] : faces)
+	{
+		const MeshData& d = pieces[p];
+		std::vector<uint32> ids;
+		for (uint32 i = 0; i < d.face_sizes[f]; ++i)
+			ids.push_back(vertex_of(p, d.face_vertices[first_face_corner[p][f] + i]));
+		if (!merged_faces.first(ids))
+			continue;
+		out.face_sizes.push_back(uint32(ids.size()));
+		out.face_vertices.insert(out.face_vertices.end(), ids.begin(), ids.end());
+		for (Column& col : out.face_columns)
+			append_row(col, *find_column(d.face_columns, col.name.c_str()), f);
+	}
 	for (std::size_t p = 0; p < pieces.size(); ++p)
 	{
 		const MeshData& d = pieces[p];
-		uint32 k = 0;
-		for (uint32 f = 0; f < d.nb_faces(); ++f)
-		{
-			std::vector<uint32> ids;
-			for (uint32 i = 0; i < d.face_sizes[f]; ++i)
-				ids.push_back(vertex_of(p, d.face_vertices[k++]));
-			if (std::find(ids.begin(), ids.end(), INVALID_INDEX) != ids.end() || !faces.first(ids))
-				continue;
-			out.face_sizes.push_back(uint32(ids.size()));
-			out.face_vertices.insert(out.face_vertices.end(), ids.begin(), ids.end());
-			for (Column& col : out.face_columns)
-				append_row(col, *find_column(d.face_columns, col.name.c_str()), f);
-		}
 		for (std::size_t s = 0; s < d.segments.size(); ++s)
 		{
 			const uint32 a = vertex_of(p, d.segments[s].first), b = vertex_of(p, d.segments[s].second);
-			if (a == INVALID_INDEX || b == INVALID_INDEX || !segments.first({a, b}))
+			if (a == INVALID_INDEX || b == INVALID_INDEX || !merged_segments.first({a, b}))
 				continue;
 			out.segments.emplace_back(a, b);
 			for (Column& col : out.segment_columns)

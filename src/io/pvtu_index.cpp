@@ -71,11 +71,12 @@ void write_pvtu_index(const std::string& pvtu_path, const std::vector<std::strin
 namespace detail
 {
 
-std::string single_piece_name(const std::string& pvtu_path)
+void write_single_piece_pvtu(const MeshData& d, const std::string& path, bool binary)
 {
-	std::filesystem::path p(pvtu_path);
-	p.replace_filename(p.stem().string() + "_0.vtu");
-	return p.string();
+	std::filesystem::path piece(path);
+	piece.replace_filename(piece.stem().string() + "_0.vtu");
+	write_file(piece.string(), write_vtu(d, binary));
+	write_pvtu_index(path, {piece.filename().string()}, 0);
 }
 
 } // namespace detail

@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/io/pvtu.h>
 #include <cgogn/io/surface.h>
 
 #include "file_io.h"
@@ -7,7 +6,6 @@
 #include "map_transfer.h"
 
 #include <algorithm>
-#include <filesystem>
 
 namespace cgogn::io
 {
@@ -37,8 +35,8 @@ LoadReport load_surface_into(MAP& m, const std::string& path, const LoadOptions&
 {
 	const Format f = resolve(options.format, path);
 	detail::MeshData d =
-		f == Format::Pvtu ? detail::read_pvtu(path, true) : detail::read_mesh(f, detail::read_file(path), path);
-	if (lists_faces(f) && f != Format::Pvtu)
+		f == Format::Pvtu ? detail::read_pvtu(path) : detail::read_mesh(f, detail::read_file(path), path);
+	if (lists_faces(f))
 		d.faces_as_cells(path);
 	detail::validate(d, path);
 	LoadReport r = detail::build_map(m, d, path);
@@ -92,13 +90,10 @@ void save_surface_of(const MAP& m, const std::string& path, const SaveOptions& o
 		detail::check_written_names(d, path);
 		out = detail::write_vtk(d, options.binary);
 		break;
-	case Format::Pvtu: {
+	case Format::Pvtu:
 		detail::check_written_names(d, path);
-		const std::string piece = detail::single_piece_name(path);
-		detail::write_file(piece, detail::write_vtu(d, options.binary));
-		write_pvtu_index(path, {std::filesystem::path(piece).filename().string()}, 0);
+		detail::write_single_piece_pvtu(d, path, options.binary);
 		return;
-	}
 	default:
 		detail::check_written_names(d, path);
 		out = detail::write_vtu(d, options.binary);

@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: MIT
-#include <cgogn/io/pvtu.h>
 #include <cgogn/io/volume.h>
 
 #include "file_io.h"
@@ -7,7 +6,6 @@
 #include "map_transfer.h"
 
 #include <algorithm>
-#include <filesystem>
 
 namespace cgogn::io
 {
@@ -46,7 +44,7 @@ LoadReport load_volume_into(MAP& m, const std::string& path, const LoadOptions& 
 		d = detail::read_tetgen(node, node_path, ele, ele_path);
 	}
 	else if (f == Format::Pvtu)
-		d = detail::read_pvtu(path, false);
+		d = detail::read_pvtu(path);
 	else
 		d = detail::read_mesh(f, detail::read_file(path), path);
 	detail::validate(d, path);
@@ -82,13 +80,10 @@ void save_volume_of(const MAP& m, const std::string& path, const SaveOptions& op
 		detail::check_written_names(d, path);
 		detail::write_file(path, detail::write_vtu(d, options.binary));
 		break;
-	case Format::Pvtu: {
+	case Format::Pvtu:
 		detail::check_written_names(d, path);
-		const std::string piece = detail::single_piece_name(path);
-		detail::write_file(piece, detail::write_vtu(d, options.binary));
-		write_pvtu_index(path, {std::filesystem::path(piece).filename().string()}, 0);
+		detail::write_single_piece_pvtu(d, path, options.binary);
 		break;
-	}
 	case Format::Gmsh:
 		detail::write_file(path, detail::write_gmsh(d, options.binary, path));
 		break;

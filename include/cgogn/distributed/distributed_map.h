@@ -112,6 +112,21 @@ private:
 	std::vector<HaloPlan> plans_;
 };
 
+namespace detail
+{
+/// Calls f(CELL(), k) for the cell type CELL of each dimension k of MAP:
+/// vertices, edges, faces (and volumes).
+template <typename MAP, typename F>
+void foreach_cell_type(const F& f)
+{
+	f(typename MAP::Vertex(), 0u);
+	f(typename MAP::Edge(), 1u);
+	f(typename MAP::Face(), 2u);
+	if constexpr (MAP::dimension == 3)
+		f(CMap3::Volume(), 3u);
+}
+} // namespace detail
+
 /// A map split over the ranks of an MPI communicator: on each rank an
 /// ordinary CMap3 (CMap2) holding the volumes (faces) the rank owns plus one
 /// ghost layer, every volume that shares a vertex with an owned one. Every

@@ -23,27 +23,6 @@ concept HaloValue = std::is_trivially_copyable_v<T> || requires
 	requires sizeof(T) == sizeof(typename T::Scalar) * std::size_t(T::SizeAtCompileTime);
 };
 
-namespace detail
-{
-template <typename MAP, typename T, Orbit O>
-constexpr uint32 plan_dimension()
-{
-	using DM = DistributedMap<MAP>;
-	if constexpr (O == MAP::Vertex::ORBIT)
-		return 0;
-	else if constexpr (O == MAP::Edge::ORBIT)
-		return 1;
-	else if constexpr (O == MAP::Face::ORBIT)
-		return 2;
-	else
-	{
-		static_assert(DM::dimension == 3 && O == CMap3::Volume::ORBIT,
-					  "exchange: an attribute of the vertices, edges, faces or volumes of the map");
-		return 3;
-	}
-}
-} // namespace detail
-
 /// Sends the owners' values of attr to every ghost copy of their cells:
 /// afterwards every rank holds the owner's value on each of its cells.
 /// Collective over dm.comm(): every rank calls it with the same attribute.
@@ -54,7 +33,7 @@ requires HaloValue<T>
 void exchange(const DistributedMap<MAP>& dm, CellAttribute<T, O>& attr,
 			  Transport transport = Transport::NeighborhoodCollective)
 {
-	const HaloPlan& plan = dm.plan(detail::plan_dimension<MAP, T, O>());
+	const HaloPlan& plan = dm.plan(DistributedMap<MAP>::template dimension_of<Cell<O>>());
 	std::vector<T> send(plan.send_lines.size()), recv(plan.slot_starts.empty() ? 0 : plan.slot_starts.size() - 1);
 	for (std::size_t k = 0; k < plan.send_lines.size(); ++k)
 		send[k] = attr[plan.send_lines[k]];
@@ -85,7 +64,7 @@ requires HaloValue<T>
 void accumulate(const DistributedMap<MAP>& dm, CellAttribute<T, O>& attr, OP op = {},
 				Transport transport = Transport::NeighborhoodCollective)
 {
-	const HaloPlan& plan = dm.plan(detail::plan_dimension<MAP, T, O>());
+	const HaloPlan& plan = dm.plan(DistributedMap<MAP>::template dimension_of<Cell<O>>());
 	const std::size_t nb_slots = plan.slot_starts.empty() ? 0 : plan.slot_starts.size() - 1;
 	std::vector<T> contributions(nb_slots), received(plan.send_lines.size());
 	for (std::size_t s = 0; s < nb_slots; ++s)

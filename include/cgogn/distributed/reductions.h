@@ -5,6 +5,9 @@
 #include <cgogn/distributed/distributed_map.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
+#include <cmath>
+#include <limits>
+
 namespace cgogn::dist
 {
 
@@ -63,18 +66,23 @@ struct BoundingBox
 	Vec3 max = Vec3::Zero(); ///< The highest corner.
 };
 
+/// The box that holds every rank's box: componentwise minimum of the mins
+/// and maximum of the maxes. Collective; two MPI_Allreduce.
+BoundingBox global_union(MPI_Comm comm, const BoundingBox& local);
+
 /// The box of the positions of all the vertices of the whole map (of no
 /// vertex: min > max). Collective; O(vertices of the rank).
-BoundingBox global_bounding_box(const DistributedMapBase& dm, const AttributeArray<Vec3>& pos,
-								const std::vector<uint32>& vertex_lines);
-
-/// The same, from the vertices a rank holds.
 template <typename MAP>
 BoundingBox global_bounding_box(const DistributedMap<MAP>& dm, const AttributeArray<Vec3>& pos)
 {
-	std::vector<uint32> lines;
-	foreach_cell(dm.map(), [&](typename MAP::Vertex v) { lines.push_back(index_of(dm.map(), v)); });
-	return global_bounding_box(static_cast<const DistributedMapBase&>(dm), pos, lines);
+	BoundingBox box{Vec3::Constant(std::numeric_limits<double>::infinity()),
+					Vec3::Constant(-std::numeric_limits<double>::infinity())};
+	foreach_cell(dm.map(), [&](typename MAP::Vertex v) {
+		const Vec3& p = pos[index_of(dm.map(), v)];
+		box.min = box.min.cwiseMin(p);
+		box.max = box.max.cwiseMax(p);
+	});
+	return global_union(dm.comm(), box);
 }
 
 } // namespace cgogn::dist
