@@ -19,6 +19,23 @@
 namespace cgogn::dist::detail
 {
 
+// Adds the carried attribute col to the cells of type CELL: line l gets the
+// column's row row_of_line[l] (lines without one keep the default value).
+// A plain loop over the lines, so that each carried type costs little code.
+template <typename CELL, typename MAP>
+void add_column(MAP& m, const PartMessage::Column& col, const std::vector<uint32>& row_of_line, std::size_t nb_rows)
+{
+	visit_carried_type(col.type, [&]<typename T>() {
+		auto a = add_attribute<T, CELL>(m, col.name);
+		if (a == nullptr || col.values.size() != nb_rows * sizeof(T))
+			throw std::runtime_error("distribute: the attribute '" + col.name + "' cannot be rebuilt");
+		for (uint32 line = 0; line < row_of_line.size(); ++line)
+			if (row_of_line[line] != INVALID_INDEX)
+				std::memcpy(static_cast<void*>(&(*a)[line]),
+							col.values.data() + std::size_t(row_of_line[line]) * sizeof(T), sizeof(T));
+	});
+}
+
 // Rebuilds a rank's part from its message and gives every cell its global
 // id and owner.
 template <typename MAP>
@@ -57,17 +74,6 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 		(*gids[0])[line] = msg.vertex_gid[i];
 		(*owners[0])[line] = msg.vertex_owner[i];
 	});
-	for (const PartMessage::Column& col : msg.columns)
-		if (col.of_top_cells == 0)
-			visit_carried_type(col.type, [&]<typename T>() {
-				auto a = add_attribute<T, typename MAP::Vertex>(m, col.name);
-				if (a == nullptr || col.values.size() != nb_vertices * sizeof(T))
-					throw std::runtime_error("distribute: the vertex attribute '" + col.name + "' cannot be rebuilt");
-				foreach_cell(m, [&](typename MAP::Vertex v) {
-					std::memcpy(static_cast<void*>(&(*a)[v]), col.values.data() + soup_of[index_of(m, v)] * sizeof(T),
-								sizeof(T));
-				});
-			});
 	dm.set_not_carried(msg.not_carried);
 
 	// the other cells, through the corner of each dart: a corner is known by
@@ -139,16 +145,10 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 		top_cell_of_line[line] = corner_cell[corner];
 	});
 	for (const PartMessage::Column& col : msg.columns)
-		if (col.of_top_cells == 1)
-			visit_carried_type(col.type, [&]<typename T>() {
-				auto a = add_attribute<T, Top<MAP>>(m, col.name);
-				if (a == nullptr || col.values.size() != msg.cell_gid.size() * sizeof(T))
-					throw std::runtime_error("distribute: the cell attribute '" + col.name + "' cannot be rebuilt");
-				foreach_cell(m, [&](Top<MAP> t) {
-					std::memcpy(static_cast<void*>(&(*a)[t]),
-								col.values.data() + top_cell_of_line[index_of(m, t)] * sizeof(T), sizeof(T));
-				});
-			});
+		if (col.of_top_cells)
+			add_column<Top<MAP>>(m, col, top_cell_of_line, msg.cell_gid.size());
+		else
+			add_column<typename MAP::Vertex>(m, col, soup_of, nb_vertices);
 	if (nb_unmatched != 0)
 		throw std::runtime_error("distribute: rank " + std::to_string(rank) + " could not match " +
 								 std::to_string(nb_unmatched) + " darts to their cells");
