@@ -9,6 +9,7 @@
 
 #include <limits>
 #include <tuple>
+#include <type_traits>
 
 namespace cgogn::dist::detail
 {
@@ -33,6 +34,17 @@ void visit_carried_type(uint8 i, const F& f)
 		else
 			visit_carried_type<F, I + 1>(i, f);
 	}
+}
+
+// The index of type T among the carried types.
+template <typename T, std::size_t I = 0>
+constexpr uint8 carried_type_index()
+{
+	static_assert(I < std::tuple_size_v<CarriedTypes>, "not a carried type");
+	if constexpr (std::is_same_v<T, std::tuple_element_t<I, CarriedTypes>>)
+		return uint8(I);
+	else
+		return carried_type_index<T, I + 1>();
 }
 
 // The index of a's type among the carried types; -1 when it is not carried.

@@ -9,6 +9,7 @@
 #include <cgogn/core/traversals/global.h>
 
 #include "distribute_common.h"
+#include "part_columns.h"
 #include "part_message.h"
 
 #include <algorithm>
@@ -185,54 +186,13 @@ struct RootSplit
 			else
 				add_face(top_dart[g]); // a face is one phi1 cycle
 		}
-		add_columns(msg, container_of<MAP::Vertex::ORBIT>(m), vertex_lines, 0);
-		add_columns(msg, container_of<Top<MAP>::ORBIT>(m), top_lines, 1);
-		name_attributes_of<typename MAP::Edge>(msg.not_carried, "edge");
+		add_columns(msg, container_of<MAP::Vertex::ORBIT>(m), vertex_lines, 0, "vertex");
+		add_columns(msg, container_of<Top<MAP>::ORBIT>(m), top_lines, 1, D == 3 ? "volume" : "face");
+		name_attributes_of<typename MAP::Edge>(m, msg.not_carried, "edge");
 		if constexpr (D == 3)
-			name_attributes_of<CMap3::Face>(msg.not_carried, "face");
+			name_attributes_of<CMap3::Face>(m, msg.not_carried, "face");
 		std::sort(msg.not_carried.begin(), msg.not_carried.end());
 		return msg;
-	}
-
-	// Names the user attributes of the cells of type CELL as not carried.
-	template <typename CELL>
-	void name_attributes_of(std::vector<std::string>& names, const char* cells) const
-	{
-		if (!is_indexed<CELL>(m))
-			return;
-		const AttributeContainer& c = container_of<CELL::ORBIT>(m);
-		for (const auto& a : c.attributes())
-			if (a.get() != &c.key() && !cgogn::detail::is_reserved_name(a->name()))
-				names.push_back(std::string(cells) + " attribute '" + a->name() + "'");
-	}
-
-	// The values of the container's attributes on the given lines, those of
-	// a carried type; the others are named in msg.not_carried.
-	void add_columns(PartMessage& msg, const AttributeContainer& c, const std::vector<uint32>& lines,
-					 uint8 of_top_cells) const
-	{
-		for (const auto& a : c.attributes())
-		{
-			if (a.get() == &c.key() || cgogn::detail::is_reserved_name(a->name()))
-				continue;
-			const int type = carried_type_of(*a);
-			if (type < 0)
-			{
-				msg.not_carried.push_back(std::string(of_top_cells ? (D == 3 ? "volume" : "face") : "vertex") +
-										  " attribute '" + a->name() + "' (of a type not carried)");
-				continue;
-			}
-			PartMessage::Column& col = msg.columns.emplace_back();
-			col.name = a->name();
-			col.of_top_cells = of_top_cells;
-			col.type = uint8(type);
-			visit_carried_type(col.type, [&]<typename T>() {
-				const auto& values = static_cast<const AttributeArray<T>&>(*a);
-				col.values.resize(lines.size() * sizeof(T));
-				for (std::size_t i = 0; i < lines.size(); ++i)
-					std::memcpy(col.values.data() + i * sizeof(T), &values[lines[i]], sizeof(T));
-			});
-		}
 	}
 };
 

@@ -12,9 +12,8 @@
 #include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/core/traversals/local_cmap3.h>
+#include <cgogn/modeling/refinement_patterns.h>
 #include <cgogn/modeling/subdivision.h>
-
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -229,46 +228,6 @@ void rebuild(CMap3& m, AttributeArray<Vec3>& pos, const Refinement& r, uint32 ce
 		apply_cell_rules<Face>(m, face_rules, old_faces, r, report.vertex_offset);
 }
 
-// ---- tetrahedra
-
-// Local numbering of a tetrahedron's refinement: corners 0..3 (VTK order),
-// then the midpoints of 01, 02, 03, 12, 13, 23.
-constexpr std::array<std::array<uint32, 4>, 4> corner_tets = {{{0, 4, 5, 6}, {4, 1, 7, 8}, {5, 7, 2, 9}, {6, 8, 9, 3}}};
-// the three diagonals of the inner octahedron, each with the ring of the
-// four other midpoints around it
-constexpr std::array<std::array<uint32, 2>, 3> diagonals = {{{4, 9}, {5, 8}, {6, 7}}};
-constexpr std::array<std::array<uint32, 4>, 3> rings = {{{5, 6, 8, 7}, {4, 6, 9, 7}, {4, 5, 9, 8}}};
-
-using TetList = std::array<std::array<uint32, 4>, 8>;
-
-/// The 8 tetrahedra for each choice of diagonal, positively oriented: the
-/// orientation is decided once on a reference tetrahedron, and carries over
-/// to any tetrahedron through the affine map between them.
-std::array<TetList, 3> make_tet_patterns()
-{
-	const std::array<Vec3, 4> corner = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-	std::array<Vec3, 10> p;
-	for (uint32 i = 0; i < 4; ++i)
-		p[i] = corner[i];
-	const std::array<std::array<uint32, 2>, 6> edges = {{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
-	for (uint32 i = 0; i < 6; ++i)
-		p[4 + i] = 0.5 * (p[edges[i][0]] + p[edges[i][1]]);
-	auto oriented = [&](std::array<uint32, 4> t) {
-		if ((p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).dot(p[t[3]] - p[t[0]]) < 0.0)
-			std::swap(t[2], t[3]);
-		return t;
-	};
-	std::array<TetList, 3> patterns;
-	for (uint32 k = 0; k < 3; ++k)
-	{
-		for (uint32 i = 0; i < 4; ++i)
-			patterns[k][i] = oriented(corner_tets[i]);
-		for (uint32 i = 0; i < 4; ++i)
-			patterns[k][4 + i] = oriented({diagonals[k][0], diagonals[k][1], rings[k][i], rings[k][(i + 1) % 4]});
-	}
-	return patterns;
-}
-
 } // namespace
 
 bool is_hex_mesh(const CMap3& m)
@@ -287,7 +246,6 @@ SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 	const SuspendedRule own_positions(pos);
 	if (!is_tet_mesh(m))
 		throw SubdivisionError("tetrahedral subdivision: every volume must be a tetrahedron");
-	static const std::array<TetList, 3> patterns = make_tet_patterns();
 	ProgressReporter reporter(progress);
 	Refinement r;
 	number_vertices_edges_faces(m, pos, r, false);
@@ -298,33 +256,16 @@ SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 		if ((done & 1023u) == 0 && !reporter.report(0.9 * double(done) / double(nb_volumes)))
 			return false;
 		++done;
-		// outward face (c0, c1, c2) and the apex: VTK order (c0, c2, c1, apex)
-		const Dart d0 = w.dart, d1 = phi1(m, d0), d2 = phi1(m, d1);
-		const auto vid = [&](Dart d) { return r.vertex_id[index_of(m, Vertex(d))]; };
-		const auto eid = [&](Dart d) { return r.edge_id[d.index]; };
-		const std::array<uint32, 10> local = {vid(d0),
-											  vid(d2),
-											  vid(d1),
-											  vid(phi<2, 1, 1>(m, d0)),
-											  eid(d2),
-											  eid(d0),
-											  eid(phi<2, 1>(m, d0)),
-											  eid(d1),
-											  eid(phi<2, 1>(m, d2)),
-											  eid(phi<2, 1>(m, d1))};
-		// the shortest diagonal of the octahedron
-		uint32 best = 0;
-		double best_length = 0.0;
-		for (uint32 k = 0; k < 3; ++k)
-		{
-			const double l = (r.positions[local[diagonals[k][0]]] - r.positions[local[diagonals[k][1]]]).squaredNorm();
-			if (k == 0 || l < best_length)
-			{
-				best = k;
-				best_length = l;
-			}
-		}
-		for (const auto& t : patterns[best])
+		const auto points = tet_refinement_points(m, w);
+		std::array<uint32, 10> local;
+		for (uint32 i = 0; i < 10; ++i)
+			local[i] =
+				points[i].dim == 0 ? r.vertex_id[index_of(m, Vertex(points[i].dart))] : r.edge_id[points[i].dart.index];
+		std::array<Vec3, 10> at;
+		for (uint32 i = 0; i < 10; ++i)
+			at[i] = r.positions[local[i]];
+		const uint32 best = tet_cut_diagonal(at);
+		for (const auto& t : tet_children(best))
 		{
 			for (uint32 i : t)
 				r.cell_vertices.push_back(local[i]);
@@ -350,49 +291,44 @@ SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 	number_vertices_edges_faces(m, pos, r, true);
 	const uint32 nb_volumes = nb_cells<Volume>(m);
 	r.cell_vertices.reserve(std::size_t(nb_volumes) * 64);
-	// corner i of the outward face cycle sits at xy[i] of a 3 x 3 x 3 grid,
-	// the midpoint of its edge to corner i + 1 at mid[i]
-	constexpr std::array<std::array<uint32, 2>, 4> xy = {{{0, 0}, {2, 0}, {2, 2}, {0, 2}}};
-	constexpr std::array<std::array<uint32, 2>, 4> mid = {{{1, 0}, {2, 1}, {1, 2}, {0, 1}}};
 	uint32 done = 0;
 	foreach_cell(m, [&](Volume w) {
 		if ((done & 1023u) == 0 && !reporter.report(0.9 * double(done) / double(nb_volumes)))
 			return false;
 		++done;
-		uint32 grid[3][3][3];
-		const auto vid = [&](Dart d) { return r.vertex_id[index_of(m, Vertex(d))]; };
-		Dart d = w.dart;
-		for (uint32 i = 0; i < 4; ++i, d = phi1(m, d))
+		const auto points = hex_refinement_points(m, w);
+		std::array<uint32, 27> grid{};
+		for (uint32 i = 0; i < 27; ++i)
 		{
-			// side face of d: (end of d, origin of d, top of origin, top of end)
-			const Dart vertical = phi<2, 1>(m, d), top = phi1(m, vertical);
-			grid[xy[i][0]][xy[i][1]][0] = vid(d);
-			grid[xy[i][0]][xy[i][1]][1] = r.edge_id[vertical.index];
-			grid[xy[i][0]][xy[i][1]][2] = vid(top);
-			grid[mid[i][0]][mid[i][1]][0] = r.edge_id[d.index];
-			grid[mid[i][0]][mid[i][1]][1] = r.face_id[phi2(m, d).index];
-			grid[mid[i][0]][mid[i][1]][2] = r.edge_id[top.index];
-			if (i == 0)
-				grid[1][1][2] = r.face_id[phi2(m, top).index];
+			const Dart d = points[i].dart;
+			switch (points[i].dim)
+			{
+			case 0:
+				grid[i] = r.vertex_id[index_of(m, Vertex(d))];
+				break;
+			case 1:
+				grid[i] = r.edge_id[d.index];
+				break;
+			case 2:
+				grid[i] = r.face_id[d.index];
+				break;
+			default:
+				break;
+			}
 		}
-		grid[1][1][0] = r.face_id[w.dart.index];
 		Vec3 centre = Vec3::Zero();
 		for (uint32 x : {0u, 2u})
 			for (uint32 y : {0u, 2u})
 				for (uint32 z : {0u, 2u})
 				{
-					centre += r.positions[grid[x][y][z]];
-					r.parent_lines.push_back(r.old_line(grid[x][y][z]));
+					const uint32 corner = grid[x + 3 * y + 9 * z];
+					centre += r.positions[corner];
+					r.parent_lines.push_back(r.old_line(corner));
 				}
-		grid[1][1][1] = r.add(centre / 8.0);
-		// the outward cycle runs opposite to VTK's bottom quad: each child
-		// is listed as the parent would be, (q0, q3, q2, q1, then above)
-		for (uint32 a = 0; a < 2; ++a)
-			for (uint32 b = 0; b < 2; ++b)
-				for (uint32 c = 0; c < 2; ++c)
-					for (uint32 z : {c, c + 1})
-						for (const auto& q : {std::array<uint32, 2>{a, b}, {a, b + 1}, {a + 1, b + 1}, {a + 1, b}})
-							r.cell_vertices.push_back(grid[q[0]][q[1]][z]);
+		grid[1 + 3 + 9] = r.add(centre / 8.0);
+		for (const auto& child : hex_children())
+			for (uint32 i : child)
+				r.cell_vertices.push_back(grid[i]);
 		r.cell_parent.insert(r.cell_parent.end(), 8, volume_line(m, w));
 		return true;
 	});

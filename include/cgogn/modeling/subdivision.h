@@ -154,7 +154,9 @@ SubdivisionResult hex_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const Pro
 
 /// Cuts every tetrahedron into 8 (Bey's red refinement): 4 corner tetrahedra
 /// through the edge midpoints and the inner octahedron split into 4 around its
-/// shortest diagonal. The sum of the volumes is preserved (up to rounding).
+/// shortest diagonal (among diagonals of the same length, the one whose ends
+/// come first by (x, y, z): see tet_cut_diagonal, so the cut does not depend
+/// on how the tetrahedron is stored). The sum of the volumes is preserved (up to rounding).
 /// V + E vertices, 8W volumes. O(n).
 SubdivisionResult tet_subdivision(CMap3& m, AttributeArray<Vec3>& pos, const ProgressCallback& progress = {});
 
