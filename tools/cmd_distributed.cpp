@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `cgogn` under mpiexec: with more than one rank, `info`, `smooth` and
-// `convert` run on the distributed map (the file read on rank 0 and spread
+// `cgogn` under mpiexec: with more than one rank, `info`, `smooth`,
+// `subdivide` (volume schemes) and `convert` run on the distributed map (the file read on rank 0 and spread
 // over the ranks); with one rank, every command runs as without mpiexec.
 #include <cgogn/core/parallel/thread_pool.h>
 #include <cgogn/core/properties/properties.h>
@@ -9,6 +9,7 @@
 #include <cgogn/distributed/files.h>
 #include <cgogn/distributed/reductions.h>
 #include <cgogn/distributed/smoothing.h>
+#include <cgogn/distributed/subdivision.h>
 #include <cgogn/io/error.h>
 
 #include "commands.h"
@@ -158,7 +159,7 @@ struct DistributedOptions
 {
 	std::string in, out;
 	bool json = false, binary = false, deterministic = false, move_boundary = false;
-	std::string method = "taubin";
+	std::string method = "taubin", scheme;
 	uint32 iterations = 10;
 	double lambda = 0.5, mu = -0.53;
 };
@@ -201,6 +202,20 @@ int run_distributed(MPI_Comm comm, const std::string& command, const Distributed
 			else
 				dist::taubin_smoothing(dm, *pos, o.iterations, o.mu, s);
 		}
+		if (command == "subdivide")
+		{
+			if constexpr (std::is_same_v<std::decay_t<decltype(dm)>, dist::DistributedCMap3>)
+			{
+				for (uint32 i = 0; i < o.iterations; ++i)
+					if (o.scheme == "hex")
+						dist::hex_subdivision(dm);
+					else
+						dist::tet_subdivision(dm);
+			}
+			else
+				throw std::invalid_argument(o.in + ": under mpiexec, subdivide refines volume meshes (hex, tet); "
+												   "run surface schemes without mpiexec");
+		}
 		io::save_pvtu(dm, o.out, save);
 	});
 	return 0;
@@ -237,16 +252,18 @@ int distributed_main(int argc, char** argv, int (*serial_main)(int, char**))
 		set_nb_workers(std::max(1u, ThreadPool::default_nb_workers() / uint32(node_size)));
 
 		const std::string command = argc > 1 ? argv[1] : "";
-		if (command != "info" && command != "smooth" && command != "convert" && command != "--help" && command != "-h")
+		if (command != "info" && command != "smooth" && command != "subdivide" && command != "convert" &&
+			command != "--help" && command != "-h")
 		{
 			if (rank == 0)
 				std::cerr << "cgogn: under mpiexec with " << size
-						  << " ranks, the commands are info, smooth and convert; run the others without mpiexec "
+						  << " ranks, the commands are info, smooth, subdivide and convert; run the others without "
+							 "mpiexec "
 							 "(or with one rank)\n";
 			MPI_Finalize();
 			return EXIT_ERROR;
 		}
-		CLI::App app{"cgogn under mpiexec: info, smooth and convert on a mesh spread over the ranks"};
+		CLI::App app{"cgogn under mpiexec: info, smooth, subdivide and convert on a mesh spread over the ranks"};
 		app.require_subcommand(1);
 		DistributedOptions o;
 		auto* info = app.add_subcommand("info", "Global counts and geometry of a mesh, and how it is spread");
@@ -265,6 +282,15 @@ int distributed_main(int argc, char** argv, int (*serial_main)(int, char**))
 		smooth->add_flag("--deterministic", o.deterministic,
 						 "add neighbours in global id order: the same bits whatever the number of ranks");
 		smooth->add_flag("--binary", o.binary, "write binary pieces");
+		auto* subdivide = app.add_subcommand("subdivide", "1-to-8 refinement of a hexahedral or tetrahedral mesh");
+		subdivide->add_option("IN", o.in, "volume mesh file")->required();
+		subdivide->add_option("OUT", o.out, "output .pvtu")->required();
+		subdivide->add_option("--scheme", o.scheme, "hex (hexahedra) or tet (tetrahedra)")
+			->required()
+			->check(CLI::IsMember({"hex", "tet"}));
+		subdivide->add_option("--iterations,-n", o.iterations, "number of steps (default 1)")
+			->check(CLI::Range(1u, 20u));
+		subdivide->add_flag("--binary", o.binary, "write binary pieces");
 		auto* convert = app.add_subcommand("convert", "Spread a mesh over the ranks and write it as .pvtu");
 		convert->add_option("IN", o.in, "mesh file")->required();
 		convert->add_option("OUT", o.out, "output .pvtu")->required();
@@ -274,7 +300,10 @@ int distributed_main(int argc, char** argv, int (*serial_main)(int, char**))
 			app.parse(argc, argv);
 			if (o.method == "taubin" && !(o.mu < -o.lambda))
 				throw std::invalid_argument("--mu must be smaller than -lambda");
-			status = run_distributed(MPI_COMM_WORLD, app.get_subcommands().front()->get_name(), o);
+			const std::string name = app.get_subcommands().front()->get_name();
+			if (name == "subdivide" && subdivide->count("--iterations") == 0)
+				o.iterations = 1;
+			status = run_distributed(MPI_COMM_WORLD, name, o);
 		}
 		catch (const CLI::ParseError& e)
 		{

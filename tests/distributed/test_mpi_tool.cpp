@@ -1,6 +1,7 @@
 // `cgogn` under mpiexec: info prints the serial counts, convert writes a
 // .pvtu that the serial tool and VTK's parallel reader read as the whole
-// mesh, and smooth --deterministic gives the same bits with 2 and 3 ranks.
+// mesh, smooth --deterministic gives the same bits with 2 and 3 ranks, and
+// subdivide gives the serial tool's mesh.
 #include <cgogn/cgogn.h>
 
 #include "../io/io_test_utils.h"
@@ -9,6 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -129,12 +132,50 @@ TEST(MpiTool, DeterministicSmoothingGivesTheSameBitsOnAnyNumberOfRanks)
 	EXPECT_TRUE(moved);
 }
 
+// The vertex positions of a volume file, sorted.
+std::vector<std::array<double, 3>> sorted_positions(const CMap3& m)
+{
+	auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	std::vector<std::array<double, 3>> out;
+	foreach_cell(m, [&](CMap3::Vertex v) { out.push_back({(*pos)[v][0], (*pos)[v][1], (*pos)[v][2]}); });
+	std::sort(out.begin(), out.end());
+	return out;
+}
+
+TEST(MpiTool, SubdivideGivesTheSerialMesh)
+{
+	TempDir dir;
+	const auto serial =
+		cgogn::io_test::run_tool("subdivide --scheme tet '" + armadillo + "' '" + dir.file("serial.vtu") + "'", dir);
+	ASSERT_EQ(serial.status, 0) << serial.err;
+	const auto r =
+		run_mpi(3, "subdivide --binary --scheme tet '" + armadillo + "' '" + dir.file("spread.pvtu") + "'", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	CMap3 one, spread;
+	io::load_volume(one, dir.file("serial.vtu"));
+	io::load_volume(spread, dir.file("spread.pvtu"));
+	EXPECT_EQ(nb_cells<CMap3::Vertex>(spread), nb_cells<CMap3::Vertex>(one));
+	EXPECT_EQ(nb_cells<CMap3::Edge>(spread), nb_cells<CMap3::Edge>(one));
+	EXPECT_EQ(nb_cells<CMap3::Face>(spread), nb_cells<CMap3::Face>(one));
+	EXPECT_EQ(nb_cells<CMap3::Volume>(spread), nb_cells<CMap3::Volume>(one));
+	EXPECT_TRUE(check_integrity(spread).ok());
+	EXPECT_EQ(sorted_positions(spread), sorted_positions(one));
+
+	// surfaces are refined without mpiexec
+	const auto surface = run_mpi(2,
+								 "subdivide --scheme tet '" + std::string(CGOGN_DATA_DIR) +
+									 "/surface/hemisphere.off' '" + dir.file("s.pvtu") + "'",
+								 dir);
+	EXPECT_NE(surface.status, 0);
+	EXPECT_NE(surface.err.find("volume meshes"), std::string::npos) << surface.err;
+}
+
 TEST(MpiTool, OtherCommandsAreRefusedWithMoreThanOneRank)
 {
 	TempDir dir;
 	const auto r = run_mpi(2, "remesh '" + armadillo + "' '" + dir.file("x.off") + "'", dir);
 	EXPECT_NE(r.status, 0);
-	EXPECT_NE(r.err.find("info, smooth and convert"), std::string::npos) << r.err;
+	EXPECT_NE(r.err.find("info, smooth, subdivide and convert"), std::string::npos) << r.err;
 }
 
 } // namespace cgogn_test_mpi_tool
