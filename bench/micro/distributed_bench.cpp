@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The distributed layer under mpiexec: partition and distribution of a tet
-// grid, one halo exchange of the positions, and ten Jacobi smoothing steps.
+// grid, one halo exchange of the positions, ten Jacobi smoothing steps, and
+// one tetrahedral refinement beside the serial one.
 // Every rank runs the same fixed number of iterations (collectives inside
 // keep them in step); each iteration's time is the slowest rank's, and
 // rank 0 reports. Counters: tetrahedra owned per rank, ghost tetrahedra per
@@ -9,11 +10,14 @@
 // tetrahedron (largest rank).
 //   mpiexec -n P bench_distributed [--benchmark_filter=...]
 // Sizes: n = 56 (1,053,696 tetrahedra) for the strong scaling; n = 35, 44,
-// 50, 55 for about 2.5e5 tetrahedra per rank on 1, 2, 3, 4 ranks.
+// 50, 55 for about 2.5e5 tetrahedra per rank on 1, 2, 3, 4 ranks; n = 28
+// (131,712 tetrahedra, 1,053,696 after) for the refinement.
 #include <cgogn/core.h>
 #include <cgogn/distributed/distribute.h>
 #include <cgogn/distributed/exchange.h>
 #include <cgogn/distributed/smoothing.h>
+#include <cgogn/distributed/subdivision.h>
+#include <cgogn/modeling/subdivision.h>
 
 #include <benchmark/benchmark.h>
 
@@ -129,6 +133,31 @@ void BM_TenSmoothingSteps(benchmark::State& state)
 	spread_counters(state, dm, uint32(state.range(0)));
 }
 
+// One step of dist::tet_subdivision (the map spread again before each).
+void BM_TetSubdivision(benchmark::State& state)
+{
+	dist::DistributedCMap3 dm;
+	for (auto _ : state)
+	{
+		dm = spread_grid(uint32(state.range(0)));
+		state.SetIterationTime(slowest([&] { dist::tet_subdivision(dm); }));
+	}
+	spread_counters(state, dm, 2 * uint32(state.range(0)));
+}
+
+// The serial modeling::tet_subdivision of the same grid on rank 0.
+void BM_SerialTetSubdivision(benchmark::State& state)
+{
+	for (auto _ : state)
+	{
+		auto serial = grid_on_root(uint32(state.range(0)));
+		state.SetIterationTime(slowest([&] {
+			if (rank() == 0)
+				modeling::tet_subdivision(*serial, *get_attribute<Vec3, CMap3::Vertex>(*serial, "position"));
+		}));
+	}
+}
+
 BENCHMARK(BM_PartitionAndDistribute)->Arg(56)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExchangePositions)->Arg(56)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TenSmoothingSteps)
@@ -140,6 +169,8 @@ BENCHMARK(BM_TenSmoothingSteps)
 	->Iterations(3)
 	->UseManualTime()
 	->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TetSubdivision)->Arg(28)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerialTetSubdivision)->Arg(28)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 // Ranks other than 0 run the same benchmarks and report nothing.
 class Silent : public benchmark::BenchmarkReporter

@@ -76,9 +76,12 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 	});
 	dm.set_not_carried(msg.not_carried);
 
-	// the other cells, through the corner of each dart: a corner is known by
-	// its vertex and the next two (the next one on a surface), unique in a
-	// manifold map whose faces share at most two consecutive vertices
+	// the other cells, through the corner of each dart. The builders make
+	// the darts of a fresh map in the order of the corners, so dart i is
+	// corner i: checked by the corner's vertices (its vertex and the next
+	// two, the next one on a surface). A dart that fails the check is looked
+	// up by those vertices, unique in a manifold map whose faces share at
+	// most two consecutive vertices.
 	struct Key
 	{
 		uint32 u, v, w, corner;
@@ -91,7 +94,8 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 			return u == o.u && v == o.v && w == o.w;
 		}
 	};
-	std::vector<Key> keys;
+	std::vector<Key> keys; // by corner
+	keys.reserve(msg.corner_vertex.size());
 	std::vector<uint32> corner_cell(msg.corner_vertex.size());
 	{
 		uint32 corner = 0, face = 0;
@@ -111,26 +115,34 @@ void build_part(DistributedMap<MAP>& dm, int rank, const PartMessage& msg)
 			}
 		}
 	}
-	std::sort(keys.begin(), keys.end());
-	for (std::size_t i = 1; i < keys.size(); ++i)
-		if (keys[i].same_corner(keys[i - 1]))
-			throw std::runtime_error("distribute: two faces of rank " + std::to_string(rank) +
-									 " share three consecutive vertices (not supported)");
+	std::vector<Key> sorted; // made on the first dart out of order
+	auto find_corner = [&](const Key& k) -> uint32 {
+		if (sorted.empty())
+		{
+			sorted = keys;
+			std::sort(sorted.begin(), sorted.end());
+			for (std::size_t i = 1; i < sorted.size(); ++i)
+				if (sorted[i].same_corner(sorted[i - 1]))
+					throw std::runtime_error("distribute: two faces of rank " + std::to_string(rank) +
+											 " share three consecutive vertices (not supported)");
+		}
+		const auto it = std::lower_bound(sorted.begin(), sorted.end(), k);
+		return it == sorted.end() || !it->same_corner(k) ? INVALID_INDEX : it->corner;
+	};
 	uint64 nb_unmatched = 0;
 	std::vector<uint32> top_cell_of_line(container_of<Top<MAP>::ORBIT>(m).end_index(), INVALID_INDEX);
 	foreach_dart(m, [&](Dart d) {
 		if (is_boundary(m, d))
 			return;
 		const Dart e = phi1(m, d);
-		const Key k{soup_of[index_of(m, typename MAP::Vertex(d))], soup_of[index_of(m, typename MAP::Vertex(e))],
-					D == 3 ? soup_of[index_of(m, typename MAP::Vertex(phi1(m, e)))] : 0, 0};
-		const auto it = std::lower_bound(keys.begin(), keys.end(), k);
-		if (it == keys.end() || !it->same_corner(k))
+		const Key key{soup_of[index_of(m, typename MAP::Vertex(d))], soup_of[index_of(m, typename MAP::Vertex(e))],
+					  D == 3 ? soup_of[index_of(m, typename MAP::Vertex(phi1(m, e)))] : 0, 0};
+		const uint32 corner = d.index < keys.size() && keys[d.index].same_corner(key) ? d.index : find_corner(key);
+		if (corner == INVALID_INDEX)
 		{
 			++nb_unmatched;
 			return;
 		}
-		const uint32 corner = it->corner;
 		auto set_ids = [&](auto c, uint32 k) {
 			const uint32 line = index_of(m, c);
 			(*gids[k])[line] = msg.corner_gid[k - 1][corner];

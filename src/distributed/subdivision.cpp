@@ -135,6 +135,19 @@ public:
 		detail::PartMessage msg;
 		std::vector<uint32> msg_vertex(vertex_gid_.size(), INVALID_INDEX), parent_lines;
 		std::vector<Vec3> positions;
+		// at most 8 children per volume, their corners
+		const std::size_t cells = 8 * std::size_t(nb_cells<Volume>(m_)), corners = cells * (hex_ ? 24 : 12);
+		for (auto* v : {&msg.cell_gid, &msg.corner_gid[0], &msg.corner_gid[1]})
+			v->reserve(v == &msg.cell_gid ? cells : corners);
+		for (auto* v : {&msg.cell_owner, &msg.corner_owner[0], &msg.corner_owner[1]})
+			v->reserve(v == &msg.cell_owner ? cells : corners);
+		msg.cell_nb_faces.reserve(cells);
+		msg.face_sizes.reserve(cells * scheme_.child_faces.size());
+		msg.corner_vertex.reserve(corners);
+		parent_lines.reserve(cells);
+		msg.vertex_gid.reserve(vertex_gid_.size());
+		msg.vertex_owner.reserve(vertex_gid_.size());
+		positions.reserve(vertex_gid_.size());
 		foreach_cell(m_, [&](Volume w) {
 			Local l = refine(w);
 			bool any_kept = false;
