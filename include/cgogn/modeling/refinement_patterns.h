@@ -17,8 +17,8 @@ namespace cgogn::modeling
 /// volume's centroid), given by one of its darts.
 struct RefinementPoint
 {
-	uint32 dim;
-	Dart dart;
+	uint32 dim; ///< The dimension of the old cell the point is the centre of.
+	Dart dart;  ///< A dart of that cell.
 };
 
 /// The 10 points of the red refinement of tetrahedron w: its corners 0..3 in
