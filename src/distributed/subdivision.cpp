@@ -16,6 +16,7 @@
 #include "collective_failure.h"
 #include "part_columns.h"
 #include "rebuild_part.h"
+#include "refinement_scheme.h"
 
 #include <algorithm>
 #include <cstring>
@@ -32,79 +33,7 @@ using Edge = CMap3::Edge;
 using Face = CMap3::Face;
 using Volume = CMap3::Volume;
 using detail::NO_GID;
-
-/// [j][k]: the new cells of dimension j lying inside an old cell of dimension k.
-using ChildCounts = std::array<std::array<uint64, 4>, 4>;
-
-/// A scheme: its cell, its counts, and the faces of a child (counterclockwise
-/// seen from outside, over the child's points in VTK order).
-struct Scheme
-{
-	const char* name;
-	uint32 nb_points;
-	uint32 child_size;
-	ChildCounts counts;
-	std::vector<std::vector<uint32>> child_faces;
-};
-
-const Scheme tet_scheme{"tetrahedral subdivision: every volume must be a tetrahedron",
-						10,
-						4,
-						{{{1, 1, 0, 0}, {0, 2, 3, 1}, {0, 0, 4, 8}, {0, 0, 0, 8}}},
-						{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}};
-const Scheme hex_scheme{"hexahedral subdivision: every volume must be a hexahedron",
-						27,
-						8,
-						{{{1, 1, 1, 1}, {0, 2, 4, 6}, {0, 0, 4, 12}, {0, 0, 0, 8}}},
-						{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
-
-/// The corners of the old volume around each point of its refinement, one
-/// bit per corner: a corner its own bit, a midpoint its edge's two, ...
-std::array<uint8, 27> point_masks(bool hex)
-{
-	std::array<uint8, 27> mask{};
-	if (!hex)
-	{
-		constexpr std::array<std::array<uint32, 2>, 6> edges = {{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
-		for (uint32 i = 0; i < 4; ++i)
-			mask[i] = uint8(1u << i);
-		for (uint32 e = 0; e < 6; ++e)
-			mask[4 + e] = uint8((1u << edges[e][0]) | (1u << edges[e][1]));
-		return mask;
-	}
-	// grid coordinate 0 or 2: that side's corners only; 1: both sides
-	const auto sides = [](uint32 c) { return c == 0 ? 1u : c == 2 ? 2u : 3u; };
-	for (uint32 i = 0; i < 27; ++i)
-		for (uint32 b = 0; b < 8; ++b)
-			if ((sides(i % 3) >> (b & 1)) & (sides(i / 3 % 3) >> (b >> 1 & 1)) & (sides(i / 9) >> (b >> 2)) & 1u)
-				mask[i] = uint8(mask[i] | (1u << b));
-	return mask;
-}
-
-/// An old cell of a volume, by the corners of the volume it holds.
-struct Carrier
-{
-	uint8 mask;
-	uint8 dim;
-	uint32 line;
-};
-
-/// A new edge or face inside a volume: its carrier's mask and its sorted
-/// vertex ids (unused slots NO_GID), then its global id once numbered.
-struct Child
-{
-	uint8 mask;
-	std::array<uint64, 4> vertices;
-	uint64 gid = NO_GID;
-	bool operator<(const Child& o) const
-	{
-		return mask != o.mask ? mask < o.mask : vertices < o.vertices;
-	}
-	bool operator==(const Child& o) const
-	{
-		return mask == o.mask && vertices == o.vertices;
-	}
-};
+using namespace detail::refinement;
 
 class PartRefiner
 {
@@ -489,7 +418,7 @@ void refine(DistributedCMap3& dm, const std::string& position, const Scheme& sch
 	if (!on_all_ranks(dm.comm(), pos != nullptr))
 		throw std::invalid_argument("distributed subdivision: a rank has no Vec3 vertex attribute '" + position + "'");
 	if (!on_all_ranks(dm.comm(), every_volume_fits(m)))
-		throw modeling::SubdivisionError(scheme.name);
+		throw modeling::SubdivisionError(scheme.wrong_cells);
 
 	// the ids of each dimension are below bound[k] on every rank
 	std::array<uint64, 4> bound{};
