@@ -133,13 +133,20 @@ private:
 		std::array<uint64, 27> gid{};    ///< its global id
 		std::array<std::array<uint32, 8>, 8> children{};
 		std::array<uint64, 8> child_gid{};
-		std::vector<Carrier> carriers;
+		/// The old cells of the volume a new cell can lie in (at most 19 for
+		/// a hexahedron: its edges, faces and itself), no allocation per volume.
+		std::array<Carrier, 32> carriers{};
+		uint32 nb_carriers = 0;
+		void add_carrier(const Carrier& c)
+		{
+			carriers[nb_carriers++] = c;
+		}
 		std::vector<Child> edges, faces;
 
 		const Carrier& carrier(uint8 mask) const
 		{
-			for (const Carrier& c : carriers)
-				if (c.mask == mask)
+			for (uint32 i = 0; i < nb_carriers; ++i)
+				if (const Carrier& c = carriers[i]; c.mask == mask)
 					return c;
 			throw std::logic_error("distributed subdivision: a new cell lies in no old cell");
 		}
@@ -240,7 +247,7 @@ private:
 			l.vertex[p] = v;
 			l.gid[p] = vertex_gid_[v];
 			if (k > 0)
-				l.carriers.push_back({point_mask_[p], uint8(k), line});
+				l.add_carrier({point_mask_[p], uint8(k), line});
 		}
 		if (hex_)
 			l.children = modeling::hex_children();
@@ -252,8 +259,8 @@ private:
 			// the faces and the volume hold no point of the tetrahedron's refinement
 			const Dart d0 = points[0].dart, d1 = points[2].dart, d2 = points[1].dart;
 			for (const Dart f : {d0, phi2(m_, d0), phi2(m_, d1), phi2(m_, d2)})
-				l.carriers.push_back({face_mask(f, points), 2, index_of(m_, Face(f))});
-			l.carriers.push_back({15, 3, index_of(m_, w)});
+				l.add_carrier({face_mask(f, points), 2, index_of(m_, Face(f))});
+			l.add_carrier({15, 3, index_of(m_, w)});
 		}
 		return l;
 	}
