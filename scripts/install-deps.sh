@@ -9,7 +9,7 @@ packages=(cmake ninja-build g++ clang libclang-rt-14-dev clang-format doxygen pk
           libgtest-dev libgmock-dev libbenchmark-dev
           libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libpng-dev
           libopenmesh-dev libcgal-dev
-          libopenmpi-dev openmpi-bin libmetis-dev
+          libopenmpi-dev openmpi-bin libmetis-dev libpetsc-real3.18-dev
           pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-meshio python3-vtk9
           python3-venv python3-pip python3-setuptools python3-wheel python3-build
           chromium)

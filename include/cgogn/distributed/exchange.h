@@ -23,6 +23,25 @@ concept HaloValue = std::is_trivially_copyable_v<T> || requires
 	requires sizeof(T) == sizeof(typename T::Scalar) * std::size_t(T::SizeAtCompileTime);
 };
 
+/// exchange() on values held by line: values[line] for every line of the
+/// cells of dimension k (a cell attribute, or a std::vector with one value
+/// per line). Collective over dm.comm(); cost as exchange().
+template <typename MAP, typename LINES>
+void exchange_lines(const DistributedMap<MAP>& dm, uint32 k, LINES& values,
+					Transport transport = Transport::NeighborhoodCollective)
+{
+	using T = std::remove_cvref_t<decltype(values[uint32(0)])>;
+	static_assert(HaloValue<T>, "exchange_lines: the values must be copyable byte for byte");
+	const HaloPlan& plan = dm.plan(k);
+	std::vector<T> send(plan.send_lines.size()), recv(plan.slot_starts.empty() ? 0 : plan.slot_starts.size() - 1);
+	for (std::size_t i = 0; i < plan.send_lines.size(); ++i)
+		send[i] = values[plan.send_lines[i]];
+	dm.move_values(plan.send_counts, send.data(), plan.recv_counts, recv.data(), sizeof(T), transport);
+	for (std::size_t s = 0; s < recv.size(); ++s)
+		for (uint32 i = plan.slot_starts[s]; i < plan.slot_starts[s + 1]; ++i)
+			values[plan.slot_lines[i]] = recv[s];
+}
+
 /// Sends the owners' values of attr to every ghost copy of their cells:
 /// afterwards every rank holds the owner's value on each of its cells.
 /// Collective over dm.comm(): every rank calls it with the same attribute.
@@ -33,14 +52,7 @@ requires HaloValue<T>
 void exchange(const DistributedMap<MAP>& dm, CellAttribute<T, O>& attr,
 			  Transport transport = Transport::NeighborhoodCollective)
 {
-	const HaloPlan& plan = dm.plan(DistributedMap<MAP>::template dimension_of<Cell<O>>());
-	std::vector<T> send(plan.send_lines.size()), recv(plan.slot_starts.empty() ? 0 : plan.slot_starts.size() - 1);
-	for (std::size_t k = 0; k < plan.send_lines.size(); ++k)
-		send[k] = attr[plan.send_lines[k]];
-	dm.move_values(plan.send_counts, send.data(), plan.recv_counts, recv.data(), sizeof(T), transport);
-	for (std::size_t s = 0; s < recv.size(); ++s)
-		for (uint32 k = plan.slot_starts[s]; k < plan.slot_starts[s + 1]; ++k)
-			attr[plan.slot_lines[k]] = recv[s];
+	exchange_lines(dm, DistributedMap<MAP>::template dimension_of<Cell<O>>(), attr, transport);
 }
 
 /// The same through the handle add_attribute returns.

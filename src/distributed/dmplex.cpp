@@ -1,0 +1,538 @@
+// SPDX-License-Identifier: MIT
+// A distributed map's local mesh as a DMPlex. Each rank builds the plex of
+// its cells and their vertices (depth 1), with the corners of each cell
+// listed from a vertex chosen by global id, and lets PETSc add the faces and
+// edges. It then turns each edge and face so that its vertices come in an
+// order chosen by global id, so that the copies of a shared point have the
+// same cone on every rank, and sets the star forest: each ghost point is a
+// leaf of its cell's owner.
+#include <cgogn/core.h>
+#include <cgogn/distributed/dmplex.h>
+#include <cgogn/distributed/exchange.h>
+#include <cgogn/geometry/types/vector_traits.h>
+
+#include "collective_failure.h"
+
+#include <algorithm>
+#include <limits>
+#include <petscsf.h>
+#include <unordered_map>
+
+namespace cgogn::dist
+{
+
+PlexMesh::PlexMesh(PlexMesh&& other) noexcept : dm_(other.dm_), points_(std::move(other.points_))
+{
+	other.dm_ = nullptr;
+}
+
+PlexMesh& PlexMesh::operator=(PlexMesh&& other) noexcept
+{
+	if (this != &other)
+	{
+		if (dm_)
+			DMDestroy(&dm_);
+		dm_ = other.dm_;
+		other.dm_ = nullptr;
+		points_ = std::move(other.points_);
+	}
+	return *this;
+}
+
+PlexMesh::~PlexMesh()
+{
+	if (dm_)
+		DMDestroy(&dm_);
+}
+
+DM PlexMesh::release()
+{
+	DM d = dm_;
+	dm_ = nullptr;
+	return d;
+}
+
+namespace
+{
+
+/// Throws DMPlexError naming the call when a PETSc call failed.
+void check(PetscErrorCode code, const char* call)
+{
+	if (code == 0)
+		return;
+	const char* text = nullptr;
+	PetscErrorMessage(code, &text, nullptr);
+	throw DMPlexError(std::string("to_dmplex: ") + call + " failed: " + (text ? text : "unknown PETSc error"));
+}
+
+/// While alive, PETSc returns its errors without printing them.
+struct QuietPetsc
+{
+	QuietPetsc()
+	{
+		PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+	}
+	~QuietPetsc()
+	{
+		PetscPopErrorHandler();
+	}
+	QuietPetsc(const QuietPetsc&) = delete;
+	QuietPetsc& operator=(const QuietPetsc&) = delete;
+};
+
+/// Destroys a DM unless released (the DM under construction).
+struct DMGuard
+{
+	DM dm = nullptr;
+	~DMGuard()
+	{
+		if (dm)
+			DMDestroy(&dm);
+	}
+};
+
+/// True on every rank of comm when `local` is true on every rank.
+bool on_all_ranks(MPI_Comm comm, bool local)
+{
+	int in = local, out = 0;
+	MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, comm);
+	return out != 0;
+}
+
+/// The corners of volume w, by vertex line, in DMPlex's order, or an empty
+/// list when w is not a tetrahedron, pyramid, triangular prism or
+/// hexahedron. DMPlex lists first a face of the cell counterclockwise seen
+/// from outside, as a face's darts turn, then the apex, or the corners above
+/// the face's corners 0, 2, 1 (prism) or 0, 3, 2, 1 (hexahedron). The corner
+/// above a face's dart d ends the edge that follows d's twin. The first
+/// corner is chosen by global vertex ids, so that every rank holding the
+/// volume lists its corners (and DMPlex its faces) in the same order.
+std::vector<uint32> plex_corners(const CMap3& m, CMap3::Volume w, const AttributeArray<uint64>& vertex_gids)
+{
+	uint32 nb_darts = 0, triangle_darts = 0, quad_darts = 0;
+	auto key = [&](Dart d) {
+		return std::pair(vertex_gids[index_of(m, CMap3::Vertex(d))],
+						 vertex_gids[index_of(m, CMap3::Vertex(phi1(m, d)))]);
+	};
+	Dart triangle, quad;
+	foreach_dart_of_orbit(m, w, [&](Dart d) {
+		++nb_darts;
+		uint32 degree = 1;
+		for (Dart x = phi1(m, d); x != d && degree <= 4; x = phi1(m, x))
+			++degree;
+		if (degree == 3 && (triangle_darts++ == 0 || key(d) < key(triangle)))
+			triangle = d;
+		else if (degree == 4 && (quad_darts++ == 0 || key(d) < key(quad)))
+			quad = d;
+		return true;
+	});
+	auto line = [&](Dart d) { return index_of(m, CMap3::Vertex(d)); };
+	auto above = [&](Dart d) { return line(phi1(m, phi1(m, phi2(m, d)))); };
+	std::vector<uint32> corners;
+	if (triangle_darts == 12 && nb_darts == 12) // tetrahedron
+		corners = {line(triangle), line(phi1(m, triangle)), line(phi_1(m, triangle)),
+				   line(phi_1(m, phi2(m, triangle)))};
+	else if (triangle_darts == 12 && quad_darts == 4 && nb_darts == 16) // pyramid
+	{
+		const Dart q1 = phi1(m, quad), q2 = phi1(m, q1), q3 = phi1(m, q2);
+		corners = {line(quad), line(q1), line(q2), line(q3), line(phi_1(m, phi2(m, quad)))};
+	}
+	else if (triangle_darts == 6 && quad_darts == 12 && nb_darts == 18) // triangular prism
+	{
+		const Dart t1 = phi1(m, triangle), t2 = phi1(m, t1);
+		corners = {line(triangle), line(t1), line(t2), above(triangle), above(t2), above(t1)};
+	}
+	else if (quad_darts == 24 && nb_darts == 24) // hexahedron
+	{
+		const Dart q1 = phi1(m, quad), q2 = phi1(m, q1), q3 = phi1(m, q2);
+		corners = {line(quad), line(q1), line(q2), line(q3), above(quad), above(q3), above(q2), above(q1)};
+	}
+	// a volume with the right faces glued otherwise repeats a corner
+	std::vector<uint32> sorted = corners;
+	std::sort(sorted.begin(), sorted.end());
+	if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+		corners.clear();
+	return corners;
+}
+
+/// The type of a cell of dimension dim with the given number of corners
+/// (one plex_corners gives).
+DMPolytopeType cell_type(uint32 dim, PetscInt nb_corners)
+{
+	if (dim == 2)
+		return nb_corners == 3 ? DM_POLYTOPE_TRIANGLE : DM_POLYTOPE_QUADRILATERAL;
+	switch (nb_corners)
+	{
+	case 4:
+		return DM_POLYTOPE_TETRAHEDRON;
+	case 5:
+		return DM_POLYTOPE_PYRAMID;
+	case 6:
+		return DM_POLYTOPE_TRI_PRISM;
+	default:
+		return DM_POLYTOPE_HEXAHEDRON;
+	}
+}
+
+/// The corners of face f by vertex line, counterclockwise from the one of
+/// smallest global id (a triangle or a quadrilateral), or an empty list for
+/// another polygon.
+std::vector<uint32> plex_corners(const CMap2& m, CMap2::Face f, const AttributeArray<uint64>& vertex_gids)
+{
+	std::vector<uint32> corners;
+	foreach_incident_vertex(m, f, [&](CMap2::Vertex v) {
+		corners.push_back(index_of(m, v));
+		return corners.size() <= 4;
+	});
+	if (corners.size() < 3 || corners.size() > 4)
+		corners.clear();
+	const auto first = std::min_element(corners.begin(), corners.end(),
+										[&](uint32 a, uint32 b) { return vertex_gids[a] < vertex_gids[b]; });
+	std::rotate(corners.begin(), first, corners.end());
+	return corners;
+}
+
+/// The vertices of point p of plex, in the order of its closure.
+std::vector<PetscInt> closure_vertices(DM plex, PetscInt p, PetscInt v_start, PetscInt v_end)
+{
+	PetscInt size = 0;
+	PetscInt* closure = nullptr;
+	check(DMPlexGetTransitiveClosure(plex, p, PETSC_TRUE, &size, &closure), "DMPlexGetTransitiveClosure");
+	std::vector<PetscInt> vertices;
+	for (PetscInt i = 0; i < size; ++i)
+		if (closure[2 * i] >= v_start && closure[2 * i] < v_end)
+			vertices.push_back(closure[2 * i]);
+	check(DMPlexRestoreTransitiveClosure(plex, p, PETSC_TRUE, &size, &closure), "DMPlexRestoreTransitiveClosure");
+	return vertices;
+}
+
+/// Turns the cone of point p (an edge, or a face of a volume) so that its
+/// vertices come in the order `target`; the cells that hold p keep their
+/// shape (PETSc updates their cone orientations).
+void orient_point(DM plex, PetscInt p, const std::vector<PetscInt>& target, PetscInt v_start, PetscInt v_end)
+{
+	const std::vector<PetscInt> current = closure_vertices(plex, p, v_start, v_end);
+	if (current == target)
+		return;
+	DMPolytopeType type = DM_POLYTOPE_UNKNOWN;
+	check(DMPlexGetCellType(plex, p, &type), "DMPlexGetCellType");
+	PetscInt orientation = 0;
+	check(DMPolytopeGetVertexOrientation(type, current.data(), target.data(), &orientation),
+		  "DMPolytopeGetVertexOrientation");
+	check(DMPlexOrientPoint(plex, p, orientation), "DMPlexOrientPoint");
+}
+
+/// The ghost points of one dimension as star forest leaves: for each local
+/// cell owned elsewhere, its point here and its owner's point there.
+template <typename MAP>
+void add_leaves(const DistributedMap<MAP>& dm, uint32 k, const std::vector<PetscInt>& point_by_line,
+				std::vector<PetscInt>& leaves, std::vector<PetscSFNode>& remotes)
+{
+	std::vector<PetscInt> remote_point = point_by_line;
+	exchange_lines(dm, k, remote_point);
+	const AttributeArray<int32>& owners = dm.owners(k);
+	std::vector<uint8> seen;
+	for (uint32 line = 0; line < point_by_line.size(); ++line)
+	{
+		const PetscInt p = point_by_line[line];
+		if (p < 0 || owners[line] == dm.rank())
+			continue;
+		// the rim's copies of one cell are one point: one leaf
+		if (seen.size() <= std::size_t(p))
+			seen.resize(std::size_t(p) + 1, 0);
+		if (seen[std::size_t(p)])
+			continue;
+		seen[std::size_t(p)] = 1;
+		leaves.push_back(p);
+		remotes.push_back(PetscSFNode{owners[line], remote_point[line]});
+	}
+}
+
+/// Sets the point star forest of plex from the leaves, sorted by point.
+void set_point_sf(MPI_Comm comm, DM plex, PetscInt nb_points, std::vector<PetscInt>& leaves,
+				  std::vector<PetscSFNode>& remotes)
+{
+	std::vector<std::size_t> order(leaves.size());
+	for (std::size_t i = 0; i < order.size(); ++i)
+		order[i] = i;
+	std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return leaves[a] < leaves[b]; });
+	std::vector<PetscInt> sorted_leaves(leaves.size());
+	std::vector<PetscSFNode> sorted_remotes(leaves.size());
+	for (std::size_t i = 0; i < order.size(); ++i)
+	{
+		sorted_leaves[i] = leaves[order[i]];
+		sorted_remotes[i] = remotes[order[i]];
+	}
+	PetscSF sf = nullptr;
+	check(PetscSFCreate(comm, &sf), "PetscSFCreate");
+	const PetscErrorCode set = PetscSFSetGraph(sf, nb_points, PetscInt(sorted_leaves.size()), sorted_leaves.data(),
+											   PETSC_COPY_VALUES, sorted_remotes.data(), PETSC_COPY_VALUES);
+	if (set == 0)
+		check(DMSetPointSF(plex, sf), "DMSetPointSF");
+	PetscSFDestroy(&sf);
+	check(set, "PetscSFSetGraph");
+}
+
+/// The vertices of an edge or face in an order that depends on their
+/// global ids only: from the smallest, towards its smaller neighbour.
+void canonical_cycle(std::vector<PetscInt>& vertices, std::vector<uint64>& gids)
+{
+	const std::size_t n = vertices.size();
+	const std::size_t first = std::size_t(std::min_element(gids.begin(), gids.end()) - gids.begin());
+	std::rotate(vertices.begin(), vertices.begin() + long(first), vertices.end());
+	std::rotate(gids.begin(), gids.begin() + long(first), gids.end());
+	if (n > 2 && gids[n - 1] < gids[1])
+	{
+		std::reverse(vertices.begin() + 1, vertices.end());
+		std::reverse(gids.begin() + 1, gids.end());
+	}
+}
+
+/// The plex points of the edges (and faces) of m, written to points[k]:
+/// the full joins of their vertices' points (points[0]). Each is turned so
+/// that its vertices come in their canonical_cycle order, the same on every
+/// rank holding it.
+template <typename MAP>
+void find_inner_points(const MAP& m, DM plex, const AttributeArray<uint64>& vertex_gids,
+					   std::vector<std::vector<PetscInt>>& points)
+{
+	using Vertex = typename MAP::Vertex;
+	PetscInt v_start = 0, v_end = 0, p_start = 0, p_end = 0;
+	check(DMPlexGetDepthStratum(plex, 0, &v_start, &v_end), "DMPlexGetDepthStratum");
+	check(DMPlexGetChart(plex, &p_start, &p_end), "DMPlexGetChart");
+	std::vector<uint8> oriented(std::size_t(p_end - p_start), 0);
+	detail::foreach_cell_type<MAP>([&](auto cell, uint32 k) {
+		using CELL = decltype(cell);
+		if constexpr (!std::is_same_v<CELL, Vertex> && !std::is_same_v<CELL, typename DistributedMap<MAP>::TopCell>)
+		{
+			std::vector<PetscInt> vertices;
+			std::vector<uint64> gids;
+			foreach_cell(m, [&](CELL c) {
+				vertices.clear();
+				gids.clear();
+				foreach_incident_vertex(m, c, [&](Vertex v) {
+					vertices.push_back(points[0][index_of(m, v)]);
+					gids.push_back(vertex_gids[index_of(m, v)]);
+					return true;
+				});
+				PetscInt nb_joins = 0;
+				const PetscInt* joins = nullptr;
+				check(DMPlexGetFullJoin(plex, PetscInt(vertices.size()), vertices.data(), &nb_joins, &joins),
+					  "DMPlexGetFullJoin");
+				// the join may also hold a larger face through these vertices
+				// (a quad that two triangles meet without being glued to it)
+				PetscInt p = -1;
+				for (PetscInt j = 0; j < nb_joins; ++j)
+				{
+					PetscInt cone_size = 0;
+					check(DMPlexGetConeSize(plex, joins[j], &cone_size), "DMPlexGetConeSize");
+					if (k == 1 || cone_size == PetscInt(vertices.size()))
+						p = p < 0 ? joins[j] : -2;
+				}
+				check(DMPlexRestoreJoin(plex, PetscInt(vertices.size()), vertices.data(), &nb_joins, &joins),
+					  "DMPlexRestoreJoin");
+				if (p < 0)
+					throw DMPlexError("to_dmplex: a cell of dimension " + std::to_string(k) +
+									  " has no single plex point");
+				points[k][index_of(m, c)] = p;
+				if (!oriented[std::size_t(p - p_start)])
+				{
+					oriented[std::size_t(p - p_start)] = 1;
+					canonical_cycle(vertices, gids);
+					orient_point(plex, p, vertices, v_start, v_end);
+				}
+				return true;
+			});
+		}
+	});
+}
+
+/// The first dimension (1 or 2) in which two cells of the local map have
+/// the same vertices, 0 if none does. DMPlex names the edges and faces it
+/// interpolates by their vertices, so it cannot hold both (a mesh that is
+/// not conforming there, like faces of a hexahedron meeting two triangles).
+template <typename MAP>
+uint32 cells_on_same_vertices(const DistributedMap<MAP>& dm)
+{
+	using Vertex = typename MAP::Vertex;
+	const AttributeArray<uint64>& vertex_gids = dm.global_ids(0);
+	uint32 found = 0;
+	detail::foreach_cell_type<MAP>([&](auto cell, uint32 k) {
+		using CELL = decltype(cell);
+		if constexpr (!std::is_same_v<CELL, Vertex> && !std::is_same_v<CELL, typename DistributedMap<MAP>::TopCell>)
+		{
+			// (vertices, global id): the rim's copies of a cell are one cell
+			std::vector<std::pair<std::vector<uint64>, uint64>> keys;
+			const AttributeArray<uint64>& gids = dm.global_ids(k);
+			foreach_cell(dm.map(), [&](CELL c) {
+				std::vector<uint64> key;
+				foreach_incident_vertex(dm.map(), c, [&](Vertex v) {
+					key.push_back(vertex_gids[index_of(dm.map(), v)]);
+					return true;
+				});
+				std::sort(key.begin(), key.end());
+				keys.emplace_back(std::move(key), gids[index_of(dm.map(), c)]);
+			});
+			std::sort(keys.begin(), keys.end());
+			keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+			const auto same = std::adjacent_find(keys.begin(), keys.end(),
+												 [](const auto& a, const auto& b) { return a.first == b.first; });
+			if (found == 0 && same != keys.end())
+				found = k;
+		}
+	});
+	return found;
+}
+
+template <typename MAP>
+PlexMesh build_plex(const DistributedMap<MAP>& dm, const std::string& position)
+{
+	using Vertex = typename MAP::Vertex;
+	using Top = typename DistributedMap<MAP>::TopCell;
+	constexpr uint32 D = MAP::dimension;
+	const MAP& m = dm.map();
+	PetscBool initialised = PETSC_FALSE;
+	PetscInitialized(&initialised);
+	if (!initialised)
+		throw std::invalid_argument("to_dmplex: PETSc is not initialised (call PetscInitialize first)");
+	auto pos = get_attribute<Vec3, Vertex>(m, position);
+	if (!on_all_ranks(dm.comm(), pos != nullptr))
+		throw std::invalid_argument("to_dmplex: a rank has no Vec3 vertex attribute '" + position + "'");
+
+	// cells first, then the vertices: one point per global vertex id
+	std::vector<uint32> cell_lines;
+	std::vector<PetscInt> cone_sizes, cones;
+	std::vector<uint32> corner_lines;
+	bool supported = true;
+	foreach_cell(m, [&](Top c) {
+		const std::vector<uint32> corners = plex_corners(m, c, dm.global_ids(0));
+		supported = !corners.empty();
+		cell_lines.push_back(index_of(m, c));
+		cone_sizes.push_back(PetscInt(corners.size()));
+		corner_lines.insert(corner_lines.end(), corners.begin(), corners.end());
+		return supported;
+	});
+	if (!on_all_ranks(dm.comm(), supported))
+		throw std::invalid_argument(
+			D == 3 ? "to_dmplex: every volume must be a tetrahedron, a pyramid, a triangular prism or a hexahedron"
+				   : "to_dmplex: every face must be a triangle or a quadrilateral");
+	uint32 same_vertices = cells_on_same_vertices(dm);
+	MPI_Allreduce(MPI_IN_PLACE, &same_vertices, 1, MPI_UINT32_T, MPI_MAX, dm.comm());
+	if (same_vertices != 0)
+		throw std::invalid_argument(std::string("to_dmplex: two ") + (same_vertices == 1 ? "edges" : "faces") +
+									" have the same vertices (the mesh is not conforming there); DMPlex names a cell "
+									"by its vertices");
+	const std::size_t nb_cells = cell_lines.size();
+	// a cell adds at most 6 faces, 12 edges and 8 vertices
+	if (nb_cells > std::size_t(std::numeric_limits<PetscInt>::max()) / 27)
+		throw std::invalid_argument("to_dmplex: the local map has too many cells for PETSc's 32-bit indices");
+
+	std::vector<std::vector<PetscInt>> points(D + 1);
+	detail::foreach_cell_type<MAP>(
+		[&](auto cell, uint32 k) { points[k].assign(container_of<decltype(cell)::ORBIT>(m).end_index(), -1); });
+	std::unordered_map<uint64, PetscInt> point_of_gid;
+	std::vector<PetscScalar> coordinates;
+	const AttributeArray<uint64>& vertex_gids = dm.global_ids(0);
+	foreach_cell(m, [&](Vertex v) {
+		const uint32 line = index_of(m, v);
+		const auto [it, inserted] = point_of_gid.emplace(vertex_gids[line], PetscInt(nb_cells + point_of_gid.size()));
+		points[0][line] = it->second;
+		if (inserted)
+			for (uint32 i = 0; i < 3; ++i)
+				coordinates.push_back((*pos)[line][i]);
+	});
+	const PetscInt nb_vertices = PetscInt(point_of_gid.size());
+	for (std::size_t i = 0; i < nb_cells; ++i)
+		points[D][cell_lines[i]] = PetscInt(i);
+	cones.reserve(corner_lines.size());
+	for (uint32 line : corner_lines)
+		cones.push_back(points[0][line]);
+	cone_sizes.resize(nb_cells + std::size_t(nb_vertices), 0);
+	const std::vector<PetscInt> orientations(cones.size(), 0);
+
+	QuietPetsc quiet;
+	DMGuard cells;
+	check(DMCreate(dm.comm(), &cells.dm), "DMCreate");
+	check(DMSetType(cells.dm, DMPLEX), "DMSetType");
+	check(DMSetDimension(cells.dm, PetscInt(D)), "DMSetDimension");
+	check(DMSetCoordinateDim(cells.dm, 3), "DMSetCoordinateDim");
+	const PetscInt per_depth[2] = {nb_vertices, PetscInt(nb_cells)};
+	check(DMPlexCreateFromDAG(cells.dm, 1, per_depth, cone_sizes.data(), cones.data(), orientations.data(),
+							  coordinates.data()),
+		  "DMPlexCreateFromDAG");
+	// PETSc guesses a cell's type from its number of corners and takes six
+	// corners for a tensor prism (which orders them otherwise): say which
+	{
+		DMLabel types = nullptr;
+		check(DMPlexGetCellTypeLabel(cells.dm, &types), "DMPlexGetCellTypeLabel");
+		for (std::size_t i = 0; i < nb_cells; ++i)
+		{
+			DMPolytopeType guess = DM_POLYTOPE_UNKNOWN;
+			check(DMPlexGetCellType(cells.dm, PetscInt(i), &guess), "DMPlexGetCellType");
+			const DMPolytopeType type = cell_type(D, cone_sizes[i]);
+			if (guess != type)
+			{
+				check(DMLabelClearValue(types, PetscInt(i), guess), "DMLabelClearValue");
+				check(DMLabelSetValue(types, PetscInt(i), type), "DMLabelSetValue");
+			}
+		}
+	}
+	// PETSc adds the faces and edges on each rank alone: its parallel
+	// interpolation orients the shared cones of tetrahedral meshes only
+	DMGuard plex;
+	check(DMPlexInterpolate(cells.dm, &plex.dm), "DMPlexInterpolate");
+	PetscInt c_start = 0, c_end = 0, v_start = 0, v_end = 0;
+	check(DMPlexGetHeightStratum(plex.dm, 0, &c_start, &c_end), "DMPlexGetHeightStratum");
+	check(DMPlexGetDepthStratum(plex.dm, 0, &v_start, &v_end), "DMPlexGetDepthStratum");
+	// interpolation keeps the order of the cells and of the vertices
+	for (auto& p : points[D])
+		if (p >= 0)
+			p += c_start;
+	for (auto& p : points[0])
+		if (p >= 0)
+			p += v_start - PetscInt(nb_cells);
+
+	// the edges (and faces) as the joins of their vertices, turned the same
+	// way on every rank; a failure on one rank is raised on all (the next
+	// call is collective)
+	detail::on_every_rank(dm.comm(), [&] { find_inner_points(m, plex.dm, vertex_gids, points); });
+	// the final star forest: every dimension's ghosts, rooted at the owners
+	PetscInt p_start = 0, p_end = 0;
+	check(DMPlexGetChart(plex.dm, &p_start, &p_end), "DMPlexGetChart");
+	std::vector<PetscInt> leaves;
+	std::vector<PetscSFNode> remotes;
+	for (uint32 k = 0; k <= D; ++k)
+		add_leaves(dm, k, points[k], leaves, remotes);
+	set_point_sf(dm.comm(), plex.dm, p_end - p_start, leaves, remotes);
+	// the ghost layer is PETSc's overlap of one cell (the cells that share a
+	// vertex with an owned one); DMSetFromOptions must not distribute again
+	check(DMPlexSetOverlap(plex.dm, nullptr, 1), "DMPlexSetOverlap");
+	check(DMPlexDistributeSetDefault(plex.dm, PETSC_FALSE), "DMPlexDistributeSetDefault");
+	DM result = plex.dm;
+	plex.dm = nullptr;
+	return PlexMesh(result, std::move(points));
+}
+
+} // namespace
+
+PlexMesh to_dmplex(const DistributedCMap3& dm, const std::string& position)
+{
+	return build_plex(dm, position);
+}
+
+PlexMesh to_dmplex(const DistributedCMap3& dm)
+{
+	return build_plex(dm, "position");
+}
+
+PlexMesh to_dmplex(const DistributedCMap2& dm, const std::string& position)
+{
+	return build_plex(dm, position);
+}
+
+PlexMesh to_dmplex(const DistributedCMap2& dm)
+{
+	return build_plex(dm, "position");
+}
+
+} // namespace cgogn::dist
