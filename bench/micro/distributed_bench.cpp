@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The distributed layer under mpiexec: partition and distribution of a tet
 // grid, one halo exchange of the positions, ten Jacobi smoothing steps, and
-// one tetrahedral refinement beside the serial one.
+// one tetrahedral refinement beside the serial one, and (with the DMPlex
+// bridge) the conversion of each rank's part to a PETSc DMPlex.
 // Every rank runs the same fixed number of iterations (collectives inside
 // keep them in step); each iteration's time is the slowest rank's, and
 // rank 0 reports. Counters: tetrahedra owned per rank, ghost tetrahedra per
@@ -11,13 +12,18 @@
 //   mpiexec -n P bench_distributed [--benchmark_filter=...]
 // Sizes: n = 56 (1,053,696 tetrahedra) for the strong scaling; n = 35, 44,
 // 50, 55 for about 2.5e5 tetrahedra per rank on 1, 2, 3, 4 ranks; n = 28
-// (131,712 tetrahedra, 1,053,696 after) for the refinement.
+// (131,712 tetrahedra, 1,053,696 after) for the refinement; n = 56 for the
+// DMPlex.
 #include <cgogn/core.h>
 #include <cgogn/distributed/distribute.h>
 #include <cgogn/distributed/exchange.h>
 #include <cgogn/distributed/smoothing.h>
 #include <cgogn/distributed/subdivision.h>
 #include <cgogn/modeling/subdivision.h>
+
+#ifdef CGOGN_BENCH_DMPLEX
+#include <cgogn/distributed/dmplex.h>
+#endif
 
 #include <benchmark/benchmark.h>
 
@@ -158,6 +164,21 @@ void BM_SerialTetSubdivision(benchmark::State& state)
 	}
 }
 
+#ifdef CGOGN_BENCH_DMPLEX
+// dist::to_dmplex on the distributed grid: the DMPlex of each rank's part.
+void BM_ToDMPlex(benchmark::State& state)
+{
+	dist::DistributedCMap3 dm = spread_grid(uint32(state.range(0)));
+	for (auto _ : state)
+	{
+		dist::PlexMesh plex;
+		state.SetIterationTime(slowest([&] { plex = dist::to_dmplex(dm); }));
+	}
+	spread_counters(state, dm, uint32(state.range(0)));
+}
+BENCHMARK(BM_ToDMPlex)->Arg(56)->Iterations(2)->UseManualTime()->Unit(benchmark::kMillisecond);
+#endif
+
 BENCHMARK(BM_PartitionAndDistribute)->Arg(56)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExchangePositions)->Arg(56)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TenSmoothingSteps)
@@ -191,6 +212,9 @@ int main(int argc, char** argv)
 {
 	int provided = 0;
 	MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+#ifdef CGOGN_BENCH_DMPLEX
+	PetscInitializeNoArguments();
+#endif
 	// the ranks of a node share its cores
 	MPI_Comm node;
 	MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank(), MPI_INFO_NULL, &node);
@@ -207,6 +231,9 @@ int main(int argc, char** argv)
 		benchmark::RunSpecifiedBenchmarks(&silent);
 	}
 	benchmark::Shutdown();
+#ifdef CGOGN_BENCH_DMPLEX
+	PetscFinalize();
+#endif
 	MPI_Finalize();
 	return 0;
 }

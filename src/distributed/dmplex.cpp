@@ -14,6 +14,7 @@
 #include "collective_failure.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <petscsf.h>
 #include <unordered_map>
@@ -192,30 +193,71 @@ std::vector<uint32> plex_corners(const CMap2& m, CMap2::Face f, const AttributeA
 	return corners;
 }
 
-/// The vertices of point p of plex, in the order of its closure.
-std::vector<PetscInt> closure_vertices(DM plex, PetscInt p, PetscInt v_start, PetscInt v_end)
+/// The vertices of point p of plex, an edge (depth 1) or a polygon (depth
+/// 2), in the order its cone gives them: an edge's cone, or the first
+/// vertex of each edge of a polygon's cone as the polygon turns it (a
+/// negative orientation reverses the edge).
+void cone_vertices(DM plex, PetscInt p, PetscInt depth, std::vector<PetscInt>& vertices)
 {
+	vertices.clear();
 	PetscInt size = 0;
-	PetscInt* closure = nullptr;
-	check(DMPlexGetTransitiveClosure(plex, p, PETSC_TRUE, &size, &closure), "DMPlexGetTransitiveClosure");
-	std::vector<PetscInt> vertices;
+	const PetscInt* cone = nullptr;
+	check(DMPlexGetConeSize(plex, p, &size), "DMPlexGetConeSize");
+	check(DMPlexGetCone(plex, p, &cone), "DMPlexGetCone");
+	if (depth == 1)
+	{
+		vertices.assign(cone, cone + size);
+		return;
+	}
+	const PetscInt* orientations = nullptr;
+	check(DMPlexGetConeOrientation(plex, p, &orientations), "DMPlexGetConeOrientation");
 	for (PetscInt i = 0; i < size; ++i)
-		if (closure[2 * i] >= v_start && closure[2 * i] < v_end)
-			vertices.push_back(closure[2 * i]);
-	check(DMPlexRestoreTransitiveClosure(plex, p, PETSC_TRUE, &size, &closure), "DMPlexRestoreTransitiveClosure");
-	return vertices;
+	{
+		const PetscInt* ends = nullptr;
+		check(DMPlexGetCone(plex, cone[i], &ends), "DMPlexGetCone");
+		vertices.push_back(orientations[i] >= 0 ? ends[0] : ends[1]);
+	}
 }
 
-/// Turns the cone of point p (an edge, or a face of a volume) so that its
-/// vertices come in the order `target`; the cells that hold p keep their
-/// shape (PETSc updates their cone orientations).
-void orient_point(DM plex, PetscInt p, const std::vector<PetscInt>& target, PetscInt v_start, PetscInt v_end)
+/// Up to 4 vertex points, sorted, padded with -1: an edge's or a face's key.
+using VertexKey = std::array<PetscInt, 4>;
+
+VertexKey key_of(const std::vector<PetscInt>& vertices)
 {
-	const std::vector<PetscInt> current = closure_vertices(plex, p, v_start, v_end);
+	VertexKey key{-1, -1, -1, -1};
+	const std::size_t n = std::min(vertices.size(), key.size());
+	for (std::size_t i = 0; i < n; ++i) // insertion sort
+	{
+		std::size_t j = i;
+		for (; j > 0 && key[j - 1] > vertices[i]; --j)
+			key[j] = key[j - 1];
+		key[j] = vertices[i];
+	}
+	return key;
+}
+
+/// A hash of a VertexKey, for the map from keys to plex points.
+struct VertexKeyHash
+{
+	std::size_t operator()(const VertexKey& k) const
+	{
+		std::size_t h = 0;
+		for (PetscInt v : k)
+			h = h * 0x9E3779B97F4A7C15ull + std::size_t(uint32(v));
+		return h;
+	}
+};
+
+/// Turns the cone of point p (an edge, or a face of a volume) so that its
+/// vertices come in the order `target` instead of `current`; the cells that
+/// hold p keep their shape (PETSc updates their cone orientations).
+void orient_point(DM plex, PetscInt p, const std::vector<PetscInt>& current, const std::vector<PetscInt>& target)
+{
 	if (current == target)
 		return;
-	DMPolytopeType type = DM_POLYTOPE_UNKNOWN;
-	check(DMPlexGetCellType(plex, p, &type), "DMPlexGetCellType");
+	const DMPolytopeType type = current.size() == 2   ? DM_POLYTOPE_SEGMENT
+								: current.size() == 3 ? DM_POLYTOPE_TRIANGLE
+													  : DM_POLYTOPE_QUADRILATERAL;
 	PetscInt orientation = 0;
 	check(DMPolytopeGetVertexOrientation(type, current.data(), target.data(), &orientation),
 		  "DMPolytopeGetVertexOrientation");
@@ -288,58 +330,74 @@ void canonical_cycle(std::vector<PetscInt>& vertices, std::vector<uint64>& gids)
 	}
 }
 
-/// The plex points of the edges (and faces) of m, written to points[k]:
-/// the full joins of their vertices' points (points[0]). Each is turned so
-/// that its vertices come in their canonical_cycle order, the same on every
-/// rank holding it.
+/// Whether each line of the cells of dimension k is held by another rank
+/// too: a ghost, or an owned cell that a neighbour holds as a ghost.
 template <typename MAP>
-void find_inner_points(const MAP& m, DM plex, const AttributeArray<uint64>& vertex_gids,
-					   std::vector<std::vector<PetscInt>>& points)
+std::vector<uint8> shared_lines(const DistributedMap<MAP>& dm, uint32 k)
+{
+	const AttributeArray<int32>& owners = dm.owners(k);
+	std::vector<uint8> shared;
+	detail::foreach_cell_type<MAP>([&](auto cell, uint32 dim) {
+		if (dim != k)
+			return;
+		shared.assign(container_of<decltype(cell)::ORBIT>(dm.map()).end_index(), 0);
+		foreach_cell(dm.map(), [&](decltype(cell) c) {
+			const uint32 line = index_of(dm.map(), c);
+			shared[line] = owners[line] != dm.rank();
+		});
+	});
+	for (uint32 line : dm.plan(k).send_lines)
+		shared[line] = 1;
+	return shared;
+}
+
+/// The plex points of the edges (and faces) of dm's map, written to
+/// points[k]: the plex's edges and faces are found by their vertices
+/// (points[0]). Each one that another rank holds too is turned so that its
+/// vertices come in their canonical_cycle order, the same on every rank;
+/// the others keep the order PETSc gave them.
+template <typename MAP>
+void find_inner_points(const DistributedMap<MAP>& dm, DM plex, std::vector<std::vector<PetscInt>>& points)
 {
 	using Vertex = typename MAP::Vertex;
-	PetscInt v_start = 0, v_end = 0, p_start = 0, p_end = 0;
-	check(DMPlexGetDepthStratum(plex, 0, &v_start, &v_end), "DMPlexGetDepthStratum");
-	check(DMPlexGetChart(plex, &p_start, &p_end), "DMPlexGetChart");
-	std::vector<uint8> oriented(std::size_t(p_end - p_start), 0);
+	const MAP& m = dm.map();
+	const AttributeArray<uint64>& vertex_gids = dm.global_ids(0);
+	std::vector<PetscInt> vertices, current;
+	std::vector<uint64> gids;
 	detail::foreach_cell_type<MAP>([&](auto cell, uint32 k) {
 		using CELL = decltype(cell);
 		if constexpr (!std::is_same_v<CELL, Vertex> && !std::is_same_v<CELL, typename DistributedMap<MAP>::TopCell>)
 		{
-			std::vector<PetscInt> vertices;
-			std::vector<uint64> gids;
+			PetscInt start = 0, end = 0;
+			check(DMPlexGetDepthStratum(plex, PetscInt(k), &start, &end), "DMPlexGetDepthStratum");
+			std::unordered_map<VertexKey, PetscInt, VertexKeyHash> point_of;
+			point_of.reserve(std::size_t(end - start));
+			for (PetscInt p = start; p < end; ++p)
+			{
+				cone_vertices(plex, p, PetscInt(k), vertices);
+				point_of.emplace(key_of(vertices), p);
+			}
+			std::vector<uint8> oriented(std::size_t(end - start), 0);
+			const std::vector<uint8> shared = shared_lines(dm, k);
 			foreach_cell(m, [&](CELL c) {
 				vertices.clear();
 				gids.clear();
 				foreach_incident_vertex(m, c, [&](Vertex v) {
 					vertices.push_back(points[0][index_of(m, v)]);
 					gids.push_back(vertex_gids[index_of(m, v)]);
-					return true;
+					return vertices.size() <= 4;
 				});
-				PetscInt nb_joins = 0;
-				const PetscInt* joins = nullptr;
-				check(DMPlexGetFullJoin(plex, PetscInt(vertices.size()), vertices.data(), &nb_joins, &joins),
-					  "DMPlexGetFullJoin");
-				// the join may also hold a larger face through these vertices
-				// (a quad that two triangles meet without being glued to it)
-				PetscInt p = -1;
-				for (PetscInt j = 0; j < nb_joins; ++j)
-				{
-					PetscInt cone_size = 0;
-					check(DMPlexGetConeSize(plex, joins[j], &cone_size), "DMPlexGetConeSize");
-					if (k == 1 || cone_size == PetscInt(vertices.size()))
-						p = p < 0 ? joins[j] : -2;
-				}
-				check(DMPlexRestoreJoin(plex, PetscInt(vertices.size()), vertices.data(), &nb_joins, &joins),
-					  "DMPlexRestoreJoin");
-				if (p < 0)
-					throw DMPlexError("to_dmplex: a cell of dimension " + std::to_string(k) +
-									  " has no single plex point");
+				const auto it = vertices.size() <= 4 ? point_of.find(key_of(vertices)) : point_of.end();
+				if (it == point_of.end())
+					throw DMPlexError("to_dmplex: a cell of dimension " + std::to_string(k) + " has no plex point");
+				const PetscInt p = it->second;
 				points[k][index_of(m, c)] = p;
-				if (!oriented[std::size_t(p - p_start)])
+				if (shared[index_of(m, c)] && !oriented[std::size_t(p - start)])
 				{
-					oriented[std::size_t(p - p_start)] = 1;
+					oriented[std::size_t(p - start)] = 1;
 					canonical_cycle(vertices, gids);
-					orient_point(plex, p, vertices, v_start, v_end);
+					cone_vertices(plex, p, PetscInt(k), current);
+					orient_point(plex, p, current, vertices);
 				}
 				return true;
 			});
@@ -492,10 +550,10 @@ PlexMesh build_plex(const DistributedMap<MAP>& dm, const std::string& position)
 		if (p >= 0)
 			p += v_start - PetscInt(nb_cells);
 
-	// the edges (and faces) as the joins of their vertices, turned the same
-	// way on every rank; a failure on one rank is raised on all (the next
-	// call is collective)
-	detail::on_every_rank(dm.comm(), [&] { find_inner_points(m, plex.dm, vertex_gids, points); });
+	// the edges (and faces) found by their vertices, the shared ones turned
+	// the same way on every rank; a failure on one rank is raised on all
+	// (the next call is collective)
+	detail::on_every_rank(dm.comm(), [&] { find_inner_points(dm, plex.dm, points); });
 	// the final star forest: every dimension's ghosts, rooted at the owners
 	PetscInt p_start = 0, p_end = 0;
 	check(DMPlexGetChart(plex.dm, &p_start, &p_end), "DMPlexGetChart");
