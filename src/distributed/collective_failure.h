@@ -33,6 +33,16 @@ Failure failure_of(std::exception_ptr e);
 /// std::runtime_error). O(log ranks) when no rank failed.
 void raise_if_any_failed(MPI_Comm comm, const Failure& mine);
 
+/// True on every rank of comm when `local` is true on every rank: for a
+/// check that every rank must pass before a collective call. One
+/// MPI_Allreduce.
+inline bool on_all_ranks(MPI_Comm comm, bool local)
+{
+	int in = local, out = 0;
+	MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, comm);
+	return out != 0;
+}
+
 /// Runs f on this rank (f may do nothing on some ranks), then raises on
 /// every rank what any rank's f threw. Collective over comm.
 template <typename F>

@@ -92,23 +92,16 @@ struct DMGuard
 	}
 };
 
-/// True on every rank of comm when `local` is true on every rank.
-bool on_all_ranks(MPI_Comm comm, bool local)
-{
-	int in = local, out = 0;
-	MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, comm);
-	return out != 0;
-}
-
-/// The corners of volume w, by vertex line, in DMPlex's order, or an empty
-/// list when w is not a tetrahedron, pyramid, triangular prism or
-/// hexahedron. DMPlex lists first a face of the cell counterclockwise seen
+/// Appends to `corners` the corners of volume w, by vertex line, in
+/// DMPlex's order; false (nothing appended) when w is not a tetrahedron,
+/// pyramid, triangular prism or hexahedron. DMPlex lists first a face of the cell counterclockwise seen
 /// from outside, as a face's darts turn, then the apex, or the corners above
 /// the face's corners 0, 2, 1 (prism) or 0, 3, 2, 1 (hexahedron). The corner
 /// above a face's dart d ends the edge that follows d's twin. The first
 /// corner is chosen by global vertex ids, so that every rank holding the
 /// volume lists its corners (and DMPlex its faces) in the same order.
-std::vector<uint32> plex_corners(const CMap3& m, CMap3::Volume w, const AttributeArray<uint64>& vertex_gids)
+bool append_plex_corners(const CMap3& m, CMap3::Volume w, const AttributeArray<uint64>& vertex_gids,
+						 std::vector<uint32>& corners)
 {
 	uint32 nb_darts = 0, triangle_darts = 0, quad_darts = 0;
 	auto key = [&](Dart d) {
@@ -129,35 +122,37 @@ std::vector<uint32> plex_corners(const CMap3& m, CMap3::Volume w, const Attribut
 	});
 	auto line = [&](Dart d) { return index_of(m, CMap3::Vertex(d)); };
 	auto above = [&](Dart d) { return line(phi1(m, phi1(m, phi2(m, d)))); };
-	std::vector<uint32> corners;
+	std::array<uint32, 8> c{};
+	uint32 n = 0;
 	if (triangle_darts == 12 && nb_darts == 12) // tetrahedron
-		corners = {line(triangle), line(phi1(m, triangle)), line(phi_1(m, triangle)),
-				   line(phi_1(m, phi2(m, triangle)))};
+		c = {line(triangle), line(phi1(m, triangle)), line(phi_1(m, triangle)), line(phi_1(m, phi2(m, triangle)))},
+		n = 4;
 	else if (triangle_darts == 12 && quad_darts == 4 && nb_darts == 16) // pyramid
 	{
 		const Dart q1 = phi1(m, quad), q2 = phi1(m, q1), q3 = phi1(m, q2);
-		corners = {line(quad), line(q1), line(q2), line(q3), line(phi_1(m, phi2(m, quad)))};
+		c = {line(quad), line(q1), line(q2), line(q3), line(phi_1(m, phi2(m, quad)))}, n = 5;
 	}
 	else if (triangle_darts == 6 && quad_darts == 12 && nb_darts == 18) // triangular prism
 	{
 		const Dart t1 = phi1(m, triangle), t2 = phi1(m, t1);
-		corners = {line(triangle), line(t1), line(t2), above(triangle), above(t2), above(t1)};
+		c = {line(triangle), line(t1), line(t2), above(triangle), above(t2), above(t1)}, n = 6;
 	}
 	else if (quad_darts == 24 && nb_darts == 24) // hexahedron
 	{
 		const Dart q1 = phi1(m, quad), q2 = phi1(m, q1), q3 = phi1(m, q2);
-		corners = {line(quad), line(q1), line(q2), line(q3), above(quad), above(q3), above(q2), above(q1)};
+		c = {line(quad), line(q1), line(q2), line(q3), above(quad), above(q3), above(q2), above(q1)}, n = 8;
 	}
 	// a volume with the right faces glued otherwise repeats a corner
-	std::vector<uint32> sorted = corners;
-	std::sort(sorted.begin(), sorted.end());
-	if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-		corners.clear();
-	return corners;
+	std::array<uint32, 8> sorted = c;
+	std::sort(sorted.begin(), sorted.begin() + n);
+	if (n == 0 || std::adjacent_find(sorted.begin(), sorted.begin() + n) != sorted.begin() + n)
+		return false;
+	corners.insert(corners.end(), c.begin(), c.begin() + n);
+	return true;
 }
 
 /// The type of a cell of dimension dim with the given number of corners
-/// (one plex_corners gives).
+/// (as append_plex_corners gives them).
 DMPolytopeType cell_type(uint32 dim, PetscInt nb_corners)
 {
 	if (dim == 2)
@@ -175,22 +170,28 @@ DMPolytopeType cell_type(uint32 dim, PetscInt nb_corners)
 	}
 }
 
-/// The corners of face f by vertex line, counterclockwise from the one of
-/// smallest global id (a triangle or a quadrilateral), or an empty list for
-/// another polygon.
-std::vector<uint32> plex_corners(const CMap2& m, CMap2::Face f, const AttributeArray<uint64>& vertex_gids)
+/// Appends to `corners` the corners of face f by vertex line,
+/// counterclockwise from the one of smallest global id; false (nothing
+/// appended) when f is neither a triangle nor a quadrilateral.
+bool append_plex_corners(const CMap2& m, CMap2::Face f, const AttributeArray<uint64>& vertex_gids,
+						 std::vector<uint32>& corners)
 {
-	std::vector<uint32> corners;
+	const std::size_t first = corners.size();
 	foreach_incident_vertex(m, f, [&](CMap2::Vertex v) {
 		corners.push_back(index_of(m, v));
-		return corners.size() <= 4;
+		return corners.size() - first <= 4;
 	});
-	if (corners.size() < 3 || corners.size() > 4)
-		corners.clear();
-	const auto first = std::min_element(corners.begin(), corners.end(),
-										[&](uint32 a, uint32 b) { return vertex_gids[a] < vertex_gids[b]; });
-	std::rotate(corners.begin(), first, corners.end());
-	return corners;
+	const auto begin = corners.begin() + long(first);
+	if (corners.size() - first < 3 || corners.size() - first > 4)
+	{
+		corners.erase(begin, corners.end());
+		return false;
+	}
+	std::rotate(
+		begin,
+		std::min_element(begin, corners.end(), [&](uint32 a, uint32 b) { return vertex_gids[a] < vertex_gids[b]; }),
+		corners.end());
+	return true;
 }
 
 /// The vertices of point p of plex, an edge (depth 1) or a polygon (depth
@@ -355,10 +356,15 @@ std::vector<uint8> shared_lines(const DistributedMap<MAP>& dm, uint32 k)
 /// points[k]: the plex's edges and faces are found by their vertices
 /// (points[0]). Each one that another rank holds too is turned so that its
 /// vertices come in their canonical_cycle order, the same on every rank;
-/// the others keep the order PETSc gave them.
+/// the others keep the order PETSc gave them. Returns the first dimension
+/// (1 or 2) in which two cells of different global ids have the same
+/// vertices, 0 if none: DMPlex names the edges and faces it interpolates by
+/// their vertices, so it holds one point for both (the mesh is not
+/// conforming there, like a face of a hexahedron meeting two triangles).
 template <typename MAP>
-void find_inner_points(const DistributedMap<MAP>& dm, DM plex, std::vector<std::vector<PetscInt>>& points)
+uint32 find_inner_points(const DistributedMap<MAP>& dm, DM plex, std::vector<std::vector<PetscInt>>& points)
 {
+	uint32 merged = 0;
 	using Vertex = typename MAP::Vertex;
 	const MAP& m = dm.map();
 	const AttributeArray<uint64>& vertex_gids = dm.global_ids(0);
@@ -377,7 +383,11 @@ void find_inner_points(const DistributedMap<MAP>& dm, DM plex, std::vector<std::
 				cone_vertices(plex, p, PetscInt(k), vertices);
 				point_of.emplace(key_of(vertices), p);
 			}
-			std::vector<uint8> oriented(std::size_t(end - start), 0);
+			// the global id of the cell each point was found for; the rim's
+			// copies of a cell share their point
+			constexpr uint64 none = std::numeric_limits<uint64>::max();
+			std::vector<uint64> gid_of_point(std::size_t(end - start), none);
+			const AttributeArray<uint64>& cell_gids = dm.global_ids(k);
 			const std::vector<uint8> shared = shared_lines(dm, k);
 			foreach_cell(m, [&](CELL c) {
 				vertices.clear();
@@ -391,10 +401,18 @@ void find_inner_points(const DistributedMap<MAP>& dm, DM plex, std::vector<std::
 				if (it == point_of.end())
 					throw DMPlexError("to_dmplex: a cell of dimension " + std::to_string(k) + " has no plex point");
 				const PetscInt p = it->second;
-				points[k][index_of(m, c)] = p;
-				if (shared[index_of(m, c)] && !oriented[std::size_t(p - start)])
+				const uint32 line = index_of(m, c);
+				points[k][line] = p;
+				uint64& found_for = gid_of_point[std::size_t(p - start)];
+				if (found_for != none)
 				{
-					oriented[std::size_t(p - start)] = 1;
+					if (found_for != cell_gids[line] && merged == 0)
+						merged = k;
+					return true;
+				}
+				found_for = cell_gids[line];
+				if (shared[line])
+				{
 					canonical_cycle(vertices, gids);
 					cone_vertices(plex, p, PetscInt(k), current);
 					orient_point(plex, p, current, vertices);
@@ -403,43 +421,7 @@ void find_inner_points(const DistributedMap<MAP>& dm, DM plex, std::vector<std::
 			});
 		}
 	});
-}
-
-/// The first dimension (1 or 2) in which two cells of the local map have
-/// the same vertices, 0 if none does. DMPlex names the edges and faces it
-/// interpolates by their vertices, so it cannot hold both (a mesh that is
-/// not conforming there, like faces of a hexahedron meeting two triangles).
-template <typename MAP>
-uint32 cells_on_same_vertices(const DistributedMap<MAP>& dm)
-{
-	using Vertex = typename MAP::Vertex;
-	const AttributeArray<uint64>& vertex_gids = dm.global_ids(0);
-	uint32 found = 0;
-	detail::foreach_cell_type<MAP>([&](auto cell, uint32 k) {
-		using CELL = decltype(cell);
-		if constexpr (!std::is_same_v<CELL, Vertex> && !std::is_same_v<CELL, typename DistributedMap<MAP>::TopCell>)
-		{
-			// (vertices, global id): the rim's copies of a cell are one cell
-			std::vector<std::pair<std::vector<uint64>, uint64>> keys;
-			const AttributeArray<uint64>& gids = dm.global_ids(k);
-			foreach_cell(dm.map(), [&](CELL c) {
-				std::vector<uint64> key;
-				foreach_incident_vertex(dm.map(), c, [&](Vertex v) {
-					key.push_back(vertex_gids[index_of(dm.map(), v)]);
-					return true;
-				});
-				std::sort(key.begin(), key.end());
-				keys.emplace_back(std::move(key), gids[index_of(dm.map(), c)]);
-			});
-			std::sort(keys.begin(), keys.end());
-			keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-			const auto same = std::adjacent_find(keys.begin(), keys.end(),
-												 [](const auto& a, const auto& b) { return a.first == b.first; });
-			if (found == 0 && same != keys.end())
-				found = k;
-		}
-	});
-	return found;
+	return merged;
 }
 
 template <typename MAP>
@@ -454,7 +436,7 @@ PlexMesh build_plex(const DistributedMap<MAP>& dm, const std::string& position)
 	if (!initialised)
 		throw std::invalid_argument("to_dmplex: PETSc is not initialised (call PetscInitialize first)");
 	auto pos = get_attribute<Vec3, Vertex>(m, position);
-	if (!on_all_ranks(dm.comm(), pos != nullptr))
+	if (!detail::on_all_ranks(dm.comm(), pos != nullptr))
 		throw std::invalid_argument("to_dmplex: a rank has no Vec3 vertex attribute '" + position + "'");
 
 	// cells first, then the vertices: one point per global vertex id
@@ -463,23 +445,16 @@ PlexMesh build_plex(const DistributedMap<MAP>& dm, const std::string& position)
 	std::vector<uint32> corner_lines;
 	bool supported = true;
 	foreach_cell(m, [&](Top c) {
-		const std::vector<uint32> corners = plex_corners(m, c, dm.global_ids(0));
-		supported = !corners.empty();
+		const std::size_t before = corner_lines.size();
+		supported = append_plex_corners(m, c, dm.global_ids(0), corner_lines);
 		cell_lines.push_back(index_of(m, c));
-		cone_sizes.push_back(PetscInt(corners.size()));
-		corner_lines.insert(corner_lines.end(), corners.begin(), corners.end());
+		cone_sizes.push_back(PetscInt(corner_lines.size() - before));
 		return supported;
 	});
-	if (!on_all_ranks(dm.comm(), supported))
+	if (!detail::on_all_ranks(dm.comm(), supported))
 		throw std::invalid_argument(
 			D == 3 ? "to_dmplex: every volume must be a tetrahedron, a pyramid, a triangular prism or a hexahedron"
 				   : "to_dmplex: every face must be a triangle or a quadrilateral");
-	uint32 same_vertices = cells_on_same_vertices(dm);
-	MPI_Allreduce(MPI_IN_PLACE, &same_vertices, 1, MPI_UINT32_T, MPI_MAX, dm.comm());
-	if (same_vertices != 0)
-		throw std::invalid_argument(std::string("to_dmplex: two ") + (same_vertices == 1 ? "edges" : "faces") +
-									" have the same vertices (the mesh is not conforming there); DMPlex names a cell "
-									"by its vertices");
 	const std::size_t nb_cells = cell_lines.size();
 	// a cell adds at most 6 faces, 12 edges and 8 vertices
 	if (nb_cells > std::size_t(std::numeric_limits<PetscInt>::max()) / 27)
@@ -553,7 +528,13 @@ PlexMesh build_plex(const DistributedMap<MAP>& dm, const std::string& position)
 	// the edges (and faces) found by their vertices, the shared ones turned
 	// the same way on every rank; a failure on one rank is raised on all
 	// (the next call is collective)
-	detail::on_every_rank(dm.comm(), [&] { find_inner_points(dm, plex.dm, points); });
+	uint32 merged = 0;
+	detail::on_every_rank(dm.comm(), [&] { merged = find_inner_points(dm, plex.dm, points); });
+	MPI_Allreduce(MPI_IN_PLACE, &merged, 1, MPI_UINT32_T, MPI_MAX, dm.comm());
+	if (merged != 0)
+		throw std::invalid_argument(std::string("to_dmplex: two ") + (merged == 1 ? "edges" : "faces") +
+									" have the same vertices (the mesh is not conforming there); DMPlex names a cell "
+									"by its vertices");
 	// the final star forest: every dimension's ghosts, rooted at the owners
 	PetscInt p_start = 0, p_end = 0;
 	check(DMPlexGetChart(plex.dm, &p_start, &p_end), "DMPlexGetChart");

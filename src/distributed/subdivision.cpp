@@ -409,22 +409,14 @@ private:
 	std::vector<uint8> near_owned_;
 };
 
-/// True on every rank of comm when `local` is true on every rank.
-bool on_all_ranks(MPI_Comm comm, bool local)
-{
-	int in = local, out = 0;
-	MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, comm);
-	return out != 0;
-}
-
 void refine(DistributedCMap3& dm, const std::string& position, const Scheme& scheme,
 			bool (*every_volume_fits)(const CMap3&))
 {
 	const CMap3& m = dm.map();
 	auto pos = get_attribute<Vec3, Vertex>(m, position);
-	if (!on_all_ranks(dm.comm(), pos != nullptr))
+	if (!detail::on_all_ranks(dm.comm(), pos != nullptr))
 		throw std::invalid_argument("distributed subdivision: a rank has no Vec3 vertex attribute '" + position + "'");
-	if (!on_all_ranks(dm.comm(), every_volume_fits(m)))
+	if (!detail::on_all_ranks(dm.comm(), every_volume_fits(m)))
 		throw modeling::SubdivisionError(scheme.wrong_cells);
 
 	// the ids of each dimension are below bound[k] on every rank
