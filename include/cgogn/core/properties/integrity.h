@@ -6,6 +6,7 @@
 #include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/mesh_traits.h>
+#include <cgogn/core/map/mrmap2.h>
 
 #include <string>
 #include <vector>
@@ -41,8 +42,11 @@ struct IntegrityError
 		IncidenceCacheStale,          ///< a quick incidence cache disagrees with the map (see IncidenceCache)
 		InverseRelationWrong,         ///< a stored inverse (a graph's alpha_1) is not the relation's inverse
 		EdgelessDartNotAlone,         ///< a graph dart without edge shares its vertex with other darts
-		RingBroken,         ///< an incidence graph's ring (edge ends around a vertex, uses around an edge) is broken
-		FaceNotSimpleCycle, ///< an incidence graph's face is not a simple cycle of consecutive sides
+		RingBroken,          ///< an incidence graph's ring (edge ends around a vertex, uses around an edge) is broken
+		FaceNotSimpleCycle,  ///< an incidence graph's face is not a simple cycle of consecutive sides
+		LevelCountWrong,     ///< a multiresolution map's per-level dart count disagrees with its darts' levels
+		LevelRelationBroken, ///< phi1, phi_1 or phi2 at a level leaves the level, does not end, or is not inverted
+		EdgeIdWrong,         ///< an edge id is above 2, or the two darts of a finest edge have different ids
 	};
 	Kind kind;                   ///< The violated invariant.
 	Orbit orbit = Orbit::DART;   ///< The orbit of the cell or line at fault; DART for errors of the relations.
@@ -124,5 +128,19 @@ requires is_nmap_v<MAP> IntegrityReport check_integrity(const MAP& m);
 /// each side starting where the previous one ends; and the face indexing
 /// when faces are indexed. O(number of uses + edges + vertices + lines).
 IntegrityReport check_integrity(const IncidenceGraph& ig);
+/// The invariants of a multiresolution 2-map at every level: those of its
+/// finest map (check_integrity(finest_map(m))); the per-level dart counts
+/// equal the number of live darts of each level, and no dart is above the
+/// finest level; edge ids are 0, 1 or 2, the same on both darts of a finest
+/// edge; and at each level l, phi1 is a permutation of the darts of level
+/// <= l whose walks end (a broken label would make them loop) and phi_1 is
+/// its inverse, phi2 a fixed-point-free involution of those darts that
+/// never links two boundary darts, the boundary mark is constant on each
+/// face, and non-boundary faces have at least 3 edges. O(number of darts x
+/// levels x cost of a level step).
+IntegrityReport check_integrity(const MRMap2& m);
+/// The same checks for the level read by a view only (with the labels and
+/// counts of the whole map). O(number of darts x cost of a level step).
+IntegrityReport check_integrity(const MRLevelView2& v);
 
 } // namespace cgogn

@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: MIT
+#include <cgogn/core/operators/cmap2.h>
+#include <cgogn/core/operators/mrmap2.h>
+#include <cgogn/core/properties/properties.h>
+#include <cgogn/core/traversals/local_cmap2.h>
+
+#include <cassert>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cgogn
+{
+
+MRMap2::MRMap2(CMap2&& base)
+{
+	state_.map = std::move(base);
+	AttributeContainer& darts = *detail::state_of(state_.map).darts;
+	state_.level = darts.add_attribute<uint8>("__mr_level", 0);
+	state_.edge_id = darts.add_attribute<uint8>("__mr_edge_id", 0);
+	assert(state_.level && state_.edge_id); // no CMap2 has them: only MRMap2 adds them
+	state_.darts_per_level = {nb_darts(state_.map)};
+}
+
+void set_current_level(MRMap2& m, uint32 l)
+{
+	if (l > max_level(m))
+		throw std::out_of_range("set_current_level: level " + std::to_string(l) + " above the finest level " +
+								std::to_string(max_level(m)));
+	detail::mr_state_of(m).current_level = l;
+}
+
+MRLevelView2 level_view(const MRMap2& m, uint32 l)
+{
+	if (l > max_level(m))
+		throw std::out_of_range("level_view: level " + std::to_string(l) + " above the finest level " +
+								std::to_string(max_level(m)));
+	return MRLevelView2(m, l);
+}
+
+namespace
+{
+
+/// The smallest edge id in {0, 1, 2} different from a and b.
+uint8 new_edge_id(uint8 a, uint8 b)
+{
+	uint8 id = 0;
+	while (id == a || id == b)
+		++id;
+	return id;
+}
+
+/// Labels the darts created by one refinement step and counts them.
+class NewDarts
+{
+public:
+	NewDarts(detail::MRState2& s, uint8 level) : s_(s), level_(level)
+	{
+	}
+	/// Labels the two darts of edge d (a new edge, or the new piece of a cut one).
+	void label_edge(Dart d, uint8 edge_id)
+	{
+		label(d, edge_id);
+		label(phi2(s_.map, d), edge_id);
+	}
+	void label(Dart d, uint8 edge_id)
+	{
+		(*s_.level)[d.index] = level_;
+		(*s_.edge_id)[d.index] = edge_id;
+		++count_;
+	}
+	uint32 count() const
+	{
+		return count_;
+	}
+
+private:
+	detail::MRState2& s_;
+	uint8 level_;
+	uint32 count_ = 0;
+};
+
+/// Joins the edge midpoints of a triangle whose edges are cut: c[i] is the
+/// dart leaving the midpoint of the i-th edge (in phi1 order).
+void refine_triangle(detail::MRState2& s, NewDarts& labels, const Dart (&c)[3])
+{
+	const auto id = [&](Dart d) { return (*s.edge_id)[d.index]; };
+	// cut off the corners at the ends of c[0], c[1] and c[2] in turn
+	const CMap2::Edge e0 = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[1]));
+	labels.label_edge(e0.dart, new_edge_id(id(c[0]), id(c[1])));
+	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(c[1]), CMap2::Vertex(c[2]));
+	labels.label_edge(e1.dart, new_edge_id(id(c[1]), id(c[2])));
+	const CMap2::Edge e2 = cut_face(s.map, CMap2::Vertex(c[2]), CMap2::Vertex(e0.dart));
+	labels.label_edge(e2.dart, new_edge_id(id(c[2]), id(c[0])));
+}
+
+/// Joins the k edge midpoints of a face whose edges are cut to a new centre:
+/// c[i] is the dart leaving the midpoint of the i-th edge (in phi1 order).
+void refine_quadrangular(detail::MRState2& s, NewDarts& labels, const std::vector<Dart>& c)
+{
+	const auto id = [&](Dart d) { return (*s.edge_id)[d.index]; };
+	// an inner edge differs from the edge whose midpoint it leaves
+	const auto inner_id = [&](Dart mid) { return new_edge_id(id(mid), id(mid)); };
+	const CMap2::Edge across = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[2]));
+	const Dart a = across.dart; // midpoint 0 -> midpoint 2
+	const CMap2::Vertex centre = cut_edge(s.map, across);
+	labels.label_edge(a, inner_id(c[0]));
+	labels.label_edge(centre.dart, inner_id(c[2])); // centre -> midpoint 2
+	// the centre's dart in the face of midpoint 1
+	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(phi2(s.map, a)), CMap2::Vertex(c[1]));
+	labels.label_edge(e1.dart, inner_id(c[1]));
+	// midpoints 3 ... k - 1 lie in the face of centre.dart, each cut leaving the next in the new part
+	Dart from_centre = centre.dart;
+	for (std::size_t i = 3; i < c.size(); ++i)
+	{
+		const CMap2::Edge e = cut_face(s.map, CMap2::Vertex(from_centre), CMap2::Vertex(c[i]));
+		labels.label_edge(e.dart, inner_id(c[i]));
+		from_centre = e.dart;
+	}
+}
+
+} // namespace
+
+void add_level(MRMap2& m, Refinement r)
+{
+	if (r != Refinement::Triangular && r != Refinement::Quadrangular && r != Refinement::Mixed)
+		throw std::invalid_argument("add_level: a 3-D refinement pattern on a 2-D map");
+	detail::MRState2& s = detail::mr_state_of(m);
+	CMap2& map = s.map;
+	const uint32 finest = max_level(m);
+	if (finest >= 254)
+		throw std::invalid_argument("add_level: 255 levels at most");
+	// the faces and edges of the finest level, checked before any change
+	std::vector<Dart> faces, edges;
+	bool regular = true, triangles = true;
+	foreach_cell(map, [&](CMap2::Face f) {
+		uint32 k = 0, youngest = 0;
+		foreach_dart_of_orbit(map, f, [&](Dart d) {
+			++k;
+			youngest = std::max<uint32>(youngest, (*s.level)[d.index]);
+		});
+		regular = regular && youngest == finest;
+		triangles = triangles && k == 3;
+		faces.push_back(f.dart);
+	});
+	if (!regular)
+		throw std::invalid_argument("add_level: the finest level is not regular (a face of a coarser level is not "
+									"refined)");
+	if (r == Refinement::Triangular && !triangles)
+		throw std::invalid_argument("add_level: Triangular refinement of a face that is not a triangle");
+	foreach_dart(map, [&](Dart d) {
+		if (d.index < phi2(map, d).index)
+			edges.push_back(d);
+	});
+
+	s.darts_per_level.push_back(0);
+	NewDarts labels(s, uint8(finest + 1));
+	for (Dart d : edges)
+	{
+		const uint8 id = (*s.edge_id)[d.index];
+		const CMap2::Vertex mid = cut_edge(map, CMap2::Edge(d));
+		labels.label(mid.dart, id);
+		labels.label(phi2(map, d), id);
+	}
+	std::vector<Dart> mids;
+	for (Dart f : faces)
+	{
+		// f leaves a corner: the face alternates old darts (from corners) and
+		// new ones (from midpoints)
+		mids.clear();
+		Dart it = f;
+		do
+		{
+			mids.push_back(phi1(map, it));
+			it = phi1(map, phi1(map, it));
+		} while (it != f);
+		if (mids.size() == 3 && r != Refinement::Quadrangular)
+			refine_triangle(s, labels, {mids[0], mids[1], mids[2]});
+		else
+			refine_quadrangular(s, labels, mids);
+	}
+	s.darts_per_level.back() = labels.count();
+	s.current_level = finest + 1;
+}
+
+void remove_finest_level(MRMap2& m)
+{
+	detail::MRState2& s = detail::mr_state_of(m);
+	CMap2& map = s.map;
+	const uint32 finest = max_level(m);
+	if (finest == 0)
+		throw std::invalid_argument("remove_finest_level: the map has no level above 0");
+	const auto is_new = [&](Dart d) { return (*s.level)[d.index] == finest; };
+	// an inner edge has two new darts; a piece of a cut edge has an old twin
+	const auto inner = [&](Dart d) { return is_new(d) && is_new(phi2(map, d)); };
+
+	// face centres: vertices whose edges are all inner
+	std::vector<Dart> found;
+	foreach_cell(map, [&](CMap2::Vertex v) {
+		bool centre = true;
+		foreach_dart_of_orbit(map, v, [&](Dart d) { return centre = inner(d) && !is_boundary(map, d); });
+		if (centre)
+			found.push_back(v.dart);
+	});
+	for (Dart d : found)
+		merge_incident_faces(map, CMap2::Vertex(d));
+	// the inner edges left: those of the middle triangles
+	found.clear();
+	foreach_dart(map, [&](Dart d) {
+		if (d.index < phi2(map, d).index && inner(d))
+			found.push_back(d);
+	});
+	for (Dart d : found)
+		merge_incident_faces(map, CMap2::Edge(d));
+	// the midpoints: each keeps its two new darts, which go with it
+	found.clear();
+	foreach_dart(map, [&](Dart d) {
+		if (is_new(d) && d.index < phi1(map, phi2(map, d)).index)
+			found.push_back(d);
+	});
+	for (Dart d : found)
+		merge_incident_edges(map, CMap2::Vertex(d));
+	s.darts_per_level.pop_back();
+	s.current_level = std::min(s.current_level, finest - 1);
+}
+
+} // namespace cgogn

@@ -1,0 +1,470 @@
+// SPDX-License-Identifier: MIT
+// Multiresolution 2-maps: regular levels, level relations, views, integrity.
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <thread>
+#include <vector>
+
+using namespace cgogn;
+
+namespace
+{
+
+CMap2 cube()
+{
+	CMap2 m;
+	add_hexa(m);
+	return m;
+}
+
+CMap2 tetrahedron()
+{
+	CMap2 m;
+	add_tetra(m);
+	return m;
+}
+
+CMap2 icosahedron()
+{
+	SurfaceSoup s;
+	s.nb_vertices = 12;
+	const uint32 f[20][3] = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+							 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+							 {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+	for (const auto& t : f)
+	{
+		s.face_sizes.push_back(3);
+		s.face_vertices.insert(s.face_vertices.end(), {t[0], t[1], t[2]});
+	}
+	s.positions.assign(12, {0.0, 0.0, 0.0});
+	CMap2 m;
+	build_surface(m, s);
+	return m;
+}
+
+/// A 3 x 2 grid with boundary, its first row of quads cut into triangles and
+/// one face a pentagon: triangles, quads and a pentagon.
+CMap2 mixed_grid()
+{
+	CMap2 m;
+	build_surface(m, grid_soup(3, 2, false));
+	uint32 cut = 0;
+	foreach_cell(m, [&](CMap2::Face f) {
+		if (cut++ < 2)
+			cut_face(m, CMap2::Vertex(f.dart), CMap2::Vertex(phi1(m, phi1(m, f.dart))));
+	});
+	foreach_cell(m, [&](CMap2::Edge e) {
+		if (!is_incident_to_boundary(m, e) ||
+			codegree(m, CMap2::Face(is_boundary(m, e.dart) ? phi2(m, e.dart) : e.dart)) != 4)
+			return true;
+		cut_edge(m, e); // a boundary quad becomes a pentagon
+		return false;
+	});
+	return m;
+}
+
+/// Number of faces of each degree.
+template <typename M>
+std::map<uint32, uint32> face_degrees(const M& m)
+{
+	std::map<uint32, uint32> d;
+	foreach_cell(m, [&](MRMap2::Face f) { ++d[codegree(m, f)]; });
+	return d;
+}
+
+/// Each face as its sorted darts, all faces sorted: the level's faces, whatever
+/// dart represents them.
+template <typename M>
+std::vector<std::vector<uint32>> faces_as_darts(const M& m)
+{
+	std::vector<std::vector<uint32>> faces;
+	foreach_cell(m, [&](MRMap2::Face f) {
+		std::vector<uint32> darts;
+		foreach_dart_of_orbit(m, f, [&](Dart d) { darts.push_back(d.index); });
+		std::sort(darts.begin(), darts.end());
+		faces.push_back(darts);
+	});
+	std::sort(faces.begin(), faces.end());
+	return faces;
+}
+
+/// The f-vector and face degrees the next level must have: every edge cut,
+/// triangles into 4 (unless Quadrangular), other k-gons into k quads.
+struct Expected
+{
+	std::vector<uint32> f;
+	std::map<uint32, uint32> degrees;
+};
+Expected next_level(const std::vector<uint32>& f, const std::map<uint32, uint32>& degrees, Refinement r)
+{
+	Expected e;
+	uint32 centres = 0, inner = 0, faces = 0;
+	for (auto [k, n] : degrees)
+	{
+		if (k == 3 && r != Refinement::Quadrangular)
+		{
+			inner += 3 * n;
+			faces += 4 * n;
+			e.degrees[3] += 4 * n;
+		}
+		else
+		{
+			centres += n;
+			inner += k * n;
+			faces += k * n;
+			e.degrees[4] += k * n;
+		}
+	}
+	e.f = {f[0] + f[1] + centres, 2 * f[1] + inner, faces};
+	return e;
+}
+
+void expect_ok(const IntegrityReport& r)
+{
+	EXPECT_TRUE(r.ok()) << r.to_string();
+}
+
+} // namespace
+
+TEST(MRMap2, CubeQuadrangularLevelsKeepEveryRow)
+{
+	MRMap2 m(cube());
+	EXPECT_EQ(max_level(m), 0u);
+	for (uint32 k = 0; k <= 4; ++k)
+	{
+		if (k > 0)
+			add_level(m, Refinement::Quadrangular);
+		ASSERT_EQ(max_level(m), k);
+		EXPECT_EQ(current_level(m), k);
+		expect_ok(check_integrity(m));
+		for (uint32 j = 0; j <= k; ++j)
+		{
+			const uint32 p = 1u << (2 * j);
+			const MRLevelView2 v = level_view(m, j);
+			EXPECT_EQ(f_vector(v), (std::vector<uint32>{6 * p + 2, 12 * p, 6 * p})) << "level " << j << " of " << k;
+			EXPECT_EQ(nb_darts(v), 24 * p);
+			EXPECT_EQ(euler_characteristic(v), 2);
+			EXPECT_EQ(face_degrees(v), (std::map<uint32, uint32>{{4, 6 * p}}));
+		}
+		uint32 sum = 0;
+		for (uint32 j = 0; j <= k; ++j)
+			sum += nb_darts_at_level(m, j);
+		EXPECT_EQ(sum, nb_darts(finest_map(m)));
+	}
+	// the finest level is the flat map
+	EXPECT_EQ(f_vector(m), f_vector(finest_map(m)));
+}
+
+TEST(MRMap2, TriangularLevelsOfTetrahedronAndIcosahedron)
+{
+	MRMap2 t(tetrahedron());
+	MRMap2 ico(icosahedron());
+	for (uint32 k = 0; k <= 4; ++k)
+	{
+		if (k > 0)
+		{
+			add_level(t, Refinement::Triangular);
+			if (k <= 3)
+				add_level(ico, Refinement::Triangular);
+		}
+		expect_ok(check_integrity(t));
+		for (uint32 j = 0; j <= k; ++j)
+		{
+			const uint32 p = 1u << (2 * j);
+			EXPECT_EQ(f_vector(level_view(t, j)), (std::vector<uint32>{2 * p + 2, 6 * p, 4 * p}));
+			if (k <= 3)
+			{
+				EXPECT_EQ(f_vector(level_view(ico, j)), (std::vector<uint32>{10 * p + 2, 30 * p, 20 * p}));
+			}
+		}
+	}
+	expect_ok(check_integrity(ico));
+}
+
+TEST(MRMap2, EveryLevelIsTheFlatRefinementOfTheOneBelow)
+{
+	for (Refinement r : {Refinement::Quadrangular, Refinement::Mixed})
+	{
+		MRMap2 m(mixed_grid());
+		std::vector<std::vector<uint32>> f{f_vector(m)};
+		std::vector<std::map<uint32, uint32>> degrees{face_degrees(m)};
+		ASSERT_EQ(degrees[0].count(5), 1u);
+		ASSERT_GE(degrees[0][3], 4u);
+		for (uint32 k = 1; k <= 3; ++k)
+		{
+			add_level(m, r);
+			const Expected e = next_level(f.back(), degrees.back(), r);
+			f.push_back(f_vector(m));
+			degrees.push_back(face_degrees(m));
+			EXPECT_EQ(f.back(), e.f) << "level " << k;
+			EXPECT_EQ(degrees.back(), e.degrees) << "level " << k;
+			EXPECT_EQ(euler_characteristic(m), 1);
+			expect_ok(check_integrity(m));
+			for (uint32 j = 0; j <= k; ++j)
+			{
+				set_current_level(m, j);
+				EXPECT_EQ(f_vector(m), f[j]);
+				EXPECT_EQ(face_degrees(m), degrees[j]);
+			}
+		}
+	}
+}
+
+TEST(MRMap2, RemovingLevelsGivesBackTheLevelsBelow)
+{
+	MRMap2 m(mixed_grid());
+	std::vector<std::vector<std::vector<uint32>>> faces{faces_as_darts(m)};
+	std::vector<uint32> darts{nb_darts(finest_map(m))};
+	for (uint32 k = 1; k <= 3; ++k)
+	{
+		add_level(m, Refinement::Mixed);
+		faces.push_back(faces_as_darts(m));
+		darts.push_back(nb_darts(finest_map(m)));
+	}
+	// the faces of level j, read below finer levels, are those the level had
+	for (uint32 j = 0; j <= 3; ++j)
+		EXPECT_EQ(faces_as_darts(level_view(m, j)), faces[j]);
+	for (uint32 k = 3; k >= 1; --k)
+	{
+		set_current_level(m, 1);
+		remove_finest_level(m);
+		EXPECT_EQ(max_level(m), k - 1);
+		EXPECT_EQ(current_level(m), std::min(1u, k - 1));
+		EXPECT_EQ(nb_darts(finest_map(m)), darts[k - 1]);
+		EXPECT_EQ(nb_darts_at_level(m, k), 0u);
+		expect_ok(check_integrity(m));
+		expect_ok(check_integrity(finest_map(m)));
+		for (uint32 j = 0; j < k; ++j)
+			EXPECT_EQ(faces_as_darts(level_view(m, j)), faces[j]);
+	}
+	EXPECT_THROW(remove_finest_level(m), std::invalid_argument);
+	// and the levels come back the same
+	add_level(m, Refinement::Mixed);
+	EXPECT_EQ(f_vector(m), f_vector(level_view(m, 1)));
+	EXPECT_EQ(nb_darts(finest_map(m)), darts[1]);
+	expect_ok(check_integrity(m));
+}
+
+TEST(MRMap2, LevelRelations)
+{
+	MRMap2 m(mixed_grid());
+	add_level(m, Refinement::Mixed);
+	add_level(m, Refinement::Quadrangular);
+	add_level(m, Refinement::Quadrangular);
+	for (uint32 l = 0; l <= 3; ++l)
+	{
+		const MRLevelView2 v = level_view(m, l);
+		uint32 seen = 0;
+		foreach_dart(v, [&](Dart d) {
+			++seen;
+			EXPECT_LE(dart_level(m, d), l);
+			EXPECT_TRUE(is_dart_valid(v, d));
+			EXPECT_EQ(phi_1(v, phi1(v, d)), d);
+			EXPECT_EQ(phi2(v, phi2(v, d)), d);
+			EXPECT_NE(phi2(v, d), d);
+			// phi2(d) leaves the vertex of the finest map where phi1(d) starts
+			EXPECT_TRUE(same_orbit(finest_map(m), CMap2::Vertex(phi2(v, d)), CMap2::Vertex(phi1(v, d))));
+		});
+		EXPECT_EQ(seen, nb_darts(v));
+		// vertices of level <= l keep their degree from their level on
+		uint32 degree_sum = 0;
+		foreach_cell(v, [&](MRMap2::Vertex x) { degree_sum += degree(v, x); });
+		EXPECT_EQ(degree_sum, 2 * nb_cells<MRMap2::Edge>(v));
+	}
+	// a level-0 dart is valid everywhere, a level-3 one only at level 3
+	Dart young;
+	foreach_dart(finest_map(m), [&](Dart d) {
+		if (dart_level(m, d) != 3)
+			return true;
+		young = d;
+		return false;
+	});
+	EXPECT_FALSE(is_dart_valid(level_view(m, 2), young));
+	EXPECT_TRUE(is_dart_valid(level_view(m, 3), young));
+}
+
+TEST(MRMap2, LocalTraversalsAtALevel)
+{
+	MRMap2 m(cube());
+	add_level(m, Refinement::Quadrangular);
+	add_level(m, Refinement::Quadrangular);
+	const MRLevelView2 coarse = level_view(m, 0);
+	// at level 0 every vertex is a cube corner of degree 3, its 3 neighbours corners
+	foreach_cell(coarse, [&](MRMap2::Vertex v) {
+		EXPECT_EQ(degree(coarse, v), 3u);
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_edge(coarse, v, [&](MRMap2::Vertex w) {
+			EXPECT_EQ(dart_level(m, w.dart), 0u);
+			++n;
+		});
+		EXPECT_EQ(n, 3u);
+		uint32 faces = 0, around = 0;
+		foreach_incident_face(coarse, v, [&](MRMap2::Face) { ++faces; });
+		foreach_adjacent_vertex_through_face(coarse, v, [&](MRMap2::Vertex) { ++around; });
+		EXPECT_EQ(faces, 3u);
+		EXPECT_EQ(around, 3u + 3u);
+	});
+	foreach_cell(coarse, [&](MRMap2::Face f) {
+		EXPECT_EQ(codegree(coarse, f), 4u);
+		uint32 n = 0;
+		foreach_adjacent_face_through_edge(coarse, f, [&](MRMap2::Face) { ++n; });
+		EXPECT_EQ(n, 4u);
+		n = 0;
+		foreach_adjacent_face_through_vertex(coarse, f, [&](MRMap2::Face) { ++n; });
+		EXPECT_EQ(n, 4u);
+	});
+	foreach_cell(coarse, [&](MRMap2::Edge e) {
+		EXPECT_EQ(degree(coarse, e), 2u);
+		EXPECT_FALSE(is_incident_to_boundary(coarse, e));
+		uint32 n = 0;
+		foreach_adjacent_edge_through_vertex(coarse, e, [&](MRMap2::Edge) { ++n; });
+		EXPECT_EQ(n, 4u);
+		n = 0;
+		foreach_adjacent_edge_through_face(coarse, e, [&](MRMap2::Edge) { ++n; });
+		EXPECT_EQ(n, 6u);
+	});
+	// the component, at each level
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView2 v = level_view(m, l);
+		EXPECT_EQ(nb_cells<MRMap2::Volume>(v), 1u);
+		foreach_cell(v, [&](MRMap2::Volume w) {
+			uint32 vertices = 0, edges = 0, faces = 0;
+			foreach_incident_vertex(v, w, [&](MRMap2::Vertex) { ++vertices; });
+			foreach_incident_edge(v, w, [&](MRMap2::Edge) { ++edges; });
+			foreach_incident_face(v, w, [&](MRMap2::Face) { ++faces; });
+			EXPECT_EQ((std::vector<uint32>{vertices, edges, faces}), f_vector(v));
+		});
+	}
+}
+
+TEST(MRMap2, BoundaryAtEveryLevel)
+{
+	MRMap2 m(mixed_grid());
+	const uint32 boundary_edges0 = [&] {
+		uint32 n = 0;
+		foreach_cell(m, [&](MRMap2::Edge e) { n += is_incident_to_boundary(m, e); });
+		return n;
+	}();
+	add_level(m, Refinement::Mixed);
+	add_level(m, Refinement::Mixed);
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView2 v = level_view(m, l);
+		uint32 n = 0, on_boundary = 0;
+		foreach_cell(v, [&](MRMap2::Edge e) {
+			if (is_incident_to_boundary(v, e))
+			{
+				++n;
+				EXPECT_EQ(degree(v, e), 1u);
+			}
+		});
+		foreach_cell(v, [&](MRMap2::Vertex x) { on_boundary += is_incident_to_boundary(v, x); });
+		EXPECT_EQ(n, boundary_edges0 << l);
+		EXPECT_EQ(on_boundary, n); // the boundary is one cycle
+	}
+}
+
+TEST(MRMap2, ParallelAndConcurrentReadsAgree)
+{
+	MRMap2 m(icosahedron());
+	for (int k = 0; k < 3; ++k)
+		add_level(m, Refinement::Triangular);
+	const uint32 workers = thread_pool()->nb_workers();
+	thread_pool()->set_nb_workers(2);
+	for (uint32 l = 0; l <= 3; ++l)
+	{
+		const MRLevelView2 v = level_view(m, l);
+		std::vector<std::atomic<uint32>> hits(nb_darts(finest_map(m)) + 16);
+		parallel_foreach_cell(v, [&](MRMap2::Vertex x) { hits[x.dart.index]++; });
+		uint32 total = 0, sequential = 0;
+		for (auto& h : hits)
+		{
+			EXPECT_LE(h.load(), 1u);
+			total += h.load();
+		}
+		foreach_cell(v, [&](MRMap2::Vertex x) {
+			EXPECT_EQ(hits[x.dart.index].load(), 1u);
+			++sequential;
+		});
+		EXPECT_EQ(total, sequential);
+		EXPECT_EQ(total, nb_cells<MRMap2::Vertex>(v));
+	}
+	thread_pool()->set_nb_workers(workers);
+	// two levels read at once from two threads
+	std::vector<uint32> f0, f3;
+	std::thread a([&] { f0 = f_vector(level_view(m, 0)); });
+	std::thread b([&] { f3 = f_vector(level_view(m, 3)); });
+	a.join();
+	b.join();
+	EXPECT_EQ(f0, (std::vector<uint32>{12, 30, 20}));
+	EXPECT_EQ(f3, (std::vector<uint32>{10 * 64 + 2, 30 * 64, 20 * 64}));
+}
+
+TEST(MRMap2, RefusalsLeaveTheMapUnchanged)
+{
+	MRMap2 m(cube());
+	EXPECT_THROW(add_level(m, Refinement::Triangular), std::invalid_argument);
+	EXPECT_THROW(add_level(m, Refinement::Hexahedral), std::invalid_argument);
+	EXPECT_EQ(max_level(m), 0u);
+	EXPECT_EQ(nb_darts(finest_map(m)), 24u);
+	EXPECT_THROW(set_current_level(m, 1), std::out_of_range);
+	EXPECT_THROW(level_view(m, 1), std::out_of_range);
+	EXPECT_THROW(remove_finest_level(m), std::invalid_argument);
+	add_level(m, Refinement::Quadrangular);
+	EXPECT_THROW(add_level(m, Refinement::Triangular), std::invalid_argument);
+	EXPECT_EQ(nb_darts(finest_map(m)), 96u);
+	expect_ok(check_integrity(m));
+}
+
+TEST(MRMap2, IntegrityFindsBrokenLabels)
+{
+	const auto first_dart_of_level = [](const MRMap2& m, uint32 l) {
+		Dart r;
+		foreach_dart(finest_map(m), [&](Dart d) {
+			if (dart_level(m, d) != l)
+				return true;
+			r = d;
+			return false;
+		});
+		return r;
+	};
+	{
+		MRMap2 m(cube());
+		add_level(m, Refinement::Quadrangular);
+		(*detail::mr_state_of(m).edge_id)[first_dart_of_level(m, 1).index] = 3;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::EdgeIdWrong));
+	}
+	{
+		MRMap2 m(cube());
+		add_level(m, Refinement::Quadrangular);
+		(*detail::mr_state_of(m).level)[first_dart_of_level(m, 0).index] = 1;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::LevelCountWrong));
+	}
+	{
+		// the second piece of a cut edge given another id than the first:
+		// phi1 at level 0 turns into the other side of the edge
+		MRMap2 m(cube());
+		add_level(m, Refinement::Quadrangular);
+		detail::MRState2& s = detail::mr_state_of(m);
+		const Dart back = phi2(s.map, first_dart_of_level(m, 0)); // midpoint -> origin of the edge
+		Dart piece;                                               // midpoint -> end of the edge
+		foreach_dart_of_orbit(s.map, CMap2::Vertex(back), [&](Dart x) {
+			if (x == back || dart_level(m, phi2(s.map, x)) != 0)
+				return true;
+			piece = x;
+			return false;
+		});
+		ASSERT_TRUE(piece.is_valid());
+		for (Dart d : {piece, phi2(s.map, piece)})
+			(*s.edge_id)[d.index] = 1;
+		const IntegrityReport r = check_integrity(m);
+		EXPECT_FALSE(r.ok());
+		EXPECT_TRUE(check_integrity(level_view(m, 1)).ok()) << "the finest level does not read the ids";
+	}
+}
