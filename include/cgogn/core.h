@@ -22,6 +22,7 @@
 #include <cgogn/core/map/indexing.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/mrmap2.h>
+#include <cgogn/core/map/mrmap2_attributes.h>
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/operators/cmap1.h>

@@ -4,6 +4,8 @@
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/local_cmap2.h>
 
+#include "mrmap2_indexing.h"
+
 #include <cassert>
 #include <stdexcept>
 #include <string>
@@ -20,6 +22,17 @@ MRMap2::MRMap2(CMap2&& base)
 	state_.edge_id = darts.add_attribute<uint8>("__mr_edge_id", 0);
 	assert(state_.level && state_.edge_id); // no CMap2 has them: only MRMap2 adds them
 	state_.darts_per_level = {nb_darts(state_.map)};
+	// the orbits the map indexes become level-0 lines of the hierarchy, which
+	// indexes them from now on (the finest map's operators run without indices)
+	for (uint32 slot = 0; slot < 4; ++slot)
+	{
+		AttributeArray<uint32>*& flat = detail::state_of(state_.map).cell_index[orbit_index(detail::MR2_ORBITS[slot])];
+		if (flat == nullptr)
+			continue;
+		state_.cells[slot].index = flat;
+		flat = nullptr;
+		detail::mr_add_line_attributes(state_, slot);
+	}
 }
 
 void set_current_level(MRMap2& m, uint32 l)
@@ -86,11 +99,11 @@ void refine_triangle(detail::MRState2& s, NewDarts& labels, const Dart (&c)[3])
 {
 	const auto id = [&](Dart d) { return (*s.edge_id)[d.index]; };
 	// cut off the corners at the ends of c[0], c[1] and c[2] in turn
-	const CMap2::Edge e0 = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[1]));
+	const CMap2::Edge e0 = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[1]), false);
 	labels.label_edge(e0.dart, new_edge_id(id(c[0]), id(c[1])));
-	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(c[1]), CMap2::Vertex(c[2]));
+	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(c[1]), CMap2::Vertex(c[2]), false);
 	labels.label_edge(e1.dart, new_edge_id(id(c[1]), id(c[2])));
-	const CMap2::Edge e2 = cut_face(s.map, CMap2::Vertex(c[2]), CMap2::Vertex(e0.dart));
+	const CMap2::Edge e2 = cut_face(s.map, CMap2::Vertex(c[2]), CMap2::Vertex(e0.dart), false);
 	labels.label_edge(e2.dart, new_edge_id(id(c[2]), id(c[0])));
 }
 
@@ -101,19 +114,19 @@ void refine_quadrangular(detail::MRState2& s, NewDarts& labels, const std::vecto
 	const auto id = [&](Dart d) { return (*s.edge_id)[d.index]; };
 	// an inner edge differs from the edge whose midpoint it leaves
 	const auto inner_id = [&](Dart mid) { return new_edge_id(id(mid), id(mid)); };
-	const CMap2::Edge across = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[2]));
+	const CMap2::Edge across = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[2]), false);
 	const Dart a = across.dart; // midpoint 0 -> midpoint 2
-	const CMap2::Vertex centre = cut_edge(s.map, across);
+	const CMap2::Vertex centre = cut_edge(s.map, across, false);
 	labels.label_edge(a, inner_id(c[0]));
 	labels.label_edge(centre.dart, inner_id(c[2])); // centre -> midpoint 2
 	// the centre's dart in the face of midpoint 1
-	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(phi2(s.map, a)), CMap2::Vertex(c[1]));
+	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(phi2(s.map, a)), CMap2::Vertex(c[1]), false);
 	labels.label_edge(e1.dart, inner_id(c[1]));
 	// midpoints 3 ... k - 1 lie in the face of centre.dart, each cut leaving the next in the new part
 	Dart from_centre = centre.dart;
 	for (std::size_t i = 3; i < c.size(); ++i)
 	{
-		const CMap2::Edge e = cut_face(s.map, CMap2::Vertex(from_centre), CMap2::Vertex(c[i]));
+		const CMap2::Edge e = cut_face(s.map, CMap2::Vertex(from_centre), CMap2::Vertex(c[i]), false);
 		labels.label_edge(e.dart, inner_id(c[i]));
 		from_centre = e.dart;
 	}
@@ -158,7 +171,7 @@ void add_level(MRMap2& m, Refinement r)
 	for (Dart d : edges)
 	{
 		const uint8 id = (*s.edge_id)[d.index];
-		const CMap2::Vertex mid = cut_edge(map, CMap2::Edge(d));
+		const CMap2::Vertex mid = cut_edge(map, CMap2::Edge(d), false);
 		labels.label(mid.dart, id);
 		labels.label(phi2(map, d), id);
 	}
@@ -181,6 +194,9 @@ void add_level(MRMap2& m, Refinement r)
 	}
 	s.darts_per_level.back() = labels.count();
 	s.current_level = finest + 1;
+	for (uint32 slot = 0; slot < 4; ++slot)
+		if (s.cells[slot].index != nullptr)
+			detail::mr_index_level(s, slot, finest + 1);
 }
 
 void remove_finest_level(MRMap2& m)
@@ -203,7 +219,7 @@ void remove_finest_level(MRMap2& m)
 			found.push_back(v.dart);
 	});
 	for (Dart d : found)
-		merge_incident_faces(map, CMap2::Vertex(d));
+		merge_incident_faces(map, CMap2::Vertex(d), false);
 	// the inner edges left: those of the middle triangles
 	found.clear();
 	foreach_dart(map, [&](Dart d) {
@@ -211,7 +227,7 @@ void remove_finest_level(MRMap2& m)
 			found.push_back(d);
 	});
 	for (Dart d : found)
-		merge_incident_faces(map, CMap2::Edge(d));
+		merge_incident_faces(map, CMap2::Edge(d), false);
 	// the midpoints: each keeps its two new darts, which go with it
 	found.clear();
 	foreach_dart(map, [&](Dart d) {
@@ -219,7 +235,10 @@ void remove_finest_level(MRMap2& m)
 			found.push_back(d);
 	});
 	for (Dart d : found)
-		merge_incident_edges(map, CMap2::Vertex(d));
+		merge_incident_edges(map, CMap2::Vertex(d), false);
+	for (uint32 slot = 0; slot < 4; ++slot)
+		if (s.cells[slot].index != nullptr)
+			detail::mr_unindex_level(s, slot, finest);
 	s.darts_per_level.pop_back();
 	s.current_level = std::min(s.current_level, finest - 1);
 }

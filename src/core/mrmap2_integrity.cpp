@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/properties/integrity.h>
 
+#include "mrmap2_indexing.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -95,7 +97,82 @@ public:
 		});
 	}
 
+	/// The chains of lines of an indexed slot: each line refines a live line
+	/// of a lower level (so that reading a line at a level ends). Returns
+	/// false when one does not.
+	bool check_chains(uint32 slot)
+	{
+		const detail::MRCellIndex& ci = s_.cells[slot];
+		const AttributeContainer& c = container(slot);
+		const auto key = c.key().view();
+		bool ok = true;
+		for (uint32 i = 0, end = c.end_index(); i < end; ++i)
+		{
+			const uint32 down = (*ci.down)[i];
+			if (key[i] == INVALID_INDEX || down == INVALID_INDEX)
+				continue;
+			if (down >= end || key[down] == INVALID_INDEX || (*ci.level)[down] >= (*ci.level)[i] ||
+				(*ci.replaced)[down] > (*ci.level)[i])
+			{
+				ok = false;
+				add(IntegrityError::Kind::LevelLineWrong, INVALID_INDEX,
+					"line " + std::to_string(i) + " of orbit " + std::string(orbit_name(detail::MR2_ORBITS[slot])) +
+						" refines a line that is free, not coarser, or not replaced by then");
+			}
+		}
+		return ok;
+	}
+
+	/// The lines of an indexed slot at level l.
+	void check_lines(uint32 slot, uint32 l)
+	{
+		const std::string at = std::string(" of orbit ") + std::string(orbit_name(detail::MR2_ORBITS[slot])) +
+							   " at level " + std::to_string(l);
+		const detail::MRCellIndex& ci = s_.cells[slot];
+		const AttributeContainer& c = container(slot);
+		const auto key = c.key().view();
+		std::vector<uint8> used(c.end_index(), 0);
+		uint32 nb_cells = 0;
+		detail::mr_foreach_cell_by_darts(s_, slot, l, [&](Dart d) {
+			++nb_cells;
+			const uint32 i = detail::mr_index_of(s_, l, slot, d);
+			if (i == INVALID_INDEX || i >= c.end_index() || key[i] == INVALID_INDEX)
+			{
+				add(IntegrityError::Kind::MissingIndex, d.index, "cell without a live line" + at);
+				return;
+			}
+			if ((*ci.level)[i] > l || (*ci.replaced)[i] <= l)
+				add(IntegrityError::Kind::LevelLineWrong, d.index, "line " + std::to_string(i) + " does not hold" + at);
+			bool representative = false;
+			detail::mr_foreach_dart_of_slot(s_, slot, l, d, [&](Dart x) {
+				representative = representative || x.index == key[i];
+				if (detail::mr_index_of(s_, l, slot, x) != i)
+					add(IntegrityError::Kind::IndexNotConstant, x.index,
+						"two darts of a cell read different lines" + at);
+			});
+			if (!representative)
+				add(IntegrityError::Kind::BadRepresentative, d.index,
+					"the representative of line " + std::to_string(i) + " is not a dart of its cell" + at);
+			if (used[i]++ == 1)
+				add(IntegrityError::Kind::IndexShared, d.index, "line " + std::to_string(i) + " shared" + at);
+		});
+		uint32 nb_lines = 0;
+		detail::mr_foreach_line_at_level(s_, slot, l, 0, c.end_index(), [&](uint32) { ++nb_lines; });
+		if (nb_lines != nb_cells)
+			add(IntegrityError::Kind::LevelLineWrong, INVALID_INDEX,
+				std::to_string(nb_lines) + " lines hold for " + std::to_string(nb_cells) + " cells" + at);
+		if (slot == 2)
+			foreach_dart(s_.map, [&](Dart d) {
+				if (level(d) <= l && is_boundary(s_.map, d) && (*ci.index)[d.index] != INVALID_INDEX)
+					add(IntegrityError::Kind::BoundaryCellIndexed, d.index, "boundary face with a line" + at);
+			});
+	}
+
 private:
+	const AttributeContainer& container(uint32 slot) const
+	{
+		return *detail::state_of(s_.map).cells[orbit_index(detail::MR2_ORBITS[slot])];
+	}
 	uint32 level(Dart d) const
 	{
 		return (*s_.level)[d.index];
@@ -175,6 +252,15 @@ IntegrityReport check_levels(const detail::MRState2& s, uint32 first, uint32 las
 		return r;
 	for (uint32 l = first; l <= last; ++l)
 		c.check_level(l);
+	if (!r.ok())
+		return r; // the lines are read through the level relations
+	for (uint32 slot = 0; slot < 4; ++slot)
+	{
+		if (s.cells[slot].index == nullptr || !c.check_chains(slot))
+			continue;
+		for (uint32 l = first; l <= last; ++l)
+			c.check_lines(slot, l);
+	}
 	return r;
 }
 

@@ -468,3 +468,248 @@ TEST(MRMap2, IntegrityFindsBrokenLabels)
 		EXPECT_TRUE(check_integrity(level_view(m, 1)).ok()) << "the finest level does not read the ids";
 	}
 }
+
+namespace
+{
+/// The first dart of level l of the finest map.
+Dart first_dart_of_level(const MRMap2& m, uint32 l)
+{
+	Dart r;
+	foreach_dart(finest_map(m), [&](Dart d) {
+		if (dart_level(m, d) != l)
+			return true;
+		r = d;
+		return false;
+	});
+	return r;
+}
+} // namespace
+
+TEST(MRMap2Attributes, VerticesHaveAValueAtEveryLevel)
+{
+	CMap2 c = cube();
+	auto h0 = add_attribute<double, CMap2::Vertex>(c, "h");
+	double next = 1.0;
+	foreach_cell(c, [&](CMap2::Vertex v) { (*h0)[v] = next++; });
+	MRMap2 m(std::move(c));
+	auto h = get_attribute<double, MRMap2::Vertex>(m, "h");
+	ASSERT_TRUE(h);
+	std::map<uint32, double> at0; // by dart
+	foreach_cell(m, [&](MRMap2::Vertex v) { at0[v.dart.index] = value<double>(m, h, v); });
+	ASSERT_EQ(at0.size(), 8u);
+	add_level(m, Refinement::Quadrangular);
+	expect_ok(check_integrity(m));
+	const MRLevelView2 v0 = level_view(m, 0), v1 = level_view(m, 1);
+	// old vertices start level 1 with their value, in a line of their own
+	for (auto [d, x] : at0)
+	{
+		EXPECT_EQ(value<double>(v1, h, MRMap2::Vertex(Dart(d))), x);
+		EXPECT_NE(index_of(v0, MRMap2::Vertex(Dart(d))), index_of(v1, MRMap2::Vertex(Dart(d))));
+	}
+	// new vertices: the midpoint of their edge (its ends are the old
+	// neighbours), the centroid of their face (the mean of its corners, which
+	// is the mean of the midpoints around it)
+	uint32 midpoints = 0, centres = 0;
+	foreach_cell(v1, [&](MRMap2::Vertex v) {
+		if (dart_level(m, v.dart) == 0)
+			return;
+		double old_sum = 0.0, all_sum = 0.0;
+		uint32 nb_old = 0, nb = 0;
+		foreach_adjacent_vertex_through_edge(v1, v, [&](MRMap2::Vertex w) {
+			all_sum += value<double>(v1, h, w);
+			++nb;
+			if (dart_level(m, w.dart) == 0)
+			{
+				old_sum += value<double>(v1, h, w);
+				++nb_old;
+			}
+		});
+		if (nb_old == 2)
+		{
+			EXPECT_DOUBLE_EQ(value<double>(v1, h, v), old_sum / 2);
+			++midpoints;
+		}
+		else
+		{
+			EXPECT_EQ(nb_old, 0u);
+			EXPECT_DOUBLE_EQ(value<double>(v1, h, v), all_sum / nb);
+			++centres;
+		}
+	});
+	EXPECT_EQ(midpoints, 12u);
+	EXPECT_EQ(centres, 6u);
+	// writing at level 1 leaves level 0 alone
+	set_current_level(m, 1);
+	foreach_cell(m, [&](MRMap2::Vertex v) { value<double>(m, h, v) = -1.0; });
+	for (auto [d, x] : at0)
+	{
+		EXPECT_EQ(value<double>(v0, h, MRMap2::Vertex(Dart(d))), x);
+		EXPECT_EQ(value<double>(v1, h, MRMap2::Vertex(Dart(d))), -1.0);
+		EXPECT_EQ((*h)[MRMap2::Vertex(Dart(d))], -1.0) << "operator[] reads the finest level";
+	}
+	// removing level 1 gives back level 0, lines and values
+	remove_finest_level(m);
+	expect_ok(check_integrity(m));
+	for (auto [d, x] : at0)
+		EXPECT_EQ(value<double>(m, h, MRMap2::Vertex(Dart(d))), x);
+	uint32 lines = 0;
+	const AttributeContainer& vc = *detail::state_of(finest_map(m)).cells[orbit_index(Orbit::PHI21)];
+	for (uint32 i = 0; i < vc.end_index(); ++i)
+		lines += vc.key()[i] != INVALID_INDEX;
+	EXPECT_EQ(lines, 8u);
+}
+
+TEST(MRMap2Attributes, RefinedEdgesAndFacesKeepTheirLines)
+{
+	MRMap2 m(cube());
+	auto tag = add_attribute<uint32, MRMap2::Edge>(m, "tag");
+	auto area = add_attribute<double, MRMap2::Face>(m, "area");
+	uint32 next = 1;
+	foreach_cell(m, [&](MRMap2::Edge e) { value<uint32>(m, tag, e) = next++; });
+	foreach_cell(m, [&](MRMap2::Face f) { value<double>(m, area, f) = double(next++); });
+	std::map<uint32, std::pair<uint32, uint32>> edges0; // dart -> (line, tag)
+	foreach_cell(m, [&](MRMap2::Edge e) { edges0[e.dart.index] = {index_of(m, e), value<uint32>(m, tag, e)}; });
+	add_level(m, Refinement::Quadrangular);
+	add_level(m, Refinement::Quadrangular);
+	expect_ok(check_integrity(m));
+	const MRLevelView2 v0 = level_view(m, 0), v1 = level_view(m, 1), v2 = level_view(m, 2);
+	for (auto [d, lt] : edges0)
+	{
+		const MRMap2::Edge e{Dart(d)};
+		EXPECT_EQ(index_of(v0, e), lt.first);
+		EXPECT_EQ(value<uint32>(v0, tag, e), lt.second);
+		// the piece of the edge at d, at the finer levels: a line of its own,
+		// a copy of the value
+		EXPECT_NE(index_of(v1, e), lt.first);
+		EXPECT_NE(index_of(v2, e), index_of(v1, e));
+		EXPECT_EQ(value<uint32>(v2, tag, e), lt.second);
+	}
+	// inner edges of level 1 have no parent: the default value
+	uint32 inner = 0;
+	foreach_cell(v1, [&](MRMap2::Edge e) {
+		if (dart_level(m, e.dart) == 1 && dart_level(m, phi2(v1, e.dart)) == 1)
+		{
+			EXPECT_EQ(value<uint32>(v1, tag, e), 0u);
+			++inner;
+		}
+	});
+	EXPECT_EQ(inner, 24u);
+	// each child face has its parent's value; the parent keeps its own
+	foreach_cell(v2, [&](MRMap2::Face f) { EXPECT_GE(value<double>(v2, area, f), 13.0); });
+	set_current_level(m, 2);
+	foreach_cell(m, [&](MRMap2::Face f) { value<double>(m, area, f) = 0.5; });
+	uint32 parents = 0;
+	foreach_cell(v0, [&](MRMap2::Face f) {
+		EXPECT_GE(value<double>(v0, area, f), 13.0);
+		++parents;
+	});
+	EXPECT_EQ(parents, 6u);
+	EXPECT_EQ(nb_cells<MRMap2::Face>(v2), 96u);
+	remove_finest_level(m);
+	remove_finest_level(m);
+	expect_ok(check_integrity(m));
+	for (auto [d, lt] : edges0)
+	{
+		EXPECT_EQ(index_of(m, MRMap2::Edge(Dart(d))), lt.first);
+		EXPECT_EQ(value<uint32>(m, tag, MRMap2::Edge(Dart(d))), lt.second);
+	}
+}
+
+TEST(MRMap2Attributes, AnOrbitIndexedLateGetsLinesAtEveryLevel)
+{
+	for (Refinement r : {Refinement::Mixed, Refinement::Quadrangular})
+	{
+		MRMap2 m(mixed_grid());
+		add_level(m, r);
+		add_level(m, r);
+		auto fv = add_attribute<double, MRMap2::Face>(m, "f");
+		auto ev = add_attribute<double, MRMap2::Edge>(m, "e");
+		auto vv = add_attribute<double, MRMap2::Vertex>(m, "v");
+		auto cv = add_attribute<double, MRMap2::Volume>(m, "c");
+		ASSERT_TRUE(fv && ev && vv && cv);
+		EXPECT_FALSE((add_attribute<double, MRMap2::Face>(m, "f")));
+		EXPECT_FALSE((add_attribute<double, MRMap2::Face>(m, "__f")));
+		expect_ok(check_integrity(m));
+		// the traversals of indexed orbits walk the lines: the same cells as the darts give
+		for (uint32 l = 0; l <= 2; ++l)
+		{
+			const MRLevelView2 v = level_view(m, l);
+			EXPECT_EQ(nb_cells<MRMap2::Face>(v), f_vector(v)[2]);
+			std::vector<uint32> by_lines, by_darts;
+			foreach_cell(v, [&](MRMap2::Edge e) { by_lines.push_back(index_of(v, e)); });
+			foreach_cell(v, [&](MRMap2::HalfEdge d) {
+				const Dart e = phi2(v, d.dart);
+				if (d.dart.index < e.index || is_boundary(v, e))
+					by_darts.push_back(index_of(v, MRMap2::Edge(d.dart)));
+			});
+			std::sort(by_lines.begin(), by_lines.end());
+			std::sort(by_darts.begin(), by_darts.end());
+			EXPECT_EQ(by_lines, by_darts);
+		}
+		EXPECT_TRUE(remove_attribute(m, fv));
+		EXPECT_FALSE((get_attribute<double, MRMap2::Face>(m, "f")));
+		remove_finest_level(m);
+		expect_ok(check_integrity(m));
+		add_level(m, r);
+		expect_ok(check_integrity(m));
+	}
+}
+
+TEST(MRMap2Attributes, IntegrityFindsBrokenLines)
+{
+	{
+		MRMap2 m(cube());
+		add_attribute<double, MRMap2::Face>(m, "f");
+		add_level(m, Refinement::Quadrangular);
+		detail::MRState2& s = detail::mr_state_of(m);
+		const Dart d = first_dart_of_level(m, 1);
+		// a face of level 1 made to read another face's line
+		const uint32 other = (*s.cells[2].index)[phi2(s.map, d).index];
+		(*s.cells[2].index)[d.index] = other;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::IndexNotConstant));
+	}
+	{
+		MRMap2 m(cube());
+		add_attribute<double, MRMap2::Vertex>(m, "v");
+		add_level(m, Refinement::Quadrangular);
+		detail::MRState2& s = detail::mr_state_of(m);
+		// a level-1 vertex line refining a line of the same level
+		const uint32 i = (*s.cells[0].index)[first_dart_of_level(m, 0).index];
+		(*s.cells[0].down)[i] = i;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::LevelLineWrong));
+	}
+	{
+		MRMap2 m(cube());
+		add_attribute<double, MRMap2::Edge>(m, "e");
+		add_level(m, Refinement::Quadrangular);
+		detail::MRState2& s = detail::mr_state_of(m);
+		// a parent edge line marked as never replaced: it holds at level 1 too
+		const Dart d = first_dart_of_level(m, 0);
+		const uint32 parent = detail::mr_index_of(s, 0, 1, d);
+		(*s.cells[1].replaced)[parent] = detail::MR_NOT_REPLACED;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::LevelLineWrong));
+	}
+}
+
+TEST(MRMap2Attributes, MarkersAtALevel)
+{
+	MRMap2 m(cube());
+	add_level(m, Refinement::Quadrangular);
+	const MRLevelView2 v0 = level_view(m, 0);
+	CellMarker<MRLevelView2, MRMap2::Face> marked(v0);
+	uint32 n = 0;
+	foreach_cell(v0, [&](MRMap2::Face f) {
+		if (n++ % 2 == 0)
+			marked.mark(f);
+	});
+	uint32 seen = 0;
+	foreach_cell(v0, [&](MRMap2::Face f) {
+		foreach_dart_of_orbit(v0, f,
+							  [&](Dart d) { EXPECT_EQ(marked.is_marked(MRMap2::Face(d)), marked.is_marked(f)); });
+		seen += marked.is_marked(f);
+	});
+	EXPECT_EQ(seen, 3u);
+	CellMarker<MRMap2, MRMap2::Vertex> vm(m);
+	foreach_cell(m, [&](MRMap2::Vertex x) { vm.mark(x); });
+	foreach_cell(m, [&](MRMap2::Vertex x) { EXPECT_TRUE(vm.is_marked(x)); });
+}

@@ -4,6 +4,7 @@
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/mesh_traits.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -14,6 +15,38 @@ class MRMap2;
 
 namespace detail
 {
+
+/// The lines of one orbit of a multiresolution map, in the container of that
+/// orbit in the finest map (whose own indexing of the orbit is off: its
+/// operators run with set_indices = false). A cell has a line at every level
+/// where it differs from the level below: a vertex at every level from its
+/// creation on, an edge or face from its creation until it is refined (its
+/// children get lines of their own), a connected component once. Each dart
+/// holds the line of its cell at the finest level; `down` leads from a line
+/// to the line of the same place one version coarser.
+struct MRCellIndex
+{
+	AttributeArray<uint32>* index = nullptr;         ///< Per dart: its finest cell's line; nullptr while not indexed.
+	std::shared_ptr<AttributeArray<uint32>> down;    ///< Per line: the line it refines (INVALID_INDEX: none).
+	std::shared_ptr<AttributeArray<uint8>> level;    ///< Per line: the level from which the line holds.
+	std::shared_ptr<AttributeArray<uint8>> replaced; ///< Per line: the level from which it does not (255: never).
+};
+
+/// The replaced level of a line that holds up to the finest level.
+inline constexpr uint8 MR_NOT_REPLACED = 255;
+
+/// The slot of an orbit in MRState2::cells: vertex, edge, face, component.
+constexpr uint32 mr_slot(Orbit o)
+{
+	return o == Orbit::PHI21 ? 0 : o == Orbit::PHI2 ? 1 : o == Orbit::PHI1 ? 2 : 3;
+}
+/// Whether the orbit can carry attributes on a multiresolution 2-map.
+constexpr bool is_mr2_orbit(Orbit o)
+{
+	return o == Orbit::PHI21 || o == Orbit::PHI2 || o == Orbit::PHI1 || o == Orbit::PHI1_PHI2;
+}
+/// The orbits of the slots of MRState2::cells.
+inline constexpr Orbit MR2_ORBITS[4] = {Orbit::PHI21, Orbit::PHI2, Orbit::PHI1, Orbit::PHI1_PHI2};
 
 /// What a multiresolution 2-map holds (see MRMap2): the finest map and the
 /// labels of its darts. Not part of the API.
@@ -29,6 +62,8 @@ struct MRState2
 	/// max_level + 1.
 	std::vector<uint32> darts_per_level;
 	uint32 current_level = 0;
+	/// The lines of vertices, edges, faces and connected components (see mr_slot).
+	std::array<MRCellIndex, 4> cells;
 };
 
 MRState2& mr_state_of(MRMap2& m);
@@ -118,6 +153,12 @@ public:
 
 	/// The view of m at level l. Precondition: l <= max_level(m). O(1).
 	MRLevelView2(const MRMap2& m, uint32 l) : state_(&detail::mr_state_of(m)), level_(l)
+	{
+	}
+
+	/// The view of the hierarchy in state s at level l (core's
+	/// implementation only, for a hierarchy being built). O(1).
+	MRLevelView2(const detail::MRState2& s, uint32 l) : state_(&s), level_(l)
 	{
 	}
 

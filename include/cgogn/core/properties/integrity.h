@@ -47,6 +47,7 @@ struct IntegrityError
 		LevelCountWrong,     ///< a multiresolution map's per-level dart count disagrees with its darts' levels
 		LevelRelationBroken, ///< phi1, phi_1 or phi2 at a level leaves the level, does not end, or is not inverted
 		EdgeIdWrong,         ///< an edge id is above 2, or the two darts of a finest edge have different ids
+		LevelLineWrong,      ///< a multiresolution line holds at a level where its cell is not, or refines a wrong line
 	};
 	Kind kind;                   ///< The violated invariant.
 	Orbit orbit = Orbit::DART;   ///< The orbit of the cell or line at fault; DART for errors of the relations.
@@ -136,8 +137,12 @@ IntegrityReport check_integrity(const IncidenceGraph& ig);
 /// <= l whose walks end (a broken label would make them loop) and phi_1 is
 /// its inverse, phi2 a fixed-point-free involution of those darts that
 /// never links two boundary darts, the boundary mark is constant on each
-/// face, and non-boundary faces have at least 3 edges. O(number of darts x
-/// levels x cost of a level step).
+/// face, and non-boundary faces have at least 3 edges. For every indexed
+/// orbit: each line refines a live line of a lower level; at each level,
+/// every real cell has one live line holding at that level, read the same
+/// from all its darts, whose representative is one of them, no two cells
+/// share a line, as many lines hold as there are cells, and boundary faces
+/// have none. O(number of darts x levels x cost of a level step).
 IntegrityReport check_integrity(const MRMap2& m);
 /// The same checks for the level read by a view only (with the labels and
 /// counts of the whole map). O(number of darts x cost of a level step).

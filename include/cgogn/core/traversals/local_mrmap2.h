@@ -95,13 +95,49 @@ bool mr_reports_cell(const MRLevelView2& v, Dart d)
 
 } // namespace detail
 
+namespace detail
+{
+/// Calls f(line) on every line of slot `slot` that holds at level l (see
+/// MRCellIndex), for lines [b, e) of the container.
+template <typename FUNC>
+void mr_foreach_line_at_level(const MRState2& s, uint32 slot, uint32 l, uint32 b, uint32 e, const FUNC& f)
+{
+	const AttributeContainer& c = *state_of(s.map).cells[orbit_index(MR2_ORBITS[slot])];
+	const auto key = c.key().view();
+	const auto level = s.cells[slot].level->view();
+	const auto replaced = s.cells[slot].replaced->view();
+	for (uint32 i = b; i < e; ++i)
+		if (key[i] != INVALID_INDEX && level[i] <= l && replaced[i] > l && !call_and_continue(f, i))
+			return;
+}
+template <Orbit O>
+constexpr bool mr_walks_lines()
+{
+	return O != Orbit::DART && is_mr2_orbit(O);
+}
+} // namespace detail
+
 template <typename CELL, typename FUNC>
 void MRLevelView2::foreach_cell(const FUNC& func) const
 {
 	static_assert(std::is_same_v<CELL, Cell<CELL::ORBIT>>, "foreach_cell on a multiresolution map: take a plain cell");
 	held_callable_t<FUNC> f = func;
+	constexpr Orbit O = CELL::ORBIT;
+	if constexpr (detail::mr_walks_lines<O>())
+	{
+		// an indexed orbit: the lines that hold at the level
+		constexpr uint32 slot = detail::mr_slot(O);
+		if (state_->cells[slot].index != nullptr)
+		{
+			const AttributeContainer& c = *detail::state_of(state_->map).cells[orbit_index(O)];
+			const auto key = c.key().view();
+			detail::mr_foreach_line_at_level(*state_, slot, level_, 0, c.end_index(),
+											 [&](uint32 i) { return call_and_continue(f, CELL(Dart(key[i]))); });
+			return;
+		}
+	}
 	const auto level = state_->level->view();
-	if constexpr (CELL::ORBIT == Orbit::PHI1_PHI2)
+	if constexpr (O == Orbit::PHI1_PHI2)
 	{
 		DartMarkerStore<CMap2> seen(state_->map);
 		foreach_dart(state_->map, [&](Dart d) {
@@ -122,10 +158,27 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 template <typename CELL, typename FUNC>
 void MRLevelView2::parallel_foreach_cell(const FUNC& f) const
 {
-	if (CELL::ORBIT == Orbit::PHI1_PHI2 || detail::run_sequentially())
+	constexpr Orbit O = CELL::ORBIT;
+	if (detail::run_sequentially() || (O == Orbit::PHI1_PHI2 && state_->cells[3].index == nullptr))
 	{
 		foreach_cell<CELL>(f);
 		return;
+	}
+	if constexpr (detail::mr_walks_lines<O>())
+	{
+		constexpr uint32 slot = detail::mr_slot(O);
+		if (state_->cells[slot].index != nullptr)
+		{
+			const AttributeContainer& c = *detail::state_of(state_->map).cells[orbit_index(O)];
+			const auto key = c.key().view();
+			detail::parallel_for_chunks(c.end_index(), detail::PARALLEL_LINE_GRAIN,
+										detail::ChunkBody([&](uint32 b, uint32 e) {
+											held_callable_t<FUNC> fc = f; // see held_callable_t
+											detail::mr_foreach_line_at_level(*state_, slot, level_, b, e,
+																			 [&](uint32 i) { fc(CELL(Dart(key[i]))); });
+										}));
+			return;
+		}
 	}
 	const auto level = state_->level->view();
 	const auto key = detail::state_of(state_->map).darts->key().view();

@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/mrmap2.h>
+#include <cgogn/core/marking/marker.h>
+#include <cgogn/core/traversals/local_mrmap2.h>
+
+#include <memory>
+#include <string>
+#include <type_traits>
+
+namespace cgogn
+{
+
+// Attributes of a multiresolution 2-map. A vertex has a value at every level
+// from the one where it appears: a new level starts with a copy of the level
+// below (the new vertices get what the attributes' rules give: the midpoint
+// of the edge they cut, the centroid of the face they centre). An edge or a
+// face keeps its line and value at the levels where it exists; when it is
+// refined, its children get new lines, starting with a copy of its values.
+// So the value read for a cell depends on the level read; `(*attr)[c]` reads
+// the finest level.
+
+namespace detail
+{
+
+/// The line of the cell of orbit O holding dart d at level l: the line of d's
+/// finest cell, followed down to the level. INVALID_INDEX for boundary faces.
+/// O(1) at the finest level, O(levels - l) below.
+CGOGN_INLINE uint32 mr_index_of(const MRState2& s, uint32 l, uint32 slot, Dart d)
+{
+	const MRCellIndex& ci = s.cells[slot];
+	uint32 i = (*ci.index)[d.index];
+	if (l + 1 >= s.darts_per_level.size() || i == INVALID_INDEX)
+		return i;
+	const auto level = ci.level->view();
+	const auto down = ci.down->view();
+	while (level[i] > l)
+		i = down[i];
+	return i;
+}
+
+/// Gives lines to the cells of orbit o at every level (called by
+/// add_attribute for the first attribute of the orbit). O(number of darts x
+/// levels).
+void mr_index_orbit(MRMap2& m, Orbit o);
+
+} // namespace detail
+
+/// Whether cells of type CELL have lines (an attribute of their orbit was
+/// added). O(1).
+template <typename CELL, MRMesh2 M>
+bool is_indexed(const M& m)
+{
+	return detail::read_level(m).state().cells[detail::mr_slot(CELL::ORBIT)].index != nullptr;
+}
+
+/// The line of cell c at the level read. Precondition: the orbit is indexed.
+/// O(1) at the finest level, O(levels above the one read) below.
+template <MRMesh2 M, Orbit O>
+CGOGN_INLINE uint32 index_of(const M& m, Cell<O> c)
+{
+	static_assert(detail::is_mr2_orbit(O), "index_of: not a cell of a multiresolution 2-map");
+	const MRLevelView2 v = detail::read_level(m);
+	return detail::mr_index_of(v.state(), v.level(), detail::mr_slot(O), c.dart);
+}
+
+/// Adds an attribute of type T on cells of type CELL (vertices, edges, faces
+/// or connected components) of every level (see the rules above). The first
+/// attribute of an orbit gives lines to its cells at every level: O(number
+/// of darts x levels), once. Returns nullptr when the name is taken on this
+/// orbit or reserved (names starting with "__").
+template <typename T, typename CELL, typename M>
+requires std::same_as<M, MRMap2> std::shared_ptr<CellAttribute<T, CELL::ORBIT>> add_attribute(M& m,
+																							  const std::string& name)
+{
+	static_assert(detail::is_mr2_orbit(CELL::ORBIT),
+				  "add_attribute on a multiresolution 2-map: Vertex, Edge, Face or Volume");
+	AttributeContainer& container = *detail::state_of(detail::mr_state_of(m).map).cells[orbit_index(CELL::ORBIT)];
+	if (detail::is_reserved_name(name) || container.find(name) != nullptr)
+		return nullptr;
+	if (!is_indexed<CELL>(m))
+		detail::mr_index_orbit(m, CELL::ORBIT);
+	auto a =
+		container.template add_attribute<T, CellAttribute<T, CELL::ORBIT>>(name, detail::default_attribute_value<T>());
+	container.template set_default_rule<T>(*a);
+	return a;
+}
+
+/// The attribute of type T on CELL named `name`; nullptr when there is none or
+/// when it has another type. O(number of attributes of the orbit).
+template <typename T, typename CELL, MRMesh2 M>
+std::shared_ptr<CellAttribute<T, CELL::ORBIT>> get_attribute(const M& m, const std::string& name)
+{
+	static_assert(detail::is_mr2_orbit(CELL::ORBIT), "get_attribute: not a cell of a multiresolution 2-map");
+	if (detail::is_reserved_name(name))
+		return nullptr;
+	const AttributeContainer& c = *detail::state_of(detail::read_level(m).state().map).cells[orbit_index(CELL::ORBIT)];
+	return std::static_pointer_cast<CellAttribute<T, CELL::ORBIT>>(c.template get_attribute<T>(name));
+}
+
+/// Removes an attribute of m (the orbit keeps its lines). Returns false when
+/// attr is not an attribute of m. O(number of attributes of the orbit).
+template <typename... Ignored, typename A>
+bool remove_attribute(MRMap2& m, const std::shared_ptr<A>& attr)
+{
+	static_assert(std::is_base_of_v<AttributeBase, A>);
+	if (!attr || attr->container() == nullptr || detail::is_reserved_name(attr->name()))
+		return false;
+	for (Orbit o : detail::MR2_ORBITS)
+		if (attr->container() == detail::state_of(detail::mr_state_of(m).map).cells[orbit_index(o)].get())
+			return attr->container()->remove_attribute(attr.get());
+	return false;
+}
+
+/// The value of attribute attr for cell c at the level read: writable on a
+/// (non-const) MRMap2, at its current level; read-only on a level view,
+/// which never writes. O(cost of index_of).
+template <typename T, typename M, Orbit O>
+requires MRMesh2<std::remove_const_t<M>> CGOGN_INLINE decltype(auto) value(M& m, AttributeArray<T>& attr, Cell<O> c)
+{
+	if constexpr (std::is_same_v<M, MRMap2>)
+		return static_cast<T&>(attr[index_of(m, c)]);
+	else
+		return static_cast<const T&>(attr[index_of(m, c)]);
+}
+/// The same, read-only. O(cost of index_of).
+template <typename T, typename M, Orbit O>
+requires MRMesh2<M> CGOGN_INLINE const T& value(const M& m, const AttributeArray<T>& attr, Cell<O> c)
+{
+	return attr[index_of(m, c)];
+}
+
+/// Marks cells of type CELL of a multiresolution 2-map at the level read:
+/// the darts of the cell at that level carry the mark. Cleared on
+/// destruction. mark and unmark O(size of the orbit x cost of a level
+/// step), is_marked O(1).
+template <typename M, typename CELL>
+requires MRMesh2<M>
+class CellMarker<M, CELL>
+{
+	static_assert(CellType<CELL>);
+
+public:
+	using MapType = MRMap2; ///< The map under M.
+
+	/// A marker of the cells of m at the level it reads (fixed for the
+	/// marker's life), none marked. O(1) once the pool is warm.
+	explicit CellMarker(const M& m) : view_(detail::read_level(m)), mark_(*detail::state_of(view_.state().map).darts)
+	{
+	}
+	~CellMarker()
+	{
+		mark_->clear_all();
+	}
+	/// Marks c.
+	void mark(CELL c)
+	{
+		foreach_dart_of_orbit(view_, c, [&](Dart d) { mark_->set(d.index); });
+	}
+	/// Unmarks c.
+	void unmark(CELL c)
+	{
+		foreach_dart_of_orbit(view_, c, [&](Dart d) { mark_->reset(d.index); });
+	}
+	/// Whether c is marked, through any of its darts at the level.
+	bool is_marked(CELL c) const
+	{
+		return mark_->test(c.dart.index);
+	}
+	/// Unmarks every cell. O(darts / 64).
+	void unmark_all()
+	{
+		mark_->clear_all();
+	}
+
+private:
+	MRLevelView2 view_;
+	ReservedMark mark_;
+};
+
+} // namespace cgogn
