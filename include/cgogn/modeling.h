@@ -9,6 +9,7 @@
 #include <cgogn/modeling/fairing.h>
 #include <cgogn/modeling/graph_resampling.h>
 #include <cgogn/modeling/hole_filling.h>
+#include <cgogn/modeling/multiresolution.h>
 #include <cgogn/modeling/progress.h>
 #include <cgogn/modeling/quadric.h>
 #include <cgogn/modeling/remeshing.h>

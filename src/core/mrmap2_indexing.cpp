@@ -95,9 +95,9 @@ std::vector<uint32> vertex_parents(const MRState2& s, uint32 l, Dart v)
 {
 	const auto level = s.level->view();
 	std::vector<uint32> parents;
-	// a midpoint: one of its darts has a twin of level l - 1 in the finest map
+	// a midpoint: one of its darts has an old dart on its other side at level l
 	mr_foreach_dart_of_slot(s, 0, l, v, [&](Dart x) {
-		const Dart y = phi2(s.map, x);
+		const Dart y = mr_phi2(s, l, x); // the other side at level l: old for a piece of a cut edge
 		if (level[y.index] >= l)
 			return true;
 		parents = {mr_index_of(s, l - 1, 0, y), mr_index_of(s, l - 1, 0, mr_phi2(s, l - 1, y))};

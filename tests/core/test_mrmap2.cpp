@@ -713,3 +713,47 @@ TEST(MRMap2Attributes, MarkersAtALevel)
 	foreach_cell(m, [&](MRMap2::Vertex x) { vm.mark(x); });
 	foreach_cell(m, [&](MRMap2::Vertex x) { EXPECT_TRUE(vm.is_marked(x)); });
 }
+
+TEST(MRMap2Attributes, ExtractLevelGivesTheLevelAsAFlatMap)
+{
+	MRMap2 m(mixed_grid());
+	auto h = add_attribute<double, MRMap2::Vertex>(m, "h");
+	auto tag = add_attribute<uint32, MRMap2::Face>(m, "tag");
+	auto side = add_attribute<uint32, MRMap2::HalfEdge>(m, "side");
+	double x = 0.0;
+	foreach_cell(m, [&](MRMap2::Vertex v) { value<double>(m, h, v) = x += 1.0; });
+	uint32 t = 0;
+	foreach_cell(m, [&](MRMap2::Face f) { value<uint32>(m, tag, f) = ++t; });
+	add_level(m, Refinement::Mixed);
+	add_level(m, Refinement::Mixed);
+	foreach_dart(finest_map(m), [&](Dart d) { (*side)[d.index] = d.index; });
+	set_current_level(m, 2);
+	foreach_cell(m, [&](MRMap2::Vertex v) { value<double>(m, h, v) += 100.0; });
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView2 v = level_view(m, l);
+		const CMap2 flat = extract_level(m, l);
+		expect_ok(check_integrity(flat));
+		EXPECT_EQ(f_vector(flat), f_vector(v));
+		EXPECT_EQ(nb_darts(flat), nb_darts(v));
+		auto fh = get_attribute<double, CMap2::Vertex>(flat, "h");
+		auto ftag = get_attribute<uint32, CMap2::Face>(flat, "tag");
+		auto fside = get_attribute<uint32, CMap2::HalfEdge>(flat, "side");
+		ASSERT_TRUE(fh && ftag && fside);
+		// flat dart i is the i-th dart of the level in the finest map
+		std::vector<Dart> source;
+		foreach_dart(v, [&](Dart d) { source.push_back(d); });
+		foreach_dart(flat, [&](Dart d) {
+			const Dart s = source[d.index];
+			EXPECT_EQ((*fside)[d.index], s.index);
+			EXPECT_EQ(value<double>(flat, fh, CMap2::Vertex(d)), value<double>(v, h, MRMap2::Vertex(s)));
+			if (!is_boundary(flat, d))
+			{
+				EXPECT_EQ(value<uint32>(flat, ftag, CMap2::Face(d)), value<uint32>(v, tag, MRMap2::Face(s)));
+			}
+			EXPECT_EQ(source[phi1(flat, d).index], phi1(v, s));
+			EXPECT_EQ(source[phi2(flat, d).index], phi2(v, s));
+		});
+	}
+	EXPECT_THROW(extract_level(m, 3), std::out_of_range);
+}

@@ -41,6 +41,17 @@ CGOGN_INLINE uint32 mr_index_of(const MRState2& s, uint32 l, uint32 slot, Dart d
 	return i;
 }
 
+/// The container of the attributes of orbit O: the finest map's (its darts'
+/// for HalfEdge). O(1).
+template <Orbit O>
+AttributeContainer& mr_container(const MRState2& s)
+{
+	if constexpr (O == Orbit::DART)
+		return *state_of(s.map).darts;
+	else
+		return *state_of(s.map).cells[orbit_index(O)];
+}
+
 /// Gives lines to the cells of orbit o at every level (called by
 /// add_attribute for the first attribute of the orbit). O(number of darts x
 /// levels).
@@ -61,13 +72,16 @@ bool is_indexed(const M& m)
 template <MRMesh2 M, Orbit O>
 CGOGN_INLINE uint32 index_of(const M& m, Cell<O> c)
 {
-	static_assert(detail::is_mr2_orbit(O), "index_of: not a cell of a multiresolution 2-map");
+	static_assert(O == Orbit::DART || detail::is_mr2_orbit(O), "index_of: not a cell of a multiresolution 2-map");
+	if constexpr (O == Orbit::DART)
+		return c.dart.index; // a dart's line is its index
 	const MRLevelView2 v = detail::read_level(m);
 	return detail::mr_index_of(v.state(), v.level(), detail::mr_slot(O), c.dart);
 }
 
-/// Adds an attribute of type T on cells of type CELL (vertices, edges, faces
-/// or connected components) of every level (see the rules above). The first
+/// Adds an attribute of type T on cells of type CELL (half-edges, vertices,
+/// edges, faces or connected components) of every level (see the rules
+/// above; a half-edge has one value, read at every level). The first
 /// attribute of an orbit gives lines to its cells at every level: O(number
 /// of darts x levels), once. Returns nullptr when the name is taken on this
 /// orbit or reserved (names starting with "__").
@@ -75,13 +89,15 @@ template <typename T, typename CELL, typename M>
 requires std::same_as<M, MRMap2> std::shared_ptr<CellAttribute<T, CELL::ORBIT>> add_attribute(M& m,
 																							  const std::string& name)
 {
-	static_assert(detail::is_mr2_orbit(CELL::ORBIT),
-				  "add_attribute on a multiresolution 2-map: Vertex, Edge, Face or Volume");
-	AttributeContainer& container = *detail::state_of(detail::mr_state_of(m).map).cells[orbit_index(CELL::ORBIT)];
+	constexpr Orbit O = CELL::ORBIT;
+	static_assert(O == Orbit::DART || detail::is_mr2_orbit(O),
+				  "add_attribute on a multiresolution 2-map: HalfEdge, Vertex, Edge, Face or Volume");
+	AttributeContainer& container = detail::mr_container<O>(detail::mr_state_of(m));
 	if (detail::is_reserved_name(name) || container.find(name) != nullptr)
 		return nullptr;
-	if (!is_indexed<CELL>(m))
-		detail::mr_index_orbit(m, CELL::ORBIT);
+	if constexpr (O != Orbit::DART)
+		if (!is_indexed<CELL>(m))
+			detail::mr_index_orbit(m, O);
 	auto a =
 		container.template add_attribute<T, CellAttribute<T, CELL::ORBIT>>(name, detail::default_attribute_value<T>());
 	container.template set_default_rule<T>(*a);
@@ -108,10 +124,11 @@ bool remove_attribute(MRMap2& m, const std::shared_ptr<A>& attr)
 	static_assert(std::is_base_of_v<AttributeBase, A>);
 	if (!attr || attr->container() == nullptr || detail::is_reserved_name(attr->name()))
 		return false;
+	const detail::MapState& flat = detail::state_of(detail::mr_state_of(m).map);
+	bool mine = attr->container() == flat.darts.get();
 	for (Orbit o : detail::MR2_ORBITS)
-		if (attr->container() == detail::state_of(detail::mr_state_of(m).map).cells[orbit_index(o)].get())
-			return attr->container()->remove_attribute(attr.get());
-	return false;
+		mine = mine || attr->container() == flat.cells[orbit_index(o)].get();
+	return mine && attr->container()->remove_attribute(attr.get());
 }
 
 /// The value of attribute attr for cell c at the level read: writable on a

@@ -34,4 +34,12 @@ void add_level(MRMap2& m, Refinement r);
 /// m has no level above 0. O(number of darts).
 void remove_finest_level(MRMap2& m);
 
+/// The mesh at level l of m as a flat CMap2, for a solver or a file: one
+/// dart per dart of the level (in the order of the finest map), its phi1,
+/// phi2 and boundary, and every attribute of m with its values at level l
+/// (attributes of darts, vertices, edges, faces and components, with their
+/// names and rules). Throws std::out_of_range when l > max_level(m).
+/// O(number of darts of the level x cost of a level step + attributes x cells).
+CMap2 extract_level(const MRMap2& m, uint32 l);
+
 } // namespace cgogn
