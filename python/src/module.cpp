@@ -39,6 +39,7 @@ PYBIND11_MODULE(_cgogn, m)
 	cgogn::python::bind_algorithms(m);
 	cgogn::python::bind_nmaps(m);
 	cgogn::python::bind_graph(m);
+	cgogn::python::bind_mrmap(m);
 	cgogn::python::bind_map_files(m); // methods of the classes bound above
 #ifdef CGOGN_PYTHON_HAS_DISTRIBUTED
 	cgogn::python::bind_distributed(m);

@@ -151,6 +151,8 @@ void bind_operators(py::module_& m);
 void bind_algorithms(py::module_& m);
 void bind_graph(py::module_& m);
 void bind_incidence_graph(py::module_& m);
+/// The multiresolution 2-map (bind_mrmap.cpp).
+void bind_mrmap(py::module_& m);
 /// Whole-map files (.cgmap) and pickling of every map class (bind_map_files.cpp);
 /// bound last, once the classes exist.
 void bind_map_files(py::module_& m);

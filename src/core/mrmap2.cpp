@@ -5,6 +5,7 @@
 #include <cgogn/core/traversals/local_cmap2.h>
 
 #include "mrmap2_indexing.h"
+#include "mrmap2_refine.h"
 
 #include <cassert>
 #include <stdexcept>
@@ -51,89 +52,6 @@ MRLevelView2 level_view(const MRMap2& m, uint32 l)
 	return MRLevelView2(m, l);
 }
 
-namespace
-{
-
-/// The smallest edge id in {0, 1, 2} different from a and b.
-uint8 new_edge_id(uint8 a, uint8 b)
-{
-	uint8 id = 0;
-	while (id == a || id == b)
-		++id;
-	return id;
-}
-
-/// Labels the darts created by one refinement step and counts them.
-class NewDarts
-{
-public:
-	NewDarts(detail::MRState2& s, uint8 level) : s_(s), level_(level)
-	{
-	}
-	/// Labels the two darts of edge d (a new edge, or the new piece of a cut one).
-	void label_edge(Dart d, uint8 edge_id)
-	{
-		label(d, edge_id);
-		label(phi2(s_.map, d), edge_id);
-	}
-	void label(Dart d, uint8 edge_id)
-	{
-		(*s_.level)[d.index] = level_;
-		(*s_.edge_id)[d.index] = edge_id;
-		++count_;
-	}
-	uint32 count() const
-	{
-		return count_;
-	}
-
-private:
-	detail::MRState2& s_;
-	uint8 level_;
-	uint32 count_ = 0;
-};
-
-/// Joins the edge midpoints of a triangle whose edges are cut: c[i] is the
-/// dart leaving the midpoint of the i-th edge (in phi1 order).
-void refine_triangle(detail::MRState2& s, NewDarts& labels, const Dart (&c)[3])
-{
-	const auto id = [&](Dart d) { return (*s.edge_id)[d.index]; };
-	// cut off the corners at the ends of c[0], c[1] and c[2] in turn
-	const CMap2::Edge e0 = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[1]), false);
-	labels.label_edge(e0.dart, new_edge_id(id(c[0]), id(c[1])));
-	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(c[1]), CMap2::Vertex(c[2]), false);
-	labels.label_edge(e1.dart, new_edge_id(id(c[1]), id(c[2])));
-	const CMap2::Edge e2 = cut_face(s.map, CMap2::Vertex(c[2]), CMap2::Vertex(e0.dart), false);
-	labels.label_edge(e2.dart, new_edge_id(id(c[2]), id(c[0])));
-}
-
-/// Joins the k edge midpoints of a face whose edges are cut to a new centre:
-/// c[i] is the dart leaving the midpoint of the i-th edge (in phi1 order).
-void refine_quadrangular(detail::MRState2& s, NewDarts& labels, const std::vector<Dart>& c)
-{
-	const auto id = [&](Dart d) { return (*s.edge_id)[d.index]; };
-	// an inner edge differs from the edge whose midpoint it leaves
-	const auto inner_id = [&](Dart mid) { return new_edge_id(id(mid), id(mid)); };
-	const CMap2::Edge across = cut_face(s.map, CMap2::Vertex(c[0]), CMap2::Vertex(c[2]), false);
-	const Dart a = across.dart; // midpoint 0 -> midpoint 2
-	const CMap2::Vertex centre = cut_edge(s.map, across, false);
-	labels.label_edge(a, inner_id(c[0]));
-	labels.label_edge(centre.dart, inner_id(c[2])); // centre -> midpoint 2
-	// the centre's dart in the face of midpoint 1
-	const CMap2::Edge e1 = cut_face(s.map, CMap2::Vertex(phi2(s.map, a)), CMap2::Vertex(c[1]), false);
-	labels.label_edge(e1.dart, inner_id(c[1]));
-	// midpoints 3 ... k - 1 lie in the face of centre.dart, each cut leaving the next in the new part
-	Dart from_centre = centre.dart;
-	for (std::size_t i = 3; i < c.size(); ++i)
-	{
-		const CMap2::Edge e = cut_face(s.map, CMap2::Vertex(from_centre), CMap2::Vertex(c[i]), false);
-		labels.label_edge(e.dart, inner_id(c[i]));
-		from_centre = e.dart;
-	}
-}
-
-} // namespace
-
 void add_level(MRMap2& m, Refinement r)
 {
 	if (r != Refinement::Triangular && r != Refinement::Quadrangular && r != Refinement::Mixed)
@@ -167,7 +85,7 @@ void add_level(MRMap2& m, Refinement r)
 	});
 
 	s.darts_per_level.push_back(0);
-	NewDarts labels(s, uint8(finest + 1));
+	detail::MRNewDarts labels(s, uint8(finest + 1));
 	for (Dart d : edges)
 	{
 		const uint8 id = (*s.edge_id)[d.index];
@@ -188,9 +106,9 @@ void add_level(MRMap2& m, Refinement r)
 			it = phi1(map, phi1(map, it));
 		} while (it != f);
 		if (mids.size() == 3 && r != Refinement::Quadrangular)
-			refine_triangle(s, labels, {mids[0], mids[1], mids[2]});
+			detail::mr_refine_triangle(s, labels, {mids[0], mids[1], mids[2]});
 		else
-			refine_quadrangular(s, labels, mids);
+			detail::mr_refine_quadrangular(s, labels, mids);
 	}
 	s.darts_per_level.back() = labels.count();
 	s.current_level = finest + 1;

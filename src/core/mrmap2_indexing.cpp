@@ -88,10 +88,9 @@ Dart old_dart_of_sibling(const MRState2& s, uint32 l, Dart d)
 	return Dart();
 }
 
-/// The lines the attribute rules of a new vertex of level l start from: the
-/// ends of the edge of level l - 1 it cuts, or the corners of the face of
-/// level l - 1 it centres. Empty when it is neither.
-std::vector<uint32> vertex_parents(const MRState2& s, uint32 l, Dart v)
+} // namespace
+
+std::vector<uint32> mr_vertex_parents(const MRState2& s, uint32 l, Dart v)
 {
 	const auto level = s.level->view();
 	std::vector<uint32> parents;
@@ -119,8 +118,7 @@ std::vector<uint32> vertex_parents(const MRState2& s, uint32 l, Dart v)
 	return parents;
 }
 
-/// A new line of slot `slot` at level l, refining line `down` (or none).
-uint32 new_line(MRState2& s, uint32 slot, uint32 l, Dart representative, uint32 down)
+uint32 mr_new_line(MRState2& s, uint32 slot, uint32 l, Dart representative, uint32 down)
 {
 	MRCellIndex& ci = s.cells[slot];
 	AttributeContainer& c = *state_of(s.map).cells[orbit_index(MR2_ORBITS[slot])];
@@ -135,8 +133,6 @@ uint32 new_line(MRState2& s, uint32 slot, uint32 l, Dart representative, uint32 
 	}
 	return i;
 }
-
-} // namespace
 
 void mr_add_line_attributes(MRState2& s, uint32 slot)
 {
@@ -173,18 +169,18 @@ void mr_index_level(MRState2& s, uint32 slot, uint32 l)
 		});
 		uint32 line = INVALID_INDEX;
 		if (l == 0)
-			line = new_line(s, slot, 0, d, INVALID_INDEX);
+			line = mr_new_line(s, slot, 0, d, INVALID_INDEX);
 		else if (slot == 0)
 		{
 			// a vertex gets a line at every level
 			if (old.is_valid())
-				line = new_line(s, slot, l, old, mr_index_of(s, l - 1, 0, old));
+				line = mr_new_line(s, slot, l, old, mr_index_of(s, l - 1, 0, old));
 			else
 			{
-				line = new_line(s, slot, l, d, INVALID_INDEX);
+				line = mr_new_line(s, slot, l, d, INVALID_INDEX);
 				if (c.has_rules())
 				{
-					const std::vector<uint32> parents = vertex_parents(s, l, d);
+					const std::vector<uint32> parents = mr_vertex_parents(s, l, d);
 					weights.assign(parents.size(), parents.empty() ? 0.0 : 1.0 / double(parents.size()));
 					if (!parents.empty())
 						c.apply_rules(line, parents, weights);
@@ -205,7 +201,7 @@ void mr_index_level(MRState2& s, uint32 slot, uint32 l)
 			if (same)
 				line = below;
 			else
-				line = new_line(s, slot, l, d, below);
+				line = mr_new_line(s, slot, l, d, below);
 		}
 		mr_foreach_dart_of_slot(s, slot, l, d, [&](Dart x) { index[x.index] = line; });
 	}

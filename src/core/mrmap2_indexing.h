@@ -36,6 +36,16 @@ void mr_foreach_dart_of_slot(const MRState2& s, uint32 slot, uint32 l, Dart d, c
 	}
 }
 
+/// A new line of slot `slot` at level l, with representative dart
+/// `representative`, refining line `down` (INVALID_INDEX: none), whose values
+/// it copies; `down` is then replaced from level l on. O(attributes).
+uint32 mr_new_line(MRState2& s, uint32 slot, uint32 l, Dart representative, uint32 down);
+
+/// The vertex lines of level l - 1 the attribute rules of new vertex v of
+/// level l start from: the ends of the edge of level l - 1 it cuts, or the
+/// corners of the face of level l - 1 it centres. Empty when it is neither.
+std::vector<uint32> mr_vertex_parents(const MRState2& s, uint32 l, Dart v);
+
 /// Adds the per-line attributes of a slot (down, level, replaced) to its
 /// container. O(capacity of the container).
 void mr_add_line_attributes(MRState2& s, uint32 slot);

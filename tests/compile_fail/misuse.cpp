@@ -23,6 +23,10 @@ void misuse()
 	(void)c2;
 	(void)pos3;
 	(void)area;
+	MRMap2 mr{CMap2()};
+	auto level_value = add_attribute<double, MRMap2::Vertex>(mr, "h");
+	const MRLevelView2 level0 = level_view(mr, 0);
+	(void)level0;
 #if CASE(control)
 	// the legitimate forms of every call below
 	add_face(m2, 4);
@@ -36,6 +40,8 @@ void misuse()
 	(*pos2)[CMap2::Vertex(Dart(0))] = p;
 	(*area)[CMap2::Face(Dart(0))] = 1.0;
 	(void)io::load_volume(g3, "volume.mesh");
+	add_level(mr, Refinement::Quadrangular);
+	value(mr, level_value, MRMap2::Vertex(Dart(0))) = value(level0, level_value, MRMap2::Vertex(Dart(0)));
 #elif CASE(add_face_on_3map)
 	add_face(m3, 4); // would create darts without phi3
 #elif CASE(cut_edge_2d_on_3map)
@@ -58,6 +64,10 @@ void misuse()
 	value(c2, area, CMap2::Face(Dart(0))) = 1.0;
 #elif CASE(attribute_indexed_by_other_orbit)
 	(*area)[CMap2::Vertex(Dart(0))] = 1.0;
+#elif CASE(flip_edge_on_mrmap2)
+	flip_edge(mr, MRMap2::Edge(Dart(0))); // the labels of the hierarchy would break
+#elif CASE(value_on_level_view_is_read_only)
+	value(level0, level_value, MRMap2::Vertex(Dart(0))) = 1.0;
 #elif CASE(map_members_are_private)
 	(void)m2.darts_; // the maps' containers are reached through the free functions
 #else

@@ -2,11 +2,14 @@
 // Multiresolution 2-maps: regular levels, level relations, views, integrity.
 #include <cgogn/core.h>
 
+#include "map_test_utils.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <atomic>
 #include <map>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -756,4 +759,186 @@ TEST(MRMap2Attributes, ExtractLevelGivesTheLevelAsAFlatMap)
 		});
 	}
 	EXPECT_THROW(extract_level(m, 3), std::out_of_range);
+}
+
+namespace
+{
+/// Whether every two leaves adjacent at the finest level differ by one level at most.
+bool balanced(const MRMap2& m)
+{
+	const MRLevelView2 v = level_view(m, max_level(m));
+	bool ok = true;
+	foreach_cell(v, [&](MRMap2::Face f) {
+		const uint32 lf = face_level(v, f);
+		foreach_dart_of_orbit(v, f, [&](Dart d) {
+			const Dart e = phi2(v, d);
+			if (is_boundary(v, e))
+				return true;
+			const uint32 lg = face_level(v, MRMap2::Face(e));
+			ok = ok && (lf > lg ? lf - lg : lg - lf) <= 1;
+			return ok;
+		});
+		return ok;
+	});
+	return ok;
+}
+
+/// The labels of every dart, by dart.
+std::map<uint32, std::pair<uint32, uint32>> labels_of(const MRMap2& m)
+{
+	std::map<uint32, std::pair<uint32, uint32>> r;
+	foreach_dart(finest_map(m), [&](Dart d) {
+		r[d.index] = {dart_level(m, d), (*detail::mr_state_of(m).edge_id)[d.index]};
+	});
+	return r;
+}
+} // namespace
+
+TEST(MRMap2Adaptive, SubdivideAndCoarsenOneFace)
+{
+	for (Refinement r : {Refinement::Quadrangular, Refinement::Mixed})
+	{
+		MRMap2 m(cube());
+		auto h = add_attribute<double, MRMap2::Vertex>(m, "h");
+		auto tag = add_attribute<uint32, MRMap2::Face>(m, "tag");
+		auto etag = add_attribute<uint32, MRMap2::Edge>(m, "etag");
+		uint32 t = 0;
+		foreach_cell(m, [&](MRMap2::Face f) { value<uint32>(m, tag, f) = ++t; });
+		foreach_cell(m, [&](MRMap2::Edge e) { value<uint32>(m, etag, e) = ++t; });
+		foreach_cell(m, [&](MRMap2::Vertex v) { value<double>(m, h, v) = double(++t); });
+		const auto labels = labels_of(m);
+		const MRMap2::Face f = test::all<MRMap2::Face>(m)[0];
+		const uint32 f_tag = value<uint32>(m, tag, f);
+		subdivide_face(m, f, r);
+		expect_ok(check_integrity(m));
+		EXPECT_EQ(max_level(m), 1u);
+		EXPECT_EQ(current_level(m), 0u);
+		EXPECT_TRUE(face_is_subdivided(m, f));
+		EXPECT_THROW(subdivide_face(m, f, r), std::invalid_argument);
+		foreach_dart_of_orbit(m, f, [&](Dart d) { EXPECT_TRUE(edge_is_subdivided(m, MRMap2::Edge(d))); });
+		const MRLevelView2 v1 = level_view(m, 1);
+		EXPECT_EQ(f_vector(v1), (std::vector<uint32>{13, 20, 9}));
+		uint32 children = 0;
+		foreach_cell(v1, [&](MRMap2::Face c) {
+			if (face_level(v1, c) == 1)
+			{
+				++children;
+				EXPECT_EQ(value<uint32>(v1, tag, c), f_tag); // a copy of the parent's value
+				EXPECT_NE(index_of(v1, c), index_of(m, f));
+			}
+		});
+		EXPECT_EQ(children, 4u);
+		EXPECT_EQ(value<uint32>(m, tag, f), f_tag);
+		// the new vertices: the midpoints and the centre of their edges and face
+		foreach_cell(v1, [&](MRMap2::Vertex x) {
+			if (dart_level(m, x.dart) == 0)
+				return;
+			double sum = 0.0;
+			uint32 n = 0, old = 0;
+			foreach_adjacent_vertex_through_edge(v1, x, [&](MRMap2::Vertex w) {
+				old += dart_level(m, w.dart) == 0;
+				if (dart_level(m, w.dart) == 0 || degree(v1, x) == 4)
+				{
+					sum += value<double>(v1, h, w);
+					++n;
+				}
+			});
+			EXPECT_DOUBLE_EQ(value<double>(v1, h, x), sum / n);
+		});
+		EXPECT_TRUE(can_coarsen_face(m, f));
+		coarsen_face(m, f);
+		expect_ok(check_integrity(m));
+		EXPECT_EQ(max_level(m), 0u);
+		EXPECT_EQ(labels_of(m), labels);
+		EXPECT_EQ(f_vector(m), (std::vector<uint32>{8, 12, 6}));
+		EXPECT_EQ(value<uint32>(m, tag, f), f_tag);
+		EXPECT_FALSE(can_coarsen_face(m, f));
+	}
+}
+
+TEST(MRMap2Adaptive, BalanceKeepsNeighboursWithinOneLevel)
+{
+	MRMap2 m(cube());
+	add_attribute<double, MRMap2::Vertex>(m, "h");
+	add_attribute<uint32, MRMap2::Face>(m, "tag");
+	// the same corner refined 4 times: its neighbours follow
+	Dart d = test::all<MRMap2::Face>(m)[0].dart;
+	for (uint32 k = 0; k < 4; ++k)
+	{
+		set_current_level(m, max_level(m));
+		subdivide_face(m, MRMap2::Face(d), Refinement::Quadrangular);
+		expect_ok(check_integrity(m));
+		EXPECT_TRUE(balanced(m)) << "after " << k + 1;
+	}
+	EXPECT_EQ(max_level(m), 4u);
+	// without balance the jump is allowed
+	MRMap2 n(cube());
+	d = test::all<MRMap2::Face>(n)[0].dart;
+	for (uint32 k = 0; k < 3; ++k)
+	{
+		set_current_level(n, max_level(n));
+		subdivide_face(n, MRMap2::Face(d), Refinement::Quadrangular, false);
+	}
+	expect_ok(check_integrity(n));
+	EXPECT_FALSE(balanced(n));
+}
+
+TEST(MRMap2Adaptive, RandomRefinementAndCoarsening)
+{
+	for (Refinement r : {Refinement::Quadrangular, Refinement::Triangular})
+	{
+		MRMap2 m(r == Refinement::Triangular ? icosahedron() : cube());
+		auto h = add_attribute<double, MRMap2::Vertex>(m, "h");
+		add_attribute<uint32, MRMap2::Edge>(m, "e");
+		add_attribute<uint32, MRMap2::Face>(m, "f");
+		std::mt19937 rng(r == Refinement::Triangular ? 7u : 11u);
+		uint32 subdivisions = 0, coarsenings = 0;
+		for (uint32 step = 0; step < 1000; ++step)
+		{
+			const bool refine = std::uniform_int_distribution<int>(0, 9)(rng) < 6 || max_level(m) == 0;
+			if (refine)
+			{
+				set_current_level(m, max_level(m));
+				std::vector<MRMap2::Face> leaves;
+				foreach_cell(m, [&](MRMap2::Face f) {
+					if (face_level(m, f) < 4)
+						leaves.push_back(f);
+				});
+				if (leaves.empty())
+					continue;
+				subdivide_face(m, leaves[std::uniform_int_distribution<std::size_t>(0, leaves.size() - 1)(rng)], r);
+				++subdivisions;
+			}
+			else
+			{
+				std::vector<std::pair<uint32, MRMap2::Face>> parents;
+				for (uint32 k = 0; k < max_level(m); ++k)
+				{
+					set_current_level(m, k);
+					foreach_cell(m, [&](MRMap2::Face f) {
+						if (can_coarsen_face(m, f))
+							parents.emplace_back(k, f);
+					});
+				}
+				if (parents.empty())
+					continue;
+				const auto [k, f] = parents[std::uniform_int_distribution<std::size_t>(0, parents.size() - 1)(rng)];
+				set_current_level(m, k);
+				coarsen_face(m, f);
+				++coarsenings;
+			}
+			const IntegrityReport report = check_integrity(m);
+			ASSERT_TRUE(report.ok()) << "step " << step << ": " << report.to_string();
+			ASSERT_TRUE(balanced(m)) << "step " << step;
+			uint32 sum = 0;
+			for (uint32 l = 0; l <= max_level(m); ++l)
+				sum += nb_darts_at_level(m, l);
+			ASSERT_EQ(sum, nb_darts(finest_map(m)));
+			ASSERT_GT(nb_darts_at_level(m, max_level(m)), 0u);
+			ASSERT_EQ(euler_characteristic(level_view(m, max_level(m))), 2);
+		}
+		EXPECT_GT(subdivisions, 300u);
+		EXPECT_GT(coarsenings, 100u);
+		(void)h;
+	}
 }

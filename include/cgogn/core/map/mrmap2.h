@@ -244,6 +244,13 @@ inline MRLevelView2 read_level(const MRMap2& m)
 	return MRLevelView2(m, current_level(m));
 }
 
+/// Whether view v reads the finest level, where the relations and cells are
+/// those of the finest map. O(1).
+CGOGN_INLINE bool mr_is_finest(const MRLevelView2& v)
+{
+	return v.level() + 1 >= v.state().darts_per_level.size();
+}
+
 /// phi1 at level l (Untereiner et al., the CPH model): from d, walk the
 /// finest face; at every vertex born after level l, turn around it to the
 /// piece of d's edge (the dart with d's edge id) and go on, until a dart of

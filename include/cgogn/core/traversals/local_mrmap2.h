@@ -26,6 +26,8 @@ bool foreach_dart_of_orbit(const M& m, Cell<O> c, const FUNC& f)
 {
 	const MRLevelView2 v = detail::read_level(m);
 	const detail::MRState2& s = v.state();
+	if (detail::mr_is_finest(v))
+		return foreach_dart_of_orbit(s.map, c, f); // the finest map's own walk
 	const uint32 l = v.level();
 	const Dart d = c.dart;
 	if constexpr (O == Orbit::DART)
@@ -136,6 +138,12 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 			return;
 		}
 	}
+	if (detail::mr_is_finest(*this))
+	{
+		// the cells of the finest map (which indexes none of its orbits)
+		cgogn::foreach_cell(state_->map, [&](CELL c) { return call_and_continue(f, c); });
+		return;
+	}
 	const auto level = state_->level->view();
 	if constexpr (O == Orbit::PHI1_PHI2)
 	{
@@ -180,6 +188,11 @@ void MRLevelView2::parallel_foreach_cell(const FUNC& f) const
 			return;
 		}
 	}
+	if (detail::mr_is_finest(*this))
+	{
+		cgogn::parallel_foreach_cell(state_->map, [&](CELL c) { f(c); });
+		return;
+	}
 	const auto level = state_->level->view();
 	const auto key = detail::state_of(state_->map).darts->key().view();
 	detail::parallel_for_chunks(detail::state_of(state_->map).darts->end_index(), detail::PARALLEL_LINE_GRAIN,
@@ -214,6 +227,8 @@ void MRMap2::parallel_foreach_cell(const FUNC& f) const
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_edge(lv.state().map, v, f); // the finest map's own traversal
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, MRMap2::Edge(d)); });
 }
 
@@ -221,6 +236,8 @@ void foreach_incident_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_face(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_face(lv.state().map, v, f); // the finest map's own traversal
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, MRMap2::Face(d)); });
 }
 
@@ -228,6 +245,8 @@ void foreach_incident_face(const M& m, MRMap2::Vertex v, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_vertex_through_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_adjacent_vertex_through_edge(lv.state().map, v, f); // the finest map's own traversal
 	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, MRMap2::Vertex(phi2(m, d))); });
 }
 
@@ -236,6 +255,8 @@ void foreach_adjacent_vertex_through_edge(const M& m, MRMap2::Vertex v, const FU
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_vertex_through_face(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_adjacent_vertex_through_face(lv.state().map, v, f); // the finest map's own traversal
 	foreach_dart_of_orbit(m, v, [&](Dart d) {
 		if (!call_and_continue(f, MRMap2::Vertex(phi2(m, d))))
 			return false;
@@ -252,6 +273,8 @@ void foreach_adjacent_vertex_through_face(const M& m, MRMap2::Vertex v, const FU
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_vertex(const M& m, MRMap2::Edge e, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_vertex(lv.state().map, e, f); // the finest map's own traversal
 	if (call_and_continue(f, MRMap2::Vertex(e.dart)))
 		call_and_continue(f, MRMap2::Vertex(phi2(m, e.dart)));
 }
@@ -260,6 +283,8 @@ void foreach_incident_vertex(const M& m, MRMap2::Edge e, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_face(const M& m, MRMap2::Edge e, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_face(lv.state().map, e, f); // the finest map's own traversal
 	if (!is_boundary(m, e.dart) && !call_and_continue(f, MRMap2::Face(e.dart)))
 		return;
 	const Dart d2 = phi2(m, e.dart);
@@ -272,6 +297,8 @@ void foreach_incident_face(const M& m, MRMap2::Edge e, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_edge_through_vertex(const M& m, MRMap2::Edge e, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_adjacent_edge_through_vertex(lv.state().map, e, f); // the finest map's own traversal
 	for (Dart start : {e.dart, phi2(m, e.dart)})
 		for (Dart it = phi1(m, phi2(m, start)); it != start; it = phi1(m, phi2(m, it)))
 			if (!call_and_continue(f, MRMap2::Edge(it)))
@@ -282,6 +309,8 @@ void foreach_adjacent_edge_through_vertex(const M& m, MRMap2::Edge e, const FUNC
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_edge_through_face(const M& m, MRMap2::Edge e, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_adjacent_edge_through_face(lv.state().map, e, f); // the finest map's own traversal
 	for (Dart start : {e.dart, phi2(m, e.dart)})
 	{
 		if (is_boundary(m, start))
@@ -296,6 +325,8 @@ void foreach_adjacent_edge_through_face(const M& m, MRMap2::Edge e, const FUNC& 
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_vertex(const M& m, MRMap2::Face f, const FUNC& fn)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_vertex(lv.state().map, f, fn); // the finest map's own traversal
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, MRMap2::Vertex(d)); });
 }
 
@@ -303,6 +334,8 @@ void foreach_incident_vertex(const M& m, MRMap2::Face f, const FUNC& fn)
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_edge(const M& m, MRMap2::Face f, const FUNC& fn)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_edge(lv.state().map, f, fn); // the finest map's own traversal
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, MRMap2::Edge(d)); });
 }
 
@@ -310,6 +343,8 @@ void foreach_incident_edge(const M& m, MRMap2::Face f, const FUNC& fn)
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_face_through_edge(const M& m, MRMap2::Face f, const FUNC& fn)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_adjacent_face_through_edge(lv.state().map, f, fn); // the finest map's own traversal
 	foreach_dart_of_orbit(m, f, [&](Dart d) {
 		const Dart d2 = phi2(m, d);
 		return is_boundary(m, d2) || call_and_continue(fn, MRMap2::Face(d2));
@@ -321,6 +356,8 @@ void foreach_adjacent_face_through_edge(const M& m, MRMap2::Face f, const FUNC& 
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_face_through_vertex(const M& m, MRMap2::Face f, const FUNC& fn)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_adjacent_face_through_vertex(lv.state().map, f, fn); // the finest map's own traversal
 	foreach_dart_of_orbit(m, f, [&](Dart d) {
 		for (Dart it = phi1(m, phi2(m, d)); it != d;)
 		{
@@ -374,18 +411,24 @@ void mr_foreach_cell_of_volume(const MRLevelView2& v, Dart start, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_vertex(const M& m, MRMap2::Volume w, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_vertex(lv.state().map, w, f); // the finest map's own traversal
 	detail::mr_foreach_cell_of_volume<MRMap2::Vertex>(detail::read_level(m), w.dart, f);
 }
 /// Edges of connected component w (no defined order).
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_edge(const M& m, MRMap2::Volume w, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_edge(lv.state().map, w, f); // the finest map's own traversal
 	detail::mr_foreach_cell_of_volume<MRMap2::Edge>(detail::read_level(m), w.dart, f);
 }
 /// Faces of connected component w, boundary faces skipped (no defined order).
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_face(const M& m, MRMap2::Volume w, const FUNC& f)
 {
+	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
+		return foreach_incident_face(lv.state().map, w, f); // the finest map's own traversal
 	detail::mr_foreach_cell_of_volume<MRMap2::Face>(detail::read_level(m), w.dart, f);
 }
 
