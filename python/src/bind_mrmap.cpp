@@ -54,6 +54,22 @@ struct PyMRMap2
 		});
 		return {std::move(order), std::move(row)};
 	}
+	/// (V, 3) copy of the values of a vertex attribute at level l, one row per
+	/// vertex in the order of vertices(l).
+	py::array_t<double> rows(const AttributeArray<Vec3>& attr, uint32 l) const
+	{
+		const MRLevelView2 v = level(l);
+		const std::vector<MRVertex> order = vertices(l).first;
+		py::array_t<double> out({py::ssize_t(order.size()), py::ssize_t(3)});
+		auto a = out.mutable_unchecked<2>();
+		for (std::size_t i = 0; i < order.size(); ++i)
+		{
+			const Vec3& p = value<Vec3>(v, attr, order[i]);
+			for (int c = 0; c < 3; ++c)
+				a(py::ssize_t(i), c) = p[c];
+		}
+		return out;
+	}
 	std::vector<MRFace> faces(uint32 l) const
 	{
 		std::vector<MRFace> out;
@@ -126,22 +142,8 @@ void bind_mrmap(py::module_& mod)
 			},
 			py::arg("level"), "(vertices, edges, faces) of a level.")
 		.def(
-			"positions",
-			[](const W& w, uint32 l) {
-				const MRLevelView2 v = w.level(l);
-				const auto vertices = w.vertices(l);
-				const auto& order = vertices.first;
-				py::array_t<double> out({py::ssize_t(order.size()), py::ssize_t(3)});
-				auto a = out.mutable_unchecked<2>();
-				for (std::size_t i = 0; i < order.size(); ++i)
-				{
-					const Vec3& p = value<Vec3>(v, *w.pos, order[i]);
-					for (int c = 0; c < 3; ++c)
-						a(py::ssize_t(i), c) = p[c];
-				}
-				return out;
-			},
-			py::arg("level"), "(V, 3) float64 copy of the vertex positions of a level, one row per vertex.")
+			"positions", [](const W& w, uint32 l) { return w.rows(*w.pos, l); }, py::arg("level"),
+			"(V, 3) float64 copy of the vertex positions of a level, one row per vertex.")
 		.def(
 			"set_positions",
 			[](W& w, uint32 l, const py::array_t<double, py::array::c_style | py::array::forcecast>& values) {
@@ -251,22 +253,8 @@ void bind_mrmap(py::module_& mod)
 			py::arg("bank") = "catmull_clark", py::arg("to_level") = 0,
 			"Computes the coarser levels' positions and the details from the finest positions.")
 		.def(
-			"details",
-			[](const W& w, uint32 l) {
-				const MRLevelView2 v = w.level(l);
-				const auto vertices = w.vertices(l);
-				const auto& order = vertices.first;
-				py::array_t<double> out({py::ssize_t(order.size()), py::ssize_t(3)});
-				auto a = out.mutable_unchecked<2>();
-				for (std::size_t i = 0; i < order.size(); ++i)
-				{
-					const Vec3& p = value<Vec3>(v, *w.details, order[i]);
-					for (int c = 0; c < 3; ++c)
-						a(py::ssize_t(i), c) = p[c];
-				}
-				return out;
-			},
-			py::arg("level"), "(V, 3) copy of the detail vectors of a level (rows of positions(level)).")
+			"details", [](const W& w, uint32 l) { return w.rows(*w.details, l); }, py::arg("level"),
+			"(V, 3) copy of the detail vectors of a level (rows of positions(level)).")
 		.def(
 			"filter_low_pass",
 			[](W& w, const std::string& bank, uint32 l) { modeling::filter_low_pass(w.m, *w.pos, bank_of(bank), l); },

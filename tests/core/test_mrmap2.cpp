@@ -127,6 +127,19 @@ Expected next_level(const std::vector<uint32>& f, const std::map<uint32, uint32>
 	return e;
 }
 
+/// The first dart of level l of the finest map.
+Dart first_dart_of_level(const MRMap2& m, uint32 l)
+{
+	Dart r;
+	foreach_dart(finest_map(m), [&](Dart d) {
+		if (dart_level(m, d) != l)
+			return true;
+		r = d;
+		return false;
+	});
+	return r;
+}
+
 void expect_ok(const IntegrityReport& r)
 {
 	EXPECT_TRUE(r.ok()) << r.to_string();
@@ -280,13 +293,7 @@ TEST(MRMap2, LevelRelations)
 		EXPECT_EQ(degree_sum, 2 * nb_cells<MRMap2::Edge>(v));
 	}
 	// a level-0 dart is valid everywhere, a level-3 one only at level 3
-	Dart young;
-	foreach_dart(finest_map(m), [&](Dart d) {
-		if (dart_level(m, d) != 3)
-			return true;
-		young = d;
-		return false;
-	});
+	const Dart young = first_dart_of_level(m, 3);
 	EXPECT_FALSE(is_dart_valid(level_view(m, 2), young));
 	EXPECT_TRUE(is_dart_valid(level_view(m, 3), young));
 }
@@ -427,16 +434,6 @@ TEST(MRMap2, RefusalsLeaveTheMapUnchanged)
 
 TEST(MRMap2, IntegrityFindsBrokenLabels)
 {
-	const auto first_dart_of_level = [](const MRMap2& m, uint32 l) {
-		Dart r;
-		foreach_dart(finest_map(m), [&](Dart d) {
-			if (dart_level(m, d) != l)
-				return true;
-			r = d;
-			return false;
-		});
-		return r;
-	};
 	{
 		MRMap2 m(cube());
 		add_level(m, Refinement::Quadrangular);
@@ -471,22 +468,6 @@ TEST(MRMap2, IntegrityFindsBrokenLabels)
 		EXPECT_TRUE(check_integrity(level_view(m, 1)).ok()) << "the finest level does not read the ids";
 	}
 }
-
-namespace
-{
-/// The first dart of level l of the finest map.
-Dart first_dart_of_level(const MRMap2& m, uint32 l)
-{
-	Dart r;
-	foreach_dart(finest_map(m), [&](Dart d) {
-		if (dart_level(m, d) != l)
-			return true;
-		r = d;
-		return false;
-	});
-	return r;
-}
-} // namespace
 
 TEST(MRMap2Attributes, VerticesHaveAValueAtEveryLevel)
 {
