@@ -64,14 +64,11 @@ void add_level(MRMap2& m, Refinement r)
 	// the faces and edges of the finest level, checked before any change
 	std::vector<Dart> faces, edges;
 	bool regular = true, triangles = true;
+	const MRLevelView2 top(s, finest);
 	foreach_cell(map, [&](CMap2::Face f) {
-		uint32 k = 0, youngest = 0;
-		foreach_dart_of_orbit(map, f, [&](Dart d) {
-			++k;
-			youngest = std::max<uint32>(youngest, (*s.level)[d.index]);
-		});
-		regular = regular && youngest == finest;
-		triangles = triangles && k == 3;
+		// a face of a coarser level, whose neighbours' midpoints cut its edges, is not regular
+		regular = regular && face_level(top, f) == finest;
+		triangles = triangles && codegree(map, f) == 3;
 		faces.push_back(f.dart);
 	});
 	if (!regular)

@@ -923,3 +923,19 @@ TEST(MRMap2Adaptive, RandomRefinementAndCoarsening)
 		(void)h;
 	}
 }
+
+TEST(MRMap2Adaptive, AddLevelRefusesAnAdaptiveHierarchy)
+{
+	MRMap2 m(cube());
+	subdivide_face(m, test::all<MRMap2::Face>(m)[0], Refinement::Quadrangular);
+	const uint32 darts = nb_darts(finest_map(m));
+	// the other faces of level 0 have midpoints of level 1 but no children
+	EXPECT_THROW(add_level(m, Refinement::Quadrangular), std::invalid_argument);
+	EXPECT_EQ(nb_darts(finest_map(m)), darts);
+	EXPECT_EQ(max_level(m), 1u);
+	expect_ok(check_integrity(m));
+	// and remove_finest_level takes an adaptive level away
+	remove_finest_level(m);
+	EXPECT_EQ(f_vector(m), (std::vector<uint32>{8, 12, 6}));
+	expect_ok(check_integrity(m));
+}
