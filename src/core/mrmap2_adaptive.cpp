@@ -91,15 +91,28 @@ void write_fine(MRState2& s, uint32 slot, Dart d, uint32 i)
 /// Gives vertex x a line at level l when it has none there (it reads a
 /// coarser one): the new line sits in its chain between the coarser and the
 /// finer ones, with a copy of the values it read.
+/// In the chain of vertex x: the line read at level l, and the finer line
+/// that refines it (INVALID_INDEX when it is the newest).
+struct ChainPlace
+{
+	uint32 line, above;
+};
+ChainPlace chain_place(const MRState2& s, Dart x, uint32 l)
+{
+	const detail::MRCellIndex& ci = s.cells[0];
+	ChainPlace p{(*ci.index)[x.index], INVALID_INDEX};
+	while ((*ci.level)[p.line] > l)
+	{
+		p.above = p.line;
+		p.line = (*ci.down)[p.line];
+	}
+	return p;
+}
+
 void ensure_vertex_line(MRState2& s, Dart x, uint32 l)
 {
 	detail::MRCellIndex& ci = s.cells[0];
-	uint32 i = index(s, 0)[x.index], above = INVALID_INDEX;
-	while ((*ci.level)[i] > l)
-	{
-		above = i;
-		i = (*ci.down)[i];
-	}
+	const auto [i, above] = chain_place(s, x, l);
 	if ((*ci.level)[i] == l)
 		return;
 	const uint32 n = detail::mr_new_line(s, 0, l, x, i);
@@ -116,12 +129,7 @@ void ensure_vertex_line(MRState2& s, Dart x, uint32 l)
 void drop_vertex_line(MRState2& s, Dart x, uint32 l)
 {
 	detail::MRCellIndex& ci = s.cells[0];
-	uint32 i = index(s, 0)[x.index], above = INVALID_INDEX;
-	while ((*ci.level)[i] > l)
-	{
-		above = i;
-		i = (*ci.down)[i];
-	}
+	const auto [i, above] = chain_place(s, x, l);
 	if ((*ci.level)[i] != l || (*ci.down)[i] == INVALID_INDEX)
 		return;
 	const uint32 below = (*ci.down)[i];
@@ -150,7 +158,6 @@ struct Cut
 void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, const std::vector<Cut>& cuts,
 					   const std::vector<Dart>& created, uint32 face_line)
 {
-	const MRLevelView2 v(s, l);
 	if (indexed(s, 0))
 	{
 		AttributeArray<uint32>& idx = index(s, 0);
@@ -224,7 +231,6 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 		for (Dart y : created)
 			idx[y.index] = idx[corners.front().index];
 	}
-	(void)v;
 }
 
 /// Subdivides the leaf face of dart d (made at or before k, the face's
@@ -310,7 +316,7 @@ bool edge_is_subdivided(const MRLevelView2& v, MRMap2::Edge e)
 {
 	const MRState2& s = v.state();
 	const uint32 l = v.level();
-	if (l + 1 >= s.darts_per_level.size())
+	if (detail::mr_is_finest(s, l))
 		return false;
 	// cut: the other side of e.dart's piece is a new dart
 	return detail::mr_phi2(s, l + 1, e.dart) != detail::mr_phi2(s, l, e.dart);
@@ -320,7 +326,7 @@ bool face_is_subdivided(const MRLevelView2& v, MRMap2::Face f)
 {
 	const MRState2& s = v.state();
 	const uint32 l = v.level();
-	if (l + 1 >= s.darts_per_level.size() || face_level(v, f) < l)
+	if (detail::mr_is_finest(s, l) || face_level(v, f) < l)
 		return false;
 	const Dart x = detail::mr_phi1(s, l + 1, f.dart);
 	return level_of(s, x) == l + 1 && id_of(s, x) != id_of(s, f.dart);

@@ -92,29 +92,12 @@ Dart old_dart_of_sibling(const MRState2& s, uint32 l, Dart d)
 
 std::vector<uint32> mr_vertex_parents(const MRState2& s, uint32 l, Dart v)
 {
-	const auto level = s.level->view();
 	std::vector<uint32> parents;
-	// a midpoint: one of its darts has an old dart on its other side at level l
-	mr_foreach_dart_of_slot(s, 0, l, v, [&](Dart x) {
-		const Dart y = mr_phi2(s, l, x); // the other side at level l: old for a piece of a cut edge
-		if (level[y.index] >= l)
-			return true;
-		parents = {mr_index_of(s, l - 1, 0, y), mr_index_of(s, l - 1, 0, mr_phi2(s, l - 1, y))};
-		return false;
-	});
-	if (!parents.empty())
-		return parents;
-	// a centre: the face of level l - 1 of a corner of one of its faces
-	Dart corner;
-	mr_foreach_dart_of_slot(s, 2, l, v, [&](Dart x) {
-		if (level[x.index] >= l)
-			return true;
-		corner = x;
-		return false;
-	});
-	if (!corner.is_valid())
-		return parents;
-	mr_foreach_dart_of_slot(s, 2, l - 1, corner, [&](Dart x) { parents.push_back(mr_index_of(s, l - 1, 0, x)); });
+	const auto [origin, d] = mr_vertex_origin(s, l, v);
+	if (origin == MRVertexOrigin::Midpoint)
+		parents = {mr_index_of(s, l - 1, 0, d), mr_index_of(s, l - 1, 0, mr_phi2(s, l - 1, d))};
+	else if (origin == MRVertexOrigin::Centre)
+		mr_foreach_dart_of_slot(s, 2, l - 1, d, [&](Dart x) { parents.push_back(mr_index_of(s, l - 1, 0, x)); });
 	return parents;
 }
 

@@ -179,52 +179,19 @@ private:
 	}
 	bool finest(uint32 l) const
 	{
-		return l + 1 >= s_.darts_per_level.size();
+		return detail::mr_is_finest(s_, l);
 	}
 
-	/// mr_phi1, giving up after more steps than there are darts.
+	/// mr_phi1 and mr_phi_1 giving up after more steps than there are darts.
 	std::optional<Dart> phi1(uint32 l, Dart d) const
 	{
-		Dart it = cgogn::phi1(s_.map, d);
-		if (finest(l))
-			return it;
-		const uint8 e = (*s_.edge_id)[d.index];
-		uint32 steps = 0;
-		while (level(it) > l)
-		{
-			while ((*s_.edge_id)[it.index] != e)
-			{
-				it = cgogn::phi1(s_.map, cgogn::phi2(s_.map, it));
-				if (++steps > limit_)
-					return std::nullopt;
-			}
-			it = cgogn::phi1(s_.map, it);
-			if (++steps > limit_)
-				return std::nullopt;
-		}
-		return it;
+		const Dart r = detail::mr_phi1(s_, l, d, detail::MRStepLimit{limit_});
+		return r.is_valid() ? std::optional<Dart>(r) : std::nullopt;
 	}
-	/// mr_phi_1, giving up in the same way.
 	std::optional<Dart> phi_1(uint32 l, Dart d) const
 	{
-		Dart it = cgogn::phi_1(s_.map, d);
-		if (finest(l))
-			return it;
-		const uint8 e = (*s_.edge_id)[it.index];
-		uint32 steps = 0;
-		while (level(it) > l)
-		{
-			it = cgogn::phi_1(s_.map, it);
-			while ((*s_.edge_id)[it.index] != e)
-			{
-				it = cgogn::phi_1(s_.map, cgogn::phi2(s_.map, it));
-				if (++steps > limit_)
-					return std::nullopt;
-			}
-			if (++steps > limit_)
-				return std::nullopt;
-		}
-		return it;
+		const Dart r = detail::mr_phi_1(s_, l, d, detail::MRStepLimit{limit_});
+		return r.is_valid() ? std::optional<Dart>(r) : std::nullopt;
 	}
 	std::optional<Dart> phi2(uint32 l, Dart d) const
 	{

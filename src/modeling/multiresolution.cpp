@@ -107,53 +107,21 @@ void edge_terms(const MRLevelView2& c, E e, MRBank bank, Terms& t)
 	add_centroid(c, F(d2), 0.25, t);
 }
 
-/// What a vertex of level l is: a vertex of level l - 1 (`from` is its dart
-/// there), the midpoint of an edge of level l - 1 (`from` is a dart of it),
-/// or the centre of a face of level l - 1 (`from` is a dart of it).
-enum class Kind
-{
-	Old,
-	Midpoint,
-	Centre,
-	Unknown,
-};
-std::pair<Kind, Dart> kind_of(const MRMap2& m, uint32 l, V v)
-{
-	const MRLevelView2 f = level_view(m, l);
-	std::pair<Kind, Dart> r{Kind::Unknown, Dart()};
-	foreach_dart_of_orbit(f, v, [&](Dart d) {
-		// a piece of a cut edge has an old dart on its other side at level l
-		if (dart_level(m, d) < l)
-			r = {Kind::Old, d};
-		else if (dart_level(m, phi2(f, d)) < l)
-			r = {Kind::Midpoint, phi2(f, d)};
-		return r.first != Kind::Old;
-	});
-	if (r.first != Kind::Unknown)
-		return r;
-	// a centre: a corner of one of its faces
-	foreach_dart_of_orbit(f, F(v.dart), [&](Dart d) {
-		if (dart_level(m, d) < l)
-			r = {Kind::Centre, d};
-		return r.first == Kind::Unknown;
-	});
-	return r;
-}
-
 /// The rule giving the position of vertex v of level l from level l - 1.
 void rule_terms(const MRMap2& m, uint32 l, V v, MRBank bank, Terms& t)
 {
 	const MRLevelView2 c = level_view(m, l - 1);
-	const auto [kind, d] = kind_of(m, l, v);
-	switch (kind)
+	using Origin = detail::MRVertexOrigin;
+	const auto [origin, d] = detail::mr_vertex_origin(detail::mr_state_of(m), l, v.dart);
+	switch (origin)
 	{
-	case Kind::Old:
+	case Origin::Old:
 		even_terms(c, V(d), bank, t);
 		break;
-	case Kind::Midpoint:
+	case Origin::Midpoint:
 		edge_terms(c, E(d), bank, t);
 		break;
-	case Kind::Centre:
+	case Origin::Centre:
 		if (bank == MRBank::Loop)
 			throw std::invalid_argument("Loop bank: level " + std::to_string(l) + " has face centres");
 		add_centroid(c, F(d), 1.0, t);

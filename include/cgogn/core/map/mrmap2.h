@@ -244,22 +244,49 @@ inline MRLevelView2 read_level(const MRMap2& m)
 	return MRLevelView2(m, current_level(m));
 }
 
-/// Whether view v reads the finest level, where the relations and cells are
-/// those of the finest map. O(1).
+/// Whether level l is the finest level of s (or above it), where the
+/// relations and cells are those of the finest map. O(1).
+CGOGN_INLINE bool mr_is_finest(const MRState2& s, uint32 l)
+{
+	return l + 1 >= s.darts_per_level.size();
+}
+/// Whether view v reads the finest level. O(1).
 CGOGN_INLINE bool mr_is_finest(const MRLevelView2& v)
 {
-	return v.level() + 1 >= v.state().darts_per_level.size();
+	return mr_is_finest(v.state(), v.level());
 }
+
+/// The step budget of the level walks: unlimited (the relations' own use,
+/// checked away by the compiler), or a count that check_integrity gives so
+/// that broken labels end a walk instead of looping (see MRStepLimit).
+struct MRNoStepLimit
+{
+	static constexpr bool spend()
+	{
+		return true;
+	}
+};
+/// A budget of n steps: spend() is false once they are used.
+struct MRStepLimit
+{
+	uint32 left;
+	bool spend()
+	{
+		return left-- > 0;
+	}
+};
 
 /// phi1 at level l (Untereiner et al., the CPH model): from d, walk the
 /// finest face; at every vertex born after level l, turn around it to the
 /// piece of d's edge (the dart with d's edge id) and go on, until a dart of
 /// level <= l. O(number of finest darts walked): 1 at the finest level,
-/// about 2^(max_level - l) pieces of the edge below it.
-CGOGN_INLINE Dart mr_phi1(const MRState2& s, uint32 l, Dart d)
+/// about 2^(max_level - l) pieces of the edge below it. With a limited
+/// budget, INVALID when it runs out.
+template <typename BUDGET = MRNoStepLimit>
+CGOGN_INLINE Dart mr_phi1(const MRState2& s, uint32 l, Dart d, BUDGET budget = {})
 {
 	Dart it = phi1(s.map, d);
-	if (l + 1 >= s.darts_per_level.size())
+	if (mr_is_finest(s, l))
 		return it;
 	const auto level = s.level->view();
 	const auto edge_id = s.edge_id->view();
@@ -267,27 +294,40 @@ CGOGN_INLINE Dart mr_phi1(const MRState2& s, uint32 l, Dart d)
 	while (level[it.index] > l)
 	{
 		while (edge_id[it.index] != e)
+		{
+			if (!budget.spend())
+				return Dart();
 			it = phi1(s.map, phi2(s.map, it));
+		}
+		if (!budget.spend())
+			return Dart();
 		it = phi1(s.map, it);
 	}
 	return it;
 }
 
 /// phi_1 at level l: the inverse of mr_phi1, walking the finest face
-/// backwards. O(degrees of the finest faces walked).
-CGOGN_INLINE Dart mr_phi_1(const MRState2& s, uint32 l, Dart d)
+/// backwards. O(degrees of the finest faces walked). Budget as mr_phi1.
+template <typename BUDGET = MRNoStepLimit>
+CGOGN_INLINE Dart mr_phi_1(const MRState2& s, uint32 l, Dart d, BUDGET budget = {})
 {
 	Dart it = phi_1(s.map, d);
-	if (l + 1 >= s.darts_per_level.size())
+	if (mr_is_finest(s, l))
 		return it;
 	const auto level = s.level->view();
 	const auto edge_id = s.edge_id->view();
 	const uint8 e = edge_id[it.index];
 	while (level[it.index] > l)
 	{
+		if (!budget.spend())
+			return Dart();
 		it = phi_1(s.map, it);
 		while (edge_id[it.index] != e)
+		{
+			if (!budget.spend())
+				return Dart();
 			it = phi_1(s.map, phi2(s.map, it));
+		}
 	}
 	return it;
 }
@@ -296,7 +336,7 @@ CGOGN_INLINE Dart mr_phi_1(const MRState2& s, uint32 l, Dart d)
 /// leaves the end of d. O(cost of mr_phi1 + degree of a finest face).
 CGOGN_INLINE Dart mr_phi2(const MRState2& s, uint32 l, Dart d)
 {
-	if (l + 1 >= s.darts_per_level.size())
+	if (mr_is_finest(s, l))
 		return phi2(s.map, d);
 	return phi2(s.map, phi_1(s.map, mr_phi1(s, l, d)));
 }

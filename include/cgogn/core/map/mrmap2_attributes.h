@@ -32,7 +32,7 @@ CGOGN_INLINE uint32 mr_index_of(const MRState2& s, uint32 l, uint32 slot, Dart d
 {
 	const MRCellIndex& ci = s.cells[slot];
 	uint32 i = (*ci.index)[d.index];
-	if (l + 1 >= s.darts_per_level.size() || i == INVALID_INDEX)
+	if (mr_is_finest(s, l) || i == INVALID_INDEX)
 		return i;
 	const auto level = ci.level->view();
 	const auto down = ci.down->view();

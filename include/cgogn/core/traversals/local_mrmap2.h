@@ -221,6 +221,46 @@ void MRMap2::parallel_foreach_cell(const FUNC& f) const
 	detail::read_level(*this).parallel_foreach_cell<CELL>(f);
 }
 
+namespace detail
+{
+
+/// What a vertex of level l >= 1 comes from at level l - 1 (see mr_vertex_origin).
+enum class MRVertexOrigin
+{
+	Old,      ///< a vertex of level l - 1; the dart is one of its darts there
+	Midpoint, ///< the midpoint of an edge of level l - 1; the dart is a dart of that edge
+	Centre,   ///< the centre of a face of level l - 1; the dart is a dart of that face
+	Unknown,  ///< none of these (a pattern that makes other vertices)
+};
+
+/// What vertex v (any of its darts) of level l >= 1 is at level l - 1, with
+/// a dart of level <= l - 1 there: a piece of a cut edge has an old dart on
+/// its other side at level l, a centre has an old corner in each of its
+/// faces. O(degree of v + degree of one of its faces) level steps.
+inline std::pair<MRVertexOrigin, Dart> mr_vertex_origin(const MRState2& s, uint32 l, Dart v)
+{
+	const MRLevelView2 f(s, l);
+	const auto level = s.level->view();
+	std::pair<MRVertexOrigin, Dart> r{MRVertexOrigin::Unknown, Dart()};
+	foreach_dart_of_orbit(f, MRMap2::Vertex(v), [&](Dart d) {
+		if (level[d.index] < l)
+			r = {MRVertexOrigin::Old, d};
+		else if (const Dart e = mr_phi2(s, l, d); level[e.index] < l)
+			r = {MRVertexOrigin::Midpoint, e};
+		return r.first != MRVertexOrigin::Old; // an old dart decides
+	});
+	if (r.first != MRVertexOrigin::Unknown)
+		return r;
+	foreach_dart_of_orbit(f, MRMap2::Face(v), [&](Dart d) {
+		if (level[d.index] < l)
+			r = {MRVertexOrigin::Centre, d};
+		return r.first == MRVertexOrigin::Unknown;
+	});
+	return r;
+}
+
+} // namespace detail
+
 // ---- local traversals: those of a 2-map (see local_cmap2.h), at the level read
 
 /// Edges incident to vertex v, in cyclic order.
