@@ -23,6 +23,7 @@
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/mrmap2.h>
 #include <cgogn/core/map/mrmap2_attributes.h>
+#include <cgogn/core/map/mrmap3.h>
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/operators/cmap1.h>
@@ -37,6 +38,7 @@
 #include <cgogn/core/operators/incidence_graph.h>
 #include <cgogn/core/operators/maintenance.h>
 #include <cgogn/core/operators/mrmap2.h>
+#include <cgogn/core/operators/mrmap3.h>
 #include <cgogn/core/operators/nmap.h>
 #include <cgogn/core/parallel/thread_pool.h>
 #include <cgogn/core/properties/graph_properties.h>
@@ -53,6 +55,7 @@
 #include <cgogn/core/traversals/local_graph.h>
 #include <cgogn/core/traversals/local_incidence_graph.h>
 #include <cgogn/core/traversals/local_mrmap2.h>
+#include <cgogn/core/traversals/local_mrmap3.h>
 #include <cgogn/core/traversals/local_views.h>
 #include <cgogn/core/traversals/parallel.h>
 #include <cgogn/core/utils/error.h>

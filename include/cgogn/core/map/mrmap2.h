@@ -3,6 +3,7 @@
 
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/mesh_traits.h>
+#include <cgogn/core/map/mr_common.h>
 
 #include <array>
 #include <memory>
@@ -255,26 +256,6 @@ CGOGN_INLINE bool mr_is_finest(const MRLevelView2& v)
 {
 	return mr_is_finest(v.state(), v.level());
 }
-
-/// The step budget of the level walks: unlimited (the relations' own use,
-/// checked away by the compiler), or a count that check_integrity gives so
-/// that broken labels end a walk instead of looping (see MRStepLimit).
-struct MRNoStepLimit
-{
-	static constexpr bool spend()
-	{
-		return true;
-	}
-};
-/// A budget of n steps: spend() is false once they are used.
-struct MRStepLimit
-{
-	uint32 left;
-	bool spend()
-	{
-		return left-- > 0;
-	}
-};
 
 /// phi1 at level l (Untereiner et al., the CPH model): from d, walk the
 /// finest face; at every vertex born after level l, turn around it to the

@@ -6,16 +6,6 @@
 namespace cgogn
 {
 
-/// The subdivision pattern of a new level.
-enum class Refinement
-{
-	Triangular,   ///< 2-D: every triangle into 4 triangles (edge midpoints joined).
-	Quadrangular, ///< 2-D: every k-gon into k quads (edge midpoints joined to a face centre).
-	Mixed,        ///< 2-D: triangles as Triangular, the other faces as Quadrangular.
-	Hexahedral,   ///< 3-D: every hexahedron into 8.
-	TetraOcta,    ///< 3-D: a tetrahedron into 4 tetrahedra and an octahedron, an octahedron into 6 and 8.
-};
-
 /// Adds a level above the finest one by refining every face of the finest
 /// level with pattern r: every edge is cut at its middle, and every face is
 /// cut as r says. The new darts get the new level, the pieces of a cut edge

@@ -7,6 +7,7 @@
 #include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/mrmap2.h>
+#include <cgogn/core/map/mrmap3.h>
 
 #include <string>
 #include <vector>
@@ -47,6 +48,7 @@ struct IntegrityError
 		LevelCountWrong,     ///< a multiresolution map's per-level dart count disagrees with its darts' levels
 		LevelRelationBroken, ///< phi1, phi_1 or phi2 at a level leaves the level, does not end, or is not inverted
 		EdgeIdWrong,         ///< an edge id is above 2, or the two darts of a finest edge have different ids
+		FaceIdWrong,         ///< the darts of a finest face of a multiresolution 3-map have different face ids
 		LevelLineWrong,      ///< a multiresolution line holds at a level where its cell is not, or refines a wrong line
 	};
 	Kind kind;                   ///< The violated invariant.
@@ -147,5 +149,19 @@ IntegrityReport check_integrity(const MRMap2& m);
 /// The same checks for the level read by a view only (with the labels and
 /// counts of the whole map). O(number of darts x cost of a level step).
 IntegrityReport check_integrity(const MRLevelView2& v);
+
+/// Checks a multiresolution 3-map: the finest map (check_integrity of a
+/// CMap3), the labels (the per-level dart counts, one edge id per finest
+/// edge, one face id per finest face) and, at every level l, the relations
+/// of the darts of level <= l: phi1 is a permutation of them (phi_1 its
+/// inverse), phi2 and phi3 are fixed-point-free involutions, phi3 o phi1 is
+/// an involution, boundary marks are constant on the volumes and phi3 never
+/// joins two boundary darts. A walk that does not end (broken labels) is
+/// reported, not followed forever. O(number of darts x levels x cost of a
+/// level step).
+IntegrityReport check_integrity(const MRMap3& m);
+/// The same checks for the level read by a view only (with the labels and
+/// counts of the whole map). O(number of darts x cost of a level step).
+IntegrityReport check_integrity(const MRLevelView3& v);
 
 } // namespace cgogn

@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: MIT
+// Multiresolution 3-maps: regular hexahedral levels, level relations, views,
+// local traversals against extracted levels, integrity.
+#include <cgogn/core.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+using namespace cgogn;
+
+namespace
+{
+
+CMap3 one_hexahedron()
+{
+	CMap3 m;
+	add_hexa(m);
+	return m;
+}
+
+/// Two hexahedra glued along a face.
+CMap3 two_hexahedra()
+{
+	CMap3 m;
+	const CMap3::Volume a = add_hexa(m);
+	const CMap3::Volume b = add_hexa(m);
+	sew_volumes(m, CMap3::Face(a.dart), CMap3::Face(b.dart));
+	return m;
+}
+
+/// The relations of every dart of the finest map.
+std::map<uint32, std::array<uint32, 3>> relations(const CMap3& m)
+{
+	std::map<uint32, std::array<uint32, 3>> r;
+	foreach_dart(m, [&](Dart d) { r[d.index] = {phi1(m, d).index, phi2(m, d).index, phi3(m, d).index}; });
+	return r;
+}
+
+/// The hexahedral grid of n x n x n cells: (V, E, F, W).
+std::vector<uint32> grid_f_vector(uint32 n)
+{
+	return {(n + 1) * (n + 1) * (n + 1), 3 * n * (n + 1) * (n + 1), 3 * n * n * (n + 1), n * n * n};
+}
+
+} // namespace
+
+TEST(MRMap3, HexahedralLevelsOfOneHexahedron)
+{
+	MRMap3 m(one_hexahedron());
+	EXPECT_EQ(max_level(m), 0u);
+	for (uint32 k = 1; k <= 3; ++k)
+	{
+		add_level(m, Refinement::Hexahedral);
+		ASSERT_EQ(max_level(m), k);
+		EXPECT_EQ(current_level(m), k);
+		// every level keeps its own counts after the new one is added
+		for (uint32 j = 0; j <= k; ++j)
+		{
+			const uint32 n = 1u << j;
+			const MRLevelView3 v = level_view(m, j);
+			EXPECT_EQ(f_vector(v), grid_f_vector(n)) << "level " << j << " of " << k;
+			// 24 darts per hexahedron, 4 per boundary quad
+			EXPECT_EQ(nb_darts(v), 24 * n * n * n + 24 * n * n) << "level " << j;
+			EXPECT_EQ(euler_characteristic(v), 1) << "level " << j;
+		}
+		const IntegrityReport r = check_integrity(m);
+		EXPECT_TRUE(r.ok()) << r.nb_errors << " errors";
+	}
+	EXPECT_EQ(f_vector(m), f_vector(finest_map(m)));
+}
+
+TEST(MRMap3, LevelFacesAreQuadsAndVolumesHexahedra)
+{
+	MRMap3 m(two_hexahedra());
+	add_level(m, Refinement::Hexahedral);
+	add_level(m, Refinement::Hexahedral);
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView3 v = level_view(m, l);
+		const uint32 n = 1u << l;
+		EXPECT_EQ(f_vector(v), (std::vector<uint32>{(2 * n + 1) * (n + 1) * (n + 1),
+													(2 * n) * (n + 1) * (n + 1) + 2 * (2 * n + 1) * n * (n + 1),
+													(2 * n + 1) * n * n + 2 * (2 * n) * n * (n + 1), 2 * n * n * n}))
+			<< "level " << l;
+		uint32 nb_faces = 0;
+		foreach_cell(v, [&](MRMap3::Face f) {
+			++nb_faces;
+			EXPECT_EQ(codegree(v, f), 4u);
+		});
+		foreach_cell(v, [&](MRMap3::Volume w) {
+			EXPECT_EQ(codegree(v, w), 6u);
+			uint32 nb_vertices = 0;
+			foreach_incident_vertex(v, w, [&](MRMap3::Vertex) { ++nb_vertices; });
+			EXPECT_EQ(nb_vertices, 8u);
+		});
+		EXPECT_GT(nb_faces, 0u);
+		EXPECT_TRUE(check_integrity(v).ok());
+	}
+}
+
+TEST(MRMap3, RemovingLevelsGivesBackTheSameMap)
+{
+	MRMap3 m(two_hexahedra());
+	const auto before0 = relations(finest_map(m));
+	add_level(m, Refinement::Hexahedral);
+	const auto before1 = relations(finest_map(m));
+	const std::vector<uint32> f1 = f_vector(m);
+	add_level(m, Refinement::Hexahedral);
+	remove_finest_level(m);
+	EXPECT_EQ(max_level(m), 1u);
+	EXPECT_EQ(current_level(m), 1u);
+	EXPECT_EQ(relations(finest_map(m)), before1);
+	EXPECT_EQ(f_vector(m), f1);
+	EXPECT_TRUE(check_integrity(m).ok());
+	remove_finest_level(m);
+	EXPECT_EQ(relations(finest_map(m)), before0);
+	EXPECT_EQ(nb_darts_at_level(m, 0), uint32(before0.size()));
+	EXPECT_THROW(remove_finest_level(m), std::invalid_argument);
+}
+
+TEST(MRMap3, ExtractedLevelsAgreeWithTheViews)
+{
+	MRMap3 m(two_hexahedra());
+	add_level(m, Refinement::Hexahedral);
+	add_level(m, Refinement::Hexahedral);
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView3 v = level_view(m, l);
+		const CMap3 flat = extract_level(m, l);
+		ASSERT_TRUE(check_integrity(flat).ok()) << "level " << l;
+		EXPECT_EQ(f_vector(flat), f_vector(v));
+		// flat dart i is the i-th dart of the level in the finest map's order
+		std::vector<Dart> source;
+		foreach_dart(v, [&](Dart d) { source.push_back(d); });
+		ASSERT_EQ(source.size(), std::size_t(nb_darts(flat)));
+		std::map<uint32, uint32> flat_of;
+		for (uint32 i = 0; i < source.size(); ++i)
+			flat_of[source[i].index] = i;
+		for (uint32 i = 0; i < source.size(); ++i)
+		{
+			const Dart d = source[i];
+			ASSERT_EQ(flat_of[phi1(v, d).index], phi1(flat, Dart(i)).index);
+			ASSERT_EQ(flat_of[phi_1(v, d).index], phi_1(flat, Dart(i)).index);
+			ASSERT_EQ(flat_of[phi2(v, d).index], phi2(flat, Dart(i)).index);
+			ASSERT_EQ(flat_of[phi3(v, d).index], phi3(flat, Dart(i)).index);
+		}
+		// the local traversals of the level meet the cells the flat map's meet
+		const auto count_around = [](const auto& mesh, auto cell) {
+			std::vector<uint32> n(4, 0);
+			if constexpr (requires { foreach_incident_vertex(mesh, cell, [](MRMap3::Vertex) {}); })
+				foreach_incident_vertex(mesh, cell, [&](MRMap3::Vertex) { ++n[0]; });
+			if constexpr (requires { foreach_incident_edge(mesh, cell, [](MRMap3::Edge) {}); })
+				foreach_incident_edge(mesh, cell, [&](MRMap3::Edge) { ++n[1]; });
+			if constexpr (requires { foreach_incident_face(mesh, cell, [](MRMap3::Face) {}); })
+				foreach_incident_face(mesh, cell, [&](MRMap3::Face) { ++n[2]; });
+			if constexpr (requires { foreach_incident_volume(mesh, cell, [](MRMap3::Volume) {}); })
+				foreach_incident_volume(mesh, cell, [&](MRMap3::Volume) { ++n[3]; });
+			return n;
+		};
+		for (uint32 i = 0; i < source.size(); ++i)
+		{
+			if (is_boundary(flat, Dart(i)))
+				continue;
+			const Dart d = source[i];
+			const Dart e(i);
+			EXPECT_EQ(count_around(v, MRMap3::Vertex(d)), count_around(flat, CMap3::Vertex(e)));
+			EXPECT_EQ(count_around(v, MRMap3::Edge(d)), count_around(flat, CMap3::Edge(e)));
+			EXPECT_EQ(count_around(v, MRMap3::Face(d)), count_around(flat, CMap3::Face(e)));
+			EXPECT_EQ(count_around(v, MRMap3::Volume(d)), count_around(flat, CMap3::Volume(e)));
+			uint32 a = 0, b = 0;
+			foreach_adjacent_vertex_through_edge(v, MRMap3::Vertex(d), [&](MRMap3::Vertex) { ++a; });
+			foreach_adjacent_vertex_through_edge(flat, CMap3::Vertex(e), [&](CMap3::Vertex) { ++b; });
+			EXPECT_EQ(a, b);
+			a = b = 0;
+			foreach_adjacent_volume_through_face(v, MRMap3::Volume(d), [&](MRMap3::Volume) { ++a; });
+			foreach_adjacent_volume_through_face(flat, CMap3::Volume(e), [&](CMap3::Volume) { ++b; });
+			EXPECT_EQ(a, b);
+			EXPECT_EQ(degree(v, MRMap3::Edge(d)), degree(flat, CMap3::Edge(e)));
+		}
+	}
+	EXPECT_THROW(extract_level(m, 3), std::out_of_range);
+}
+
+TEST(MRMap3, ParallelTraversalReportsEachCellOnce)
+{
+	MRMap3 m(two_hexahedra());
+	add_level(m, Refinement::Hexahedral);
+	add_level(m, Refinement::Hexahedral);
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView3 v = level_view(m, l);
+		std::atomic<uint32> n{0};
+		parallel_foreach_cell(v, [&](MRMap3::Vertex) { ++n; });
+		EXPECT_EQ(n.load(), nb_cells<MRMap3::Vertex>(v));
+		n = 0;
+		parallel_foreach_cell(v, [&](MRMap3::Volume) { ++n; });
+		EXPECT_EQ(n.load(), 2u << (3 * l));
+	}
+}
+
+TEST(MRMap3, RefusalsLeaveTheMapUnchanged)
+{
+	CMap3 tet;
+	add_tetra(tet);
+	MRMap3 m(std::move(tet));
+	const auto before = relations(finest_map(m));
+	EXPECT_THROW(add_level(m, Refinement::Hexahedral), std::invalid_argument);
+	EXPECT_THROW(add_level(m, Refinement::Triangular), std::invalid_argument);
+	EXPECT_EQ(relations(finest_map(m)), before);
+	EXPECT_EQ(max_level(m), 0u);
+	EXPECT_THROW(set_current_level(m, 1), std::out_of_range);
+	EXPECT_THROW(level_view(m, 1), std::out_of_range);
+
+	// cell attributes are refused, the map given back untouched
+	CMap3 with_positions = one_hexahedron();
+	add_attribute<double, CMap3::Vertex>(with_positions, "weight");
+	EXPECT_THROW(MRMap3{std::move(with_positions)}, std::invalid_argument);
+	EXPECT_EQ(nb_cells<CMap3::Vertex>(with_positions), 8u);
+	EXPECT_NE((get_attribute<double, CMap3::Vertex>(with_positions, "weight")), nullptr);
+}
+
+TEST(MRMap3, PerDartAttributesAreExtracted)
+{
+	CMap3 base = one_hexahedron();
+	auto tag = add_attribute<uint32, CMap3::HalfEdge>(base, "tag");
+	foreach_dart(base, [&](Dart d) { (*tag)[d.index] = d.index + 7; });
+	MRMap3 m(std::move(base));
+	add_level(m, Refinement::Hexahedral);
+	const CMap3 flat = extract_level(m, 0);
+	const auto t = get_attribute<uint32, CMap3::HalfEdge>(flat, "tag");
+	ASSERT_NE(t, nullptr);
+	uint32 i = 0;
+	foreach_dart(level_view(m, 0), [&](Dart d) { EXPECT_EQ((*t)[i++], d.index + 7); });
+}
+
+TEST(MRMap3, IntegrityFindsBrokenLabels)
+{
+	const auto refined = [] {
+		MRMap3 m(one_hexahedron());
+		add_level(m, Refinement::Hexahedral);
+		return m;
+	};
+	{
+		// one dart of a face with another face id
+		MRMap3 m = refined();
+		auto& s = detail::mr_state_of(m);
+		(*s.face_id)[0] = 9;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::FaceIdWrong));
+	}
+	{
+		// a wrong level count
+		MRMap3 m = refined();
+		detail::mr_state_of(m).darts_per_level[1] += 1;
+		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::LevelCountWrong));
+	}
+	{
+		// an inner face given the face id of the faces it lies between: phi1
+		// at level 0 turns into it
+		MRMap3 m = refined();
+		auto& s = detail::mr_state_of(m);
+		Dart inner;
+		foreach_dart(s.map, [&](Dart d) {
+			if ((*s.face_id)[d.index] != 0)
+			{
+				inner = d;
+				return false;
+			}
+			return true;
+		});
+		ASSERT_TRUE(inner.is_valid());
+		foreach_dart_of_orbit(s.map, CMap3::Face(inner), [&](Dart d) { (*s.face_id)[d.index] = 0; });
+		const IntegrityReport r = check_integrity(m);
+		EXPECT_FALSE(r.ok());
+		EXPECT_FALSE(r.has(IntegrityError::Kind::FaceIdWrong)); // the labels agree, the levels do not
+	}
+	{
+		// the pieces of an edge with different edge ids: phi1 at level 0 does not find the second half
+		MRMap3 m = refined();
+		auto& s = detail::mr_state_of(m);
+		Dart second_half;
+		foreach_dart(s.map, [&](Dart d) {
+			if ((*s.level)[d.index] == 1 && (*s.level)[phi2(s.map, d).index] == 0)
+			{
+				second_half = d;
+				return false;
+			}
+			return true;
+		});
+		ASSERT_TRUE(second_half.is_valid());
+		foreach_dart_of_orbit(s.map, CMap3::Edge(second_half), [&](Dart d) { (*s.edge_id)[d.index] += 1; });
+		EXPECT_FALSE(check_integrity(m).ok());
+	}
+}
