@@ -24,6 +24,7 @@
 #include <cgogn/core/map/mrmap2.h>
 #include <cgogn/core/map/mrmap2_attributes.h>
 #include <cgogn/core/map/mrmap3.h>
+#include <cgogn/core/map/mrmap3_attributes.h>
 #include <cgogn/core/map/orbits.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/operators/cmap1.h>

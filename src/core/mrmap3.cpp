@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The multiresolution 3-map: construction, levels, and the regular
 // hexahedral refinement.
+#include <cgogn/core/map/mrmap3_attributes.h>
 #include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/operators/mrmap3.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/local_mrmap3.h>
+
+#include "mr_indexing.h"
 
 #include <algorithm>
 #include <array>
@@ -17,17 +20,32 @@ namespace cgogn
 
 MRMap3::MRMap3(CMap3&& base)
 {
-	for (uint32 o = 0; o < NB_ORBITS; ++o)
-		if (detail::state_of(base).cell_index[o] != nullptr)
-			throw std::invalid_argument("MRMap3: the map has cell attributes (orbit " +
-										std::string(orbit_name(Orbit(o))) +
-										"), which a multiresolution 3-map does not carry; per-dart attributes only");
+	for (Orbit o : {Orbit::PHI1, Orbit::PHI2, Orbit::PHI21})
+		if (detail::state_of(base).cell_index[orbit_index(o)] != nullptr)
+			throw std::invalid_argument("MRMap3: the map indexes the cells of one volume (orbit " +
+										std::string(orbit_name(o)) + "), which a multiresolution 3-map does not carry");
 	state_.map = std::move(base);
 	AttributeContainer& darts = *detail::state_of(state_.map).darts;
 	state_.level = darts.add_attribute<uint8>("__mr_level", 0);
 	state_.edge_id = darts.add_attribute<uint8>("__mr_edge_id", 0);
 	state_.face_id = darts.add_attribute<uint8>("__mr_face_id", 0);
 	state_.darts_per_level = {nb_darts(state_.map)};
+	// the orbits the map indexes become level-0 lines of the hierarchy, which
+	// indexes them from now on (the finest map's operators run without indices)
+	detail::mr_take_over_indexing(state_);
+}
+
+void detail::mr_index_orbit(MRMap3& m, Orbit o)
+{
+	MRState3& s = mr_state_of(m);
+	const uint32 slot = MRDim<MRState3>::slot(o);
+	AttributeContainer& darts = *state_of(s.map).darts;
+	auto index = darts.add_attribute<uint32>("__mr_index_" + std::string(orbit_name(o)), INVALID_INDEX);
+	s.cells[slot].index = index.get();
+	state_of(s.map).cells[orbit_index(o)]->set_cell_index(index.get());
+	mr_add_slot_attributes(s, slot);
+	for (uint32 l = 0; l <= max_level(m); ++l)
+		mr_index_cells_at(s, slot, l);
 }
 
 void set_current_level(MRMap3& m, uint32 l)
@@ -278,6 +296,9 @@ void add_level(MRMap3& m, Refinement r)
 	HexRefinement refinement(s);
 	refinement.check_hexahedra();
 	refinement.run();
+	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
+		if (s.cells[slot].index != nullptr)
+			detail::mr_index_cells_at(s, slot, max_level(m));
 }
 
 void remove_finest_level(MRMap3& m)
@@ -310,6 +331,9 @@ void remove_finest_level(MRMap3& m)
 		detail::set_phi2(map, r.d, r.p2);
 		detail::set_phi3(map, r.d, r.p3);
 	}
+	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
+		if (s.cells[slot].index != nullptr)
+			detail::mr_unindex_cells_at(s, slot, finest);
 	s.darts_per_level.pop_back();
 	s.current_level = std::min(s.current_level, finest - 1);
 }
@@ -348,6 +372,8 @@ CMap3 extract_level(const MRMap3& m, uint32 l)
 		for (uint32 i = 0; i < source.size(); ++i)
 			b->copy_line_from(i, *a, source[i].index);
 	}
+	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
+		detail::mr_copy_cell_attributes(s, slot, l, flat, source);
 	detail::release_idle_marks(flat);
 	return flat;
 }

@@ -3,6 +3,8 @@
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/core/traversals/local_mrmap3.h>
 
+#include "mr_line_checks.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -146,6 +148,16 @@ IntegrityReport check_levels(const detail::MRState3& s, uint32 first, uint32 las
 		return r;
 	for (uint32 l = first; l <= last; ++l)
 		c.check_level(l);
+	if (!r.ok())
+		return r; // the lines are read through the level relations
+	const detail::MRReport add = [&](IntegrityError::Kind k, uint32 d, const std::string& what) { c.add(k, d, what); };
+	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
+	{
+		if (s.cells[slot].index == nullptr || !detail::mr_check_chains(s, slot, add))
+			continue;
+		for (uint32 l = first; l <= last; ++l)
+			detail::mr_check_lines(s, slot, l, add);
+	}
 	return r;
 }
 

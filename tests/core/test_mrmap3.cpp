@@ -216,12 +216,12 @@ TEST(MRMap3, RefusalsLeaveTheMapUnchanged)
 	EXPECT_THROW(set_current_level(m, 1), std::out_of_range);
 	EXPECT_THROW(level_view(m, 1), std::out_of_range);
 
-	// cell attributes are refused, the map given back untouched
-	CMap3 with_positions = one_hexahedron();
-	add_attribute<double, CMap3::Vertex>(with_positions, "weight");
-	EXPECT_THROW(MRMap3{std::move(with_positions)}, std::invalid_argument);
-	EXPECT_EQ(nb_cells<CMap3::Vertex>(with_positions), 8u);
-	EXPECT_NE((get_attribute<double, CMap3::Vertex>(with_positions, "weight")), nullptr);
+	// the cells of one volume cannot be indexed: refused, the map given back untouched
+	CMap3 with_corners = one_hexahedron();
+	add_attribute<double, CMap3::Vertex2>(with_corners, "weight");
+	EXPECT_THROW(MRMap3{std::move(with_corners)}, std::invalid_argument);
+	EXPECT_EQ(nb_cells<CMap3::Vertex>(with_corners), 8u);
+	EXPECT_NE((get_attribute<double, CMap3::Vertex2>(with_corners, "weight")), nullptr);
 }
 
 TEST(MRMap3, PerDartAttributesAreExtracted)
@@ -295,4 +295,235 @@ TEST(MRMap3, IntegrityFindsBrokenLabels)
 		foreach_dart_of_orbit(s.map, CMap3::Edge(second_half), [&](Dart d) { (*s.edge_id)[d.index] += 1; });
 		EXPECT_FALSE(check_integrity(m).ok());
 	}
+}
+
+TEST(MRMap3Attributes, VerticesHaveAValueAtEveryLevel)
+{
+	CMap3 c = one_hexahedron();
+	auto h0 = add_attribute<double, CMap3::Vertex>(c, "h");
+	double next = 1.0;
+	foreach_cell(c, [&](CMap3::Vertex v) {
+		(*h0)[v] = next * next;
+		next += 1.0;
+	});
+	MRMap3 m(std::move(c));
+	auto h = get_attribute<double, MRMap3::Vertex>(m, "h");
+	ASSERT_TRUE(h);
+	std::map<uint32, double> at0; // by dart
+	foreach_cell(m, [&](MRMap3::Vertex v) { at0[v.dart.index] = value<double>(m, h, v); });
+	ASSERT_EQ(at0.size(), 8u);
+	add_level(m, Refinement::Hexahedral);
+	add_level(m, Refinement::Hexahedral);
+	ASSERT_TRUE(check_integrity(m).ok());
+	const MRLevelView3 v0 = level_view(m, 0), v1 = level_view(m, 1);
+	for (auto [d, x] : at0)
+	{
+		EXPECT_EQ(value<double>(v1, h, MRMap3::Vertex(Dart(d))), x);
+		EXPECT_NE(index_of(v0, MRMap3::Vertex(Dart(d))), index_of(v1, MRMap3::Vertex(Dart(d))));
+	}
+	// at each level, a new vertex is the mean of the corners of the cell it
+	// is the middle of: an edge midpoint of its 2 old neighbours, a face
+	// centre of the 4 midpoints around it (whose mean is that of the
+	// corners), a volume centre of the 6 face centres around it
+	for (uint32 l = 1; l <= 2; ++l)
+	{
+		const MRLevelView3 v = level_view(m, l);
+		const auto is_old = [&](MRMap3::Vertex w) {
+			bool old = false;
+			foreach_dart_of_orbit(v, w, [&](Dart d) { return !(old = dart_level(m, d) < l); });
+			return old;
+		};
+		const auto neighbours = [&](MRMap3::Vertex x) {
+			std::vector<MRMap3::Vertex> n;
+			foreach_adjacent_vertex_through_edge(v, x, [&](MRMap3::Vertex w) { n.push_back(w); });
+			return n;
+		};
+		const auto mean = [&](const std::vector<MRMap3::Vertex>& ws) {
+			double sum = 0.0;
+			for (MRMap3::Vertex w : ws)
+				sum += value<double>(v, h, w);
+			return sum / double(ws.size());
+		};
+		std::vector<MRMap3::Vertex> midpoints, others;
+		std::vector<uint32> midpoint_darts;
+		foreach_cell(v, [&](MRMap3::Vertex x) {
+			if (is_old(x))
+				return;
+			std::vector<MRMap3::Vertex> old;
+			for (MRMap3::Vertex w : neighbours(x))
+				if (is_old(w))
+					old.push_back(w);
+			if (old.size() == 2)
+			{
+				EXPECT_NEAR(value<double>(v, h, x), mean(old), 1e-12);
+				midpoints.push_back(x);
+				foreach_dart_of_orbit(v, x, [&](Dart d) { midpoint_darts.push_back(d.index); });
+			}
+			else
+			{
+				EXPECT_TRUE(old.empty());
+				others.push_back(x);
+			}
+		});
+		std::sort(midpoint_darts.begin(), midpoint_darts.end());
+		uint32 face_centres = 0, volume_centres = 0;
+		for (MRMap3::Vertex x : others)
+		{
+			std::vector<MRMap3::Vertex> mids, all = neighbours(x);
+			for (MRMap3::Vertex w : all)
+				if (std::binary_search(midpoint_darts.begin(), midpoint_darts.end(), w.dart.index))
+					mids.push_back(w);
+			if (mids.empty())
+			{
+				EXPECT_EQ(all.size(), 6u);
+				EXPECT_NEAR(value<double>(v, h, x), mean(all), 1e-12);
+				++volume_centres;
+			}
+			else
+			{
+				EXPECT_EQ(mids.size(), 4u);
+				EXPECT_NEAR(value<double>(v, h, x), mean(mids), 1e-12);
+				++face_centres;
+			}
+		}
+		const uint32 n = 1u << (l - 1); // the level below is an n x n x n grid
+		EXPECT_EQ(midpoints.size(), 3 * n * (n + 1) * (n + 1)) << "level " << l;
+		EXPECT_EQ(face_centres, 3 * n * n * (n + 1)) << "level " << l;
+		EXPECT_EQ(volume_centres, n * n * n) << "level " << l;
+	}
+	// writing at level 1 leaves level 0 alone
+	set_current_level(m, 1);
+	foreach_cell(m, [&](MRMap3::Vertex v) { value<double>(m, h, v) = -1.0; });
+	for (auto [d, x] : at0)
+	{
+		EXPECT_EQ(value<double>(v0, h, MRMap3::Vertex(Dart(d))), x);
+		EXPECT_EQ(value<double>(v1, h, MRMap3::Vertex(Dart(d))), -1.0);
+	}
+	// removing the levels gives back level 0, lines and values
+	remove_finest_level(m);
+	remove_finest_level(m);
+	EXPECT_TRUE(check_integrity(m).ok());
+	for (auto [d, x] : at0)
+		EXPECT_EQ(value<double>(m, h, MRMap3::Vertex(Dart(d))), x);
+	uint32 lines = 0;
+	const AttributeContainer& vc = *detail::state_of(finest_map(m)).cells[orbit_index(Orbit::PHI21_PHI31)];
+	for (uint32 i = 0; i < vc.end_index(); ++i)
+		lines += vc.key()[i] != INVALID_INDEX;
+	EXPECT_EQ(lines, 8u);
+}
+
+TEST(MRMap3Attributes, RefinedCellsKeepTheirLinesAndChildrenCopyThem)
+{
+	MRMap3 m(two_hexahedra());
+	auto et = add_attribute<uint32, MRMap3::Edge>(m, "e");
+	auto ft = add_attribute<uint32, MRMap3::Face>(m, "f");
+	auto wt = add_attribute<uint32, MRMap3::Volume>(m, "w");
+	uint32 next = 1;
+	foreach_cell(m, [&](MRMap3::Edge e) { value<uint32>(m, et, e) = next++; });
+	foreach_cell(m, [&](MRMap3::Face f) { value<uint32>(m, ft, f) = next++; });
+	foreach_cell(m, [&](MRMap3::Volume w) { value<uint32>(m, wt, w) = next++; });
+	std::map<uint32, uint32> faces0, volumes0; // dart -> value
+	foreach_cell(m, [&](MRMap3::Face f) { faces0[f.dart.index] = value<uint32>(m, ft, f); });
+	foreach_cell(m, [&](MRMap3::Volume w) { volumes0[w.dart.index] = value<uint32>(m, wt, w); });
+	add_level(m, Refinement::Hexahedral);
+	ASSERT_TRUE(check_integrity(m).ok());
+	const MRLevelView3 v0 = level_view(m, 0), v1 = level_view(m, 1);
+	for (auto [d, x] : faces0)
+	{
+		EXPECT_EQ(value<uint32>(v0, ft, MRMap3::Face(Dart(d))), x);
+		EXPECT_EQ(value<uint32>(v1, ft, MRMap3::Face(Dart(d))), x) << "a child copies its parent";
+		EXPECT_NE(index_of(v1, MRMap3::Face(Dart(d))), index_of(v0, MRMap3::Face(Dart(d))));
+	}
+	for (auto [d, x] : volumes0)
+		EXPECT_EQ(value<uint32>(v1, wt, MRMap3::Volume(Dart(d))), x);
+	// children with a parent's value, inner cells with none: 11 faces of level
+	// 0 give 44 children, each hexahedron 12 inner faces; 2 x 8 child volumes
+	std::map<uint32, uint32> face_values, volume_values;
+	foreach_cell(v1, [&](MRMap3::Face f) { ++face_values[value<uint32>(v1, ft, f)]; });
+	foreach_cell(v1, [&](MRMap3::Volume w) { ++volume_values[value<uint32>(v1, wt, w)]; });
+	EXPECT_EQ(face_values[0], 24u);
+	EXPECT_EQ(face_values.size(), 12u);
+	for (auto [x, n] : face_values)
+		if (x != 0)
+			EXPECT_EQ(n, 4u);
+	EXPECT_EQ(volume_values.size(), 2u);
+	for (auto [x, n] : volume_values)
+		EXPECT_EQ(n, 8u);
+	uint32 inner_edges = 0;
+	foreach_cell(v1, [&](MRMap3::Edge e) { inner_edges += value<uint32>(v1, et, e) == 0; });
+	EXPECT_EQ(inner_edges, f_vector(v1)[1] - 2 * f_vector(v0)[1]);
+	// writing the children leaves the parents
+	set_current_level(m, 1);
+	foreach_cell(m, [&](MRMap3::Face f) { value<uint32>(m, ft, f) = 0; });
+	for (auto [d, x] : faces0)
+		EXPECT_EQ(value<uint32>(v0, ft, MRMap3::Face(Dart(d))), x);
+	remove_finest_level(m);
+	EXPECT_TRUE(check_integrity(m).ok());
+	for (auto [d, x] : faces0)
+		EXPECT_EQ(value<uint32>(m, ft, MRMap3::Face(Dart(d))), x);
+}
+
+TEST(MRMap3Attributes, OrbitsIndexedLateAndExtractedLevels)
+{
+	MRMap3 m(two_hexahedra());
+	add_level(m, Refinement::Hexahedral);
+	add_level(m, Refinement::Hexahedral);
+	auto vv = add_attribute<double, MRMap3::Vertex>(m, "v");
+	auto ev = add_attribute<double, MRMap3::Edge>(m, "e");
+	auto fv = add_attribute<double, MRMap3::Face>(m, "f");
+	auto wv = add_attribute<double, MRMap3::Volume>(m, "w");
+	auto cv = add_attribute<double, MRMap3::CC>(m, "c");
+	ASSERT_TRUE(vv && ev && fv && wv && cv);
+	EXPECT_FALSE((add_attribute<double, MRMap3::Face>(m, "f")));
+	EXPECT_FALSE((add_attribute<double, MRMap3::Face>(m, "__f")));
+	ASSERT_TRUE(check_integrity(m).ok());
+	double next = 0.5;
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		set_current_level(m, l);
+		foreach_cell(m, [&](MRMap3::Vertex v) { value<double>(m, vv, v) = next++; });
+		foreach_cell(m, [&](MRMap3::Face f) { value<double>(m, fv, f) = next++; });
+		foreach_cell(m, [&](MRMap3::Volume w) { value<double>(m, wv, w) = next++; });
+	}
+	for (uint32 l = 0; l <= 2; ++l)
+	{
+		const MRLevelView3 v = level_view(m, l);
+		const CMap3 flat = extract_level(m, l);
+		ASSERT_TRUE(check_integrity(flat).ok());
+		std::vector<Dart> source;
+		foreach_dart(v, [&](Dart d) { source.push_back(d); });
+		const auto fvv = get_attribute<double, CMap3::Vertex>(flat, "v");
+		const auto ffv = get_attribute<double, CMap3::Face>(flat, "f");
+		const auto fwv = get_attribute<double, CMap3::Volume>(flat, "w");
+		ASSERT_TRUE(fvv && ffv && fwv);
+		foreach_cell(flat, [&](CMap3::Vertex x) {
+			EXPECT_EQ((*fvv)[x], value<double>(v, vv, MRMap3::Vertex(source[x.dart.index])));
+		});
+		foreach_cell(flat, [&](CMap3::Face x) {
+			EXPECT_EQ((*ffv)[x], value<double>(v, fv, MRMap3::Face(source[x.dart.index])));
+		});
+		foreach_cell(flat, [&](CMap3::Volume x) {
+			EXPECT_EQ((*fwv)[x], value<double>(v, wv, MRMap3::Volume(source[x.dart.index])));
+		});
+	}
+	EXPECT_TRUE(remove_attribute(m, fv));
+	EXPECT_FALSE((get_attribute<double, MRMap3::Face>(m, "f")));
+	remove_finest_level(m);
+	EXPECT_TRUE(check_integrity(m).ok());
+	add_level(m, Refinement::Hexahedral);
+	EXPECT_TRUE(check_integrity(m).ok());
+	// a marker of one level
+	CellMarker<MRLevelView3, MRMap3::Volume> marked(level_view(m, 1));
+	uint32 nb = 0;
+	foreach_cell(level_view(m, 1), [&](MRMap3::Volume w) {
+		if (nb++ % 2 == 0)
+			marked.mark(w);
+	});
+	uint32 nb_marked = 0;
+	foreach_cell(level_view(m, 1), [&](MRMap3::Volume w) {
+		nb_marked += marked.is_marked(w);
+		foreach_dart_of_orbit(level_view(m, 1), w,
+							  [&](Dart d) { EXPECT_EQ(marked.is_marked(MRMap3::Volume(d)), marked.is_marked(w)); });
+	});
+	EXPECT_EQ(nb_marked, 8u);
 }

@@ -22,6 +22,11 @@ enum class Refinement
 namespace detail
 {
 
+/// What the code shared by the multiresolution maps of every dimension needs
+/// to know of the map of state S (specialized beside each state).
+template <typename S>
+struct MRDim;
+
 /// The step budget of the level walks: unlimited (the relations' own use,
 /// checked away by the compiler), or a count that check_integrity gives so
 /// that broken labels end a walk instead of looping (see MRStepLimit).

@@ -4,7 +4,9 @@
 #include <cgogn/core/map/darts.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/mr_common.h>
+#include <cgogn/core/map/mrmap2.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -36,6 +38,9 @@ struct MRState3
 	/// max_level + 1.
 	std::vector<uint32> darts_per_level;
 	uint32 current_level = 0;
+	/// The lines of vertices, edges, faces, volumes and connected components
+	/// (see MRDim<MRState3>::slot and MRCellIndex).
+	std::array<MRCellIndex, 5> cells;
 };
 
 MRState3& mr_state_of(MRMap3& m);
@@ -55,10 +60,9 @@ const MRState3& mr_state_of(const MRMap3& m);
 /// level at the same time. Levels are added by add_level and removed by
 /// remove_finest_level.
 ///
-/// The cells carry no attributes yet: the attributes of the map given to the
-/// constructor stay in the finest map, which keeps its indexing of level 0
-/// but is not indexed by the refinements (extract_level copies the per-dart
-/// attributes).
+/// Attributes (mrmap3_attributes.h) follow the rules of MRMap2: a vertex has
+/// a value at every level from its creation on, an edge, face or volume
+/// keeps its line while it exists and its children get new lines.
 ///
 /// Maps can be moved, not copied. The finest map is read-only from outside
 /// (finest_map): its connectivity is changed only through the operators of
@@ -79,8 +83,12 @@ public:
 	using Face2 = CMap3::Face2;       ///< One side of a face.
 
 	/// Makes `base` the level 0 of a new hierarchy: every dart gets level 0,
-	/// edge id 0 and face id 0. Precondition: `base` is closed
-	/// (check_integrity passes). O(number of darts).
+	/// edge id 0 and face id 0. The map keeps its attributes: the lines of
+	/// its vertices, edges, faces, volumes and connected components become
+	/// those of level 0. Throws std::invalid_argument, leaving `base`
+	/// untouched, when `base` indexes the cells of one volume (Vertex2,
+	/// Edge2, Face2), which a hierarchy does not carry. Precondition: `base`
+	/// is closed (check_integrity passes). O(number of darts).
 	explicit MRMap3(CMap3&& base);
 
 	/// Takes the hierarchy of another map; the moved-from map may only be
@@ -459,6 +467,34 @@ requires MRMesh3<M>
 struct cell_of_dimension<M, I>
 {
 	using type = std::tuple_element_t<I, std::tuple<CMap3::Vertex, CMap3::Edge, CMap3::Face, CMap3::Volume>>;
+};
+} // namespace detail
+
+namespace detail
+{
+/// What the code shared by the multiresolution maps of every dimension needs
+/// to know of the 3-D one: its types and the orbits of its cell slots.
+template <>
+struct MRDim<MRState3>
+{
+	using Map = MRMap3;        ///< The multiresolution map.
+	using View = MRLevelView3; ///< Its level views.
+	using Flat = CMap3;        ///< Its finest map.
+	/// The orbits of the slots of MRState3::cells.
+	static constexpr std::array<Orbit, 5> orbits{Orbit::PHI21_PHI31, Orbit::PHI2_PHI3, Orbit::PHI1_PHI3,
+												 Orbit::PHI1_PHI2, Orbit::PHI1_PHI2_PHI3};
+	static constexpr uint32 vertex_slot = 0;    ///< The slot of the vertices.
+	static constexpr uint32 edge_slot = 1;      ///< The slot of the edges.
+	static constexpr uint32 face_slot = 2;      ///< The slot of the faces.
+	static constexpr uint32 component_slot = 4; ///< The slot of the connected components.
+	/// The slot of orbit o (5 for an orbit without one).
+	static constexpr uint32 slot(Orbit o)
+	{
+		for (uint32 i = 0; i < orbits.size(); ++i)
+			if (orbits[i] == o)
+				return i;
+		return 5;
+	}
 };
 } // namespace detail
 

@@ -157,8 +157,11 @@ IntegrityReport check_integrity(const MRLevelView2& v);
 /// inverse), phi2 and phi3 are fixed-point-free involutions, phi3 o phi1 is
 /// an involution, boundary marks are constant on the volumes and phi3 never
 /// joins two boundary darts. A walk that does not end (broken labels) is
-/// reported, not followed forever. O(number of darts x levels x cost of a
-/// level step).
+/// reported, not followed forever. For every indexed orbit, at every level:
+/// every cell reads one live line that holds at that level from all its
+/// darts, whose representative is one of them, no two cells share a line,
+/// and as many lines hold as there are cells. O(number of darts x levels x
+/// cost of a level step).
 IntegrityReport check_integrity(const MRMap3& m);
 /// The same checks for the level read by a view only (with the labels and
 /// counts of the whole map). O(number of darts x cost of a level step).

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// The lines of the cells of a multiresolution map, shared by every
+// dimension (see detail::MRCellIndex).
+#pragma once
+
+#include <cgogn/core/map/mr_common.h>
+#include <cgogn/core/map/mrmap2.h>
+
+namespace cgogn::detail
+{
+
+/// The line of the cell in slot `slot` holding dart d at level l: the line of
+/// d's finest cell, followed down to the level. INVALID_INDEX for a cell
+/// without a line (a boundary cell). O(1) at the finest level, O(levels - l)
+/// below.
+template <typename S>
+CGOGN_INLINE uint32 mr_line_of(const S& s, uint32 l, uint32 slot, Dart d)
+{
+	const MRCellIndex& ci = s.cells[slot];
+	uint32 i = (*ci.index)[d.index];
+	if (mr_is_finest(s, l) || i == INVALID_INDEX)
+		return i;
+	const auto level = ci.level->view();
+	const auto down = ci.down->view();
+	while (level[i] > l)
+		i = down[i];
+	return i;
+}
+
+/// The container of the cells of slot `slot` in the finest map. O(1).
+template <typename S>
+AttributeContainer& mr_slot_container(const S& s, uint32 slot)
+{
+	return *state_of(s.map).cells[orbit_index(MRDim<S>::orbits[slot])];
+}
+
+/// Calls f(line) on every line of slot `slot` that holds at level l, for
+/// lines [b, e) of the container; f may return false to stop.
+template <typename S, typename FUNC>
+void mr_foreach_line_holding(const S& s, uint32 slot, uint32 l, uint32 b, uint32 e, const FUNC& f)
+{
+	const auto key = mr_slot_container(s, slot).key().view();
+	const auto level = s.cells[slot].level->view();
+	const auto replaced = s.cells[slot].replaced->view();
+	for (uint32 i = b; i < e; ++i)
+		if (key[i] != INVALID_INDEX && level[i] <= l && replaced[i] > l && !call_and_continue(f, i))
+			return;
+}
+
+/// Calls f on the darts of the cell of d in slot `slot` at level l.
+template <typename S, typename FUNC>
+void mr_foreach_dart_of_cell(const S& s, uint32 slot, uint32 l, Dart d, const FUNC& f)
+{
+	using D = MRDim<S>;
+	const typename D::View v(s, l);
+	[&]<std::size_t... I>(std::index_sequence<I...>)
+	{
+		(void)((slot == I ? (foreach_dart_of_orbit(v, Cell<D::orbits[I]>(d), f), true) : false) || ...);
+	}
+	(std::make_index_sequence<D::orbits.size()>{});
+}
+
+} // namespace cgogn::detail
