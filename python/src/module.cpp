@@ -40,6 +40,7 @@ PYBIND11_MODULE(_cgogn, m)
 	cgogn::python::bind_nmaps(m);
 	cgogn::python::bind_graph(m);
 	cgogn::python::bind_mrmap(m);
+	cgogn::python::bind_mrmap3(m);
 	cgogn::python::bind_map_files(m); // methods of the classes bound above
 #ifdef CGOGN_PYTHON_HAS_DISTRIBUTED
 	cgogn::python::bind_distributed(m);

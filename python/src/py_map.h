@@ -153,6 +153,8 @@ void bind_graph(py::module_& m);
 void bind_incidence_graph(py::module_& m);
 /// The multiresolution 2-map (bind_mrmap.cpp).
 void bind_mrmap(py::module_& m);
+/// The multiresolution 3-map (bind_mrmap3.cpp).
+void bind_mrmap3(py::module_& m);
 /// Whole-map files (.cgmap) and pickling of every map class (bind_map_files.cpp);
 /// bound last, once the classes exist.
 void bind_map_files(py::module_& m);

@@ -41,10 +41,15 @@ std::map<uint32, std::array<uint32, 3>> relations(const CMap3& m)
 	return r;
 }
 
-/// The hexahedral grid of n x n x n cells: (V, E, F, W).
-std::vector<uint32> grid_f_vector(uint32 n)
+/// The hexahedral grid of a x b x c cells: (V, E, F, W).
+std::vector<uint32> hex_grid_f_vector(uint32 a, uint32 b, uint32 c)
 {
-	return {(n + 1) * (n + 1) * (n + 1), 3 * n * (n + 1) * (n + 1), 3 * n * n * (n + 1), n * n * n};
+	return {(a + 1) * (b + 1) * (c + 1), a * (b + 1) * (c + 1) + (a + 1) * b * (c + 1) + (a + 1) * (b + 1) * c,
+			a * b * (c + 1) + a * (b + 1) * c + (a + 1) * b * c, a * b * c};
+}
+std::vector<uint32> hex_grid_f_vector(uint32 n)
+{
+	return hex_grid_f_vector(n, n, n);
 }
 
 } // namespace
@@ -63,7 +68,7 @@ TEST(MRMap3, HexahedralLevelsOfOneHexahedron)
 		{
 			const uint32 n = 1u << j;
 			const MRLevelView3 v = level_view(m, j);
-			EXPECT_EQ(f_vector(v), grid_f_vector(n)) << "level " << j << " of " << k;
+			EXPECT_EQ(f_vector(v), hex_grid_f_vector(n)) << "level " << j << " of " << k;
 			// 24 darts per hexahedron, 4 per boundary quad
 			EXPECT_EQ(nb_darts(v), 24 * n * n * n + 24 * n * n) << "level " << j;
 			EXPECT_EQ(euler_characteristic(v), 1) << "level " << j;
@@ -72,6 +77,49 @@ TEST(MRMap3, HexahedralLevelsOfOneHexahedron)
 		EXPECT_TRUE(r.ok()) << r.nb_errors << " errors";
 	}
 	EXPECT_EQ(f_vector(m), f_vector(finest_map(m)));
+}
+
+TEST(MRMap3, LevelsOfAGridAreFinerGridsWithTheirPoints)
+{
+	// a 2 x 2 x 1 grid: edges with 4 volumes around, inner vertices
+	const VolumeSoup soup = hex_grid_soup(2, 2, 1);
+	CMap3 base;
+	ASSERT_EQ(build_volume(base, soup).nb_cells_built, 4u);
+	std::array<std::shared_ptr<CellAttribute<double, Orbit::PHI21_PHI31>>, 3> xyz;
+	const char* names[3] = {"x", "y", "z"};
+	for (uint32 c = 0; c < 3; ++c)
+	{
+		xyz[c] = add_attribute<double, CMap3::Vertex>(base, names[c]);
+		for (uint32 i = 0; i < soup.nb_vertices; ++i)
+			(*xyz[c])[i] = soup.positions[i][c]; // soup vertex i is line i
+	}
+	MRMap3 m(std::move(base));
+	for (uint32 c = 0; c < 3; ++c)
+		xyz[c] = get_attribute<double, MRMap3::Vertex>(m, names[c]);
+	add_level(m, Refinement::Hexahedral);
+	add_level(m, Refinement::Hexahedral);
+	const IntegrityReport r = check_integrity(m);
+	ASSERT_TRUE(r.ok()) << r.nb_errors << " errors";
+	for (uint32 k = 0; k <= 2; ++k)
+	{
+		const MRLevelView3 v = level_view(m, k);
+		const uint32 n = 1u << k;
+		EXPECT_EQ(f_vector(v), hex_grid_f_vector(2 * n, 2 * n, n)) << "level " << k;
+		// each new vertex is the centroid of the cell it is the middle of:
+		// the points of level k are those of the finer grid
+		std::vector<std::array<double, 3>> points, expected;
+		foreach_cell(v, [&](MRMap3::Vertex x) {
+			points.push_back(
+				{value<double>(v, *xyz[0], x), value<double>(v, *xyz[1], x), value<double>(v, *xyz[2], x)});
+		});
+		for (uint32 i = 0; i <= 2 * n; ++i)
+			for (uint32 j = 0; j <= 2 * n; ++j)
+				for (uint32 l = 0; l <= n; ++l)
+					expected.push_back({double(i) / n, double(j) / n, double(l) / n});
+		std::sort(points.begin(), points.end());
+		std::sort(expected.begin(), expected.end());
+		EXPECT_EQ(points, expected) << "level " << k;
+	}
 }
 
 TEST(MRMap3, LevelFacesAreQuadsAndVolumesHexahedra)
@@ -444,8 +492,12 @@ TEST(MRMap3Attributes, RefinedCellsKeepTheirLinesAndChildrenCopyThem)
 	EXPECT_EQ(face_values[0], 24u);
 	EXPECT_EQ(face_values.size(), 12u);
 	for (auto [x, n] : face_values)
+	{
 		if (x != 0)
+		{
 			EXPECT_EQ(n, 4u);
+		}
+	}
 	EXPECT_EQ(volume_values.size(), 2u);
 	for (auto [x, n] : volume_values)
 		EXPECT_EQ(n, 8u);

@@ -64,13 +64,15 @@ void foreach_cell_around_vertex3(const CMap3& m, CMap3::Vertex v, const FUNC& f)
 // collected first and reported after, so that a vertex without a line (made
 // with set_indices = false) can still fall back to the dart walk: returns
 // false then, having reported nothing.
-template <typename MAP, typename FUNC>
-bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const FUNC& f)
+/// The same with the vertex lines given: `line_of` (per dart) and the
+/// container of the vertices, for a map whose vertex lines are held
+/// elsewhere (a multiresolution 3-map at its finest level).
+template <typename MAP, typename LINES, typename FUNC>
+bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, AttributeContainer& vertices,
+									 const LINES& line_of, const FUNC& f)
 {
 	static_assert(std::is_same_v<MAP, CMap3> || std::is_same_v<MAP, GMap3>);
 	using Neighbour = LocatedCell<MAP::Vertex::ORBIT>;
-	AttributeContainer& vertices = *detail::state_of(m).cells[orbit_index(MAP::Vertex::ORBIT)];
-	const auto line_of = detail::state_of(m).cell_index[orbit_index(MAP::Vertex::ORBIT)]->view();
 	// up to 64 neighbours on the stack (a tet mesh vertex has ~14), more on the heap
 	std::array<Neighbour, 64> few;
 	std::vector<Neighbour> many;
@@ -152,6 +154,13 @@ bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const
 		if (!call_and_continue(f, w))
 			return true;
 	return true;
+}
+/// foreach_adjacent_vertex_by_line with the map's own vertex lines.
+template <typename MAP, typename FUNC>
+bool foreach_adjacent_vertex_by_line(const MAP& m, typename MAP::Vertex v, const FUNC& f)
+{
+	return foreach_adjacent_vertex_by_line(m, v, *detail::state_of(m).cells[orbit_index(MAP::Vertex::ORBIT)],
+										   detail::state_of(m).cell_index[orbit_index(MAP::Vertex::ORBIT)]->view(), f);
 }
 
 } // namespace detail

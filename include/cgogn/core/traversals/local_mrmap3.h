@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/map/mr_lines.h>
 #include <cgogn/core/map/mrmap3.h>
 #include <cgogn/core/marking/dart_marker.h>
 #include <cgogn/core/parallel/thread_pool.h>
@@ -153,6 +154,17 @@ void MRLevelView3::foreach_cell(const FUNC& func) const
 {
 	static_assert(std::is_same_v<CELL, Cell<CELL::ORBIT>>, "foreach_cell on a multiresolution map: take a plain cell");
 	held_callable_t<FUNC> f = func;
+	constexpr uint32 slot = detail::MRDim<detail::MRState3>::slot(CELL::ORBIT);
+	if constexpr (slot < detail::MRDim<detail::MRState3>::orbits.size())
+		if (state_->cells[slot].index != nullptr)
+		{
+			// an indexed orbit: the lines that hold at the level
+			const AttributeContainer& c = detail::mr_slot_container(*state_, slot);
+			const auto key = c.key().view();
+			detail::mr_foreach_line_holding(*state_, slot, level_, 0, c.end_index(),
+											[&](uint32 i) { return call_and_continue(f, CELL(Dart(key[i]))); });
+			return;
+		}
 	if (detail::mr_is_finest(*this))
 	{
 		// the cells of the finest map (which indexes none of its orbits)
@@ -180,6 +192,20 @@ void MRLevelView3::parallel_foreach_cell(const FUNC& f) const
 		foreach_cell<CELL>(f);
 		return;
 	}
+	constexpr uint32 slot = detail::MRDim<detail::MRState3>::slot(CELL::ORBIT);
+	if constexpr (slot < detail::MRDim<detail::MRState3>::orbits.size())
+		if (state_->cells[slot].index != nullptr)
+		{
+			const AttributeContainer& c = detail::mr_slot_container(*state_, slot);
+			const auto key = c.key().view();
+			detail::parallel_for_chunks(c.end_index(), detail::PARALLEL_LINE_GRAIN,
+										detail::ChunkBody([&](uint32 b, uint32 e) {
+											held_callable_t<FUNC> fc = f; // see held_callable_t
+											detail::mr_foreach_line_holding(*state_, slot, level_, b, e,
+																			[&](uint32 i) { fc(CELL(Dart(key[i]))); });
+										}));
+			return;
+		}
 	if (detail::mr_is_finest(*this))
 	{
 		cgogn::parallel_foreach_cell(state_->map, [&](CELL c) { f(c); });
@@ -255,7 +281,6 @@ CGOGN_MR3_INCIDENCE(face, Volume, Face)
 		detail::mr3_foreach_adjacent<MRMap3::X, MRMap3::Y>(lv, x, f);                                                  \
 	}
 
-CGOGN_MR3_ADJACENCY(vertex, edge, Vertex, Edge)
 CGOGN_MR3_ADJACENCY(vertex, face, Vertex, Face)
 CGOGN_MR3_ADJACENCY(vertex, volume, Vertex, Volume)
 CGOGN_MR3_ADJACENCY(edge, vertex, Edge, Vertex)
@@ -268,6 +293,27 @@ CGOGN_MR3_ADJACENCY(volume, vertex, Volume, Vertex)
 CGOGN_MR3_ADJACENCY(volume, edge, Volume, Edge)
 CGOGN_MR3_ADJACENCY(volume, face, Volume, Face)
 #undef CGOGN_MR3_ADJACENCY
+
+/// The vertices joined to v by an edge, each once, v excluded, at the level
+/// read. At the finest level, the finest map's own traversal, by the
+/// vertices' lines when they have some. O(size of v + sizes of the edges
+/// met) level steps.
+template <MRMesh3 M, typename FUNC>
+void foreach_adjacent_vertex_through_edge(const M& m, MRMap3::Vertex v, const FUNC& f)
+{
+	const MRLevelView3 lv = detail::read_level(m);
+	const detail::MRState3& s = lv.state();
+	if (detail::mr_is_finest(lv))
+	{
+		constexpr uint32 slot = detail::MRDim<detail::MRState3>::vertex_slot;
+		if (s.cells[slot].index != nullptr &&
+			detail::foreach_adjacent_vertex_by_line(s.map, v, detail::mr_slot_container(s, slot),
+													s.cells[slot].index->view(), f))
+			return;
+		return foreach_adjacent_vertex_through_edge(s.map, v, f);
+	}
+	detail::mr3_foreach_adjacent<MRMap3::Vertex, MRMap3::Edge>(lv, v, f);
+}
 
 // ---- properties at the level read
 

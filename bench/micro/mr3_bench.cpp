@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// The multiresolution 3-map beside the flat CMap3 of its finest level, in the
+// run of bench_mr: a grid of 12 x 12 x 12 hexahedra (level 0) with 2
+// hexahedral levels (110,592 hexahedra at level 2).
+// - memory: the labels' bytes per dart, and bytes per volume of the
+//   hierarchy (every level's lines included) and of the flat map of the
+//   finest level;
+// - at the finest level: a one-ring circulator (the mean of the neighbours'
+//   positions) and a Laplacian smoothing pass, on both;
+// - phi1 at level l, for L - l = 0 ... 2: every face of the level walked,
+//   next to the same walk on the level's extract_level copy;
+// - add_level (positions by the attribute rules: the hexahedral scheme's),
+//   next to one hex_subdivision step of the flat level 1.
+#include <cgogn/cgogn.h>
+
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+
+using namespace cgogn;
+
+namespace
+{
+
+constexpr uint32 LEVELS3 = 2;
+
+std::size_t held_bytes3()
+{
+	const struct mallinfo2 mi = mallinfo2();
+	return mi.uordblks + mi.hblkhd + committed_storage_bytes();
+}
+
+CMap3 hex_grid(uint32 n)
+{
+	CMap3 m;
+	const VolumeSoup s = hex_grid_soup(n, n, n);
+	const BuildReport r = build_volume(m, s);
+	auto pos = add_attribute<Vec3, CMap3::Vertex>(m, "position");
+	for (uint32 i = 0; i < s.nb_vertices; ++i)
+		(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	return m;
+}
+
+struct Hierarchy3
+{
+	MRMap3 m;
+	std::shared_ptr<AttributeArray<Vec3>> pos;
+};
+
+Hierarchy3 make_hierarchy3()
+{
+	Hierarchy3 h{MRMap3(hex_grid(12)), nullptr};
+	h.pos = get_attribute<Vec3, MRMap3::Vertex>(h.m, "position");
+	for (uint32 l = 0; l < LEVELS3; ++l)
+		add_level(h.m, Refinement::Hexahedral);
+	return h;
+}
+
+Hierarchy3& hierarchy3()
+{
+	static Hierarchy3 h = make_hierarchy3();
+	return h;
+}
+
+CMap3& flat_level3(uint32 l)
+{
+	static std::vector<std::unique_ptr<CMap3>> flats(LEVELS3 + 1);
+	if (!flats[l])
+		flats[l] = std::make_unique<CMap3>(extract_level(hierarchy3().m, l));
+	return *flats[l];
+}
+
+void BM_Memory3(benchmark::State& state)
+{
+	double mr_bytes = 0, flat_bytes = 0;
+	uint32 volumes = 0;
+	const MRMap3& source = hierarchy3().m; // made before measuring
+	for (auto _ : state)
+	{
+		std::size_t before = held_bytes3();
+		{
+			Hierarchy3 h = make_hierarchy3();
+			mr_bytes = double(held_bytes3() - before);
+			volumes = nb_cells<MRMap3::Volume>(level_view(h.m, LEVELS3));
+		}
+		before = held_bytes3();
+		{
+			CMap3 flat = extract_level(source, LEVELS3);
+			flat_bytes = double(held_bytes3() - before);
+		}
+	}
+	state.counters["label_B_per_dart"] = double(3 * sizeof(uint8));
+	state.counters["mr_B_per_volume"] = mr_bytes / volumes;
+	state.counters["flat_B_per_volume"] = flat_bytes / volumes;
+	state.counters["ratio"] = mr_bytes / flat_bytes;
+}
+BENCHMARK(BM_Memory3)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+template <typename MESH>
+double circulate3(const MESH& m, const AttributeArray<Vec3>& pos)
+{
+	using V = typename mesh_traits<MESH>::Vertex;
+	double sum = 0.0;
+	foreach_cell(m, [&](V v) {
+		Vec3 s = Vec3::Zero();
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
+			s += value<Vec3>(m, pos, w);
+			++n;
+		});
+		sum += s.x() / n;
+	});
+	return sum;
+}
+
+void BM_Circulator3Flat(benchmark::State& state)
+{
+	const CMap3& m = flat_level3(LEVELS3);
+	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	for (auto _ : state)
+		benchmark::DoNotOptimize(circulate3(m, *pos));
+}
+BENCHMARK(BM_Circulator3Flat)->Unit(benchmark::kMillisecond);
+
+void BM_Circulator3MR(benchmark::State& state)
+{
+	Hierarchy3& h = hierarchy3();
+	set_current_level(h.m, LEVELS3);
+	for (auto _ : state)
+		benchmark::DoNotOptimize(circulate3(h.m, *h.pos));
+}
+BENCHMARK(BM_Circulator3MR)->Unit(benchmark::kMillisecond);
+
+template <typename MESH>
+void smooth3(MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& out)
+{
+	using V = typename mesh_traits<MESH>::Vertex;
+	foreach_cell(m, [&](V v) {
+		Vec3 s = Vec3::Zero();
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
+			s += pos[index_of(m, w)];
+			++n;
+		});
+		out[index_of(m, v)] = 0.5 * pos[index_of(m, v)] + 0.5 * s / n;
+	});
+}
+
+void BM_Smoothing3Flat(benchmark::State& state)
+{
+	CMap3& m = flat_level3(LEVELS3);
+	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	auto out = get_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
+	if (!out)
+		out = add_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
+	for (auto _ : state)
+		smooth3(m, *pos, *out);
+}
+BENCHMARK(BM_Smoothing3Flat)->Unit(benchmark::kMillisecond);
+
+void BM_Smoothing3MR(benchmark::State& state)
+{
+	Hierarchy3& h = hierarchy3();
+	set_current_level(h.m, LEVELS3);
+	auto out = get_attribute<Vec3, MRMap3::Vertex>(h.m, "smoothed");
+	if (!out)
+		out = add_attribute<Vec3, MRMap3::Vertex>(h.m, "smoothed");
+	for (auto _ : state)
+		smooth3(h.m, *h.pos, *out);
+}
+BENCHMARK(BM_Smoothing3MR)->Unit(benchmark::kMillisecond);
+
+template <typename MESH>
+uint32 walk_faces3(const MESH& m)
+{
+	uint32 n = 0;
+	foreach_cell(m, [&](typename mesh_traits<MESH>::Face f) {
+		const Dart d = f.dart;
+		Dart it = d;
+		do
+		{
+			it = phi1(m, it);
+			++n;
+		} while (it != d);
+	});
+	return n;
+}
+
+// state.range(0) = L - l
+void BM_Phi1AtLevel3MR(benchmark::State& state)
+{
+	const MRLevelView3 v = level_view(hierarchy3().m, LEVELS3 - uint32(state.range(0)));
+	uint32 n = 0;
+	for (auto _ : state)
+		benchmark::DoNotOptimize(n = walk_faces3(v));
+	state.counters["darts_per_s"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_Phi1AtLevel3MR)->DenseRange(0, LEVELS3)->Unit(benchmark::kMillisecond);
+
+void BM_Phi1AtLevel3Extracted(benchmark::State& state)
+{
+	const CMap3& m = flat_level3(LEVELS3 - uint32(state.range(0)));
+	uint32 n = 0;
+	for (auto _ : state)
+		benchmark::DoNotOptimize(n = walk_faces3(m));
+	state.counters["darts_per_s"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_Phi1AtLevel3Extracted)->DenseRange(0, LEVELS3)->Unit(benchmark::kMillisecond);
+
+void BM_AddLevel3MR(benchmark::State& state)
+{
+	// level 2 of the hierarchy made again from level 1, its positions included
+	Hierarchy3& h = hierarchy3();
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		remove_finest_level(h.m);
+		state.ResumeTiming();
+		add_level(h.m, Refinement::Hexahedral);
+	}
+}
+BENCHMARK(BM_AddLevel3MR)->Unit(benchmark::kMillisecond);
+
+void BM_HexSubdivisionStepFlat(benchmark::State& state)
+{
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		CMap3 m = extract_level(hierarchy3().m, LEVELS3 - 1);
+		auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+		state.ResumeTiming();
+		modeling::hex_subdivision(m, *pos);
+	}
+}
+BENCHMARK(BM_HexSubdivisionStepFlat)->Unit(benchmark::kMillisecond);
+
+} // namespace

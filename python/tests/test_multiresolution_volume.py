@@ -1,0 +1,77 @@
+# SPDX-License-Identifier: MIT
+"""Multiresolution hexahedral meshes from Python: levels and their counts,
+positions and hexahedra of a level as arrays, extraction."""
+import itertools
+
+import numpy as np
+import pytest
+
+import cgogn
+
+
+def unit_cube():
+    points = np.array(
+        [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], dtype=float
+    )
+    return cgogn.CMap3.from_arrays(points, np.array([[0, 1, 2, 3, 4, 5, 6, 7]]))
+
+
+def grid_points(n):
+    return sorted(itertools.product([i / n for i in range(n + 1)], repeat=3))
+
+
+def test_levels_counts_positions_and_hexahedra():
+    m = cgogn.MRMap3(unit_cube())
+    assert m.max_level == 0 and m.current_level == 0
+    m.add_level()
+    m.add_level("hexahedral")
+    assert m.max_level == 2 and m.current_level == 2
+    for k in range(3):
+        n = 2**k
+        assert m.counts(k) == [(n + 1) ** 3, 3 * n * (n + 1) ** 2, 3 * n * n * (n + 1), n**3]
+        # the positions of a level are the n x n x n grid: each new vertex is
+        # the centroid of the edge, face or hexahedron it is the middle of
+        p = m.positions(k)
+        assert sorted(map(tuple, p)) == grid_points(n)
+        hexes = m.hexahedra(k)
+        assert hexes.shape == (n**3, 8)
+        for row in hexes:
+            corners = p[row]
+            assert len(set(map(tuple, corners))) == 8
+            assert np.allclose(corners.max(axis=0) - corners.min(axis=0), 1.0 / n)
+            # column j + 4 is joined to column j by an edge of length 1 / n
+            assert np.allclose(np.linalg.norm(corners[4:] - corners[:4], axis=1), 1.0 / n)
+    assert m.check_integrity()["ok"]
+
+
+def test_levels_keep_their_own_positions_and_extract():
+    m = cgogn.MRMap3(unit_cube())
+    m.add_level()
+    before = m.positions(0).copy()
+    moved = m.positions(1) * 2.0
+    m.set_positions(1, moved)
+    assert np.array_equal(m.positions(1), moved)
+    assert np.array_equal(m.positions(0), before)
+    flat = m.extract_level(1)
+    assert sorted(map(tuple, flat.positions)) == sorted(map(tuple, moved))
+    assert flat.check_integrity()["ok"]
+    m.remove_finest_level()
+    assert m.max_level == 0
+    assert np.array_equal(m.positions(0), before)
+    with pytest.raises(ValueError):
+        m.set_positions(0, np.zeros((3, 3)))
+
+
+def test_errors():
+    m = cgogn.MRMap3(unit_cube())
+    with pytest.raises(ValueError):
+        m.add_level("tetra_octa")
+    with pytest.raises(IndexError):
+        m.current_level = 1
+    with pytest.raises(IndexError):
+        m.positions(1)
+    tet = cgogn.CMap3.from_arrays(np.eye(4, 3), np.array([[0, 1, 2, 3]]))
+    t = cgogn.MRMap3(tet)
+    with pytest.raises(ValueError):
+        t.add_level()
+    assert t.max_level == 0
