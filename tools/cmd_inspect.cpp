@@ -37,7 +37,9 @@ template <typename MAP>
 json map_file_info(const MAP& m)
 {
 	json j;
-	if constexpr (std::same_as<MAP, Graph>)
+	if constexpr (std::same_as<MAP, MRMap2>)
+		j = tool::mrmap_info(m);
+	else if constexpr (std::same_as<MAP, Graph>)
 		j = tool::graph_info(m, io::GraphLoadReport{});
 	else if constexpr (is_nmap_v<MAP>)
 		j = tool::nmap_info(m);
@@ -209,12 +211,18 @@ void save_nmap_as(const MAP& m, const std::string& out, bool boundary)
 }
 
 // A map read from a .cgmap file to `out`: another .cgmap file, or the
-// formats of its kind of map.
+// formats of its kind of map (the current level of a multiresolution map).
 template <typename MAP>
 void save_map_as(const MAP& m, const std::string& out, const io::SaveOptions& options, bool boundary)
 {
 	if (is_map_file(out))
 		io::save_map(m, out);
+	else if constexpr (std::same_as<MAP, MRMap2>)
+	{
+		if (boundary)
+			throw io::Error(out, "--boundary applies to the maps of any dimension (CMapN, GMapN)");
+		io::save_surface(extract_level(m, current_level(m)), out, options);
+	}
 	else if constexpr (is_nmap_v<MAP>)
 		save_nmap_as(m, out, boundary);
 	else if (boundary)

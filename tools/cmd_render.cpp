@@ -7,6 +7,7 @@
 #include <cgogn/render/render.h>
 
 #include "commands.h"
+#include "map_files.h"
 
 #include <cstdio>
 #include <map>
@@ -28,6 +29,7 @@ struct RenderCommandOptions
 	render::RenderOptions render;
 	render::GraphDrawing graph;
 	bool lines = false;
+	std::optional<uint32> level; // a multiresolution map's level (.cgmap)
 };
 
 void parse_size(const std::string& text, render::RenderOptions& o)
@@ -103,6 +105,34 @@ int run_render(RenderCommandOptions o)
 		render::write_png(img, o.out);
 		return 0;
 	}
+	if (o.level.has_value() && !is_map_file(o.in))
+		throw std::invalid_argument("--level: " + o.in +
+									" is not a .cgmap file (levels are those of a "
+									"multiresolution map)");
+	if (is_map_file(o.in))
+	{
+		with_drawable_map_file(o.in, o.level, progress, [&](const auto& m) {
+			using Vertex = typename mesh_traits<std::decay_t<decltype(m)>>::Vertex;
+			auto pos = get_attribute<Vec3, Vertex>(m, "position");
+			if (!pos)
+				throw std::runtime_error(o.in + ": the map has no vertex positions");
+			progress.stage("rendering");
+			try
+			{
+				if constexpr (std::is_same_v<std::decay_t<decltype(m)>, CMap3>)
+					img = render::render_volume_boundary(m, *pos, o.render);
+				else
+					img = render::render_surface(m, *pos, o.render);
+			}
+			catch (const render::RenderError& e)
+			{
+				throw render::RenderError(o.in + ": " + e.what());
+			}
+		});
+		progress.stage("writing " + o.out);
+		render::write_png(img, o.out);
+		return 0;
+	}
 	with_loaded(o.in, progress, [&](auto& m, const io::LoadReport& report) {
 		using Vertex = typename mesh_traits<std::decay_t<decltype(m)>>::Vertex;
 		auto pos = get_attribute<Vec3, Vertex>(m, "position");
@@ -140,8 +170,8 @@ Command add_render_command(CLI::App& app)
 											 "picture (software rasterizer, orthographic camera)");
 	auto o = std::make_shared<RenderCommandOptions>();
 	sub->add_option("IN", o->in,
-					"input mesh file (surface or volume format; a non-manifold surface is drawn as it is), .ig, or "
-					"graph (.cg .cgr .skel)")
+					"input mesh file (surface or volume format; a non-manifold surface is drawn as it is), .ig, "
+					"graph (.cg .cgr .skel), or .cgmap (a CMap2, CMap3 or multiresolution MRMap2)")
 		->required();
 	sub->add_option("OUT", o->out, "output PNG file")->required();
 	sub->add_option("--size", o->size, "picture size WIDTHxHEIGHT (default 800x600)");
@@ -180,6 +210,8 @@ Command add_render_command(CLI::App& app)
 		->expected(2);
 	sub->add_flag("!--no-legend", o->render.legend, "no colour bar with --color");
 	sub->add_option("--background", o->background, "background colour: #rrggbb or r,g,b (default white)");
+	sub->add_option("--level", o->level,
+					"a multiresolution map (.cgmap): the level drawn (default: the current level saved in the file)");
 	return {sub, [o] { return run_render(*o); }};
 }
 

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `cgogn subdivide`: uniform subdivision of a surface (Loop, Catmull-Clark,
-// sqrt3) or a volume mesh (hexahedra or tetrahedra, 1-to-8).
+// sqrt3) or a volume mesh (hexahedra or tetrahedra, 1-to-8); with
+// --keep-levels, every level of a surface in one multiresolution map.
+#include <cgogn/core/operators/mrmap2.h>
+#include <cgogn/io/map_file.h>
+#include <cgogn/modeling/multiresolution.h>
 #include <cgogn/modeling/subdivision.h>
 
 #include "commands.h"
@@ -28,6 +32,7 @@ struct SubdivideOptions
 	EditFiles files;
 	Scheme scheme = Scheme::CatmullClark;
 	uint32 iterations = 1;
+	bool keep_levels = false;
 };
 
 bool is_volume_scheme(Scheme s)
@@ -35,8 +40,59 @@ bool is_volume_scheme(Scheme s)
 	return s == Scheme::Hex || s == Scheme::Tet;
 }
 
+// --keep-levels: the input surface as level 0 of an MRMap2, one level per
+// step (Loop: Triangular levels, Catmull-Clark: Quadrangular ones), the
+// positions of every level those of the scheme (a synthesis without
+// details), written to a .cgmap file.
+int run_subdivide_keeping_levels(const SubdivideOptions& o)
+{
+	if (o.scheme != Scheme::Loop && o.scheme != Scheme::CatmullClark)
+		throw std::invalid_argument("--keep-levels: the scheme " +
+									std::string(o.scheme == Scheme::Sqrt3 ? "sqrt3"
+												: o.scheme == Scheme::Hex ? "hex"
+																		  : "tet") +
+									" makes no multiresolution levels (loop and catmull-clark do)");
+	if (!is_map_file(o.files.out))
+		throw io::Error(o.files.out, "--keep-levels writes a multiresolution map: the output must be a .cgmap file");
+	Progress progress;
+	CMap2 base;
+	if (!load_surface_file(base, o.files.in, progress).orientable)
+		throw io::Error(o.files.in, "--keep-levels: the surface is not orientable (a multiresolution map is made of "
+									"a CMap2)");
+	record_origins_if_asked(base, o.files);
+	if (!positions(base))
+		throw std::runtime_error(o.files.in + ": the mesh has no vertex positions");
+	MRMap2 m(std::move(base));
+	const Refinement r = o.scheme == Scheme::Loop ? Refinement::Triangular : Refinement::Quadrangular;
+	try
+	{
+		for (uint32 i = 0; i < o.iterations; ++i)
+		{
+			progress.stage("adding level " + std::to_string(i + 1));
+			add_level(m, r);
+		}
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument(o.files.in + ": " + e.what() + " (loop takes triangle meshes)");
+	}
+	progress.stage("positions of the levels");
+	auto pos = get_attribute<Vec3, MRMap2::Vertex>(m, "position");
+	auto details = add_attribute<Vec3, MRMap2::Vertex>(m, "details");
+	if (!details)
+		throw std::invalid_argument(o.files.in + ": the mesh has a vertex attribute named 'details' already");
+	modeling::synthesis(m, *pos, *details,
+						o.scheme == Scheme::Loop ? modeling::MRBank::Loop : modeling::MRBank::CatmullClark);
+	remove_attribute(m, details);
+	progress.stage("saving " + o.files.out);
+	io::save_map(m, o.files.out);
+	return 0;
+}
+
 int run_subdivide(const SubdivideOptions& o)
 {
+	if (o.keep_levels)
+		return run_subdivide_keeping_levels(o);
 	Progress progress;
 	const io::Format in_format = format_of(o.files.in);
 	const auto wrong_scheme = [&] {
@@ -114,7 +170,11 @@ Command add_subdivide_command(CLI::App& app)
 					"loop (triangles), catmull-clark (any polygons, default), sqrt3 "
 					"(triangles), hex (hexahedra), tet (tetrahedra)")
 		->transform(CLI::CheckedTransformer(schemes, CLI::ignore_case));
-	sub->add_option("--iterations,-n", o->iterations, "number of steps (default 1)")->check(CLI::Range(1u, 20u));
+	sub->add_option("--iterations,--levels,-n", o->iterations, "number of steps (default 1)")
+		->check(CLI::Range(1u, 20u));
+	sub->add_flag("--keep-levels", o->keep_levels,
+				  "loop and catmull-clark: write every step as a level of a multiresolution map (OUT: a .cgmap "
+				  "file holding an MRMap2; its current level is the finest)");
 	return {sub, [o] { return run_subdivide(*o); }};
 }
 

@@ -3,10 +3,12 @@
 // their header names.
 #pragma once
 
+#include <cgogn/core/operators/mrmap2.h>
 #include <cgogn/io/map_file.h>
 
 #include "tool_common.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -14,7 +16,7 @@ namespace cgogn::tool
 {
 
 /// Loads the .cgmap file at path into the map its header names (CMap2,
-/// CMap3, GMap2, GMap3, Graph, CMapN<D> or GMapN<D>) and calls f(map).
+/// CMap3, GMap2, GMap3, Graph, CMapN<D>, GMapN<D> or MRMap2) and calls f(map).
 /// Throws io::Error as io::load_map does, and for a map of dimension 1
 /// (CMap1, GMap1), which no subcommand handles.
 template <typename FUNC>
@@ -27,10 +29,20 @@ void with_loaded_map_file(const std::string& path, Progress& progress, const FUN
 		if (found || h.map_type != io::map_type_name<MAP>())
 			return;
 		found = true;
-		MAP m;
-		io::load_map(m, path);
-		f(m);
+		if constexpr (std::same_as<MAP, MRMap2>)
+		{
+			MRMap2 m{CMap2()};
+			io::load_map(m, path);
+			f(m);
+		}
+		else
+		{
+			MAP m;
+			io::load_map(m, path);
+			f(m);
+		}
 	};
+	load.template operator()<MRMap2>();
 	load.template operator()<CMap2>();
 	load.template operator()<CMap3>();
 	load.template operator()<GMap2>();
@@ -43,8 +55,40 @@ void with_loaded_map_file(const std::string& path, Progress& progress, const FUN
 	}
 	(std::make_integer_sequence<uint32, MAX_DIMENSION - 1>{});
 	if (!found)
-		throw io::Error(path, "a map of type " + h.map_type +
-								  ": the program reads 2- and 3-maps, G-maps, graphs and maps of dimension 2 and more");
+		throw io::Error(path,
+						"a map of type " + h.map_type +
+							": the program reads 2- and 3-maps, G-maps, graphs, multiresolution 2-maps and maps of "
+							"dimension 2 and more");
+}
+
+/// Loads the .cgmap file at path for drawing and calls f(map) with a CMap2
+/// or a CMap3 (const): an MRMap2 at
+/// `level` (default: the current level saved in the file) as a flat CMap2
+/// (extract_level), a CMap2 or CMap3 as it is. Throws io::Error for other
+/// map types, and for a level given to a map without levels or above the
+/// file's finest level.
+template <typename FUNC>
+void with_drawable_map_file(const std::string& path, std::optional<uint32> level, Progress& progress, const FUNC& f)
+{
+	with_loaded_map_file(path, progress, [&]<typename MAP>(const MAP& m) {
+		if constexpr (std::same_as<MAP, MRMap2>)
+		{
+			const uint32 l = level.value_or(current_level(m));
+			if (l > max_level(m))
+				throw io::Error(path, "--level " + std::to_string(l) + ": the file's finest level is " +
+										  std::to_string(max_level(m)));
+			progress.stage("extracting level " + std::to_string(l));
+			f(extract_level(m, l));
+		}
+		else if (level.has_value())
+			throw io::Error(path,
+							"--level applies to multiresolution maps; the file holds a " + io::map_type_name<MAP>());
+		else if constexpr (std::same_as<MAP, CMap2> || std::same_as<MAP, CMap3>)
+			f(m);
+		else
+			throw io::Error(path, "a " + io::map_type_name<MAP>() +
+									  ": render and view draw the CMap2, CMap3 and MRMap2 of .cgmap files");
+	});
 }
 
 } // namespace cgogn::tool

@@ -2,18 +2,22 @@
 #include "mesh_info.h"
 
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/operators/mrmap2.h>
 #include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/incidence_graph_properties.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
+#include <cgogn/core/traversals/local_mrmap2.h>
 #include <cgogn/geometry/types/vector_traits.h>
+#include <cgogn/io/map_file.h>
 #include <cgogn/io/options.h>
 
 #include <algorithm>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 namespace cgogn::tool
 {
@@ -245,6 +249,38 @@ json graph_info(const Graph& g, const io::GraphLoadReport& r)
 	return j;
 }
 
+json mrmap_info(const MRMap2& m)
+{
+	json j = surface_info(extract_level(m, current_level(m)), io::LoadReport{});
+	j["map"] = "MRMap2";
+	j["max_level"] = max_level(m);
+	j["current_level"] = current_level(m);
+	json levels = json::array();
+	for (uint32 l = 0; l <= max_level(m); ++l)
+	{
+		const MRLevelView2 v = level_view(m, l);
+		levels.push_back({{"level", l}, {"darts", nb_darts(v)}, {"f_vector", f_vector(v)}});
+	}
+	j["levels"] = levels;
+	json attributes = json::array();
+	const detail::MapState& s = detail::state_of(finest_map(m));
+	const auto list = [&](const char* cell, const AttributeContainer& c) {
+		for (const auto& a : c.attributes())
+			if (!detail::is_reserved_name(a->name()))
+			{
+				const std::string type = io::map_file_value_type(*a);
+				attributes.push_back({{"cell", cell}, {"name", a->name()}, {"type", type.empty() ? "other" : type}});
+			}
+	};
+	list("halfedge", *s.darts);
+	list("vertex", *s.cells[orbit_index(Orbit::PHI21)]);
+	list("edge", *s.cells[orbit_index(Orbit::PHI2)]);
+	list("face", *s.cells[orbit_index(Orbit::PHI1)]);
+	list("volume", *s.cells[orbit_index(Orbit::PHI1_PHI2)]);
+	j["attributes"] = attributes;
+	return j;
+}
+
 json complex_info(const IncidenceGraph& ig, const io::LoadReport& r)
 {
 	json j;
@@ -301,6 +337,10 @@ std::string info_text(const json& j)
 						  "format",
 						  "dimension",
 						  "map",
+						  "max_level",
+						  "current_level",
+						  "levels",
+						  "attributes",
 						  "vertices",
 						  "edges",
 						  "faces",
@@ -344,7 +384,21 @@ std::string info_text(const json& j)
 						  "ranks",
 						  "owned_cells_per_rank",
 						  "ghost_cells_per_rank"})
-		if (j.contains(k))
+		if (!j.contains(k))
+			continue;
+		else if (std::string_view(k) == "levels")
+			for (const json& l : j[k])
+				s << "level " << l["level"].dump() << ": darts " << l["darts"].dump() << ", f_vector "
+				  << l["f_vector"].dump() << "\n";
+		else if (std::string_view(k) == "attributes")
+		{
+			s << "attributes: ";
+			for (std::size_t i = 0; i < j[k].size(); ++i)
+				s << (i > 0 ? ", " : "") << j[k][i]["name"].get<std::string>() << " ("
+				  << j[k][i]["cell"].get<std::string>() << ", " << j[k][i]["type"].get<std::string>() << ")";
+			s << (j[k].empty() ? "-\n" : "\n");
+		}
+		else
 			line(k, j[k]);
 	return s.str();
 }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The multiresolution 2-map: levels, the positions and faces of a level as
 // NumPy arrays (rows in the level's vertex order), extraction of a level as
-// a CMap2, adaptive refinement by face row, analysis, synthesis and filters.
+// a CMap2, adaptive refinement by face row, analysis, synthesis and filters,
+// .cgmap files and pickling.
+#include <cgogn/io/map_file.h>
 #include <cgogn/modeling/multiresolution.h>
 
 #include "py_map.h"
@@ -27,6 +29,16 @@ struct PyMRMap2
 	std::shared_ptr<AttributeArray<Vec3>> pos, details;
 
 	explicit PyMRMap2(CMap2&& base) : m(std::move(base))
+	{
+		attach();
+	}
+	/// A hierarchy read from a file (one without `position` or `details`
+	/// gets them).
+	explicit PyMRMap2(MRMap2&& h) : m(std::move(h))
+	{
+		attach();
+	}
+	void attach()
 	{
 		pos = get_attribute<Vec3, MRVertex>(m, "position");
 		if (!pos)
@@ -101,6 +113,13 @@ modeling::MRBank bank_of(const std::string& name)
 }
 
 } // namespace
+
+py::object mrmap2_from_bytes(std::string_view bytes, const std::string& name)
+{
+	MRMap2 h{CMap2()};
+	io::load_map_from_bytes(h, bytes, name);
+	return py::cast(std::make_unique<PyMRMap2>(std::move(h)));
+}
 
 void bind_mrmap(py::module_& mod)
 {
@@ -266,6 +285,21 @@ void bind_mrmap(py::module_& mod)
 		.def(
 			"check_integrity", [](const W& w) { return integrity_report(check_integrity(w.m)); },
 			"Checks every invariant at every level; returns {'ok': bool, 'nb_errors': int, 'messages': [str]}.")
+		.def(
+			"save",
+			[](const W& w, const std::string& path) {
+				if (!has_map_file_extension(path))
+					throw py::value_error(path + ": a multiresolution map is saved to a .cgmap file");
+				py::gil_scoped_release release;
+				io::save_map(w.m, path);
+			},
+			py::arg("path"),
+			"Writes the whole hierarchy to a .cgmap file (every level, the current level, every attribute), "
+			"which cgogn.load reads back. O(size of the finest map).")
+		.def(
+			"to_bytes", [](const W& w) { return py::bytes(io::save_map_to_bytes(w.m)); },
+			"The whole hierarchy as .cgmap bytes; pickle and copy.deepcopy use them. O(size of the finest map).")
+		.def("__reduce__", [](const W& w) { return map_file_reduce(io::save_map_to_bytes(w.m)); })
 		.def("__repr__", [](const W& w) {
 			return "<cgogn.MRMap2 levels=0.." + std::to_string(max_level(w.m)) +
 				   " current=" + std::to_string(current_level(w.m)) + ">";

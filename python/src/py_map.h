@@ -171,5 +171,8 @@ py::object map_from_bytes(std::string_view bytes, const std::string& name);
 py::tuple map_file_reduce(std::string bytes);
 /// A graph moved into an instance of cgogn.Graph (bind_graph.cpp).
 py::object wrap_graph(Graph&& g);
+/// The cgogn.MRMap2 of .cgmap bytes holding an MRMap2 (bind_mrmap.cpp);
+/// io::Error for bad bytes. `name` stands for the file.
+py::object mrmap2_from_bytes(std::string_view bytes, const std::string& name);
 
 } // namespace cgogn::python

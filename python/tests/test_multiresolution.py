@@ -82,3 +82,36 @@ def test_adaptive_refinement_by_rows():
     with pytest.raises(ValueError):
         m.faces(1)  # quads and the pentagons around the refined face
     assert m.check_integrity()["ok"]
+
+
+def test_hierarchies_round_trip_through_files_and_pickle(tmp_path):
+    import copy
+    import pickle
+
+    m = cgogn.MRMap2(cube())
+    m.add_level("quadrangular")
+    m.add_level("quadrangular")
+    m.synthesis("catmull_clark")
+    m.set_positions(1, m.positions(1) * 2.0)  # level 1 has positions of its own
+    m.subdivide_faces(2, [0, 5])  # adaptive: a level 3 in places
+    m.current_level = 1
+    path = str(tmp_path / "h.cgmap")
+    m.save(path)
+    for c in (cgogn.load(path), pickle.loads(pickle.dumps(m)), copy.deepcopy(m), cgogn.map_from_bytes(m.to_bytes())):
+        assert isinstance(c, cgogn.MRMap2)
+        assert c.max_level == m.max_level == 3
+        assert c.current_level == 1
+        for k in range(m.max_level + 1):
+            assert c.counts(k) == m.counts(k)
+            assert c.nb_darts_at_level(k) == m.nb_darts_at_level(k)
+            np.testing.assert_array_equal(c.positions(k), m.positions(k))
+            np.testing.assert_array_equal(c.faces_csr(k)[0], m.faces_csr(k)[0])
+            np.testing.assert_array_equal(c.faces_csr(k)[1], m.faces_csr(k)[1])
+            np.testing.assert_array_equal(c.face_levels(k), m.face_levels(k))
+        assert c.check_integrity()["ok"]
+        assert c.to_bytes() == m.to_bytes()
+    with pytest.raises(ValueError):
+        m.save(str(tmp_path / "h.off"))
+    b = m.to_bytes()
+    with pytest.raises(cgogn.IOError):
+        cgogn.map_from_bytes(b[: len(b) // 2])

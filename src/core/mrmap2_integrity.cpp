@@ -135,7 +135,7 @@ public:
 		uint32 nb_cells = 0;
 		detail::mr_foreach_cell_by_darts(s_, slot, l, [&](Dart d) {
 			++nb_cells;
-			const uint32 i = detail::mr_index_of(s_, l, slot, d);
+			const uint32 i = index_of(slot, l, d);
 			if (i == INVALID_INDEX || i >= c.end_index() || key[i] == INVALID_INDEX)
 			{
 				add(IntegrityError::Kind::MissingIndex, d.index, "cell without a live line" + at);
@@ -146,7 +146,7 @@ public:
 			bool representative = false;
 			detail::mr_foreach_dart_of_slot(s_, slot, l, d, [&](Dart x) {
 				representative = representative || x.index == key[i];
-				if (detail::mr_index_of(s_, l, slot, x) != i)
+				if (index_of(slot, l, x) != i)
 					add(IntegrityError::Kind::IndexNotConstant, x.index,
 						"two darts of a cell read different lines" + at);
 			});
@@ -180,6 +180,20 @@ private:
 	bool finest(uint32 l) const
 	{
 		return detail::mr_is_finest(s_, l);
+	}
+	/// detail::mr_index_of following live lines only (their chains were
+	/// checked: each link leads to a coarser live line), so that a dart
+	/// holding a free or missing line (a broken file) ends the walk:
+	/// INVALID_INDEX then.
+	uint32 index_of(uint32 slot, uint32 l, Dart d) const
+	{
+		const detail::MRCellIndex& ci = s_.cells[slot];
+		const AttributeContainer& c = container(slot);
+		const uint32 end = c.end_index();
+		uint32 i = (*ci.index)[d.index];
+		while (i < end && c.key()[i] != INVALID_INDEX && !finest(l) && (*ci.level)[i] > l)
+			i = (*ci.down)[i];
+		return i < end && c.key()[i] != INVALID_INDEX ? i : INVALID_INDEX;
 	}
 
 	/// mr_phi1 and mr_phi_1 giving up after more steps than there are darts.

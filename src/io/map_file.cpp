@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The .cgmap binary format: whole maps, exactly (docs/map_file_format.md).
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/mrmap2_attributes.h>
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/io/map_file.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <set>
 
 namespace cgogn::io
@@ -27,12 +29,19 @@ constexpr uint32 VERSION = 1;
 struct MapKind
 {
 	bool gmap = false;
+	bool hierarchy = false;    // a multiresolution map: a hierarchy block, then its finest map's containers
 	std::vector<Orbit> orbits; // the orbits whose cells the type can index
 };
 
 MapKind map_kind(std::string_view type)
 {
 	using enum Orbit;
+	if (type == "MRMap2")
+	{
+		MapKind k = map_kind("CMap2");
+		k.hierarchy = true;
+		return k;
+	}
 	MapKind k;
 	k.gmap = type.starts_with("GMap");
 	if (type == "CMap1")
@@ -119,13 +128,16 @@ void write_container(detail::ByteSink& out, std::string_view orbit, const Attrib
 	}
 }
 
-void write_map(detail::ByteSink& out, const CMapBase& m, const std::string& type, MapFileReport& report)
+void write_header(detail::ByteSink& out, const std::string& type)
 {
-	const cgogn::detail::MapState& s = cgogn::detail::state_of(m);
 	out.append(MAGIC);
 	detail::put_scalar<uint32>(out, VERSION);
 	detail::put_string(out, type);
+}
 
+void write_containers(detail::ByteSink& out, const CMapBase& m, MapFileReport& report)
+{
+	const cgogn::detail::MapState& s = cgogn::detail::state_of(m);
 	std::vector<uint32> cells; // the cell containers holding something
 	for (uint32 o = 1; o < uint32(Orbit::NB_ORBITS); ++o)
 		if (s.cells[o]->end_index() > 0 || s.cells[o]->attributes().size() > 1)
@@ -134,17 +146,83 @@ void write_map(detail::ByteSink& out, const CMapBase& m, const std::string& type
 	write_container(out, orbit_name(Orbit::DART), *s.darts, s.boundary, report);
 	for (uint32 o : cells)
 		write_container(out, orbit_name(Orbit(o)), *s.cells[o], nullptr, report);
+}
+
+// The block that follows the header of a multiresolution map's file: its
+// number of levels, the darts made at each level, its current level.
+struct HierarchyBlock
+{
+	std::vector<uint32> darts_per_level;
+	uint32 current_level = 0;
+	std::size_t offset = 0; // where the block starts in the file
+};
+
+void write_hierarchy_block(detail::ByteSink& out, const std::vector<uint32>& darts_per_level, uint32 current_level)
+{
+	detail::put_scalar<uint32>(out, uint32(darts_per_level.size()));
+	for (uint32 n : darts_per_level)
+		detail::put_scalar<uint32>(out, n);
+	detail::put_scalar<uint32>(out, current_level);
+}
+
+template <typename MAP>
+void write_map(detail::ByteSink& out, const MAP& m, MapFileReport& report)
+{
+	write_header(out, map_type_name<MAP>());
+	if constexpr (MultiresolutionMapFileType<MAP>)
+	{
+		// the finest map holds the rest: labels, indices and per-level lines
+		// are attributes of its containers
+		const cgogn::detail::MRState2& s = cgogn::detail::mr_state_of(m);
+		write_hierarchy_block(out, s.darts_per_level, s.current_level);
+		write_containers(out, s.map, report);
+	}
+	else
+		write_containers(out, m, report);
 	out.flush();
 }
 
 // ---------------------------------------------------------------- reading
 
+// What a multiresolution map keeps besides what its finest map holds, as the
+// reader sees it: attributes of reserved names in the finest map's
+// containers (labels, indices, per-level lines), which it creates when the
+// file lists them. One implementation per multiresolution type; the
+// hierarchy block and the finest map's containers are read by MapReader.
+class HierarchyReader
+{
+public:
+	virtual ~HierarchyReader() = default;
+	// The hierarchy's attribute that receives the file's attribute `name` of
+	// container c (of orbit o), whose payload starts at byte `offset`:
+	// created; nullptr when the name is not one of the hierarchy's.
+	virtual std::shared_ptr<AttributeBase> attribute(const detail::ByteReader& in, AttributeContainer& c, Orbit o,
+													 const std::string& name, std::size_t offset) = 0;
+	// The index attribute of orbit o (nullptr: not indexed).
+	virtual const AttributeArray<uint32>* cell_index(Orbit o) const = 0;
+	// The attributes of the container of orbit o whose values are lines of
+	// that container (INVALID_INDEX: none).
+	virtual std::vector<const AttributeArray<uint32>*> line_links(Orbit o) const = 0;
+};
+
 class MapReader
 {
 public:
-	MapReader(CMapBase& m, std::string_view bytes, const std::string& name)
-		: m_(m), s_(cgogn::detail::state_of(m)), in_(bytes, 0, name, false)
+	MapReader(CMapBase& m, std::string_view bytes, const std::string& name, HierarchyReader* hierarchy = nullptr)
+		: m_(m), s_(cgogn::detail::state_of(m)), in_(bytes, 0, name, false), hierarchy_(hierarchy)
 	{
+	}
+
+	// The hierarchy block of a multiresolution map's file (once read).
+	const HierarchyBlock& hierarchy_block() const
+	{
+		return block_;
+	}
+	// Where the container of orbit o starts in the file (0: none).
+	std::size_t container_offset(Orbit o) const
+	{
+		const auto it = container_offsets_.find(o);
+		return it == container_offsets_.end() ? 0 : it->second;
 	}
 
 	// Reads the header; returns the map type it names.
@@ -172,6 +250,11 @@ public:
 		if (h.map_type != expected_type)
 			in_.fail("the file holds a " + h.map_type + ", not a " + expected_type);
 		kind_ = map_kind(expected_type);
+		if (kind_.hierarchy != (hierarchy_ != nullptr))
+			in_.fail("a " + expected_type + " is read by " +
+					 (kind_.hierarchy ? "the reader of its hierarchy" : "the reader of flat maps"));
+		if (kind_.hierarchy)
+			read_hierarchy_block();
 
 		const uint32 nb_containers = in_.read<uint32>();
 		in_.check_count(nb_containers, 12, "containers");
@@ -183,8 +266,25 @@ public:
 	}
 
 private:
+	void read_hierarchy_block()
+	{
+		block_.offset = in_.position();
+		const uint32 nb_levels = in_.read<uint32>();
+		if (nb_levels == 0 || nb_levels > 255)
+			in_.fail(std::to_string(nb_levels) + " levels (a multiresolution map has 1 to 255)");
+		in_.check_count(nb_levels, 4, "level dart counts");
+		block_.darts_per_level.resize(nb_levels);
+		for (uint32& n : block_.darts_per_level)
+			n = in_.read<uint32>();
+		block_.current_level = in_.read<uint32>();
+		if (block_.current_level >= nb_levels)
+			in_.fail("current level " + std::to_string(block_.current_level) + " above the finest level " +
+					 std::to_string(nb_levels - 1));
+	}
+
 	void read_container(bool first)
 	{
+		const std::size_t offset = in_.position();
 		const std::string orbit_text = detail::get_string(in_);
 		const Orbit o = orbit_named(orbit_text);
 		if (first != (o == Orbit::DART))
@@ -195,6 +295,7 @@ private:
 		AttributeContainer& c = o == Orbit::DART ? *s_.darts : *s_.cells[orbit_index(o)];
 		if (o != Orbit::DART && !seen_orbits_.insert(o).second)
 			in_.fail("a second container of orbit " + orbit_text);
+		container_offsets_[o] = offset;
 
 		const uint32 end = in_.read<uint32>();
 		in_.check_count(end, 4, "lines"); // each has at least its key
@@ -248,7 +349,7 @@ private:
 		const std::size_t start = in_.position();
 		if (!names.insert(name).second)
 			in_.fail("attribute '" + name + "' listed twice in container " + std::string(orbit_name(o)));
-		detail::AttributeRead r{in_, c, o, name, existing_attribute(c, o, name), end};
+		detail::AttributeRead r{in_, c, o, name, existing_attribute(c, o, name, start), end};
 		const bool known = detail::AttributeValues<detail::ScalarValueTypes>::read(r, type) ||
 						   detail::AttributeValues<detail::VectorValueTypes>::read(r, type);
 		if (!known)
@@ -261,10 +362,14 @@ private:
 	// The map's own attribute that receives the file's attribute `name`
 	// (its relations, the keys, an orbit's index); nullptr for an attribute
 	// of the program's, which the typed reader creates.
-	std::shared_ptr<AttributeBase> existing_attribute(AttributeContainer& c, Orbit o, const std::string& name)
+	std::shared_ptr<AttributeBase> existing_attribute(AttributeContainer& c, Orbit o, const std::string& name,
+													  std::size_t offset)
 	{
 		std::shared_ptr<AttributeBase> a = c.find(name);
-		if (a == nullptr && o == Orbit::DART && name.starts_with("__index_"))
+		// a multiresolution map indexes its orbits itself: its finest map has no index
+		if (a == nullptr && hierarchy_ != nullptr)
+			a = hierarchy_->attribute(in_, c, o, name, offset);
+		if (a == nullptr && hierarchy_ == nullptr && o == Orbit::DART && name.starts_with("__index_"))
 		{
 			const Orbit indexed = orbit_named(std::string_view(name).substr(8));
 			if (std::find(kind_.orbits.begin(), kind_.orbits.end(), indexed) == kind_.orbits.end())
@@ -320,10 +425,15 @@ private:
 		for (const AttributeArray<uint32>* r : s_.relations)
 			check(*r, nb_darts, "relation");
 		for (Orbit o : kind_.orbits)
-			if (const AttributeArray<uint32>* idx = s_.cell_index[orbit_index(o)])
+			if (const AttributeArray<uint32>* idx =
+					hierarchy_ != nullptr ? hierarchy_->cell_index(o) : s_.cell_index[orbit_index(o)])
 			{
-				check(*idx, s_.cells[orbit_index(o)]->end_index(), "index");
+				const uint32 end = s_.cells[orbit_index(o)]->end_index();
+				check(*idx, end, "index");
 				check(s_.cells[orbit_index(o)]->key(), nb_darts, "representative dart");
+				if (hierarchy_ != nullptr)
+					for (const AttributeArray<uint32>* link : hierarchy_->line_links(o))
+						check(*link, end, "line link");
 			}
 			else if (s_.cells[orbit_index(o)]->end_index() > 0 || s_.cells[orbit_index(o)]->attributes().size() > 1)
 				in_.fail("orbit " + std::string(orbit_name(o)) +
@@ -338,19 +448,156 @@ private:
 	CMapBase& m_;
 	cgogn::detail::MapState& s_;
 	detail::ByteReader in_;
+	HierarchyReader* hierarchy_;
 	MapKind kind_;
+	HierarchyBlock block_;
 	std::set<Orbit> seen_orbits_;
+	std::map<Orbit, std::size_t> container_offsets_;
+};
+
+// The hierarchy of an MRMap2 (detail::MRState2): its darts' labels
+// (__mr_level, __mr_edge_id), the index of each indexed orbit
+// (__mr_index_<orbit>, or __index_<orbit> for an orbit the map indexed
+// before it became level 0) and the lines' links, levels and replacing
+// levels (__mr_down, __mr_level, __mr_replaced in the orbit's container).
+class MR2HierarchyReader final : public HierarchyReader
+{
+public:
+	explicit MR2HierarchyReader(cgogn::detail::MRState2& s) : s_(s)
+	{
+	}
+
+	std::shared_ptr<AttributeBase> attribute(const detail::ByteReader& in, AttributeContainer& c, Orbit o,
+											 const std::string& name, std::size_t offset) override
+	{
+		using cgogn::detail::MR2_ORBITS;
+		if (o == Orbit::DART)
+		{
+			if (name == "__mr_level" || name == "__mr_edge_id")
+			{
+				auto a = c.add_attribute<uint8>(name, 0);
+				(name == "__mr_level" ? s_.level : s_.edge_id) = a;
+				(name == "__mr_level" ? level_offset_ : edge_id_offset_) = offset + 1; // after the default value
+				return a;
+			}
+			for (uint32 slot = 0; slot < 4; ++slot)
+			{
+				const std::string orbit(orbit_name(MR2_ORBITS[slot]));
+				if (name != "__mr_index_" + orbit && name != "__index_" + orbit)
+					continue;
+				if (s_.cells[slot].index != nullptr)
+					in.fail("attribute '" + name + "': a second index of orbit " + orbit);
+				auto a = c.add_attribute<uint32>(name, INVALID_INDEX);
+				s_.cells[slot].index = a.get();
+				cgogn::detail::state_of(s_.map).cells[orbit_index(MR2_ORBITS[slot])]->set_cell_index(a.get());
+				return a;
+			}
+			return nullptr;
+		}
+		if (!cgogn::detail::is_mr2_orbit(o))
+			return nullptr;
+		cgogn::detail::MRCellIndex& ci = s_.cells[cgogn::detail::mr_slot(o)];
+		if (name == "__mr_down")
+			return ci.down = c.add_attribute<uint32>(name, INVALID_INDEX);
+		if (name == "__mr_level")
+			return ci.level = c.add_attribute<uint8>(name, 0);
+		if (name == "__mr_replaced")
+			return ci.replaced = c.add_attribute<uint8>(name, cgogn::detail::MR_NOT_REPLACED);
+		return nullptr;
+	}
+
+	const AttributeArray<uint32>* cell_index(Orbit o) const override
+	{
+		return cgogn::detail::is_mr2_orbit(o) ? s_.cells[cgogn::detail::mr_slot(o)].index : nullptr;
+	}
+
+	std::vector<const AttributeArray<uint32>*> line_links(Orbit o) const override
+	{
+		if (!cgogn::detail::is_mr2_orbit(o) || s_.cells[cgogn::detail::mr_slot(o)].down == nullptr)
+			return {};
+		return {s_.cells[cgogn::detail::mr_slot(o)].down.get()};
+	}
+
+	// Completes the hierarchy read by r (the file `name`), the state of m,
+	// and checks m at every level; throws io::Error at the offset of what is
+	// wrong.
+	void finish(const MapReader& r, const std::string& name, const MRMap2& m)
+	{
+		const HierarchyBlock& b = r.hierarchy_block();
+		const auto fail = [&](std::size_t offset, const std::string& cause) {
+			throw Error(name, Error::Where::Byte, offset, cause);
+		};
+		if (s_.level == nullptr || s_.edge_id == nullptr)
+			fail(r.container_offset(Orbit::DART), std::string("the darts have no ") +
+													  (s_.level == nullptr ? "__mr_level" : "__mr_edge_id") +
+													  " label: not the finest map of a hierarchy");
+		for (uint32 slot = 0; slot < 4; ++slot)
+		{
+			const cgogn::detail::MRCellIndex& ci = s_.cells[slot];
+			const bool lines = ci.down != nullptr && ci.level != nullptr && ci.replaced != nullptr;
+			const Orbit o = cgogn::detail::MR2_ORBITS[slot];
+			if ((ci.index != nullptr) != lines)
+				fail(r.container_offset(ci.index != nullptr ? o : Orbit::DART),
+					 "orbit " + std::string(orbit_name(o)) +
+						 (ci.index != nullptr ? " is indexed but its lines lack __mr_down, __mr_level or __mr_replaced"
+											  : " has per-level lines but no index"));
+		}
+		// the counters against the labels, at the offset of the one that is wrong
+		const uint32 nb_levels = uint32(b.darts_per_level.size());
+		std::vector<uint32> count(nb_levels, 0);
+		foreach_dart(s_.map, [&](Dart d) {
+			const uint32 l = (*s_.level)[d.index];
+			if (l >= nb_levels)
+				fail(level_offset_ + d.index, "dart " + std::to_string(d.index) + " has level " + std::to_string(l) +
+												  ", above the finest level " + std::to_string(nb_levels - 1));
+			++count[l];
+		});
+		for (uint32 l = 0; l < nb_levels; ++l)
+			if (count[l] != b.darts_per_level[l])
+				fail(b.offset + 4 + 4 * std::size_t(l),
+					 "level " + std::to_string(l) + " counts " + std::to_string(b.darts_per_level[l]) +
+						 " darts, but the darts' labels give " + std::to_string(count[l]));
+		s_.darts_per_level = b.darts_per_level;
+		s_.current_level = b.current_level;
+		// every level: relations, labels and lines
+		const IntegrityReport report = check_integrity(m);
+		if (!report.ok())
+		{
+			const IntegrityError& e = report.errors.front();
+			const std::size_t labels = e.kind == IntegrityError::Kind::EdgeIdWrong ? edge_id_offset_ : level_offset_;
+			fail(e.dart != INVALID_INDEX ? labels + e.dart : b.offset,
+				 "the file's hierarchy is not valid: " + e.message);
+		}
+	}
+
+private:
+	cgogn::detail::MRState2& s_;
+	std::size_t level_offset_ = 0, edge_id_offset_ = 0; // where the darts' labels start in the file
 };
 
 template <typename MAP>
 void read_map(MAP& m, std::string_view bytes, const std::string& name)
 {
-	MAP local;
-	MapReader(local, bytes, name).read(map_type_name<MAP>());
-	const IntegrityReport r = check_integrity(local);
-	if (!r.ok())
-		throw Error(name, "the file's map is not valid: " + r.errors.front().message);
-	m = std::move(local);
+	if constexpr (std::same_as<MAP, MRMap2>)
+	{
+		MRMap2 local{CMap2()};
+		cgogn::detail::MRState2& s = cgogn::detail::mr_state_of(local);
+		s = cgogn::detail::MRState2{}; // the file gives the labels, indices and lines
+		MR2HierarchyReader hierarchy(s);
+		MapReader r(s.map, bytes, name, &hierarchy);
+		r.read(map_type_name<MAP>());
+		hierarchy.finish(r, name, local);
+		m = std::move(local);
+	}
+	else
+	{
+		MAP local;
+		MapReader(local, bytes, name).read(map_type_name<MAP>());
+		const IntegrityReport r = check_integrity(local);
+		if (!r.ok())
+			throw Error(name, "the file's map is not valid: " + r.errors.front().message);
+		m = std::move(local);
+	}
 }
 
 } // namespace
@@ -363,13 +610,19 @@ std::vector<std::string> map_file_value_types()
 	return names;
 }
 
+std::string map_file_value_type(const AttributeBase& a)
+{
+	std::string name = detail::AttributeValues<detail::ScalarValueTypes>::name_of(a);
+	return name.empty() ? detail::AttributeValues<detail::VectorValueTypes>::name_of(a) : name;
+}
+
 template <typename MAP>
 requires MapFileType<MAP> std::string save_map_to_bytes(const MAP& m, MapFileReport* report)
 {
 	MapFileReport r;
 	std::string bytes;
 	detail::ByteSink out(bytes);
-	write_map(out, m, map_type_name<MAP>(), r);
+	write_map(out, m, r);
 	if (report != nullptr)
 		*report = std::move(r);
 	return bytes;
@@ -381,7 +634,7 @@ requires MapFileType<MAP> MapFileReport save_map(const MAP& m, const std::string
 	MapFileReport r;
 	detail::OutputFile file(path);
 	detail::ByteSink out(file);
-	write_map(out, m, map_type_name<MAP>(), r);
+	write_map(out, m, r);
 	file.close();
 	return r;
 }
@@ -444,6 +697,7 @@ CGOGN_MAP_FILE(GMapN<4>)
 CGOGN_MAP_FILE(GMapN<5>)
 CGOGN_MAP_FILE(GMapN<6>)
 CGOGN_MAP_FILE(GMapN<7>)
+CGOGN_MAP_FILE(MRMap2)
 #undef CGOGN_MAP_FILE
 
 } // namespace cgogn::io

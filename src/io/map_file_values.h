@@ -264,6 +264,13 @@ struct AttributeValues<std::tuple<T...>>
 	{
 		(out.push_back(ValueCodec<T>::name()), ...);
 	}
+	/// The format's name of a's value type; empty when it is not one of the group's.
+	static std::string name_of(const AttributeBase& a)
+	{
+		std::string name;
+		(void)((a.type() == typeid(T) ? (name = ValueCodec<T>::name(), true) : false) || ...);
+		return name;
+	}
 };
 
 /// The groups of the format's value types (map_file_value_types() lists them).

@@ -5,9 +5,11 @@
 #include "../io/io_test_utils.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <sys/wait.h>
 
 namespace cgogn_test_tool_subdivide
@@ -163,6 +165,205 @@ TEST(ToolSubdivide, NonOrientableSurfacesStayWhole)
 			moved = std::max(moved, ((*p)[i] - (*p0)[i]).norm());
 		EXPECT_GT(moved, 1e-3) << method;
 	}
+}
+
+namespace
+{
+
+// The positions of the vertices of a surface.
+template <typename MAP>
+std::vector<Vec3> vertex_positions(const MAP& m)
+{
+	auto pos = get_attribute<Vec3, typename MAP::Vertex>(m, "position");
+	std::vector<Vec3> p;
+	foreach_cell(m, [&](typename MAP::Vertex v) { p.push_back(value<Vec3>(m, *pos, v)); });
+	return p;
+}
+
+// The largest distance from a point of a to the nearest point of b, and
+// from b to a: 0 for the same points in any order.
+double distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+	const auto one_way = [](const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
+		double d = 0.0;
+		for (const Vec3& p : x)
+		{
+			double nearest = std::numeric_limits<double>::infinity();
+			for (const Vec3& q : y)
+				nearest = std::min(nearest, (p - q).norm());
+			d = std::max(d, nearest);
+		}
+		return d;
+	};
+	return std::max(one_way(a, b), one_way(b, a));
+}
+
+// Every level k of the MRMap2 file is the surface `in` subdivided k times
+// by the scheme: the same f-vector and positions (to 1e-9).
+void expect_levels_of_the_scheme(const std::string& in, const std::string& file, modeling::SurfaceScheme scheme,
+								 uint32 nb_levels)
+{
+	MRMap2 h{CMap2()};
+	io::load_map(h, file);
+	ASSERT_EQ(max_level(h), nb_levels);
+	EXPECT_EQ(current_level(h), nb_levels);
+	EXPECT_FALSE((get_attribute<Vec3, MRMap2::Vertex>(h, "details"))) << "the synthesis' details are not written";
+	for (uint32 k = 0; k <= nb_levels; ++k)
+	{
+		SCOPED_TRACE("level " + std::to_string(k));
+		CMap2 flat;
+		io::load_surface(flat, in);
+		if (k > 0)
+			modeling::subdivide(flat, *get_attribute<Vec3, CMap2::Vertex>(flat, "position"), scheme, k);
+		const MRLevelView2 v = level_view(h, k);
+		EXPECT_EQ(f_vector(v), f_vector(flat));
+		const CMap2 level = extract_level(h, k);
+		const std::vector<Vec3> a = vertex_positions(level), b = vertex_positions(flat);
+		ASSERT_EQ(a.size(), b.size());
+		EXPECT_LT(distance(a, b), 1e-9);
+	}
+}
+
+} // namespace
+
+TEST(ToolSubdivide, KeepLevelsWritesEveryLevelOfTheScheme)
+{
+	TempDir dir;
+	// Catmull-Clark on spot's control mesh (triangles, quads, pentagons)
+	ToolRun r = run_tool("subdivide " + quoted(spot) + " " + quoted(dir.file("cc.cgmap")) +
+							 " --scheme catmull-clark --levels 2 --keep-levels",
+						 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(r.err, "");
+	EXPECT_EQ(io::read_map_header(dir.file("cc.cgmap")).map_type, "MRMap2");
+	expect_levels_of_the_scheme(spot, dir.file("cc.cgmap"), modeling::SurfaceScheme::CatmullClark, 2);
+	// Loop on a sphere of triangles with boundary
+	CMap2 t;
+	io_test::build_with_positions(t, sphere_soup(8, 6, true));
+	io::save_surface(t, dir.file("sphere.ply"));
+	r = run_tool("subdivide " + quoted(dir.file("sphere.ply")) + " " + quoted(dir.file("loop.cgmap")) +
+					 " --scheme loop -n 3 --keep-levels --origin parent",
+				 dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	expect_levels_of_the_scheme(dir.file("sphere.ply"), dir.file("loop.cgmap"), modeling::SurfaceScheme::Loop, 3);
+	MRMap2 h{CMap2()};
+	io::load_map(h, dir.file("loop.cgmap"));
+	auto parent = get_attribute<uint32, MRMap2::Face>(h, "parent");
+	ASSERT_TRUE(parent);
+	std::vector<uint32> seen(nb_cells<CMap2::Face>(t), 0);
+	foreach_cell(h, [&](MRMap2::Face f) { ++seen.at(value<uint32>(h, *parent, f)); });
+	EXPECT_EQ(seen, std::vector<uint32>(seen.size(), 64u)) << "each input face has 4^3 faces at level 3";
+}
+
+TEST(ToolSubdivide, KeepLevelsRefusals)
+{
+	TempDir dir;
+	const auto refused = [&](const std::string& args, const std::string& message) {
+		const ToolRun r = run_tool("subdivide " + args, dir);
+		EXPECT_EQ(r.status, 2) << args;
+		EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+	};
+	const std::string out = quoted(dir.file("out.cgmap"));
+	refused(quoted(spot) + " " + out + " --scheme sqrt3 --keep-levels",
+			"--keep-levels: the scheme sqrt3 makes no multiresolution levels (loop and catmull-clark do)");
+	refused(quoted(spot) + " " + out + " --scheme tet --keep-levels",
+			"--keep-levels: the scheme tet makes no multiresolution levels");
+	refused(quoted(spot) + " " + quoted(dir.file("out.off")) + " --keep-levels", "the output must be a .cgmap file");
+	refused(quoted(spot) + " " + out + " --scheme loop --keep-levels", "triangle");
+	refused(quoted(std::string(CGOGN_DATA_DIR) + "/surface/klein_bottle.off") + " " + out + " --keep-levels",
+			"not orientable");
+	EXPECT_FALSE(std::filesystem::exists(dir.file("out.cgmap")));
+	EXPECT_FALSE(std::filesystem::exists(dir.file("out.off")));
+}
+
+TEST(ToolSubdivide, InfoRenderAndViewReadTheLevels)
+{
+	TempDir dir;
+	const std::string h = quoted(dir.file("h.cgmap"));
+	ToolRun r = run_tool("subdivide " + quoted(spot) + " " + h + " -n 2 --keep-levels", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	// info: the levels, the current one, darts and f-vector per level, the attributes
+	r = run_tool("info --json " + h, dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "MRMap2");
+	EXPECT_EQ(j["format"], "cgmap");
+	EXPECT_EQ(j["max_level"], 2);
+	EXPECT_EQ(j["current_level"], 2);
+	ASSERT_EQ(j["levels"].size(), 3u);
+	EXPECT_EQ(j["levels"][0]["f_vector"], (std::vector<uint32>{188, 366, 180}));
+	EXPECT_EQ(j["levels"][0]["darts"], 732);
+	EXPECT_EQ(j["levels"][1]["f_vector"], (std::vector<uint32>{734, 1464, 732}));
+	EXPECT_EQ(j["levels"][1]["darts"], 4 * 732);
+	EXPECT_EQ(j["levels"][2]["f_vector"], (std::vector<uint32>{2930, 5856, 2928}));
+	EXPECT_EQ(j["vertices"], 2930) << "the counts are those of the current level";
+	EXPECT_EQ(j["genus"], 0);
+	const auto position = std::find_if(j["attributes"].begin(), j["attributes"].end(),
+									   [](const nlohmann::json& a) { return a["name"] == "position"; });
+	ASSERT_NE(position, j["attributes"].end()) << j["attributes"].dump();
+	EXPECT_EQ((*position)["cell"], "vertex");
+	EXPECT_EQ((*position)["type"], "Vec3");
+	r = run_tool("info " + h, dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("map: MRMap2\nmax_level: 2\ncurrent_level: 2\n"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("level 1: darts 2928, f_vector [734,1464,732]\n"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("attributes: "), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("position (vertex, Vec3)"), std::string::npos) << r.out;
+	r = run_tool("check " + h, dir);
+	EXPECT_EQ(r.status, 0) << r.out << r.err;
+
+	// render: level 0 is the input mesh; the default is the current level
+	const auto render = [&](const std::string& in, const std::string& png, const std::string& more) {
+		const ToolRun x =
+			run_tool("render " + in + " " + quoted(dir.file(png)) + " --size 160x120 --edges" + more, dir);
+		EXPECT_EQ(x.status, 0) << x.err;
+		return io_test::read_text(dir.file(png));
+	};
+	const std::string level0 = render(h, "l0.png", " --level 0");
+	EXPECT_EQ(level0, render(quoted(spot), "spot.png", ""));
+	const std::string level2 = render(h, "l2.png", " --level 2");
+	EXPECT_NE(level2, level0);
+	EXPECT_NE(render(h, "l1.png", " --level 1"), level2);
+	EXPECT_EQ(render(h, "default.png", ""), level2);
+
+	// view: the same choice of level
+	const auto view = [&](const std::string& html, const std::string& more) {
+		const ToolRun x = run_tool("view " + h + " " + quoted(dir.file(html)) + " --title t" + more, dir);
+		EXPECT_EQ(x.status, 0) << x.err;
+		return io_test::read_text(dir.file(html));
+	};
+	const std::string v0 = view("v0.html", " --level 0"), v2 = view("v2.html", " --level 2");
+	EXPECT_NE(v0, v2);
+	EXPECT_GT(v2.size(), v0.size());
+	EXPECT_EQ(view("v.html", ""), v2);
+
+	// convert writes the current level
+	r = run_tool("convert " + h + " " + quoted(dir.file("current.off")), dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	CMap2 current;
+	io::load_surface(current, dir.file("current.off"));
+	EXPECT_EQ(f_vector(current), (std::vector<uint32>{2930, 5856, 2928}));
+
+	// errors: a level above the finest, a level of a file without levels
+	r = run_tool("render " + h + " " + quoted(dir.file("x.png")) + " --level 3", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("--level 3: the file's finest level is 2"), std::string::npos) << r.err;
+	r = run_tool("view " + h + " " + quoted(dir.file("x.html")) + " --level 5", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("--level 5: the file's finest level is 2"), std::string::npos) << r.err;
+	r = run_tool("render " + quoted(spot) + " " + quoted(dir.file("x.png")) + " --level 1", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("not a .cgmap file"), std::string::npos) << r.err;
+	r = run_tool("convert " + quoted(spot) + " " + quoted(dir.file("flat.cgmap")), dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	r = run_tool("render " + quoted(dir.file("flat.cgmap")) + " " + quoted(dir.file("x.png")) + " --level 1", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("--level applies to multiresolution maps; the file holds a CMap2"), std::string::npos)
+		<< r.err;
+	EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+	EXPECT_FALSE(std::filesystem::exists(dir.file("x.html")));
+	// a flat .cgmap file is drawn as it is
+	EXPECT_EQ(render(quoted(dir.file("flat.cgmap")), "flat.png", ""), level0);
 }
 
 } // namespace cgogn_test_tool_subdivide

@@ -5,6 +5,7 @@
 #include <cgogn/core/map/gmap3.h>
 #include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/mesh_traits.h>
+#include <cgogn/core/map/mrmap2.h>
 #include <cgogn/core/map/nmap.h>
 #include <cgogn/io/error.h>
 
@@ -19,21 +20,30 @@ namespace cgogn::io
 // in their order with every relation, the boundary marks, the indexing of
 // every orbit (cell lines and free lines as they are) and every attribute of
 // a type the format holds, so that a loaded map is the saved map, dart for
-// dart and line for line.
+// dart and line for line. A multiresolution map is its finest map so saved,
+// with its levels: its labels, per-level lines and counters, and its
+// current level, so that every level of the loaded hierarchy is the saved
+// one.
+
+/// The multiresolution maps a .cgmap file holds: MRMap2.
+template <typename MAP>
+concept MultiresolutionMapFileType = std::same_as<MAP, MRMap2>;
 
 /// The maps a .cgmap file holds: CMap1, CMap2, CMap3, GMap1, GMap2, GMap3,
-/// Graph, CMapN<D> and GMapN<D>.
+/// Graph, CMapN<D>, GMapN<D> and the multiresolution MRMap2.
 template <typename MAP>
-concept MapFileType =
-	std::same_as<MAP, CMap1> || std::same_as<MAP, CMap2> || std::same_as<MAP, CMap3> || std::same_as<MAP, GMap1> ||
-	std::same_as<MAP, GMap2> || std::same_as<MAP, GMap3> || std::same_as<MAP, Graph> || is_nmap_v<MAP>;
+concept MapFileType = std::same_as<MAP, CMap1> || std::same_as<MAP, CMap2> || std::same_as<MAP, CMap3> ||
+	std::same_as<MAP, GMap1> || std::same_as<MAP, GMap2> || std::same_as<MAP, GMap3> || std::same_as<MAP, Graph> ||
+	is_nmap_v<MAP> || MultiresolutionMapFileType<MAP>;
 
 /// The name a .cgmap file gives the type of its map: "CMap2", "GMap3",
-/// "Graph", "CMapN<4>", ... O(1).
+/// "Graph", "CMapN<4>", "MRMap2", ... O(1).
 template <typename MAP>
 requires MapFileType<MAP> std::string map_type_name()
 {
-	if constexpr (std::same_as<MAP, CMap1>)
+	if constexpr (std::same_as<MAP, MRMap2>)
+		return "MRMap2";
+	else if constexpr (std::same_as<MAP, CMap1>)
 		return "CMap1";
 	else if constexpr (std::same_as<MAP, CMap2>)
 		return "CMap2";
@@ -80,11 +90,19 @@ struct MapFileHeader
 /// uint32[K] (K = 2 ... 4) and string (std::string).
 std::vector<std::string> map_file_value_types();
 
+/// The name the format gives the value type of attribute a ("float64",
+/// "Vec3", ...: one of map_file_value_types()); empty when the format does
+/// not hold it. O(number of value types).
+std::string map_file_value_type(const AttributeBase& a);
+
 /// Writes m to a .cgmap file: everything a map holds but the marks reserved
 /// at that moment and the quick incidence caches (which enable_incidence_cache
 /// rebuilds). Attributes of other value types than map_file_value_types()
-/// are left out and listed in the report. Throws io::Error when the file
-/// cannot be written. O(size of m x attributes).
+/// are left out and listed in the report. An MRMap2 is written as its
+/// finest map (its labels, indices and per-level lines are attributes of
+/// it) after a block giving its levels' dart counts and its current level.
+/// Throws io::Error when the file cannot be written. O(size of m x
+/// attributes).
 template <typename MAP>
 requires MapFileType<MAP> MapFileReport save_map(const MAP& m, const std::string& path);
 
@@ -101,7 +119,12 @@ requires MapFileType<MAP> std::string save_map_to_bytes(const MAP& m, MapFileRep
 /// (handles to them stay usable but see no map). Throws io::Error naming the
 /// file, the byte offset and the problem for a file that is not a .cgmap
 /// file, of a newer version, of another map type than MAP (the message names
-/// both), truncated or invalid. O(size of the file).
+/// both), truncated or invalid. An MRMap2 is checked at every level
+/// (check_integrity(m)): its per-level dart counts against the darts'
+/// labels, its current level, and its labels and lines (the offset is then
+/// that of the label of the dart at fault, or of the counters); its current
+/// level is the saved one. O(size of the file), O(darts x levels) for an
+/// MRMap2.
 template <typename MAP>
 requires MapFileType<MAP>
 void load_map(MAP& m, const std::string& path);
