@@ -24,7 +24,52 @@ void copy_values(AttributeContainer& c, uint32 dst, uint32 src)
 			a->copy_line(dst, src);
 }
 
+/// For a face of level l without a dart of level l - 1 (the middle triangle
+/// of a triangle cut in 4): a dart of level l - 1 of a face that shares its
+/// parent, reached across the new edges of level l. INVALID when none.
+Dart old_dart_of_sibling(const MRState2& s, uint32 l, Dart d)
+{
+	const auto level = s.level->view();
+	std::vector<Dart> work{d};
+	DartMarkerStore<CMap2> seen(s.map);
+	seen.mark(d);
+	for (std::size_t i = 0; i < work.size() && i < 64; ++i)
+	{
+		Dart found;
+		foreach_dart_of_orbit(MRLevelView2(s, l), MRMap2::Face(work[i]), [&](Dart x) {
+			if (level[x.index] < l)
+			{
+				found = x;
+				return false;
+			}
+			const Dart y = mr_phi2(s, l, x);
+			if (!is_boundary(s.map, y) && level[y.index] == l && !seen.is_marked(y))
+			{
+				seen.mark(y);
+				work.push_back(y);
+			}
+			return true;
+		});
+		if (found.is_valid())
+			return found;
+	}
+	return Dart();
+}
+
 } // namespace
+
+std::vector<uint32> mr_vertex_parents(const MRState2& s, uint32 l, Dart v)
+{
+	constexpr uint32 vertex = MRDim<MRState2>::vertex_slot;
+	std::vector<uint32> parents;
+	const auto [origin, d] = mr_vertex_origin(s, l, v);
+	if (origin == MRVertexOrigin::Midpoint)
+		parents = {mr_line_of(s, l - 1, vertex, d), mr_line_of(s, l - 1, vertex, mr_phi2(s, l - 1, d))};
+	else if (origin == MRVertexOrigin::Centre)
+		foreach_dart_of_orbit(MRLevelView2(s, l - 1), MRMap2::Face(d),
+							  [&](Dart x) { parents.push_back(mr_line_of(s, l - 1, vertex, x)); });
+	return parents;
+}
 
 template <typename S>
 void mr_foreach_cell_of_slot(const S& s, uint32 slot, uint32 l, const std::function<void(Dart)>& f)
@@ -68,7 +113,7 @@ void mr_add_slot_attributes(S& s, uint32 slot)
 	ci.replaced = c.add_attribute<uint8>("__mr_replaced", MR_NOT_REPLACED);
 }
 
-std::vector<uint32> mr_vertex_parents3(const MRState3& s, uint32 l, Dart v)
+std::vector<uint32> mr_vertex_parents(const MRState3& s, uint32 l, Dart v)
 {
 	const MRLevelView3 here(s, l), below(s, l - 1);
 	const auto level = s.level->view();
@@ -155,9 +200,7 @@ void mr_index_cells_at(S& s, uint32 slot, uint32 l)
 				line = mr_add_line(s, slot, l, d, INVALID_INDEX);
 				if (c.has_rules())
 				{
-					std::vector<uint32> parents;
-					if constexpr (std::is_same_v<S, MRState3>)
-						parents = mr_vertex_parents3(s, l, d);
+					const std::vector<uint32> parents = mr_vertex_parents(s, l, d);
 					weights.assign(parents.size(), parents.empty() ? 0.0 : 1.0 / double(parents.size()));
 					if (!parents.empty())
 						c.apply_rules(line, parents, weights);
@@ -166,6 +209,9 @@ void mr_index_cells_at(S& s, uint32 slot, uint32 l)
 		}
 		else
 		{
+			if constexpr (std::is_same_v<S, MRState2>)
+				if (slot == D::face_slot && !old.is_valid())
+					old = old_dart_of_sibling(s, l, d);
 			const uint32 below = old.is_valid() ? mr_line_of(s, l - 1, slot, old) : INVALID_INDEX;
 			uint32 nb_below = 0;
 			if (old.is_valid())
@@ -257,6 +303,14 @@ void mr_copy_cell_attributes(const S& s, uint32 slot, uint32 l, typename MRDim<S
 	}
 	(std::make_index_sequence<D::orbits.size()>{});
 }
+
+template void mr_foreach_cell_of_slot(const MRState2&, uint32, uint32, const std::function<void(Dart)>&);
+template uint32 mr_add_line(MRState2&, uint32, uint32, Dart, uint32);
+template void mr_add_slot_attributes(MRState2&, uint32);
+template void mr_index_cells_at(MRState2&, uint32, uint32);
+template void mr_unindex_cells_at(MRState2&, uint32, uint32);
+template void mr_take_over_indexing(MRState2&);
+template void mr_copy_cell_attributes(const MRState2&, uint32, uint32, CMap2&, const std::vector<Dart>&);
 
 template void mr_foreach_cell_of_slot(const MRState3&, uint32, uint32, const std::function<void(Dart)>&);
 template uint32 mr_add_line(MRState3&, uint32, uint32, Dart, uint32);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cgogn/core/map/mr_lines.h>
+#include <cgogn/core/traversals/local_mrmap2.h>
 #include <cgogn/core/traversals/local_mrmap3.h>
 
 #include <functional>
@@ -55,8 +56,10 @@ void mr_take_over_indexing(S& s);
 
 /// The vertex lines of level l - 1 the attribute rules of new vertex v of
 /// level l start from: the corners of the cell of level l - 1 it is the
-/// middle of (an edge, a face, a volume). Empty when it is none of these.
-std::vector<uint32> mr_vertex_parents3(const MRState3& s, uint32 l, Dart v);
+/// middle of (an edge, a face; a volume in 3-D). Empty when it is none of
+/// these.
+std::vector<uint32> mr_vertex_parents(const MRState2& s, uint32 l, Dart v);
+std::vector<uint32> mr_vertex_parents(const MRState3& s, uint32 l, Dart v);
 
 /// Copies the attributes of the cells of orbit slot `slot` at level l of s
 /// into the flat map `flat`, whose dart i is the hierarchy's dart

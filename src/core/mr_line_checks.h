@@ -16,6 +16,21 @@ namespace cgogn::detail
 /// Reports an error: kind, dart (INVALID_INDEX: none) and message.
 using MRReport = std::function<void(IntegrityError::Kind, uint32, const std::string&)>;
 
+/// mr_line_of following live lines only (the chains are checked first: each
+/// link leads to a coarser live line), so that a dart holding a free or
+/// missing line (a broken file) ends the walk: INVALID_INDEX then.
+template <typename S>
+uint32 mr_checked_line_of(const S& s, uint32 slot, uint32 l, Dart d)
+{
+	const MRCellIndex& ci = s.cells[slot];
+	const AttributeContainer& c = mr_slot_container(s, slot);
+	const uint32 end = c.end_index();
+	uint32 i = (*ci.index)[d.index];
+	while (i < end && c.key()[i] != INVALID_INDEX && !mr_is_finest(s, l) && (*ci.level)[i] > l)
+		i = (*ci.down)[i];
+	return i < end && c.key()[i] != INVALID_INDEX ? i : INVALID_INDEX;
+}
+
 /// The chains of lines of an indexed slot: each line refines a live line of
 /// a lower level (so that reading a line at a level ends). Returns false
 /// when one does not.
@@ -58,8 +73,8 @@ void mr_check_lines(const S& s, uint32 slot, uint32 l, const MRReport& add)
 	uint32 nb_cells = 0;
 	mr_foreach_cell_of_slot(s, slot, l, [&](Dart d) {
 		++nb_cells;
-		const uint32 i = mr_line_of(s, l, slot, d);
-		if (i == INVALID_INDEX || i >= c.end_index() || key[i] == INVALID_INDEX)
+		const uint32 i = mr_checked_line_of(s, slot, l, d);
+		if (i == INVALID_INDEX)
 		{
 			add(IntegrityError::Kind::MissingIndex, d.index, "cell without a live line" + at);
 			return;
@@ -69,7 +84,7 @@ void mr_check_lines(const S& s, uint32 slot, uint32 l, const MRReport& add)
 		bool representative = false;
 		mr_foreach_dart_of_cell(s, slot, l, d, [&](Dart x) {
 			representative = representative || x.index == key[i];
-			if (mr_line_of(s, l, slot, x) != i)
+			if (mr_checked_line_of(s, slot, l, x) != i)
 				add(IntegrityError::Kind::IndexNotConstant, x.index, "two darts of a cell read different lines" + at);
 		});
 		if (!representative)

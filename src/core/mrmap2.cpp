@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
+#include <cgogn/core/map/mrmap2_attributes.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/mrmap2.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/local_cmap2.h>
 
-#include "mrmap2_indexing.h"
+#include "mr_indexing.h"
 #include "mrmap2_refine.h"
 
 #include <cassert>
@@ -25,15 +26,20 @@ MRMap2::MRMap2(CMap2&& base)
 	state_.darts_per_level = {nb_darts(state_.map)};
 	// the orbits the map indexes become level-0 lines of the hierarchy, which
 	// indexes them from now on (the finest map's operators run without indices)
-	for (uint32 slot = 0; slot < 4; ++slot)
-	{
-		AttributeArray<uint32>*& flat = detail::state_of(state_.map).cell_index[orbit_index(detail::MR2_ORBITS[slot])];
-		if (flat == nullptr)
-			continue;
-		state_.cells[slot].index = flat;
-		flat = nullptr;
-		detail::mr_add_line_attributes(state_, slot);
-	}
+	detail::mr_take_over_indexing(state_);
+}
+
+void detail::mr_index_orbit(MRMap2& m, Orbit o)
+{
+	MRState2& s = mr_state_of(m);
+	const uint32 slot = mr_slot(o);
+	AttributeContainer& darts = *state_of(s.map).darts;
+	auto index = darts.add_attribute<uint32>("__mr_index_" + std::string(orbit_name(o)), INVALID_INDEX);
+	s.cells[slot].index = index.get();
+	state_of(s.map).cells[orbit_index(o)]->set_cell_index(index.get());
+	mr_add_slot_attributes(s, slot);
+	for (uint32 l = 0; l <= max_level(m); ++l)
+		mr_index_cells_at(s, slot, l);
 }
 
 void set_current_level(MRMap2& m, uint32 l)
@@ -111,7 +117,7 @@ void add_level(MRMap2& m, Refinement r)
 	s.current_level = finest + 1;
 	for (uint32 slot = 0; slot < 4; ++slot)
 		if (s.cells[slot].index != nullptr)
-			detail::mr_index_level(s, slot, finest + 1);
+			detail::mr_index_cells_at(s, slot, finest + 1);
 }
 
 void remove_finest_level(MRMap2& m)
@@ -153,7 +159,7 @@ void remove_finest_level(MRMap2& m)
 		merge_incident_edges(map, CMap2::Vertex(d), false);
 	for (uint32 slot = 0; slot < 4; ++slot)
 		if (s.cells[slot].index != nullptr)
-			detail::mr_unindex_level(s, slot, finest);
+			detail::mr_unindex_cells_at(s, slot, finest);
 	s.darts_per_level.pop_back();
 	s.current_level = std::min(s.current_level, finest - 1);
 }

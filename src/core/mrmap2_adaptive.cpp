@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Adaptive refinement of multiresolution 2-maps: one face at a time.
+#include <cgogn/core/map/mrmap2_attributes.h>
 #include <cgogn/core/operators/cmap2.h>
 #include <cgogn/core/operators/mrmap2.h>
 #include <cgogn/core/properties/properties.h>
 
-#include "mrmap2_indexing.h"
+#include "mr_indexing.h"
 #include "mrmap2_refine.h"
 
 #include <algorithm>
@@ -115,7 +116,7 @@ void ensure_vertex_line(MRState2& s, Dart x, uint32 l)
 	const auto [i, above] = chain_place(s, x, l);
 	if ((*ci.level)[i] == l)
 		return;
-	const uint32 n = detail::mr_new_line(s, 0, l, x, i);
+	const uint32 n = detail::mr_add_line(s, 0, l, x, i);
 	if (above != INVALID_INDEX)
 	{
 		(*ci.down)[above] = n;
@@ -177,7 +178,7 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 			});
 			if (line == INVALID_INDEX)
 			{
-				line = detail::mr_new_line(s, 0, l, y, INVALID_INDEX);
+				line = detail::mr_add_line(s, 0, l, y, INVALID_INDEX);
 				if (c.has_rules())
 				{
 					const std::vector<uint32> parents = detail::mr_vertex_parents(s, l, y);
@@ -194,12 +195,12 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 		AttributeArray<uint32>& idx = index(s, 1);
 		for (const Cut& cut : cuts)
 		{
-			write_fine(s, 1, cut.x, detail::mr_new_line(s, 1, l, cut.x, cut.parent));
-			write_fine(s, 1, cut.n1, detail::mr_new_line(s, 1, l, cut.n1, cut.parent));
+			write_fine(s, 1, cut.x, detail::mr_add_line(s, 1, l, cut.x, cut.parent));
+			write_fine(s, 1, cut.n1, detail::mr_add_line(s, 1, l, cut.n1, cut.parent));
 		}
 		for (Dart y : created)
 			if (idx[y.index] == INVALID_INDEX) // an inner edge
-				write_fine(s, 1, y, detail::mr_new_line(s, 1, l, y, INVALID_INDEX));
+				write_fine(s, 1, y, detail::mr_add_line(s, 1, l, y, INVALID_INDEX));
 	}
 	if (indexed(s, 2))
 	{
@@ -215,7 +216,7 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 		auto child = [&](Dart y) {
 			if (is_boundary(s.map, y) || std::find(children.begin(), children.end(), idx[y.index]) != children.end())
 				return;
-			const uint32 line = detail::mr_new_line(s, 2, l, y, face_line);
+			const uint32 line = detail::mr_add_line(s, 2, l, y, face_line);
 			write_fine(s, 2, y, line);
 			children.push_back(line);
 		};

@@ -2,7 +2,7 @@
 #include <cgogn/core/operators/mrmap2.h>
 #include <cgogn/core/traversals/global.h>
 
-#include "mrmap2_indexing.h"
+#include "mr_indexing.h"
 
 #include <stdexcept>
 #include <string>
@@ -10,39 +10,6 @@
 
 namespace cgogn
 {
-
-namespace
-{
-
-/// Copies the attributes of the orbit of CELL at level l of s into the flat
-/// map `flat`, whose dart i is the hierarchy's dart source[i].
-template <typename CELL>
-void copy_cell_attributes(const detail::MRState2& s, uint32 l, CMap2& flat, const std::vector<Dart>& source)
-{
-	constexpr Orbit O = CELL::ORBIT;
-	constexpr uint32 slot = detail::mr_slot(O);
-	if (s.cells[slot].index == nullptr)
-		return;
-	const AttributeContainer& from = *detail::state_of(s.map).cells[orbit_index(O)];
-	std::vector<std::pair<const AttributeBase*, std::shared_ptr<AttributeBase>>> copies;
-	for (const auto& a : from.attributes())
-		if (a.get() != &from.key() && a->name().rfind("__", 0) != 0)
-		{
-			if (!is_indexed<CELL>(flat))
-				index_cells<CELL>(flat);
-			copies.emplace_back(a.get(), a->clone_empty(container_of<O>(flat)));
-		}
-	if (copies.empty())
-		return;
-	foreach_cell(flat, [&](CELL c) {
-		const uint32 src = detail::mr_index_of(s, l, slot, source[c.dart.index]);
-		const uint32 dst = index_of(flat, c);
-		for (auto& [a, b] : copies)
-			b->copy_line_from(dst, *a, src);
-	});
-}
-
-} // namespace
 
 CMap2 extract_level(const MRMap2& m, uint32 l)
 {
@@ -81,10 +48,8 @@ CMap2 extract_level(const MRMap2& m, uint32 l)
 		for (uint32 i = 0; i < source.size(); ++i)
 			b->copy_line_from(i, *a, source[i].index);
 	}
-	copy_cell_attributes<CMap2::Vertex>(s, l, flat, source);
-	copy_cell_attributes<CMap2::Edge>(s, l, flat, source);
-	copy_cell_attributes<CMap2::Face>(s, l, flat, source);
-	copy_cell_attributes<CMap2::Volume>(s, l, flat, source);
+	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
+		detail::mr_copy_cell_attributes(s, slot, l, flat, source);
 	detail::release_idle_marks(flat);
 	return flat;
 }

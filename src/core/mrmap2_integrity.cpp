@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cgogn/core/properties/integrity.h>
 
-#include "mrmap2_indexing.h"
+#include "mr_line_checks.h"
 
 #include <optional>
 #include <string>
@@ -97,82 +97,18 @@ public:
 		});
 	}
 
-	/// The chains of lines of an indexed slot: each line refines a live line
-	/// of a lower level (so that reading a line at a level ends). Returns
-	/// false when one does not.
-	bool check_chains(uint32 slot)
+	/// No boundary face has a line at level l.
+	void check_boundary_faces(uint32 l)
 	{
-		const detail::MRCellIndex& ci = s_.cells[slot];
-		const AttributeContainer& c = container(slot);
-		const auto key = c.key().view();
-		bool ok = true;
-		for (uint32 i = 0, end = c.end_index(); i < end; ++i)
-		{
-			const uint32 down = (*ci.down)[i];
-			if (key[i] == INVALID_INDEX || down == INVALID_INDEX)
-				continue;
-			if (down >= end || key[down] == INVALID_INDEX || (*ci.level)[down] >= (*ci.level)[i] ||
-				(*ci.replaced)[down] > (*ci.level)[i])
-			{
-				ok = false;
-				add(IntegrityError::Kind::LevelLineWrong, INVALID_INDEX,
-					"line " + std::to_string(i) + " of orbit " + std::string(orbit_name(detail::MR2_ORBITS[slot])) +
-						" refines a line that is free, not coarser, or not replaced by then");
-			}
-		}
-		return ok;
-	}
-
-	/// The lines of an indexed slot at level l.
-	void check_lines(uint32 slot, uint32 l)
-	{
-		const std::string at = std::string(" of orbit ") + std::string(orbit_name(detail::MR2_ORBITS[slot])) +
-							   " at level " + std::to_string(l);
-		const detail::MRCellIndex& ci = s_.cells[slot];
-		const AttributeContainer& c = container(slot);
-		const auto key = c.key().view();
-		std::vector<uint8> used(c.end_index(), 0);
-		uint32 nb_cells = 0;
-		detail::mr_foreach_cell_by_darts(s_, slot, l, [&](Dart d) {
-			++nb_cells;
-			const uint32 i = index_of(slot, l, d);
-			if (i == INVALID_INDEX || i >= c.end_index() || key[i] == INVALID_INDEX)
-			{
-				add(IntegrityError::Kind::MissingIndex, d.index, "cell without a live line" + at);
-				return;
-			}
-			if ((*ci.level)[i] > l || (*ci.replaced)[i] <= l)
-				add(IntegrityError::Kind::LevelLineWrong, d.index, "line " + std::to_string(i) + " does not hold" + at);
-			bool representative = false;
-			detail::mr_foreach_dart_of_slot(s_, slot, l, d, [&](Dart x) {
-				representative = representative || x.index == key[i];
-				if (index_of(slot, l, x) != i)
-					add(IntegrityError::Kind::IndexNotConstant, x.index,
-						"two darts of a cell read different lines" + at);
-			});
-			if (!representative)
-				add(IntegrityError::Kind::BadRepresentative, d.index,
-					"the representative of line " + std::to_string(i) + " is not a dart of its cell" + at);
-			if (used[i]++ == 1)
-				add(IntegrityError::Kind::IndexShared, d.index, "line " + std::to_string(i) + " shared" + at);
+		const detail::MRCellIndex& ci = s_.cells[detail::MRDim<detail::MRState2>::face_slot];
+		foreach_dart(s_.map, [&](Dart d) {
+			if (level(d) <= l && is_boundary(s_.map, d) && (*ci.index)[d.index] != INVALID_INDEX)
+				add(IntegrityError::Kind::BoundaryCellIndexed, d.index,
+					"boundary face with a line at level " + std::to_string(l));
 		});
-		uint32 nb_lines = 0;
-		detail::mr_foreach_line_at_level(s_, slot, l, 0, c.end_index(), [&](uint32) { ++nb_lines; });
-		if (nb_lines != nb_cells)
-			add(IntegrityError::Kind::LevelLineWrong, INVALID_INDEX,
-				std::to_string(nb_lines) + " lines hold for " + std::to_string(nb_cells) + " cells" + at);
-		if (slot == 2)
-			foreach_dart(s_.map, [&](Dart d) {
-				if (level(d) <= l && is_boundary(s_.map, d) && (*ci.index)[d.index] != INVALID_INDEX)
-					add(IntegrityError::Kind::BoundaryCellIndexed, d.index, "boundary face with a line" + at);
-			});
 	}
 
 private:
-	const AttributeContainer& container(uint32 slot) const
-	{
-		return *detail::state_of(s_.map).cells[orbit_index(detail::MR2_ORBITS[slot])];
-	}
 	uint32 level(Dart d) const
 	{
 		return (*s_.level)[d.index];
@@ -181,21 +117,6 @@ private:
 	{
 		return detail::mr_is_finest(s_, l);
 	}
-	/// detail::mr_index_of following live lines only (their chains were
-	/// checked: each link leads to a coarser live line), so that a dart
-	/// holding a free or missing line (a broken file) ends the walk:
-	/// INVALID_INDEX then.
-	uint32 index_of(uint32 slot, uint32 l, Dart d) const
-	{
-		const detail::MRCellIndex& ci = s_.cells[slot];
-		const AttributeContainer& c = container(slot);
-		const uint32 end = c.end_index();
-		uint32 i = (*ci.index)[d.index];
-		while (i < end && c.key()[i] != INVALID_INDEX && !finest(l) && (*ci.level)[i] > l)
-			i = (*ci.down)[i];
-		return i < end && c.key()[i] != INVALID_INDEX ? i : INVALID_INDEX;
-	}
-
 	/// mr_phi1 and mr_phi_1 giving up after more steps than there are darts.
 	std::optional<Dart> phi1(uint32 l, Dart d) const
 	{
@@ -235,12 +156,17 @@ IntegrityReport check_levels(const detail::MRState2& s, uint32 first, uint32 las
 		c.check_level(l);
 	if (!r.ok())
 		return r; // the lines are read through the level relations
+	const detail::MRReport add = [&](IntegrityError::Kind k, uint32 d, const std::string& what) { c.add(k, d, what); };
 	for (uint32 slot = 0; slot < 4; ++slot)
 	{
-		if (s.cells[slot].index == nullptr || !c.check_chains(slot))
+		if (s.cells[slot].index == nullptr || !detail::mr_check_chains(s, slot, add))
 			continue;
 		for (uint32 l = first; l <= last; ++l)
-			c.check_lines(slot, l);
+		{
+			detail::mr_check_lines(s, slot, l, add);
+			if (slot == detail::MRDim<detail::MRState2>::face_slot)
+				c.check_boundary_faces(l);
+		}
 	}
 	return r;
 }

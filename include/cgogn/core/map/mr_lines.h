@@ -6,8 +6,31 @@
 #include <cgogn/core/map/mr_common.h>
 #include <cgogn/core/map/mrmap2.h>
 
+#include <array>
+
 namespace cgogn::detail
 {
+
+/// What the code shared by the multiresolution maps of every dimension needs
+/// to know of the 2-D one: its types and the orbits of its cell slots.
+template <>
+struct MRDim<MRState2>
+{
+	using Map = MRMap2;        ///< The multiresolution map.
+	using View = MRLevelView2; ///< Its level views.
+	using Flat = CMap2;        ///< Its finest map.
+	/// The orbits of the slots of MRState2::cells.
+	static constexpr std::array<Orbit, 4> orbits{Orbit::PHI21, Orbit::PHI2, Orbit::PHI1, Orbit::PHI1_PHI2};
+	static constexpr uint32 vertex_slot = 0;    ///< The slot of the vertices.
+	static constexpr uint32 edge_slot = 1;      ///< The slot of the edges.
+	static constexpr uint32 face_slot = 2;      ///< The slot of the faces.
+	static constexpr uint32 component_slot = 3; ///< The slot of the connected components.
+	/// The slot of orbit o (4 for an orbit without one).
+	static constexpr uint32 slot(Orbit o)
+	{
+		return mr_slot(o);
+	}
+};
 
 /// The line of the cell in slot `slot` holding dart d at level l: the line of
 /// d's finest cell, followed down to the level. INVALID_INDEX for a cell
