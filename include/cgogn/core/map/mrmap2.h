@@ -7,6 +7,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace cgogn
@@ -321,6 +322,46 @@ CGOGN_INLINE Dart mr_phi2(const MRState2& s, uint32 l, Dart d)
 		return phi2(s.map, d);
 	return phi2(s.map, phi_1(s.map, mr_phi1(s, l, d)));
 }
+
+/// The relations of one level, held by a walk for its whole length: at the
+/// finest level, the finest map's phi1 and phi2 through views held in the
+/// walk's locals (see LineStorage::View); below it, the level walks. The
+/// traversals step through them, so that each calls its callable from one
+/// place whatever the level: called from two (the finest map's own traversal
+/// and the level walk), the compilers keep the callable out of line, and
+/// every dart then pays a call and reloads what the callable captured (the
+/// circulator of bench_mr 1.6 times the flat map's at the finest level).
+struct MRRelations
+{
+	using RelationView = decltype(std::declval<const AttributeArray<uint32>&>().view());
+
+	const MRState2& s;
+	uint32 l;
+	bool finest;          ///< Whether l is the finest level (see mr_is_finest).
+	RelationView phi1_of; ///< The finest map's phi1.
+	RelationView phi2_of; ///< The finest map's phi2.
+
+	CGOGN_INLINE MRRelations(const MRState2& state, uint32 level)
+		: s(state), l(level), finest(mr_is_finest(state, level)), phi1_of(state_of(state.map).phi1->view()),
+		  phi2_of(state_of(state.map).phi2->view())
+	{
+	}
+
+	/// phi1 at the level.
+	CGOGN_INLINE Dart phi1(Dart d) const
+	{
+		if (finest) [[likely]]
+			return Dart(phi1_of[d.index]);
+		return mr_phi1(s, l, d);
+	}
+	/// phi2 at the level.
+	CGOGN_INLINE Dart phi2(Dart d) const
+	{
+		if (finest) [[likely]]
+			return Dart(phi2_of[d.index]);
+		return mr_phi2(s, l, d);
+	}
+};
 
 } // namespace detail
 

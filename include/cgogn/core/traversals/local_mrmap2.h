@@ -7,7 +7,9 @@
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/core/traversals/parallel.h>
 
+#include <optional>
 #include <type_traits>
+#include <utility>
 
 namespace cgogn
 {
@@ -17,18 +19,24 @@ namespace cgogn
 // each step costs what the level's phi1 costs (see MRMap2), 1 finest step
 // at the finest level. Boundary faces are never reported.
 
-/// Calls f(Dart) on each dart of the orbit of c at the level read, in the
-/// order of a 2-map (faces and vertices in cyclic order); f may return false
-/// to stop. Returns false when stopped. O(size of the orbit x cost of a
-/// level step); a connected component is flooded with a pooled mark.
-template <MRMesh2 M, Orbit O, typename FUNC>
-bool foreach_dart_of_orbit(const M& m, Cell<O> c, const FUNC& f)
+namespace detail
 {
-	const MRLevelView2 v = detail::read_level(m);
-	const detail::MRState2& s = v.state();
-	if (detail::mr_is_finest(v))
-		return foreach_dart_of_orbit(s.map, c, f); // the finest map's own walk
-	const uint32 l = v.level();
+
+/// The relations of the level at which m is read (see MRRelations). O(1).
+template <MRMesh2 M>
+CGOGN_INLINE MRRelations mr_relations(const M& m)
+{
+	const MRLevelView2 v = read_level(m);
+	return MRRelations(v.state(), v.level());
+}
+
+/// foreach_dart_of_orbit through the relations r of a level.
+template <Orbit O, typename FUNC>
+CGOGN_INLINE bool mr_foreach_dart_of_orbit(const MRRelations& r, Cell<O> c, const FUNC& func)
+{
+	// f's captures in registers across the walk, and f called from one place
+	// in it at every level (see MRRelations)
+	held_callable_t<FUNC> f = func;
 	const Dart d = c.dart;
 	if constexpr (O == Orbit::DART)
 		return call_and_continue(f, d);
@@ -39,12 +47,22 @@ bool foreach_dart_of_orbit(const M& m, Cell<O> c, const FUNC& f)
 		{
 			if (!call_and_continue(f, it))
 				return false;
-			it = detail::mr_phi1(s, l, it);
+			it = r.phi1(it);
 		} while (it != d);
 		return true;
 	}
 	else if constexpr (O == Orbit::PHI2)
-		return call_and_continue(f, d) && call_and_continue(f, detail::mr_phi2(s, l, d));
+	{
+		Dart it = d;
+		for (bool other_side = false;; other_side = true)
+		{
+			if (!call_and_continue(f, it))
+				return false;
+			if (other_side)
+				return true;
+			it = r.phi2(d);
+		}
+	}
 	else if constexpr (O == Orbit::PHI21)
 	{
 		Dart it = d;
@@ -52,17 +70,39 @@ bool foreach_dart_of_orbit(const M& m, Cell<O> c, const FUNC& f)
 		{
 			if (!call_and_continue(f, it))
 				return false;
-			it = detail::mr_phi1(s, l, detail::mr_phi2(s, l, it));
+			if (r.finest) [[likely]]
+			{
+				// the finest map's step, with its prefetches (see the 2-D
+				// vertex in foreach_dart_of_orbit on a CMap2)
+				const uint32 e = r.phi2_of[it.index];
+				CGOGN_PREFETCH(&r.phi2_of[e]);
+				if constexpr (requires { f.prefetch_line(e); })
+					f.prefetch_line(e);
+				it = Dart(r.phi1_of[e]);
+			}
+			else
+				it = mr_phi1(r.s, r.l, mr_phi2(r.s, r.l, it));
 		} while (it != d);
 		return true;
 	}
 	else
 	{
 		static_assert(O == Orbit::PHI1_PHI2, "foreach_dart_of_orbit: not an orbit of a 2-map");
-		return detail::foreach_dart_flood(
-			s.map, d, f, [&](Dart x) { return detail::mr_phi1(s, l, x); },
-			[&](Dart x) { return detail::mr_phi2(s, l, x); });
+		return foreach_dart_flood(
+			r.s.map, d, f, [&](Dart x) { return r.phi1(x); }, [&](Dart x) { return r.phi2(x); });
 	}
+}
+
+} // namespace detail
+
+/// Calls f(Dart) on each dart of the orbit of c at the level read, in the
+/// order of a 2-map (faces and vertices in cyclic order); f may return false
+/// to stop. Returns false when stopped. O(size of the orbit x cost of a
+/// level step); a connected component is flooded with a pooled mark.
+template <MRMesh2 M, Orbit O, typename FUNC>
+CGOGN_INLINE bool foreach_dart_of_orbit(const M& m, Cell<O> c, const FUNC& f)
+{
+	return detail::mr_foreach_dart_of_orbit(detail::mr_relations(m), c, f);
 }
 
 namespace detail
@@ -125,42 +165,81 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	static_assert(std::is_same_v<CELL, Cell<CELL::ORBIT>>, "foreach_cell on a multiresolution map: take a plain cell");
 	held_callable_t<FUNC> f = func;
 	constexpr Orbit O = CELL::ORBIT;
+	const detail::MRState2& s = *state_;
+	const uint32 l = level_;
+	// f called at one place, whatever the way the cells are found (see
+	// MRRelations): the lines that hold at the level for an indexed orbit
+	// (see MRCellIndex), the finest map's darts otherwise, each asked whether
+	// it starts a cell of the level.
+	using LabelView = decltype(std::declval<const AttributeArray<uint8>&>().view());
+	std::optional<LabelView> line_level, line_replaced;
 	if constexpr (detail::mr_walks_lines<O>())
-	{
-		// an indexed orbit: the lines that hold at the level
-		constexpr uint32 slot = detail::mr_slot(O);
-		if (state_->cells[slot].index != nullptr)
+		if (const detail::MRCellIndex& ci = s.cells[detail::mr_slot(O)]; ci.index != nullptr)
 		{
-			const AttributeContainer& c = *detail::state_of(state_->map).cells[orbit_index(O)];
-			const auto key = c.key().view();
-			detail::mr_foreach_line_at_level(*state_, slot, level_, 0, c.end_index(),
-											 [&](uint32 i) { return call_and_continue(f, CELL(Dart(key[i]))); });
-			return;
+			line_level.emplace(ci.level->view());
+			line_replaced.emplace(ci.replaced->view());
 		}
-	}
-	if (detail::mr_is_finest(*this))
+	const bool indexed = line_level.has_value();
+	const AttributeContainer& walked =
+		indexed ? *detail::state_of(s.map).cells[orbit_index(O)] : *detail::state_of(s.map).darts;
+	// the finest level unindexed: the finest map's cells (which indexes none of
+	// its orbits); below it: the darts of the level, a component's flooded
+	// with a mark, the other cells from the dart that reports them
+	const bool finest = detail::mr_is_finest(*this);
+	const bool finest_cells = O != Orbit::DART && !indexed && finest;
+	std::optional<detail::UnindexedCellStarts<O, CMap2>> starts;
+	std::optional<DartMarkerStore<CMap2>> seen;
+	if (finest_cells)
+		starts.emplace(s.map);
+	else if (O == Orbit::PHI1_PHI2 && !indexed)
+		seen.emplace(s.map);
+	const auto dart_level = s.level->view();
+	const auto key = walked.key().view(); // a line's dart, or a dart's phi1: INVALID_INDEX on free lines
+	const uint32 end = walked.end_index();
+	uint32 i = 0;
+	// the next cell from line or dart i on (INVALID at the end), each way of
+	// finding them with its own loop
+	auto next_cell = [&]() -> Dart {
+		if (indexed)
+		{
+			// at the finest level every line holds from its level on: only
+			// those not replaced
+			for (; i < end; ++i)
+				if ((*line_replaced)[i] > l && (finest || (*line_level)[i] <= l) && key[i] != INVALID_INDEX)
+					return Dart(key[i++]);
+			return Dart();
+		}
+		for (; i < end; ++i)
+		{
+			const Dart d(i);
+			if (key[i] == INVALID_INDEX)
+				continue;
+			if (finest_cells)
+			{
+				if (starts->starts_cell(d))
+					return Dart(i++);
+				continue;
+			}
+			if (dart_level[i] > l || is_boundary(s.map, d))
+				continue;
+			if constexpr (O == Orbit::PHI1_PHI2)
+			{
+				if (seen->is_marked(d))
+					continue;
+				foreach_dart_of_orbit(*this, CELL(d), [&](Dart x) { seen->mark(x); });
+				return Dart(i++);
+			}
+			else if (detail::mr_reports_cell<CELL>(*this, d))
+				return Dart(i++);
+		}
+		return Dart();
+	};
+	for (;;)
 	{
-		// the cells of the finest map (which indexes none of its orbits)
-		cgogn::foreach_cell(state_->map, [&](CELL c) { return call_and_continue(f, c); });
-		return;
+		const Dart d = next_cell();
+		if (!d.is_valid() || !call_and_continue(f, CELL(d)))
+			return;
 	}
-	const auto level = state_->level->view();
-	if constexpr (O == Orbit::PHI1_PHI2)
-	{
-		DartMarkerStore<CMap2> seen(state_->map);
-		foreach_dart(state_->map, [&](Dart d) {
-			if (level[d.index] > level_ || is_boundary(state_->map, d) || seen.is_marked(d))
-				return true;
-			foreach_dart_of_orbit(*this, CELL(d), [&](Dart x) { seen.mark(x); });
-			return call_and_continue(f, CELL(d));
-		});
-	}
-	else
-		foreach_dart(state_->map, [&](Dart d) {
-			if (level[d.index] > level_ || is_boundary(state_->map, d) || !detail::mr_reports_cell<CELL>(*this, d))
-				return true;
-			return call_and_continue(f, CELL(d));
-		});
 }
 
 template <typename CELL, typename FUNC>
@@ -262,32 +341,35 @@ inline std::pair<MRVertexOrigin, Dart> mr_vertex_origin(const MRState2& s, uint3
 } // namespace detail
 
 // ---- local traversals: those of a 2-map (see local_cmap2.h), at the level read
+//
+// Each walks the darts through the relations of the level (detail::MRRelations)
+// and calls its callable from one place, at every level: the finest level is
+// not handed to the finest map's own traversals, which would make a second
+// place (see detail::MRRelations).
 
 /// Edges incident to vertex v, in cyclic order.
 template <MRMesh2 M, typename FUNC>
-void foreach_incident_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
+CGOGN_INLINE void foreach_incident_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_edge(lv.state().map, v, f); // the finest map's own traversal
-	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, MRMap2::Edge(d)); });
+	const detail::MRRelations r = detail::mr_relations(m);
+	detail::mr_foreach_dart_of_orbit(r, v, [&](Dart d) { return call_and_continue(f, MRMap2::Edge(d)); });
 }
 
 /// Faces incident to vertex v, in cyclic order (boundary faces skipped).
 template <MRMesh2 M, typename FUNC>
-void foreach_incident_face(const M& m, MRMap2::Vertex v, const FUNC& f)
+CGOGN_INLINE void foreach_incident_face(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_face(lv.state().map, v, f); // the finest map's own traversal
-	foreach_dart_of_orbit(m, v, [&](Dart d) { return is_boundary(m, d) || call_and_continue(f, MRMap2::Face(d)); });
+	const detail::MRRelations r = detail::mr_relations(m);
+	detail::mr_foreach_dart_of_orbit(
+		r, v, [&](Dart d) { return is_boundary(r.s.map, d) || call_and_continue(f, MRMap2::Face(d)); });
 }
 
 /// Vertices joined to v by an edge, in cyclic order.
 template <MRMesh2 M, typename FUNC>
-void foreach_adjacent_vertex_through_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
+CGOGN_INLINE void foreach_adjacent_vertex_through_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_adjacent_vertex_through_edge(lv.state().map, v, f); // the finest map's own traversal
-	foreach_dart_of_orbit(m, v, [&](Dart d) { return call_and_continue(f, MRMap2::Vertex(phi2(m, d))); });
+	const detail::MRRelations r = detail::mr_relations(m);
+	detail::mr_foreach_dart_of_orbit(r, v, [&](Dart d) { return call_and_continue(f, MRMap2::Vertex(r.phi2(d))); });
 }
 
 /// Vertices sharing a face with v (v excluded): the edge neighbours in cyclic
@@ -295,17 +377,26 @@ void foreach_adjacent_vertex_through_edge(const M& m, MRMap2::Vertex v, const FU
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_vertex_through_face(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_adjacent_vertex_through_face(lv.state().map, v, f); // the finest map's own traversal
-	foreach_dart_of_orbit(m, v, [&](Dart d) {
-		if (!call_and_continue(f, MRMap2::Vertex(phi2(m, d))))
-			return false;
-		if (is_boundary(m, d))
-			return true;
-		for (Dart x = phi1(m, phi1(m, d)); phi1(m, x) != d; x = phi1(m, x))
+	const detail::MRRelations r = detail::mr_relations(m);
+	detail::mr_foreach_dart_of_orbit(r, v, [&](Dart d) {
+		// the neighbour across d's edge, then the other vertices of d's face
+		// but the one before v (the next edge neighbour): one call in a loop
+		// (see detail::MRRelations)
+		const bool inner = !is_boundary(r.s.map, d);
+		Dart x = r.phi2(d);
+		Dart y = inner ? r.phi1(r.phi1(d)) : d;
+		for (;;)
+		{
 			if (!call_and_continue(f, MRMap2::Vertex(x)))
 				return false;
-		return true;
+			if (!inner)
+				return true;
+			const Dart z = r.phi1(y);
+			if (z == d)
+				return true;
+			x = y;
+			y = z;
+		}
 	});
 }
 
@@ -313,23 +404,15 @@ void foreach_adjacent_vertex_through_face(const M& m, MRMap2::Vertex v, const FU
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_vertex(const M& m, MRMap2::Edge e, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_vertex(lv.state().map, e, f); // the finest map's own traversal
-	if (call_and_continue(f, MRMap2::Vertex(e.dart)))
-		call_and_continue(f, MRMap2::Vertex(phi2(m, e.dart)));
+	foreach_dart_of_orbit(m, e, [&](Dart d) { return call_and_continue(f, MRMap2::Vertex(d)); });
 }
 
 /// The one or two faces incident to edge e (boundary faces skipped).
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_face(const M& m, MRMap2::Edge e, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_face(lv.state().map, e, f); // the finest map's own traversal
-	if (!is_boundary(m, e.dart) && !call_and_continue(f, MRMap2::Face(e.dart)))
-		return;
-	const Dart d2 = phi2(m, e.dart);
-	if (!is_boundary(m, d2))
-		call_and_continue(f, MRMap2::Face(d2));
+	const detail::MRState2& s = detail::read_level(m).state();
+	foreach_dart_of_orbit(m, e, [&](Dart d) { return is_boundary(s.map, d) || call_and_continue(f, MRMap2::Face(d)); });
 }
 
 /// Edges sharing a vertex with e (e excluded): around the origin of e.dart,
@@ -337,10 +420,10 @@ void foreach_incident_face(const M& m, MRMap2::Edge e, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_edge_through_vertex(const M& m, MRMap2::Edge e, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_adjacent_edge_through_vertex(lv.state().map, e, f); // the finest map's own traversal
-	for (Dart start : {e.dart, phi2(m, e.dart)})
-		for (Dart it = phi1(m, phi2(m, start)); it != start; it = phi1(m, phi2(m, it)))
+	const detail::MRRelations r = detail::mr_relations(m);
+	const Dart ends[2] = {e.dart, r.phi2(e.dart)};
+	for (const Dart start : ends)
+		for (Dart it = r.phi1(r.phi2(start)); it != start; it = r.phi1(r.phi2(it)))
 			if (!call_and_continue(f, MRMap2::Edge(it)))
 				return;
 }
@@ -349,13 +432,13 @@ void foreach_adjacent_edge_through_vertex(const M& m, MRMap2::Edge e, const FUNC
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_edge_through_face(const M& m, MRMap2::Edge e, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_adjacent_edge_through_face(lv.state().map, e, f); // the finest map's own traversal
-	for (Dart start : {e.dart, phi2(m, e.dart)})
+	const detail::MRRelations r = detail::mr_relations(m);
+	const Dart sides[2] = {e.dart, r.phi2(e.dart)};
+	for (const Dart start : sides)
 	{
-		if (is_boundary(m, start))
+		if (is_boundary(r.s.map, start))
 			continue;
-		for (Dart it = phi1(m, start); it != start; it = phi1(m, it))
+		for (Dart it = r.phi1(start); it != start; it = r.phi1(it))
 			if (!call_and_continue(f, MRMap2::Edge(it)))
 				return;
 	}
@@ -363,19 +446,15 @@ void foreach_adjacent_edge_through_face(const M& m, MRMap2::Edge e, const FUNC& 
 
 /// Vertices of face f in phi1 order.
 template <MRMesh2 M, typename FUNC>
-void foreach_incident_vertex(const M& m, MRMap2::Face f, const FUNC& fn)
+CGOGN_INLINE void foreach_incident_vertex(const M& m, MRMap2::Face f, const FUNC& fn)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_vertex(lv.state().map, f, fn); // the finest map's own traversal
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, MRMap2::Vertex(d)); });
 }
 
 /// Edges of face f in phi1 order.
 template <MRMesh2 M, typename FUNC>
-void foreach_incident_edge(const M& m, MRMap2::Face f, const FUNC& fn)
+CGOGN_INLINE void foreach_incident_edge(const M& m, MRMap2::Face f, const FUNC& fn)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_edge(lv.state().map, f, fn); // the finest map's own traversal
 	foreach_dart_of_orbit(m, f, [&](Dart d) { return call_and_continue(fn, MRMap2::Edge(d)); });
 }
 
@@ -383,11 +462,10 @@ void foreach_incident_edge(const M& m, MRMap2::Face f, const FUNC& fn)
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_face_through_edge(const M& m, MRMap2::Face f, const FUNC& fn)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_adjacent_face_through_edge(lv.state().map, f, fn); // the finest map's own traversal
-	foreach_dart_of_orbit(m, f, [&](Dart d) {
-		const Dart d2 = phi2(m, d);
-		return is_boundary(m, d2) || call_and_continue(fn, MRMap2::Face(d2));
+	const detail::MRRelations r = detail::mr_relations(m);
+	detail::mr_foreach_dart_of_orbit(r, f, [&](Dart d) {
+		const Dart d2 = r.phi2(d);
+		return is_boundary(r.s.map, d2) || call_and_continue(fn, MRMap2::Face(d2));
 	});
 }
 
@@ -396,15 +474,14 @@ void foreach_adjacent_face_through_edge(const M& m, MRMap2::Face f, const FUNC& 
 template <MRMesh2 M, typename FUNC>
 void foreach_adjacent_face_through_vertex(const M& m, MRMap2::Face f, const FUNC& fn)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_adjacent_face_through_vertex(lv.state().map, f, fn); // the finest map's own traversal
-	foreach_dart_of_orbit(m, f, [&](Dart d) {
-		for (Dart it = phi1(m, phi2(m, d)); it != d;)
+	const detail::MRRelations r = detail::mr_relations(m);
+	detail::mr_foreach_dart_of_orbit(r, f, [&](Dart d) {
+		for (Dart it = r.phi1(r.phi2(d)); it != d;)
 		{
-			const Dart next = phi1(m, phi2(m, it));
+			const Dart next = r.phi1(r.phi2(it));
 			if (next == d)
 				break;
-			if (!is_boundary(m, it) && !call_and_continue(fn, MRMap2::Face(it)))
+			if (!is_boundary(r.s.map, it) && !call_and_continue(fn, MRMap2::Face(it)))
 				return false;
 			it = next;
 		}
@@ -426,23 +503,24 @@ namespace detail
 template <typename CELL, typename FUNC>
 void mr_foreach_cell_of_volume(const MRLevelView2& v, Dart start, const FUNC& f)
 {
-	DartMarkerStore<CMap2> done(v.state().map);
-	foreach_dart_of_orbit(v, MRMap2::Volume(start), [&](Dart d) {
+	const MRRelations r(v.state(), v.level());
+	const CMap2& map = v.state().map;
+	DartMarkerStore<CMap2> done(map);
+	mr_foreach_dart_of_orbit(r, MRMap2::Volume(start), [&](Dart d) {
 		if (done.is_marked(d))
 			return true;
-		foreach_dart_of_orbit(v, CELL(d), [&](Dart x) { done.mark(x); });
+		bool real = false; // a vertex is real when one of its darts is
+		mr_foreach_dart_of_orbit(r, CELL(d), [&](Dart x) {
+			done.mark(x);
+			if constexpr (CELL::ORBIT == Orbit::PHI21)
+				real = real || !is_boundary(map, x);
+		});
 		if constexpr (CELL::ORBIT == Orbit::PHI21)
-		{
-			// a vertex is real when one of its darts is
-			bool real = false;
-			foreach_dart_of_orbit(v, CELL(d), [&](Dart x) { return !(real = !is_boundary(v.state().map, x)); });
 			return !real || call_and_continue(f, CELL(d));
-		}
 		else if constexpr (CELL::ORBIT == Orbit::PHI2)
-			return (is_boundary(v.state().map, d) && is_boundary(v.state().map, mr_phi2(v.state(), v.level(), d))) ||
-				   call_and_continue(f, CELL(d));
+			return (is_boundary(map, d) && is_boundary(map, r.phi2(d))) || call_and_continue(f, CELL(d));
 		else
-			return is_boundary(v.state().map, d) || call_and_continue(f, CELL(d));
+			return is_boundary(map, d) || call_and_continue(f, CELL(d));
 	});
 }
 } // namespace detail
@@ -451,24 +529,18 @@ void mr_foreach_cell_of_volume(const MRLevelView2& v, Dart start, const FUNC& f)
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_vertex(const M& m, MRMap2::Volume w, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_vertex(lv.state().map, w, f); // the finest map's own traversal
 	detail::mr_foreach_cell_of_volume<MRMap2::Vertex>(detail::read_level(m), w.dart, f);
 }
 /// Edges of connected component w (no defined order).
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_edge(const M& m, MRMap2::Volume w, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_edge(lv.state().map, w, f); // the finest map's own traversal
 	detail::mr_foreach_cell_of_volume<MRMap2::Edge>(detail::read_level(m), w.dart, f);
 }
 /// Faces of connected component w, boundary faces skipped (no defined order).
 template <MRMesh2 M, typename FUNC>
 void foreach_incident_face(const M& m, MRMap2::Volume w, const FUNC& f)
 {
-	if (const MRLevelView2 lv = detail::read_level(m); detail::mr_is_finest(lv))
-		return foreach_incident_face(lv.state().map, w, f); // the finest map's own traversal
 	detail::mr_foreach_cell_of_volume<MRMap2::Face>(detail::read_level(m), w.dart, f);
 }
 
