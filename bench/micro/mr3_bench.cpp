@@ -13,22 +13,17 @@
 //   next to one hex_subdivision step of the flat level 1.
 #include <cgogn/cgogn.h>
 
+#include "mr_bench_workloads.h"
+
 #include <benchmark/benchmark.h>
 
-#include <malloc.h>
-
 using namespace cgogn;
+using namespace cgogn::bench_mr;
 
 namespace
 {
 
 constexpr uint32 LEVELS3 = 2;
-
-std::size_t held_bytes3()
-{
-	const struct mallinfo2 mi = mallinfo2();
-	return mi.uordblks + mi.hblkhd + committed_storage_bytes();
-}
 
 CMap3 hex_grid(uint32 n)
 {
@@ -77,16 +72,16 @@ void BM_Memory3(benchmark::State& state)
 	const MRMap3& source = hierarchy3().m; // made before measuring
 	for (auto _ : state)
 	{
-		std::size_t before = held_bytes3();
+		std::size_t before = held_bytes();
 		{
 			Hierarchy3 h = make_hierarchy3();
-			mr_bytes = double(held_bytes3() - before);
+			mr_bytes = double(held_bytes() - before);
 			volumes = nb_cells<MRMap3::Volume>(level_view(h.m, LEVELS3));
 		}
-		before = held_bytes3();
+		before = held_bytes();
 		{
 			CMap3 flat = extract_level(source, LEVELS3);
-			flat_bytes = double(held_bytes3() - before);
+			flat_bytes = double(held_bytes() - before);
 		}
 	}
 	state.counters["label_B_per_dart"] = double(3 * sizeof(uint8));
@@ -96,29 +91,12 @@ void BM_Memory3(benchmark::State& state)
 }
 BENCHMARK(BM_Memory3)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-template <typename MESH>
-double circulate3(const MESH& m, const AttributeArray<Vec3>& pos)
-{
-	using V = typename mesh_traits<MESH>::Vertex;
-	double sum = 0.0;
-	foreach_cell(m, [&](V v) {
-		Vec3 s = Vec3::Zero();
-		uint32 n = 0;
-		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
-			s += value<Vec3>(m, pos, w);
-			++n;
-		});
-		sum += s.x() / n;
-	});
-	return sum;
-}
-
 void BM_Circulator3Flat(benchmark::State& state)
 {
 	const CMap3& m = flat_level3(LEVELS3);
 	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
 	for (auto _ : state)
-		benchmark::DoNotOptimize(circulate3(m, *pos));
+		benchmark::DoNotOptimize(circulate(m, *pos));
 }
 BENCHMARK(BM_Circulator3Flat)->Unit(benchmark::kMillisecond);
 
@@ -127,24 +105,9 @@ void BM_Circulator3MR(benchmark::State& state)
 	Hierarchy3& h = hierarchy3();
 	set_current_level(h.m, LEVELS3);
 	for (auto _ : state)
-		benchmark::DoNotOptimize(circulate3(h.m, *h.pos));
+		benchmark::DoNotOptimize(circulate(h.m, *h.pos));
 }
 BENCHMARK(BM_Circulator3MR)->Unit(benchmark::kMillisecond);
-
-template <typename MESH>
-void smooth3(MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& out)
-{
-	using V = typename mesh_traits<MESH>::Vertex;
-	foreach_cell(m, [&](V v) {
-		Vec3 s = Vec3::Zero();
-		uint32 n = 0;
-		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
-			s += pos[index_of(m, w)];
-			++n;
-		});
-		out[index_of(m, v)] = 0.5 * pos[index_of(m, v)] + 0.5 * s / n;
-	});
-}
 
 void BM_Smoothing3Flat(benchmark::State& state)
 {
@@ -154,7 +117,7 @@ void BM_Smoothing3Flat(benchmark::State& state)
 	if (!out)
 		out = add_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
 	for (auto _ : state)
-		smooth3(m, *pos, *out);
+		smooth(m, *pos, *out);
 }
 BENCHMARK(BM_Smoothing3Flat)->Unit(benchmark::kMillisecond);
 
@@ -166,25 +129,9 @@ void BM_Smoothing3MR(benchmark::State& state)
 	if (!out)
 		out = add_attribute<Vec3, MRMap3::Vertex>(h.m, "smoothed");
 	for (auto _ : state)
-		smooth3(h.m, *h.pos, *out);
+		smooth(h.m, *h.pos, *out);
 }
 BENCHMARK(BM_Smoothing3MR)->Unit(benchmark::kMillisecond);
-
-template <typename MESH>
-uint32 walk_faces3(const MESH& m)
-{
-	uint32 n = 0;
-	foreach_cell(m, [&](typename mesh_traits<MESH>::Face f) {
-		const Dart d = f.dart;
-		Dart it = d;
-		do
-		{
-			it = phi1(m, it);
-			++n;
-		} while (it != d);
-	});
-	return n;
-}
 
 // state.range(0) = L - l
 void BM_Phi1AtLevel3MR(benchmark::State& state)
@@ -192,7 +139,7 @@ void BM_Phi1AtLevel3MR(benchmark::State& state)
 	const MRLevelView3 v = level_view(hierarchy3().m, LEVELS3 - uint32(state.range(0)));
 	uint32 n = 0;
 	for (auto _ : state)
-		benchmark::DoNotOptimize(n = walk_faces3(v));
+		benchmark::DoNotOptimize(n = walk_faces(v));
 	state.counters["darts_per_s"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_Phi1AtLevel3MR)->DenseRange(0, LEVELS3)->Unit(benchmark::kMillisecond);
@@ -202,7 +149,7 @@ void BM_Phi1AtLevel3Extracted(benchmark::State& state)
 	const CMap3& m = flat_level3(LEVELS3 - uint32(state.range(0)));
 	uint32 n = 0;
 	for (auto _ : state)
-		benchmark::DoNotOptimize(n = walk_faces3(m));
+		benchmark::DoNotOptimize(n = walk_faces(m));
 	state.counters["darts_per_s"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_Phi1AtLevel3Extracted)->DenseRange(0, LEVELS3)->Unit(benchmark::kMillisecond);

@@ -14,23 +14,18 @@
 //   with balance, faces per second.
 #include <cgogn/cgogn.h>
 
-#include <benchmark/benchmark.h>
+#include "mr_bench_workloads.h"
 
-#include <malloc.h>
+#include <benchmark/benchmark.h>
 
 using namespace cgogn;
 using namespace cgogn::modeling;
+using namespace cgogn::bench_mr;
 
 namespace
 {
 
 constexpr uint32 LEVELS = 3;
-
-std::size_t held_bytes()
-{
-	const struct mallinfo2 mi = mallinfo2();
-	return mi.uordblks + mi.hblkhd + committed_storage_bytes();
-}
 
 CMap2 torus(uint32 nu, uint32 nv)
 {
@@ -100,23 +95,6 @@ void BM_Memory(benchmark::State& state)
 }
 BENCHMARK(BM_Memory)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-template <typename MESH>
-double circulate(const MESH& m, const AttributeArray<Vec3>& pos)
-{
-	using V = typename mesh_traits<MESH>::Vertex;
-	double sum = 0.0;
-	foreach_cell(m, [&](V v) {
-		Vec3 s = Vec3::Zero();
-		uint32 n = 0;
-		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
-			s += value<Vec3>(m, pos, w);
-			++n;
-		});
-		sum += s.x() / n;
-	});
-	return sum;
-}
-
 void BM_CirculatorFlat(benchmark::State& state)
 {
 	const CMap2& m = flat_level(LEVELS);
@@ -134,21 +112,6 @@ void BM_CirculatorMR(benchmark::State& state)
 		benchmark::DoNotOptimize(circulate(h.m, *h.pos));
 }
 BENCHMARK(BM_CirculatorMR)->Unit(benchmark::kMillisecond);
-
-template <typename MESH>
-void smooth(MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& out)
-{
-	using V = typename mesh_traits<MESH>::Vertex;
-	foreach_cell(m, [&](V v) {
-		Vec3 s = Vec3::Zero();
-		uint32 n = 0;
-		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
-			s += pos[index_of(m, w)];
-			++n;
-		});
-		out[index_of(m, v)] = 0.5 * pos[index_of(m, v)] + 0.5 * s / n;
-	});
-}
 
 void BM_SmoothingFlat(benchmark::State& state)
 {
@@ -173,23 +136,6 @@ void BM_SmoothingMR(benchmark::State& state)
 		smooth(h.m, *h.pos, *out);
 }
 BENCHMARK(BM_SmoothingMR)->Unit(benchmark::kMillisecond);
-
-template <typename MESH>
-uint32 walk_faces(const MESH& m)
-{
-	using F = typename mesh_traits<MESH>::Face;
-	uint32 n = 0;
-	foreach_cell(m, [&](F f) {
-		const Dart d = f.dart;
-		Dart it = d;
-		do
-		{
-			it = phi1(m, it);
-			++n;
-		} while (it != d);
-	});
-	return n;
-}
 
 // state.range(0) = L - l
 void BM_Phi1AtLevelMR(benchmark::State& state)

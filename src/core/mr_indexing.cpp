@@ -249,6 +249,19 @@ void mr_unindex_cells_at(S& s, uint32 slot, uint32 l)
 }
 
 template <typename S>
+void mr_index_new_orbit(S& s, Orbit o)
+{
+	const uint32 slot = MRDim<S>::slot(o);
+	AttributeContainer& darts = *state_of(s.map).darts;
+	auto index = darts.add_attribute<uint32>("__mr_index_" + std::string(orbit_name(o)), INVALID_INDEX);
+	s.cells[slot].index = index.get();
+	state_of(s.map).cells[orbit_index(o)]->set_cell_index(index.get());
+	mr_add_slot_attributes(s, slot);
+	for (uint32 l = 0; l < s.darts_per_level.size(); ++l)
+		mr_index_cells_at(s, slot, l);
+}
+
+template <typename S>
 void mr_take_over_indexing(S& s)
 {
 	using D = MRDim<S>;
@@ -310,6 +323,7 @@ template void mr_add_slot_attributes(MRState2&, uint32);
 template void mr_index_cells_at(MRState2&, uint32, uint32);
 template void mr_unindex_cells_at(MRState2&, uint32, uint32);
 template void mr_take_over_indexing(MRState2&);
+template void mr_index_new_orbit(MRState2&, Orbit);
 template void mr_copy_cell_attributes(const MRState2&, uint32, uint32, CMap2&, const std::vector<Dart>&);
 
 template void mr_foreach_cell_of_slot(const MRState3&, uint32, uint32, const std::function<void(Dart)>&);
@@ -318,6 +332,7 @@ template void mr_add_slot_attributes(MRState3&, uint32);
 template void mr_index_cells_at(MRState3&, uint32, uint32);
 template void mr_unindex_cells_at(MRState3&, uint32, uint32);
 template void mr_take_over_indexing(MRState3&);
+template void mr_index_new_orbit(MRState3&, Orbit);
 template void mr_copy_cell_attributes(const MRState3&, uint32, uint32, CMap3&, const std::vector<Dart>&);
 
 } // namespace cgogn::detail

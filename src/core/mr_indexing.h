@@ -48,6 +48,12 @@ void mr_index_cells_at(S& s, uint32 slot, uint32 l);
 template <typename S>
 void mr_unindex_cells_at(S& s, uint32 slot, uint32 l);
 
+/// Gives lines to the cells of orbit o, which has none yet, at every level:
+/// a per-dart line attribute, the per-line attributes, the lines of level
+/// 0 up. O(number of darts x levels x cost of a level step).
+template <typename S>
+void mr_index_new_orbit(S& s, Orbit o);
+
 /// Takes over the indexing of the orbits the finest map indexes (at
 /// construction): their lines become level-0 lines, and the finest map's
 /// own indexing of them is switched off. O(number of orbits).

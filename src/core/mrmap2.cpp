@@ -31,15 +31,7 @@ MRMap2::MRMap2(CMap2&& base)
 
 void detail::mr_index_orbit(MRMap2& m, Orbit o)
 {
-	MRState2& s = mr_state_of(m);
-	const uint32 slot = mr_slot(o);
-	AttributeContainer& darts = *state_of(s.map).darts;
-	auto index = darts.add_attribute<uint32>("__mr_index_" + std::string(orbit_name(o)), INVALID_INDEX);
-	s.cells[slot].index = index.get();
-	state_of(s.map).cells[orbit_index(o)]->set_cell_index(index.get());
-	mr_add_slot_attributes(s, slot);
-	for (uint32 l = 0; l <= max_level(m); ++l)
-		mr_index_cells_at(s, slot, l);
+	mr_index_new_orbit(mr_state_of(m), o);
 }
 
 void set_current_level(MRMap2& m, uint32 l)

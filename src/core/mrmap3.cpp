@@ -37,15 +37,7 @@ MRMap3::MRMap3(CMap3&& base)
 
 void detail::mr_index_orbit(MRMap3& m, Orbit o)
 {
-	MRState3& s = mr_state_of(m);
-	const uint32 slot = MRDim<MRState3>::slot(o);
-	AttributeContainer& darts = *state_of(s.map).darts;
-	auto index = darts.add_attribute<uint32>("__mr_index_" + std::string(orbit_name(o)), INVALID_INDEX);
-	s.cells[slot].index = index.get();
-	state_of(s.map).cells[orbit_index(o)]->set_cell_index(index.get());
-	mr_add_slot_attributes(s, slot);
-	for (uint32 l = 0; l <= max_level(m); ++l)
-		mr_index_cells_at(s, slot, l);
+	mr_index_new_orbit(mr_state_of(m), o);
 }
 
 void set_current_level(MRMap3& m, uint32 l)
@@ -336,46 +328,6 @@ void remove_finest_level(MRMap3& m)
 			detail::mr_unindex_cells_at(s, slot, finest);
 	s.darts_per_level.pop_back();
 	s.current_level = std::min(s.current_level, finest - 1);
-}
-
-CMap3 extract_level(const MRMap3& m, uint32 l)
-{
-	if (l > max_level(m))
-		throw std::out_of_range("extract_level: level " + std::to_string(l) + " above the finest level " +
-								std::to_string(max_level(m)));
-	const detail::MRState3& s = detail::mr_state_of(m);
-	CMap3 flat;
-	std::vector<uint32> target(detail::state_of(s.map).darts->end_index(), INVALID_INDEX);
-	std::vector<Dart> source;
-	const auto level = s.level->view();
-	foreach_dart(s.map, [&](Dart d) {
-		if (level[d.index] > l)
-			return;
-		target[d.index] = detail::add_dart(flat).index;
-		source.push_back(d);
-	});
-	for (uint32 i = 0; i < source.size(); ++i)
-	{
-		const Dart d = source[i];
-		detail::set_phi1(flat, Dart(i), Dart(target[detail::mr_phi1(s, l, d).index]));
-		detail::set_phi2(flat, Dart(i), Dart(target[detail::mr_phi2(s, l, d).index]));
-		detail::set_phi3(flat, Dart(i), Dart(target[detail::mr_phi3(s, l, d).index]));
-		if (is_boundary(s.map, d))
-			detail::set_boundary(flat, Dart(i), true);
-	}
-	const AttributeContainer& darts = *detail::state_of(s.map).darts;
-	for (const auto& a : darts.attributes())
-	{
-		if (a.get() == &darts.key() || a->name().rfind("__", 0) == 0)
-			continue;
-		auto b = a->clone_empty(*detail::state_of(flat).darts);
-		for (uint32 i = 0; i < source.size(); ++i)
-			b->copy_line_from(i, *a, source[i].index);
-	}
-	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
-		detail::mr_copy_cell_attributes(s, slot, l, flat, source);
-	detail::release_idle_marks(flat);
-	return flat;
 }
 
 } // namespace cgogn

@@ -1,23 +1,33 @@
 // SPDX-License-Identifier: MIT
+// extract_level of the multiresolution maps of every dimension: the mesh of
+// one level as a flat map, with its attributes' values at that level.
+#include <cgogn/core/map/mrmap2_attributes.h>
+#include <cgogn/core/map/mrmap3_attributes.h>
 #include <cgogn/core/operators/mrmap2.h>
-#include <cgogn/core/traversals/global.h>
+#include <cgogn/core/operators/mrmap3.h>
 
 #include "mr_indexing.h"
 
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace cgogn
 {
 
-CMap2 extract_level(const MRMap2& m, uint32 l)
+namespace
+{
+
+template <typename M>
+auto extract(const M& m, uint32 l)
 {
 	if (l > max_level(m))
 		throw std::out_of_range("extract_level: level " + std::to_string(l) + " above the finest level " +
 								std::to_string(max_level(m)));
-	const detail::MRState2& s = detail::mr_state_of(m);
-	CMap2 flat;
+	const auto& s = detail::mr_state_of(m);
+	using S = std::remove_cvref_t<decltype(s)>;
+	typename detail::MRDim<S>::Flat flat;
 	// one flat dart per dart of the level, in the order of the finest map
 	std::vector<uint32> target(detail::state_of(s.map).darts->end_index(), INVALID_INDEX);
 	std::vector<Dart> source;
@@ -26,8 +36,7 @@ CMap2 extract_level(const MRMap2& m, uint32 l)
 	foreach_dart(s.map, [&](Dart d) {
 		if (level[d.index] > l)
 			return;
-		const Dart f = detail::add_dart(flat);
-		target[d.index] = f.index;
+		target[d.index] = detail::add_dart(flat).index;
 		source.push_back(d);
 	});
 	for (uint32 i = 0; i < source.size(); ++i)
@@ -35,6 +44,8 @@ CMap2 extract_level(const MRMap2& m, uint32 l)
 		const Dart d = source[i];
 		detail::set_phi1(flat, Dart(i), Dart(target[detail::mr_phi1(s, l, d).index]));
 		detail::set_phi2(flat, Dart(i), Dart(target[detail::mr_phi2(s, l, d).index]));
+		if constexpr (std::is_same_v<S, detail::MRState3>)
+			detail::set_phi3(flat, Dart(i), Dart(target[detail::mr_phi3(s, l, d).index]));
 		if (is_boundary(s.map, d))
 			detail::set_boundary(flat, Dart(i), true);
 	}
@@ -52,6 +63,18 @@ CMap2 extract_level(const MRMap2& m, uint32 l)
 		detail::mr_copy_cell_attributes(s, slot, l, flat, source);
 	detail::release_idle_marks(flat);
 	return flat;
+}
+
+} // namespace
+
+CMap2 extract_level(const MRMap2& m, uint32 l)
+{
+	return extract(m, l);
+}
+
+CMap3 extract_level(const MRMap3& m, uint32 l)
+{
+	return extract(m, l);
 }
 
 } // namespace cgogn

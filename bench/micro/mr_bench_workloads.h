@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// The workloads bench_mr runs on a multiresolution map and on the flat map
+// of a level, whatever their dimension: held memory, a one-ring
+// circulator, a smoothing pass, a walk of every face.
+#pragma once
+
+#include <cgogn/cgogn.h>
+
+#include <malloc.h>
+
+namespace cgogn::bench_mr
+{
+
+/// The bytes the process holds (malloc and the line storage).
+inline std::size_t held_bytes()
+{
+	const struct mallinfo2 mi = mallinfo2();
+	return mi.uordblks + mi.hblkhd + committed_storage_bytes();
+}
+
+/// The mean of the neighbours' first coordinate, summed over the vertices.
+template <typename MESH>
+double circulate(const MESH& m, const AttributeArray<Vec3>& pos)
+{
+	using V = typename mesh_traits<MESH>::Vertex;
+	double sum = 0.0;
+	foreach_cell(m, [&](V v) {
+		Vec3 s = Vec3::Zero();
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
+			s += value<Vec3>(m, pos, w);
+			++n;
+		});
+		sum += s.x() / n;
+	});
+	return sum;
+}
+
+/// One Laplacian smoothing pass of pos into out.
+template <typename MESH>
+void smooth(MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& out)
+{
+	using V = typename mesh_traits<MESH>::Vertex;
+	foreach_cell(m, [&](V v) {
+		Vec3 s = Vec3::Zero();
+		uint32 n = 0;
+		foreach_adjacent_vertex_through_edge(m, v, [&](V w) {
+			s += pos[index_of(m, w)];
+			++n;
+		});
+		out[index_of(m, v)] = 0.5 * pos[index_of(m, v)] + 0.5 * s / n;
+	});
+}
+
+/// The darts of every face walked by phi1.
+template <typename MESH>
+uint32 walk_faces(const MESH& m)
+{
+	using F = typename mesh_traits<MESH>::Face;
+	uint32 n = 0;
+	foreach_cell(m, [&](F f) {
+		const Dart d = f.dart;
+		Dart it = d;
+		do
+		{
+			it = phi1(m, it);
+			++n;
+		} while (it != d);
+	});
+	return n;
+}
+
+} // namespace cgogn::bench_mr
