@@ -8,11 +8,16 @@
 
 #include <malloc.h>
 
+// Internal to each file that includes it: with external linkage, the
+// compilers stop inlining the multiresolution traversals into these loops
+// (the MRMap2 circulator measured 1.9x the flat map instead of 1.1x).
 namespace cgogn::bench_mr
+{
+namespace
 {
 
 /// The bytes the process holds (malloc and the line storage).
-inline std::size_t held_bytes()
+std::size_t held_bytes()
 {
 	const struct mallinfo2 mi = mallinfo2();
 	return mi.uordblks + mi.hblkhd + committed_storage_bytes();
@@ -70,4 +75,5 @@ uint32 walk_faces(const MESH& m)
 	return n;
 }
 
+} // namespace
 } // namespace cgogn::bench_mr
