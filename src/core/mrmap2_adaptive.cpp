@@ -264,7 +264,7 @@ void subdivide_leaf(MRState2& s, Dart d, uint32 k, Refinement r, bool balance)
 	if (l >= s.darts_per_level.size())
 		s.darts_per_level.push_back(0);
 	const std::vector<Dart> corners = face_darts(s, k, d);
-	const uint32 face_line = indexed(s, 2) ? detail::mr_index_of(s, k, 2, d) : INVALID_INDEX;
+	const uint32 face_line = indexed(s, 2) ? detail::mr_line_of(s, k, 2, d) : INVALID_INDEX;
 	detail::MRNewDarts labels(s, uint8(l), true);
 	std::vector<Cut> cuts;
 	for (Dart x : corners)
@@ -272,7 +272,7 @@ void subdivide_leaf(MRState2& s, Dart d, uint32 k, Refinement r, bool balance)
 		const Dart y = detail::mr_phi1(s, l, x);
 		if (level_of(s, y) == l && id_of(s, y) == id_of(s, x))
 			continue; // a neighbour cut it already
-		const uint32 parent = indexed(s, 1) ? detail::mr_index_of(s, k, 1, x) : INVALID_INDEX;
+		const uint32 parent = indexed(s, 1) ? detail::mr_line_of(s, k, 1, x) : INVALID_INDEX;
 		const Dart n1 = cut_edge(s.map, CMap2::Edge(x), false).dart;
 		labels.label(n1, id_of(s, x));
 		labels.label(phi2(s.map, x), id_of(s, x));

@@ -669,7 +669,7 @@ TEST(MRMap2Attributes, IntegrityFindsBrokenLines)
 		detail::MRState2& s = detail::mr_state_of(m);
 		// a parent edge line marked as never replaced: it holds at level 1 too
 		const Dart d = first_dart_of_level(m, 0);
-		const uint32 parent = detail::mr_index_of(s, 0, 1, d);
+		const uint32 parent = detail::mr_line_of(s, 0, 1, d);
 		(*s.cells[1].replaced)[parent] = detail::MR_NOT_REPLACED;
 		EXPECT_TRUE(check_integrity(m).has(IntegrityError::Kind::LevelLineWrong));
 	}

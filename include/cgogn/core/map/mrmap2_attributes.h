@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cgogn/core/attributes/attributes.h>
+#include <cgogn/core/map/mr_lines.h>
 #include <cgogn/core/map/mrmap2.h>
+#include <cgogn/core/map/mrmap3.h>
 #include <cgogn/core/marking/marker.h>
 #include <cgogn/core/traversals/local_mrmap2.h>
 
@@ -24,22 +26,6 @@ namespace cgogn
 
 namespace detail
 {
-
-/// The line of the cell of orbit O holding dart d at level l: the line of d's
-/// finest cell, followed down to the level. INVALID_INDEX for boundary faces.
-/// O(1) at the finest level, O(levels - l) below.
-CGOGN_INLINE uint32 mr_index_of(const MRState2& s, uint32 l, uint32 slot, Dart d)
-{
-	const MRCellIndex& ci = s.cells[slot];
-	uint32 i = (*ci.index)[d.index];
-	if (mr_is_finest(s, l) || i == INVALID_INDEX)
-		return i;
-	const auto level = ci.level->view();
-	const auto down = ci.down->view();
-	while (level[i] > l)
-		i = down[i];
-	return i;
-}
 
 /// The container of the attributes of orbit O: the finest map's (its darts'
 /// for HalfEdge). O(1).
@@ -76,7 +62,7 @@ CGOGN_INLINE uint32 index_of(const M& m, Cell<O> c)
 	if constexpr (O == Orbit::DART)
 		return c.dart.index; // a dart's line is its index
 	const MRLevelView2 v = detail::read_level(m);
-	return detail::mr_index_of(v.state(), v.level(), detail::mr_slot(O), c.dart);
+	return detail::mr_line_of(v.state(), v.level(), detail::mr_slot(O), c.dart);
 }
 
 /// Adds an attribute of type T on cells of type CELL (half-edges, vertices,
@@ -149,18 +135,18 @@ requires MRMesh2<M> CGOGN_INLINE const T& value(const M& m, const AttributeArray
 	return attr[index_of(m, c)];
 }
 
-/// Marks cells of type CELL of a multiresolution 2-map at the level read:
+/// Marks cells of type CELL of a multiresolution map (2-D or 3-D) at the level read:
 /// the darts of the cell at that level carry the mark. Cleared on
 /// destruction. mark and unmark O(size of the orbit x cost of a level
 /// step), is_marked O(1).
 template <typename M, typename CELL>
-requires MRMesh2<M>
-class CellMarker<M, CELL>
+requires(MRMesh2<M> || MRMesh3<M>) class CellMarker<M, CELL>
 {
 	static_assert(CellType<CELL>);
+	using View = decltype(detail::read_level(std::declval<const M&>()));
 
 public:
-	using MapType = MRMap2; ///< The map under M.
+	using MapType = typename mesh_traits<M>::MapType; ///< The map under M.
 
 	/// A marker of the cells of m at the level it reads (fixed for the
 	/// marker's life), none marked. O(1) once the pool is warm.
@@ -193,7 +179,7 @@ public:
 	}
 
 private:
-	MRLevelView2 view_;
+	View view_;
 	ReservedMark mark_;
 };
 

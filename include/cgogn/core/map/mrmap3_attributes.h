@@ -3,8 +3,8 @@
 
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/map/mr_lines.h>
+#include <cgogn/core/map/mrmap2_attributes.h>
 #include <cgogn/core/map/mrmap3.h>
-#include <cgogn/core/marking/marker.h>
 #include <cgogn/core/traversals/local_mrmap3.h>
 
 #include <memory>
@@ -147,53 +147,5 @@ requires MRMesh3<M> CGOGN_INLINE const T& value(const M& m, const AttributeArray
 {
 	return attr[index_of(m, c)];
 }
-
-/// Marks cells of type CELL of a multiresolution 3-map at the level read:
-/// the darts of the cell at that level carry the mark. Cleared on
-/// destruction. mark and unmark O(size of the orbit x cost of a level
-/// step), is_marked O(1).
-template <typename M, typename CELL>
-requires MRMesh3<M>
-class CellMarker<M, CELL>
-{
-	static_assert(CellType<CELL>);
-
-public:
-	using MapType = MRMap3; ///< The map under M.
-
-	/// A marker of the cells of m at the level it reads (fixed for the
-	/// marker's life), none marked. O(1) once the pool is warm.
-	explicit CellMarker(const M& m) : view_(detail::read_level(m)), mark_(*detail::state_of(view_.state().map).darts)
-	{
-	}
-	~CellMarker()
-	{
-		mark_->clear_all();
-	}
-	/// Marks c.
-	void mark(CELL c)
-	{
-		foreach_dart_of_orbit(view_, c, [&](Dart d) { mark_->set(d.index); });
-	}
-	/// Unmarks c.
-	void unmark(CELL c)
-	{
-		foreach_dart_of_orbit(view_, c, [&](Dart d) { mark_->reset(d.index); });
-	}
-	/// Whether c is marked, through any of its darts at the level.
-	bool is_marked(CELL c) const
-	{
-		return mark_->test(c.dart.index);
-	}
-	/// Unmarks every cell. O(darts / 64).
-	void unmark_all()
-	{
-		mark_->clear_all();
-	}
-
-private:
-	MRLevelView3 view_;
-	ReservedMark mark_;
-};
 
 } // namespace cgogn

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/map/mr_lines.h>
 #include <cgogn/core/map/mrmap2.h>
 #include <cgogn/core/marking/dart_marker.h>
 #include <cgogn/core/parallel/thread_pool.h>
@@ -139,19 +140,6 @@ bool mr_reports_cell(const MRLevelView2& v, Dart d)
 
 namespace detail
 {
-/// Calls f(line) on every line of slot `slot` that holds at level l (see
-/// MRCellIndex), for lines [b, e) of the container.
-template <typename FUNC>
-void mr_foreach_line_at_level(const MRState2& s, uint32 slot, uint32 l, uint32 b, uint32 e, const FUNC& f)
-{
-	const AttributeContainer& c = *state_of(s.map).cells[orbit_index(MR2_ORBITS[slot])];
-	const auto key = c.key().view();
-	const auto level = s.cells[slot].level->view();
-	const auto replaced = s.cells[slot].replaced->view();
-	for (uint32 i = b; i < e; ++i)
-		if (key[i] != INVALID_INDEX && level[i] <= l && replaced[i] > l && !call_and_continue(f, i))
-			return;
-}
 template <Orbit O>
 constexpr bool mr_walks_lines()
 {
@@ -261,8 +249,8 @@ void MRLevelView2::parallel_foreach_cell(const FUNC& f) const
 			detail::parallel_for_chunks(c.end_index(), detail::PARALLEL_LINE_GRAIN,
 										detail::ChunkBody([&](uint32 b, uint32 e) {
 											held_callable_t<FUNC> fc = f; // see held_callable_t
-											detail::mr_foreach_line_at_level(*state_, slot, level_, b, e,
-																			 [&](uint32 i) { fc(CELL(Dart(key[i]))); });
+											detail::mr_foreach_line_holding(*state_, slot, level_, b, e,
+																			[&](uint32 i) { fc(CELL(Dart(key[i]))); });
 										}));
 			return;
 		}
