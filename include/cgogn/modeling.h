@@ -4,6 +4,7 @@
 // graph resampling.
 #pragma once
 
+#include <cgogn/modeling/adaptive_hexahedra.h>
 #include <cgogn/modeling/decimation.h>
 #include <cgogn/modeling/dual.h>
 #include <cgogn/modeling/fairing.h>

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The multiresolution 3-map: hexahedral levels, the positions, faces and
 // hexahedra of a level as NumPy arrays (rows in the level's vertex order),
-// extraction of a level as a CMap3.
+// adaptive refinement and coarsening of chosen hexahedra, extraction of a
+// level as a CMap3.
 #include <cgogn/io/map_file.h>
 
 #include "py_map.h"
 
+#include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,6 +53,26 @@ struct PyMRMap3
 			order.push_back(x);
 		});
 		return {std::move(order), std::move(row)};
+	}
+	/// The volumes of level l in traversal order (the rows of hexahedra(l)).
+	std::vector<MRMap3::Volume> volumes(uint32 l) const
+	{
+		std::vector<MRMap3::Volume> r;
+		foreach_cell(level(l), [&](MRMap3::Volume x) { r.push_back(x); });
+		return r;
+	}
+	/// The volumes of level l of the given rows; IndexError for a row out of range.
+	std::vector<MRMap3::Volume> chosen(uint32 l, const std::vector<uint32>& rows) const
+	{
+		const std::vector<MRMap3::Volume> all = volumes(l);
+		std::vector<MRMap3::Volume> r;
+		for (uint32 i : rows)
+		{
+			if (i >= all.size())
+				throw py::index_error("no volume of row " + std::to_string(i) + " at level " + std::to_string(l));
+			r.push_back(all[i]);
+		}
+		return r;
 	}
 };
 
@@ -133,17 +156,24 @@ void bind_mrmap3(py::module_& mod)
 			[](const W& w, uint32 l) {
 				const MRLevelView3 v = w.level(l);
 				const std::vector<uint32> row = w.vertices(l).second;
-				std::vector<MRMap3::Volume> volumes;
-				foreach_cell(v, [&](MRMap3::Volume x) { volumes.push_back(x); });
+				const std::vector<MRMap3::Volume> volumes = w.volumes(l);
 				py::array_t<uint32> out({py::ssize_t(volumes.size()), py::ssize_t(8)});
 				auto a = out.mutable_unchecked<2>();
 				for (std::size_t i = 0; i < volumes.size(); ++i)
 				{
-					// a face's corners in phi1 order, then the corner joined to each by an edge
-					Dart d = volumes[i].dart;
-					for (py::ssize_t j = 0; j < 4; ++j, d = phi1(v, d))
+					// read at its own level, where a coarser hexahedron has no
+					// midpoint of a finer neighbour on its edges: a face's corners
+					// in order, then the corner joined to each by an edge
+					const uint32 k = volume_level(v, volumes[i]);
+					const MRLevelView3 vk(w.m, k);
+					Dart d;
+					foreach_dart_of_orbit(v, volumes[i], [&](Dart x) {
+						d = x;
+						return dart_level(w.m, x) > k;
+					});
+					for (py::ssize_t j = 0; j < 4; ++j, d = phi1(vk, d))
 					{
-						const Dart up = phi1(v, phi1(v, phi2(v, d)));
+						const Dart up = phi1(vk, phi1(vk, phi2(vk, d)));
 						a(py::ssize_t(i), j) = row[index_of(v, MRVertex3(d))];
 						a(py::ssize_t(i), j + 4) = row[index_of(v, MRVertex3(up))];
 					}
@@ -152,7 +182,60 @@ void bind_mrmap3(py::module_& mod)
 			},
 			py::arg("level"),
 			"(W, 8) uint32 array of the vertex rows of the hexahedra of a level: the corners of one face in "
-			"order, then the opposite corners, column j + 4 joined to column j by an edge.")
+			"order, then the opposite corners, column j + 4 joined to column j by an edge. A hexahedron of a "
+			"coarser level (adaptive refinement) gives its own 8 corners.")
+		.def(
+			"volume_levels",
+			[](const W& w, uint32 l) {
+				const MRLevelView3 v = w.level(l);
+				std::vector<uint32> out;
+				for (MRMap3::Volume x : w.volumes(l))
+					out.push_back(volume_level(v, x));
+				return to_numpy(std::move(out));
+			},
+			py::arg("level"), "The level at which each hexahedron of a level (rows of hexahedra) was made.")
+		.def(
+			"subdivide_volumes",
+			[](W& w, uint32 l, const std::vector<uint32>& rows, bool balance) {
+				const std::vector<MRMap3::Volume> chosen = w.chosen(l, rows);
+				const uint32 before = current_level(w.m);
+				set_current_level(w.m, l);
+				try
+				{
+					for (MRMap3::Volume x : chosen)
+						if (!volume_is_subdivided(w.m, x))
+							subdivide_volume(w.m, x, balance);
+				}
+				catch (const std::invalid_argument& e)
+				{
+					set_current_level(w.m, std::min(before, max_level(w.m)));
+					throw py::value_error(e.what());
+				}
+				set_current_level(w.m, std::min(before, max_level(w.m)));
+			},
+			py::arg("level"), py::arg("rows"), py::arg("balance") = true,
+			"Cuts the hexahedra of a level given by their rows in hexahedra(level) into 8 (adaptive "
+			"refinement; with balance, coarser neighbours sharing an edge are cut first). Hexahedra cut "
+			"already are skipped; ValueError for a volume that is not a hexahedron.")
+		.def(
+			"coarsen_volumes",
+			[](W& w, uint32 l, const std::vector<uint32>& rows) {
+				const std::vector<MRMap3::Volume> chosen = w.chosen(l, rows);
+				const uint32 before = current_level(w.m);
+				set_current_level(w.m, l);
+				uint32 done = 0;
+				for (MRMap3::Volume x : chosen)
+					if (can_coarsen_volume(w.m, x))
+					{
+						coarsen_volume(w.m, x);
+						++done;
+					}
+				set_current_level(w.m, std::min(before, max_level(w.m)));
+				return done;
+			},
+			py::arg("level"), py::arg("rows"),
+			"Removes the children of the hexahedra of a level given by their rows (those that can be "
+			"coarsened: children without children, no finer neighbour two levels down); returns how many.")
 		.def(
 			"extract_level",
 			[](const W& w, uint32 l) {

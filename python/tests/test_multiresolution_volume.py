@@ -75,3 +75,43 @@ def test_errors():
     with pytest.raises(ValueError):
         t.add_level()
     assert t.max_level == 0
+
+
+def test_adaptive_refinement_and_coarsening():
+    n = 2
+    points = np.array(list(itertools.product(range(n + 1), repeat=3)), dtype=float)[:, ::-1]
+    index = {tuple(p): i for i, p in enumerate(points)}
+    hexes = []
+    for x, y, z in itertools.product(range(n), repeat=3):
+        corner = [(x, y, z), (x + 1, y, z), (x + 1, y + 1, z), (x, y + 1, z)]
+        hexes.append([index[c] for c in corner] + [index[(a, b, c + 1)] for a, b, c in corner])
+    m = cgogn.MRMap3(cgogn.CMap3.from_arrays(points, np.array(hexes)))
+    # the hexahedron at the origin, then its child at the grid's centre
+    origin = [i for i, row in enumerate(m.hexahedra(0)) if m.positions(0)[row].min(axis=0).sum() == 0]
+    m.subdivide_volumes(0, origin)
+    assert m.max_level == 1 and m.current_level == 0
+    levels = m.volume_levels(1)
+    assert sorted(levels.tolist()) == [0] * 7 + [1] * 8
+    child = [
+        i
+        for i, row in enumerate(m.hexahedra(1))
+        if levels[i] == 1 and m.positions(1)[row].min(axis=0).sum() == 1.5
+    ]
+    m.subdivide_volumes(1, child)
+    assert m.max_level == 2 and m.check_integrity()["ok"]
+    # balance: the 6 hexahedra sharing a face or an edge with that child were
+    # cut first, not the one sharing only the centre
+    assert sorted(m.volume_levels(2).tolist()) == [0] + [1] * 55 + [2] * 8
+    p = m.positions(2)
+    for k, row in zip(m.volume_levels(2), m.hexahedra(2)):
+        # every hexahedron, coarse or fine, gives its own 8 corners: a box
+        assert np.allclose(p[row].max(axis=0) - p[row].min(axis=0), 1.0 / 2**k)
+        assert np.allclose(np.linalg.norm(p[row][4:] - p[row][:4], axis=1), 1.0 / 2**k)
+    with pytest.raises(IndexError):
+        m.subdivide_volumes(0, [100])
+    # coarsening everything, finest first, gives the grid back
+    for k in (1, 0):
+        done = m.coarsen_volumes(k, range(len(m.hexahedra(k))))
+        assert done > 0
+    assert m.max_level == 0 and m.counts(0) == [27, 54, 36, 8]
+    assert m.check_integrity()["ok"]

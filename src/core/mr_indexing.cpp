@@ -276,6 +276,83 @@ void mr_take_over_indexing(S& s)
 	}
 }
 
+template <typename S>
+void mr_write_line(S& s, uint32 slot, Dart d, uint32 i)
+{
+	using D = MRDim<S>;
+	AttributeArray<uint32>& index = *s.cells[slot].index;
+	[&]<std::size_t... I>(std::index_sequence<I...>)
+	{
+		(void)((slot == I
+					? (foreach_dart_of_orbit(s.map, Cell<D::orbits[I]>(d), [&](Dart x) { index[x.index] = i; }), true)
+					: false) ||
+			   ...);
+	}
+	(std::make_index_sequence<D::orbits.size()>{});
+}
+
+namespace
+{
+/// In the chain of vertex x: the line read at level l, and the finer line
+/// that refines it (INVALID_INDEX when it is the newest).
+struct ChainPlace
+{
+	uint32 line, above;
+};
+template <typename S>
+ChainPlace chain_place(const S& s, Dart x, uint32 l)
+{
+	const MRCellIndex& ci = s.cells[MRDim<S>::vertex_slot];
+	ChainPlace p{(*ci.index)[x.index], INVALID_INDEX};
+	while ((*ci.level)[p.line] > l)
+	{
+		p.above = p.line;
+		p.line = (*ci.down)[p.line];
+	}
+	return p;
+}
+} // namespace
+
+template <typename S>
+void mr_ensure_vertex_line(S& s, Dart x, uint32 l)
+{
+	constexpr uint32 vertex = MRDim<S>::vertex_slot;
+	MRCellIndex& ci = s.cells[vertex];
+	const auto [i, above] = chain_place(s, x, l);
+	if ((*ci.level)[i] == l)
+		return;
+	const uint32 n = mr_add_line(s, vertex, l, x, i);
+	if (above != INVALID_INDEX)
+	{
+		(*ci.down)[above] = n;
+		(*ci.replaced)[n] = (*ci.level)[above];
+	}
+	else
+		mr_write_line(s, vertex, x, n);
+}
+
+template <typename S>
+void mr_drop_vertex_line(S& s, Dart x, uint32 l)
+{
+	constexpr uint32 vertex = MRDim<S>::vertex_slot;
+	MRCellIndex& ci = s.cells[vertex];
+	const auto [i, above] = chain_place(s, x, l);
+	if ((*ci.level)[i] != l || (*ci.down)[i] == INVALID_INDEX)
+		return;
+	const uint32 below = (*ci.down)[i];
+	if (above != INVALID_INDEX)
+	{
+		(*ci.down)[above] = below;
+		(*ci.replaced)[below] = (*ci.level)[above];
+	}
+	else
+	{
+		mr_write_line(s, vertex, x, below);
+		(*ci.replaced)[below] = MR_NOT_REPLACED;
+	}
+	mr_slot_container(s, vertex).release_line(i);
+}
+
 namespace
 {
 template <typename S, Orbit O>
@@ -325,6 +402,9 @@ template void mr_unindex_cells_at(MRState2&, uint32, uint32);
 template void mr_take_over_indexing(MRState2&);
 template void mr_index_new_orbit(MRState2&, Orbit);
 template void mr_copy_cell_attributes(const MRState2&, uint32, uint32, CMap2&, const std::vector<Dart>&);
+template void mr_write_line(MRState2&, uint32, Dart, uint32);
+template void mr_ensure_vertex_line(MRState2&, Dart, uint32);
+template void mr_drop_vertex_line(MRState2&, Dart, uint32);
 
 template void mr_foreach_cell_of_slot(const MRState3&, uint32, uint32, const std::function<void(Dart)>&);
 template uint32 mr_add_line(MRState3&, uint32, uint32, Dart, uint32);
@@ -334,5 +414,8 @@ template void mr_unindex_cells_at(MRState3&, uint32, uint32);
 template void mr_take_over_indexing(MRState3&);
 template void mr_index_new_orbit(MRState3&, Orbit);
 template void mr_copy_cell_attributes(const MRState3&, uint32, uint32, CMap3&, const std::vector<Dart>&);
+template void mr_write_line(MRState3&, uint32, Dart, uint32);
+template void mr_ensure_vertex_line(MRState3&, Dart, uint32);
+template void mr_drop_vertex_line(MRState3&, Dart, uint32);
 
 } // namespace cgogn::detail

@@ -60,6 +60,23 @@ void mr_index_new_orbit(S& s, Orbit o);
 template <typename S>
 void mr_take_over_indexing(S& s);
 
+/// Writes line i on the darts of the finest map's cell of d in slot `slot`
+/// (the cell as the finest map has it). O(size of the cell).
+template <typename S>
+void mr_write_line(S& s, uint32 slot, Dart d, uint32 i);
+
+/// Gives vertex x a line at level l when it reads a coarser one there: the
+/// new line sits in its chain between the coarser and the finer lines, with
+/// a copy of the values it read. O(levels + attributes).
+template <typename S>
+void mr_ensure_vertex_line(S& s, Dart x, uint32 l);
+
+/// Takes the line of level l out of the chain of vertex x, if it has one
+/// above a coarser line (the inverse of mr_ensure_vertex_line).
+/// O(levels + degree of x).
+template <typename S>
+void mr_drop_vertex_line(S& s, Dart x, uint32 l);
+
 /// The vertex lines of level l - 1 the attribute rules of new vertex v of
 /// level l start from: the corners of the cell of level l - 1 it is the
 /// middle of (an edge, a face; a volume in 3-D). Empty when it is none of

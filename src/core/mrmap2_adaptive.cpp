@@ -72,81 +72,6 @@ Dart piece_after_midpoint(const MRState2& s, uint32 l, Dart x)
 	return it;
 }
 
-/// Writes line i on the darts of the finest map's cell of d in slot `slot`.
-void write_fine(MRState2& s, uint32 slot, Dart d, uint32 i)
-{
-	AttributeArray<uint32>& idx = index(s, slot);
-	switch (slot)
-	{
-	case 0:
-		foreach_dart_of_orbit(s.map, CMap2::Vertex(d), [&](Dart x) { idx[x.index] = i; });
-		break;
-	case 1:
-		foreach_dart_of_orbit(s.map, CMap2::Edge(d), [&](Dart x) { idx[x.index] = i; });
-		break;
-	default:
-		foreach_dart_of_orbit(s.map, CMap2::Face(d), [&](Dart x) { idx[x.index] = i; });
-	}
-}
-
-/// Gives vertex x a line at level l when it has none there (it reads a
-/// coarser one): the new line sits in its chain between the coarser and the
-/// finer ones, with a copy of the values it read.
-/// In the chain of vertex x: the line read at level l, and the finer line
-/// that refines it (INVALID_INDEX when it is the newest).
-struct ChainPlace
-{
-	uint32 line, above;
-};
-ChainPlace chain_place(const MRState2& s, Dart x, uint32 l)
-{
-	const detail::MRCellIndex& ci = s.cells[0];
-	ChainPlace p{(*ci.index)[x.index], INVALID_INDEX};
-	while ((*ci.level)[p.line] > l)
-	{
-		p.above = p.line;
-		p.line = (*ci.down)[p.line];
-	}
-	return p;
-}
-
-void ensure_vertex_line(MRState2& s, Dart x, uint32 l)
-{
-	detail::MRCellIndex& ci = s.cells[0];
-	const auto [i, above] = chain_place(s, x, l);
-	if ((*ci.level)[i] == l)
-		return;
-	const uint32 n = detail::mr_add_line(s, 0, l, x, i);
-	if (above != INVALID_INDEX)
-	{
-		(*ci.down)[above] = n;
-		(*ci.replaced)[n] = (*ci.level)[above];
-	}
-	else
-		write_fine(s, 0, x, n);
-}
-
-/// Takes the line of level l out of the chain of vertex x, if it has one.
-void drop_vertex_line(MRState2& s, Dart x, uint32 l)
-{
-	detail::MRCellIndex& ci = s.cells[0];
-	const auto [i, above] = chain_place(s, x, l);
-	if ((*ci.level)[i] != l || (*ci.down)[i] == INVALID_INDEX)
-		return;
-	const uint32 below = (*ci.down)[i];
-	if (above != INVALID_INDEX)
-	{
-		(*ci.down)[above] = below;
-		(*ci.replaced)[below] = (*ci.level)[above];
-	}
-	else
-	{
-		write_fine(s, 0, x, below);
-		(*ci.replaced)[below] = detail::MR_NOT_REPLACED;
-	}
-	detail::state_of(s.map).cells[orbit_index(Orbit::PHI21)]->release_line(i);
-}
-
 /// A cut made by a subdivision: x keeps the first piece, n1 starts the second.
 struct Cut
 {
@@ -163,7 +88,7 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 	{
 		AttributeArray<uint32>& idx = index(s, 0);
 		for (Dart x : corners)
-			ensure_vertex_line(s, x, l);
+			detail::mr_ensure_vertex_line(s, x, l);
 		std::vector<double> weights;
 		AttributeContainer& c = *detail::state_of(s.map).cells[orbit_index(Orbit::PHI21)];
 		for (Dart y : created)
@@ -187,7 +112,7 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 						c.apply_rules(line, parents, weights);
 				}
 			}
-			write_fine(s, 0, y, line);
+			detail::mr_write_line(s, 0, y, line);
 		}
 	}
 	if (indexed(s, 1))
@@ -195,12 +120,12 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 		AttributeArray<uint32>& idx = index(s, 1);
 		for (const Cut& cut : cuts)
 		{
-			write_fine(s, 1, cut.x, detail::mr_add_line(s, 1, l, cut.x, cut.parent));
-			write_fine(s, 1, cut.n1, detail::mr_add_line(s, 1, l, cut.n1, cut.parent));
+			detail::mr_write_line(s, 1, cut.x, detail::mr_add_line(s, 1, l, cut.x, cut.parent));
+			detail::mr_write_line(s, 1, cut.n1, detail::mr_add_line(s, 1, l, cut.n1, cut.parent));
 		}
 		for (Dart y : created)
 			if (idx[y.index] == INVALID_INDEX) // an inner edge
-				write_fine(s, 1, y, detail::mr_add_line(s, 1, l, y, INVALID_INDEX));
+				detail::mr_write_line(s, 1, y, detail::mr_add_line(s, 1, l, y, INVALID_INDEX));
 	}
 	if (indexed(s, 2))
 	{
@@ -217,7 +142,7 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 			if (is_boundary(s.map, y) || std::find(children.begin(), children.end(), idx[y.index]) != children.end())
 				return;
 			const uint32 line = detail::mr_add_line(s, 2, l, y, face_line);
-			write_fine(s, 2, y, line);
+			detail::mr_write_line(s, 2, y, line);
 			children.push_back(line);
 		};
 		for (Dart x : corners)
@@ -460,7 +385,7 @@ void coarsen_face(MRMap2& m, MRMap2::Face f)
 	if (indexed(s, 2))
 	{
 		(*s.cells[2].replaced)[face_line] = detail::MR_NOT_REPLACED;
-		write_fine(s, 2, corners[0], face_line);
+		detail::mr_write_line(s, 2, corners[0], face_line);
 		release(Orbit::PHI1, face_lines);
 	}
 	if (indexed(s, 1))
@@ -470,7 +395,7 @@ void coarsen_face(MRMap2& m, MRMap2::Face f)
 			{
 				const uint32 parent = (*s.cells[1].down)[index(s, 1)[mid.x.index]];
 				(*s.cells[1].replaced)[parent] = detail::MR_NOT_REPLACED;
-				write_fine(s, 1, mid.x, parent);
+				detail::mr_write_line(s, 1, mid.x, parent);
 			}
 		release(Orbit::PHI2, edge_lines);
 	}
@@ -486,7 +411,7 @@ void coarsen_face(MRMap2& m, MRMap2::Face f)
 				return !touched;
 			});
 			if (!touched)
-				drop_vertex_line(s, x, l);
+				detail::mr_drop_vertex_line(s, x, l);
 		}
 	}
 	s.darts_per_level[l] -= removed;

@@ -2,6 +2,7 @@
 // The .cgmap binary format: whole maps, exactly (docs/map_file_format.md).
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/map/mrmap2_attributes.h>
+#include <cgogn/core/map/mrmap3_attributes.h>
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/integrity.h>
 #include <cgogn/io/map_file.h>
@@ -36,9 +37,9 @@ struct MapKind
 MapKind map_kind(std::string_view type)
 {
 	using enum Orbit;
-	if (type == "MRMap2")
+	if (type == "MRMap2" || type == "MRMap3")
 	{
-		MapKind k = map_kind("CMap2");
+		MapKind k = map_kind(type == "MRMap2" ? "CMap2" : "CMap3");
 		k.hierarchy = true;
 		return k;
 	}
@@ -173,7 +174,7 @@ void write_map(detail::ByteSink& out, const MAP& m, MapFileReport& report)
 	{
 		// the finest map holds the rest: labels, indices and per-level lines
 		// are attributes of its containers
-		const cgogn::detail::MRState2& s = cgogn::detail::mr_state_of(m);
+		const auto& s = cgogn::detail::mr_state_of(m);
 		write_hierarchy_block(out, s.darts_per_level, s.current_level);
 		write_containers(out, s.map, report);
 	}
@@ -455,48 +456,51 @@ private:
 	std::map<Orbit, std::size_t> container_offsets_;
 };
 
-// The hierarchy of an MRMap2 (detail::MRState2): its darts' labels
-// (__mr_level, __mr_edge_id), the index of each indexed orbit
+// The hierarchy of a multiresolution map (detail::MRState2 or MRState3):
+// its darts' labels (__mr_level, __mr_edge_id, and __mr_face_id in 3-D),
+// the index of each indexed orbit
 // (__mr_index_<orbit>, or __index_<orbit> for an orbit the map indexed
 // before it became level 0) and the lines' links, levels and replacing
 // levels (__mr_down, __mr_level, __mr_replaced in the orbit's container).
-class MR2HierarchyReader final : public HierarchyReader
+template <typename S>
+class MRHierarchyReader final : public HierarchyReader
 {
 public:
-	explicit MR2HierarchyReader(cgogn::detail::MRState2& s) : s_(s)
+	using D = cgogn::detail::MRDim<S>;
+	static constexpr bool has_face_id = std::same_as<S, cgogn::detail::MRState3>;
+
+	explicit MRHierarchyReader(S& s) : s_(s)
 	{
 	}
 
 	std::shared_ptr<AttributeBase> attribute(const detail::ByteReader& in, AttributeContainer& c, Orbit o,
 											 const std::string& name, std::size_t offset) override
 	{
-		using cgogn::detail::MR2_ORBITS;
 		if (o == Orbit::DART)
 		{
-			if (name == "__mr_level" || name == "__mr_edge_id")
+			if (std::shared_ptr<AttributeArray<uint8>>* label = label_of(name))
 			{
-				auto a = c.add_attribute<uint8>(name, 0);
-				(name == "__mr_level" ? s_.level : s_.edge_id) = a;
-				(name == "__mr_level" ? level_offset_ : edge_id_offset_) = offset + 1; // after the default value
-				return a;
+				*label = c.add_attribute<uint8>(name, 0);
+				label_offset_[name] = offset + 1; // after the default value
+				return *label;
 			}
-			for (uint32 slot = 0; slot < 4; ++slot)
+			for (uint32 slot = 0; slot < D::orbits.size(); ++slot)
 			{
-				const std::string orbit(orbit_name(MR2_ORBITS[slot]));
+				const std::string orbit(orbit_name(D::orbits[slot]));
 				if (name != "__mr_index_" + orbit && name != "__index_" + orbit)
 					continue;
 				if (s_.cells[slot].index != nullptr)
 					in.fail("attribute '" + name + "': a second index of orbit " + orbit);
 				auto a = c.add_attribute<uint32>(name, INVALID_INDEX);
 				s_.cells[slot].index = a.get();
-				cgogn::detail::state_of(s_.map).cells[orbit_index(MR2_ORBITS[slot])]->set_cell_index(a.get());
+				cgogn::detail::state_of(s_.map).cells[orbit_index(D::orbits[slot])]->set_cell_index(a.get());
 				return a;
 			}
 			return nullptr;
 		}
-		if (!cgogn::detail::is_mr2_orbit(o))
+		if (!has_slot(o))
 			return nullptr;
-		cgogn::detail::MRCellIndex& ci = s_.cells[cgogn::detail::mr_slot(o)];
+		cgogn::detail::MRCellIndex& ci = s_.cells[D::slot(o)];
 		if (name == "__mr_down")
 			return ci.down = c.add_attribute<uint32>(name, INVALID_INDEX);
 		if (name == "__mr_level")
@@ -508,34 +512,34 @@ public:
 
 	const AttributeArray<uint32>* cell_index(Orbit o) const override
 	{
-		return cgogn::detail::is_mr2_orbit(o) ? s_.cells[cgogn::detail::mr_slot(o)].index : nullptr;
+		return has_slot(o) ? s_.cells[D::slot(o)].index : nullptr;
 	}
 
 	std::vector<const AttributeArray<uint32>*> line_links(Orbit o) const override
 	{
-		if (!cgogn::detail::is_mr2_orbit(o) || s_.cells[cgogn::detail::mr_slot(o)].down == nullptr)
+		if (!has_slot(o) || s_.cells[D::slot(o)].down == nullptr)
 			return {};
-		return {s_.cells[cgogn::detail::mr_slot(o)].down.get()};
+		return {s_.cells[D::slot(o)].down.get()};
 	}
 
 	// Completes the hierarchy read by r (the file `name`), the state of m,
 	// and checks m at every level; throws io::Error at the offset of what is
 	// wrong.
-	void finish(const MapReader& r, const std::string& name, const MRMap2& m)
+	void finish(const MapReader& r, const std::string& name, const typename D::Map& m)
 	{
 		const HierarchyBlock& b = r.hierarchy_block();
 		const auto fail = [&](std::size_t offset, const std::string& cause) {
 			throw Error(name, Error::Where::Byte, offset, cause);
 		};
-		if (s_.level == nullptr || s_.edge_id == nullptr)
-			fail(r.container_offset(Orbit::DART), std::string("the darts have no ") +
-													  (s_.level == nullptr ? "__mr_level" : "__mr_edge_id") +
-													  " label: not the finest map of a hierarchy");
-		for (uint32 slot = 0; slot < 4; ++slot)
+		for (const char* label : label_names())
+			if (*label_of(label) == nullptr)
+				fail(r.container_offset(Orbit::DART),
+					 std::string("the darts have no ") + label + " label: not the finest map of a hierarchy");
+		for (uint32 slot = 0; slot < D::orbits.size(); ++slot)
 		{
 			const cgogn::detail::MRCellIndex& ci = s_.cells[slot];
 			const bool lines = ci.down != nullptr && ci.level != nullptr && ci.replaced != nullptr;
-			const Orbit o = cgogn::detail::MR2_ORBITS[slot];
+			const Orbit o = D::orbits[slot];
 			if ((ci.index != nullptr) != lines)
 				fail(r.container_offset(ci.index != nullptr ? o : Orbit::DART),
 					 "orbit " + std::string(orbit_name(o)) +
@@ -548,8 +552,9 @@ public:
 		foreach_dart(s_.map, [&](Dart d) {
 			const uint32 l = (*s_.level)[d.index];
 			if (l >= nb_levels)
-				fail(level_offset_ + d.index, "dart " + std::to_string(d.index) + " has level " + std::to_string(l) +
-												  ", above the finest level " + std::to_string(nb_levels - 1));
+				fail(label_offset_["__mr_level"] + d.index, "dart " + std::to_string(d.index) + " has level " +
+																std::to_string(l) + ", above the finest level " +
+																std::to_string(nb_levels - 1));
 			++count[l];
 		});
 		for (uint32 l = 0; l < nb_levels; ++l)
@@ -564,26 +569,53 @@ public:
 		if (!report.ok())
 		{
 			const IntegrityError& e = report.errors.front();
-			const std::size_t labels = e.kind == IntegrityError::Kind::EdgeIdWrong ? edge_id_offset_ : level_offset_;
+			const std::size_t labels = label_offset_[e.kind == IntegrityError::Kind::EdgeIdWrong   ? "__mr_edge_id"
+													 : e.kind == IntegrityError::Kind::FaceIdWrong ? "__mr_face_id"
+																								   : "__mr_level"];
 			fail(e.dart != INVALID_INDEX ? labels + e.dart : b.offset,
 				 "the file's hierarchy is not valid: " + e.message);
 		}
 	}
 
 private:
-	cgogn::detail::MRState2& s_;
-	std::size_t level_offset_ = 0, edge_id_offset_ = 0; // where the darts' labels start in the file
+	static bool has_slot(Orbit o)
+	{
+		return D::slot(o) < D::orbits.size();
+	}
+	static std::vector<const char*> label_names()
+	{
+		if constexpr (has_face_id)
+			return {"__mr_level", "__mr_edge_id", "__mr_face_id"};
+		else
+			return {"__mr_level", "__mr_edge_id"};
+	}
+	// The state's label of that name, nullptr for another name.
+	std::shared_ptr<AttributeArray<uint8>>* label_of(const std::string& name)
+	{
+		if (name == "__mr_level")
+			return &s_.level;
+		if (name == "__mr_edge_id")
+			return &s_.edge_id;
+		if constexpr (has_face_id)
+			if (name == "__mr_face_id")
+				return &s_.face_id;
+		return nullptr;
+	}
+
+	S& s_;
+	std::map<std::string, std::size_t> label_offset_; // where the darts' labels start in the file
 };
 
 template <typename MAP>
 void read_map(MAP& m, std::string_view bytes, const std::string& name)
 {
-	if constexpr (std::same_as<MAP, MRMap2>)
+	if constexpr (MultiresolutionMapFileType<MAP>)
 	{
-		MRMap2 local{CMap2()};
-		cgogn::detail::MRState2& s = cgogn::detail::mr_state_of(local);
-		s = cgogn::detail::MRState2{}; // the file gives the labels, indices and lines
-		MR2HierarchyReader hierarchy(s);
+		using S = std::remove_reference_t<decltype(cgogn::detail::mr_state_of(std::declval<MAP&>()))>;
+		MAP local{decltype(S::map)()};
+		S& s = cgogn::detail::mr_state_of(local);
+		s = S{}; // the file gives the labels, indices and lines
+		MRHierarchyReader<S> hierarchy(s);
 		MapReader r(s.map, bytes, name, &hierarchy);
 		r.read(map_type_name<MAP>());
 		hierarchy.finish(r, name, local);
@@ -698,6 +730,7 @@ CGOGN_MAP_FILE(GMapN<5>)
 CGOGN_MAP_FILE(GMapN<6>)
 CGOGN_MAP_FILE(GMapN<7>)
 CGOGN_MAP_FILE(MRMap2)
+CGOGN_MAP_FILE(MRMap3)
 #undef CGOGN_MAP_FILE
 
 } // namespace cgogn::io

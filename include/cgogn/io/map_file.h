@@ -6,6 +6,7 @@
 #include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/mesh_traits.h>
 #include <cgogn/core/map/mrmap2.h>
+#include <cgogn/core/map/mrmap3.h>
 #include <cgogn/core/map/nmap.h>
 #include <cgogn/io/error.h>
 
@@ -25,24 +26,26 @@ namespace cgogn::io
 // current level, so that every level of the loaded hierarchy is the saved
 // one.
 
-/// The multiresolution maps a .cgmap file holds: MRMap2.
+/// The multiresolution maps a .cgmap file holds: MRMap2 and MRMap3.
 template <typename MAP>
-concept MultiresolutionMapFileType = std::same_as<MAP, MRMap2>;
+concept MultiresolutionMapFileType = std::same_as<MAP, MRMap2> || std::same_as<MAP, MRMap3>;
 
 /// The maps a .cgmap file holds: CMap1, CMap2, CMap3, GMap1, GMap2, GMap3,
-/// Graph, CMapN<D>, GMapN<D> and the multiresolution MRMap2.
+/// Graph, CMapN<D>, GMapN<D> and the multiresolution MRMap2 and MRMap3.
 template <typename MAP>
 concept MapFileType = std::same_as<MAP, CMap1> || std::same_as<MAP, CMap2> || std::same_as<MAP, CMap3> ||
 	std::same_as<MAP, GMap1> || std::same_as<MAP, GMap2> || std::same_as<MAP, GMap3> || std::same_as<MAP, Graph> ||
 	is_nmap_v<MAP> || MultiresolutionMapFileType<MAP>;
 
 /// The name a .cgmap file gives the type of its map: "CMap2", "GMap3",
-/// "Graph", "CMapN<4>", "MRMap2", ... O(1).
+/// "Graph", "CMapN<4>", "MRMap2", "MRMap3", ... O(1).
 template <typename MAP>
 requires MapFileType<MAP> std::string map_type_name()
 {
 	if constexpr (std::same_as<MAP, MRMap2>)
 		return "MRMap2";
+	else if constexpr (std::same_as<MAP, MRMap3>)
+		return "MRMap3";
 	else if constexpr (std::same_as<MAP, CMap1>)
 		return "CMap1";
 	else if constexpr (std::same_as<MAP, CMap2>)
@@ -98,7 +101,7 @@ std::string map_file_value_type(const AttributeBase& a);
 /// Writes m to a .cgmap file: everything a map holds but the marks reserved
 /// at that moment and the quick incidence caches (which enable_incidence_cache
 /// rebuilds). Attributes of other value types than map_file_value_types()
-/// are left out and listed in the report. An MRMap2 is written as its
+/// are left out and listed in the report. An MRMap2 or MRMap3 is written as its
 /// finest map (its labels, indices and per-level lines are attributes of
 /// it) after a block giving its levels' dart counts and its current level.
 /// Throws io::Error when the file cannot be written. O(size of m x
@@ -119,12 +122,12 @@ requires MapFileType<MAP> std::string save_map_to_bytes(const MAP& m, MapFileRep
 /// (handles to them stay usable but see no map). Throws io::Error naming the
 /// file, the byte offset and the problem for a file that is not a .cgmap
 /// file, of a newer version, of another map type than MAP (the message names
-/// both), truncated or invalid. An MRMap2 is checked at every level
+/// both), truncated or invalid. An MRMap2 or MRMap3 is checked at every level
 /// (check_integrity(m)): its per-level dart counts against the darts'
 /// labels, its current level, and its labels and lines (the offset is then
 /// that of the label of the dart at fault, or of the counters); its current
-/// level is the saved one. O(size of the file), O(darts x levels) for an
-/// MRMap2.
+/// level is the saved one. O(size of the file), O(darts x levels) for a
+/// multiresolution map.
 template <typename MAP>
 requires MapFileType<MAP>
 void load_map(MAP& m, const std::string& path);

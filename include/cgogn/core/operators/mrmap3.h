@@ -27,6 +27,94 @@ void add_level(MRMap3& m, Refinement r);
 /// cost of a level step).
 void remove_finest_level(MRMap3& m);
 
+// ---- adaptive refinement: hexahedra of different levels side by side
+
+/// The level at which edge e, read at the level of v, was made: the level of
+/// the younger of its darts at its two ends. O(1 level step).
+uint32 edge_level(const MRLevelView3& v, MRMap3::Edge e);
+/// The level at which face f, read at the level of v, was made (the second
+/// smallest level of the darts of one of its sides). O(codegree).
+uint32 face_level(const MRLevelView3& v, MRMap3::Face f);
+/// The level at which volume w, read at the level of v, was made (the fourth
+/// smallest level of its darts: a child of a hexahedron keeps the three
+/// darts of its parent's corner). O(number of darts of w).
+uint32 volume_level(const MRLevelView3& v, MRMap3::Volume w);
+/// Whether edge e, read at the level l of v, is cut at level l + 1. O(1
+/// level step).
+bool edge_is_subdivided(const MRLevelView3& v, MRMap3::Edge e);
+/// Whether face f, read at the level l of v, has children at level l + 1.
+/// O(codegree).
+bool face_is_subdivided(const MRLevelView3& v, MRMap3::Face f);
+/// Whether volume w, read at the level l of v, has children at level l + 1
+/// (it can be subdivided only when it was made at level l). O(number of
+/// darts of w).
+bool volume_is_subdivided(const MRLevelView3& v, MRMap3::Volume w);
+
+/// The same at the current level of m.
+inline uint32 edge_level(const MRMap3& m, MRMap3::Edge e)
+{
+	return edge_level(detail::read_level(m), e);
+}
+/// The same at the current level of m.
+inline uint32 face_level(const MRMap3& m, MRMap3::Face f)
+{
+	return face_level(detail::read_level(m), f);
+}
+/// The same at the current level of m.
+inline uint32 volume_level(const MRMap3& m, MRMap3::Volume w)
+{
+	return volume_level(detail::read_level(m), w);
+}
+/// The same at the current level of m.
+inline bool edge_is_subdivided(const MRMap3& m, MRMap3::Edge e)
+{
+	return edge_is_subdivided(detail::read_level(m), e);
+}
+/// The same at the current level of m.
+inline bool face_is_subdivided(const MRMap3& m, MRMap3::Face f)
+{
+	return face_is_subdivided(detail::read_level(m), f);
+}
+/// The same at the current level of m.
+inline bool volume_is_subdivided(const MRMap3& m, MRMap3::Volume w)
+{
+	return volume_is_subdivided(detail::read_level(m), w);
+}
+
+/// Subdivides hexahedron w, read at the current level of m, where it is a
+/// leaf (a volume without children; its level k = volume_level(w)), into 8
+/// hexahedra of level k + 1: its edges are cut at their middle and its faces
+/// into 4 quads around their centre (a cut or a face that a neighbour made
+/// already is reused), and 12 inner quads meet at its centre. Level k + 1 is
+/// created when k is the finest level. With `balance`, every volume sharing
+/// an edge (or a face) with w and made before level k is subdivided first,
+/// recursively, so that leaves sharing an edge differ by at most one level.
+/// Lines: as add_level, for the cells made (corners of w get a line at
+/// level k + 1 when they have none); new vertices get the attributes' rules
+/// from the corners of the edge, face or hexahedron they are the middle of.
+/// Throws std::invalid_argument, leaving m unchanged, when w is a boundary
+/// volume, is not a hexahedron at its level, has children already, or when
+/// its surface holds cuts finer than level k + 1 (a neighbour two levels
+/// finer, after subdivisions without balance). O(1) plus the balancing
+/// subdivisions.
+void subdivide_volume(MRMap3& m, MRMap3::Volume w, bool balance = true);
+
+/// Whether volume w, read at the current level l of m, can be coarsened: it
+/// was made at level l and has 8 children at level l + 1, none of which has
+/// children, and no cut of level l + 2 lies on their surface (a leaf two
+/// levels finer would share an edge with w). O(size of the children).
+bool can_coarsen_volume(const MRMap3& m, MRMap3::Volume w);
+
+/// Removes the children of volume w (read at the current level): the inverse
+/// of subdivide_volume. Its inner faces, edges and centre go; so do the
+/// quads of a face of w and the midpoints of an edge of w that no other
+/// subdivided volume uses. The lines of what goes are released, and w, its
+/// faces and edges read their own lines again; a corner keeps its line of
+/// level l + 1 while a volume of that level touches it. max_level drops
+/// while its level holds no dart. Precondition: can_coarsen_volume(m, w).
+/// O(size of the children + degrees of w's edges).
+void coarsen_volume(MRMap3& m, MRMap3::Volume w);
+
 /// The mesh of level l as a flat CMap3: one dart per dart of the level (in
 /// the order of the finest map), with the relations of the level, the
 /// boundary marks, the per-dart attributes and the attributes of the cells
