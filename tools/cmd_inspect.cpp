@@ -37,7 +37,7 @@ template <typename MAP>
 json map_file_info(const MAP& m)
 {
 	json j;
-	if constexpr (std::same_as<MAP, MRMap2>)
+	if constexpr (io::MultiresolutionMapFileType<MAP>)
 		j = tool::mrmap_info(m);
 	else if constexpr (std::same_as<MAP, Graph>)
 		j = tool::graph_info(m, io::GraphLoadReport{});
@@ -217,11 +217,14 @@ void save_map_as(const MAP& m, const std::string& out, const io::SaveOptions& op
 {
 	if (is_map_file(out))
 		io::save_map(m, out);
-	else if constexpr (std::same_as<MAP, MRMap2>)
+	else if constexpr (io::MultiresolutionMapFileType<MAP>)
 	{
 		if (boundary)
 			throw io::Error(out, "--boundary applies to the maps of any dimension (CMapN, GMapN)");
-		io::save_surface(extract_level(m, current_level(m)), out, options);
+		if constexpr (std::same_as<MAP, MRMap2>)
+			io::save_surface(extract_level(m, current_level(m)), out, options);
+		else
+			io::save_volume(extract_level(m, current_level(m)), out, options);
 	}
 	else if constexpr (is_nmap_v<MAP>)
 		save_nmap_as(m, out, boundary);

@@ -171,7 +171,7 @@ Command add_render_command(CLI::App& app)
 	auto o = std::make_shared<RenderCommandOptions>();
 	sub->add_option("IN", o->in,
 					"input mesh file (surface or volume format; a non-manifold surface is drawn as it is), .ig, "
-					"graph (.cg .cgr .skel), or .cgmap (a CMap2, CMap3 or multiresolution MRMap2)")
+					"graph (.cg .cgr .skel), or .cgmap (a CMap2, CMap3 or multiresolution MRMap2, MRMap3)")
 		->required();
 	sub->add_option("OUT", o->out, "output PNG file")->required();
 	sub->add_option("--size", o->size, "picture size WIDTHxHEIGHT (default 800x600)");

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `cgogn subdivide`: uniform subdivision of a surface (Loop, Catmull-Clark,
 // sqrt3) or a volume mesh (hexahedra or tetrahedra, 1-to-8); with
-// --keep-levels, every level of a surface in one multiresolution map.
+// --keep-levels, every level of a surface or a hexahedral mesh in one
+// multiresolution map.
 #include <cgogn/core/operators/mrmap2.h>
+#include <cgogn/core/operators/mrmap3.h>
 #include <cgogn/io/map_file.h>
 #include <cgogn/modeling/multiresolution.h>
 #include <cgogn/modeling/subdivision.h>
@@ -40,21 +42,57 @@ bool is_volume_scheme(Scheme s)
 	return s == Scheme::Hex || s == Scheme::Tet;
 }
 
+// --keep-levels with hex: the input hexahedral mesh as level 0 of an
+// MRMap3, one Hexahedral level per step, the new vertices at the centroids
+// of the edges, faces and hexahedra they are the middle of (the positions
+// of hex_subdivision), written to a .cgmap file.
+int run_hex_subdivide_keeping_levels(const SubdivideOptions& o, Progress& progress)
+{
+	progress.stage("loading " + o.files.in);
+	CMap3 base;
+	const io::LoadReport report = io::load_volume(base, o.files.in);
+	if (report.nb_cells_read == 0)
+		throw io::Error(o.files.in, "--keep-levels --scheme hex: the file holds no volume cells");
+	record_origins_if_asked(base, o.files);
+	auto pos = get_attribute<Vec3, CMap3::Vertex>(base, "position");
+	if (!pos)
+		throw std::runtime_error(o.files.in + ": the mesh has no vertex positions");
+	// the scheme's points are the means of the corners, whatever the file said
+	set_attribute_rule(base, pos, AttributeRule::Interpolate);
+	MRMap3 m(std::move(base));
+	try
+	{
+		for (uint32 i = 0; i < o.iterations; ++i)
+		{
+			progress.stage("adding level " + std::to_string(i + 1));
+			add_level(m, Refinement::Hexahedral);
+		}
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument(o.files.in + ": " + e.what());
+	}
+	progress.stage("saving " + o.files.out);
+	io::save_map(m, o.files.out);
+	return 0;
+}
+
 // --keep-levels: the input surface as level 0 of an MRMap2, one level per
 // step (Loop: Triangular levels, Catmull-Clark: Quadrangular ones), the
 // positions of every level those of the scheme (a synthesis without
-// details), written to a .cgmap file.
+// details), written to a .cgmap file; or, with hex, the hexahedral levels
+// of a volume mesh.
 int run_subdivide_keeping_levels(const SubdivideOptions& o)
 {
-	if (o.scheme != Scheme::Loop && o.scheme != Scheme::CatmullClark)
+	if (o.scheme != Scheme::Loop && o.scheme != Scheme::CatmullClark && o.scheme != Scheme::Hex)
 		throw std::invalid_argument("--keep-levels: the scheme " +
-									std::string(o.scheme == Scheme::Sqrt3 ? "sqrt3"
-												: o.scheme == Scheme::Hex ? "hex"
-																		  : "tet") +
-									" makes no multiresolution levels (loop and catmull-clark do)");
+									std::string(o.scheme == Scheme::Sqrt3 ? "sqrt3" : "tet") +
+									" makes no multiresolution levels (loop, catmull-clark and hex do)");
 	if (!is_map_file(o.files.out))
 		throw io::Error(o.files.out, "--keep-levels writes a multiresolution map: the output must be a .cgmap file");
 	Progress progress;
+	if (o.scheme == Scheme::Hex)
+		return run_hex_subdivide_keeping_levels(o, progress);
 	CMap2 base;
 	if (!load_surface_file(base, o.files.in, progress).orientable)
 		throw io::Error(o.files.in, "--keep-levels: the surface is not orientable (a multiresolution map is made of "
@@ -173,8 +211,8 @@ Command add_subdivide_command(CLI::App& app)
 	sub->add_option("--iterations,--levels,-n", o->iterations, "number of steps (default 1)")
 		->check(CLI::Range(1u, 20u));
 	sub->add_flag("--keep-levels", o->keep_levels,
-				  "loop and catmull-clark: write every step as a level of a multiresolution map (OUT: a .cgmap "
-				  "file holding an MRMap2; its current level is the finest)");
+				  "loop, catmull-clark and hex: write every step as a level of a multiresolution map (OUT: a "
+				  ".cgmap file holding an MRMap2, or an MRMap3 for hex; its current level is the finest)");
 	return {sub, [o] { return run_subdivide(*o); }};
 }
 

@@ -77,8 +77,9 @@ Command add_view_command(CLI::App& app)
 	auto* sub = app.add_subcommand("view", "Write a self-contained HTML page that draws a surface, or a volume mesh "
 										   "with a clipping plane, in a browser (WebGL; no network needed)");
 	auto o = std::make_shared<ViewCommandOptions>();
-	sub->add_option("IN", o->in,
-					"input mesh file (surface or volume format), or .cgmap (a CMap2, CMap3 or multiresolution MRMap2)")
+	sub->add_option(
+		   "IN", o->in,
+		   "input mesh file (surface or volume format), or .cgmap (a CMap2, CMap3 or multiresolution MRMap2, MRMap3)")
 		->required();
 	sub->add_option("OUT", o->out, "output HTML file")->required();
 	sub->add_option("--color", o->color,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cgogn/core/operators/mrmap2.h>
+#include <cgogn/core/operators/mrmap3.h>
 #include <cgogn/io/map_file.h>
 
 #include "tool_common.h"
@@ -16,7 +17,8 @@ namespace cgogn::tool
 {
 
 /// Loads the .cgmap file at path into the map its header names (CMap2,
-/// CMap3, GMap2, GMap3, Graph, CMapN<D>, GMapN<D> or MRMap2) and calls f(map).
+/// CMap3, GMap2, GMap3, Graph, CMapN<D>, GMapN<D>, MRMap2 or MRMap3) and calls
+/// f(map).
 /// Throws io::Error as io::load_map does, and for a map of dimension 1
 /// (CMap1, GMap1), which no subcommand handles.
 template <typename FUNC>
@@ -29,9 +31,9 @@ void with_loaded_map_file(const std::string& path, Progress& progress, const FUN
 		if (found || h.map_type != io::map_type_name<MAP>())
 			return;
 		found = true;
-		if constexpr (std::same_as<MAP, MRMap2>)
+		if constexpr (io::MultiresolutionMapFileType<MAP>)
 		{
-			MRMap2 m{CMap2()};
+			MAP m{decltype(extract_level(std::declval<const MAP&>(), 0))()};
 			io::load_map(m, path);
 			f(m);
 		}
@@ -43,6 +45,7 @@ void with_loaded_map_file(const std::string& path, Progress& progress, const FUN
 		}
 	};
 	load.template operator()<MRMap2>();
+	load.template operator()<MRMap3>();
 	load.template operator()<CMap2>();
 	load.template operator()<CMap3>();
 	load.template operator()<GMap2>();
@@ -57,21 +60,21 @@ void with_loaded_map_file(const std::string& path, Progress& progress, const FUN
 	if (!found)
 		throw io::Error(path,
 						"a map of type " + h.map_type +
-							": the program reads 2- and 3-maps, G-maps, graphs, multiresolution 2-maps and maps of "
-							"dimension 2 and more");
+							": the program reads 2- and 3-maps, G-maps, graphs, multiresolution 2- and 3-maps and "
+							"maps of dimension 2 and more");
 }
 
 /// Loads the .cgmap file at path for drawing and calls f(map) with a CMap2
-/// or a CMap3 (const): an MRMap2 at
-/// `level` (default: the current level saved in the file) as a flat CMap2
-/// (extract_level), a CMap2 or CMap3 as it is. Throws io::Error for other
+/// or a CMap3 (const): an MRMap2 (MRMap3) at `level` (default: the current
+/// level saved in the file) as a flat CMap2 (CMap3) (extract_level), a CMap2
+/// or CMap3 as it is. Throws io::Error for other
 /// map types, and for a level given to a map without levels or above the
 /// file's finest level.
 template <typename FUNC>
 void with_drawable_map_file(const std::string& path, std::optional<uint32> level, Progress& progress, const FUNC& f)
 {
 	with_loaded_map_file(path, progress, [&]<typename MAP>(const MAP& m) {
-		if constexpr (std::same_as<MAP, MRMap2>)
+		if constexpr (io::MultiresolutionMapFileType<MAP>)
 		{
 			const uint32 l = level.value_or(current_level(m));
 			if (l > max_level(m))
@@ -87,7 +90,7 @@ void with_drawable_map_file(const std::string& path, std::optional<uint32> level
 			f(m);
 		else
 			throw io::Error(path, "a " + io::map_type_name<MAP>() +
-									  ": render and view draw the CMap2, CMap3 and MRMap2 of .cgmap files");
+									  ": render and view draw the CMap2, CMap3, MRMap2 and MRMap3 of .cgmap files");
 	});
 }
 

@@ -3,12 +3,14 @@
 
 #include <cgogn/core/attributes/attributes.h>
 #include <cgogn/core/operators/mrmap2.h>
+#include <cgogn/core/operators/mrmap3.h>
 #include <cgogn/core/properties/gmap_properties.h>
 #include <cgogn/core/properties/graph_properties.h>
 #include <cgogn/core/properties/incidence_graph_properties.h>
 #include <cgogn/core/properties/properties.h>
 #include <cgogn/core/traversals/global.h>
 #include <cgogn/core/traversals/local_mrmap2.h>
+#include <cgogn/core/traversals/local_mrmap3.h>
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io/map_file.h>
 #include <cgogn/io/options.h>
@@ -18,6 +20,8 @@
 #include <map>
 #include <sstream>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace cgogn::tool
 {
@@ -249,16 +253,21 @@ json graph_info(const Graph& g, const io::GraphLoadReport& r)
 	return j;
 }
 
-json mrmap_info(const MRMap2& m)
+namespace
 {
-	json j = surface_info(extract_level(m, current_level(m)), io::LoadReport{});
-	j["map"] = "MRMap2";
+// The levels (darts, f-vector) and the attributes of a multiresolution map,
+// on top of what the info of its current level says; `cells` names the
+// containers of its finest map to list.
+template <typename MR>
+json levels_and_attributes(const MR& m, json j, const std::vector<std::pair<const char*, Orbit>>& cells)
+{
+	j["map"] = io::map_type_name<MR>();
 	j["max_level"] = max_level(m);
 	j["current_level"] = current_level(m);
 	json levels = json::array();
 	for (uint32 l = 0; l <= max_level(m); ++l)
 	{
-		const MRLevelView2 v = level_view(m, l);
+		const auto v = level_view(m, l);
 		levels.push_back({{"level", l}, {"darts", nb_darts(v)}, {"f_vector", f_vector(v)}});
 	}
 	j["levels"] = levels;
@@ -273,12 +282,28 @@ json mrmap_info(const MRMap2& m)
 			}
 	};
 	list("halfedge", *s.darts);
-	list("vertex", *s.cells[orbit_index(Orbit::PHI21)]);
-	list("edge", *s.cells[orbit_index(Orbit::PHI2)]);
-	list("face", *s.cells[orbit_index(Orbit::PHI1)]);
-	list("volume", *s.cells[orbit_index(Orbit::PHI1_PHI2)]);
+	for (const auto& [cell, o] : cells)
+		list(cell, *s.cells[orbit_index(o)]);
 	j["attributes"] = attributes;
 	return j;
+}
+} // namespace
+
+json mrmap_info(const MRMap2& m)
+{
+	return levels_and_attributes(
+		m, surface_info(extract_level(m, current_level(m)), io::LoadReport{}),
+		{{"vertex", Orbit::PHI21}, {"edge", Orbit::PHI2}, {"face", Orbit::PHI1}, {"volume", Orbit::PHI1_PHI2}});
+}
+
+json mrmap_info(const MRMap3& m)
+{
+	return levels_and_attributes(m, volume_info(extract_level(m, current_level(m)), io::LoadReport{}),
+								 {{"vertex", Orbit::PHI21_PHI31},
+								  {"edge", Orbit::PHI2_PHI3},
+								  {"face", Orbit::PHI1_PHI3},
+								  {"volume", Orbit::PHI1_PHI2},
+								  {"connected component", Orbit::PHI1_PHI2_PHI3}});
 }
 
 json complex_info(const IncidenceGraph& ig, const io::LoadReport& r)

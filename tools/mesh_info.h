@@ -7,6 +7,7 @@
 #include <cgogn/core/map/graph.h>
 #include <cgogn/core/map/incidence_graph.h>
 #include <cgogn/core/map/mrmap2.h>
+#include <cgogn/core/map/mrmap3.h>
 #include <cgogn/io/graph.h>
 #include <cgogn/io/options.h>
 
@@ -40,12 +41,13 @@ nlohmann::json graph_info(const Graph& g, const io::GraphLoadReport& r);
 /// skipped. O(size of ig).
 nlohmann::json complex_info(const IncidenceGraph& ig, const io::LoadReport& r);
 
-/// A multiresolution map: surface_info of its current level (counts,
-/// topology, geometry), its finest and current levels ("max_level",
-/// "current_level"), per level its darts and f-vector (V, E, F) ("levels"),
-/// and its attributes with their cells and value types ("attributes").
-/// O(darts x levels).
+/// A multiresolution map: surface_info (volume_info for an MRMap3) of its
+/// current level (counts, topology, geometry), its finest and current levels
+/// ("max_level", "current_level"), per level its darts and f-vector (V, E,
+/// F[, W]) ("levels"), and its attributes with their cells and value types
+/// ("attributes"). O(darts x levels).
 nlohmann::json mrmap_info(const MRMap2& m);
+nlohmann::json mrmap_info(const MRMap3& m);
 
 /// The same information as readable text lines.
 std::string info_text(const nlohmann::json& info);

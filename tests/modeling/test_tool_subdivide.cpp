@@ -265,10 +265,14 @@ TEST(ToolSubdivide, KeepLevelsRefusals)
 	};
 	const std::string out = quoted(dir.file("out.cgmap"));
 	refused(quoted(spot) + " " + out + " --scheme sqrt3 --keep-levels",
-			"--keep-levels: the scheme sqrt3 makes no multiresolution levels (loop and catmull-clark do)");
+			"--keep-levels: the scheme sqrt3 makes no multiresolution levels (loop, catmull-clark and hex do)");
 	refused(quoted(spot) + " " + out + " --scheme tet --keep-levels",
 			"--keep-levels: the scheme tet makes no multiresolution levels");
 	refused(quoted(spot) + " " + quoted(dir.file("out.off")) + " --keep-levels", "the output must be a .cgmap file");
+	refused(quoted(spot) + " " + out + " --scheme hex --keep-levels", "no volume cells");
+	refused(quoted(std::string(CGOGN_DATA_DIR) + "/volume/armadillo_tet_4k.mesh") + " " + out +
+				" --scheme hex --keep-levels",
+			"not a hexahedron");
 	refused(quoted(spot) + " " + out + " --scheme loop --keep-levels", "triangle");
 	refused(quoted(std::string(CGOGN_DATA_DIR) + "/surface/klein_bottle.off") + " " + out + " --keep-levels",
 			"not orientable");
@@ -364,6 +368,44 @@ TEST(ToolSubdivide, InfoRenderAndViewReadTheLevels)
 	EXPECT_FALSE(std::filesystem::exists(dir.file("x.html")));
 	// a flat .cgmap file is drawn as it is
 	EXPECT_EQ(render(quoted(dir.file("flat.cgmap")), "flat.png", ""), level0);
+}
+
+TEST(ToolSubdivide, HexKeepLevelsWritesAHexahedralHierarchy)
+{
+	TempDir dir;
+	const std::string liver = std::string(CGOGN_DATA_DIR) + "/volume/liver_hex_624.mesh";
+	const std::string h = quoted(dir.file("liver.cgmap"));
+	ToolRun r = run_tool("subdivide " + quoted(liver) + " " + h + " --scheme hex -n 1 --keep-levels", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(io::read_map_header(dir.file("liver.cgmap")).map_type, "MRMap3");
+	// level 1 has the cells and points of one flat hex_subdivision step
+	MRMap3 m{CMap3()};
+	io::load_map(m, dir.file("liver.cgmap"));
+	ASSERT_EQ(max_level(m), 1u);
+	EXPECT_EQ(current_level(m), 1u);
+	CMap3 flat;
+	io::load_volume(flat, liver);
+	auto fpos = get_attribute<Vec3, CMap3::Vertex>(flat, "position");
+	modeling::hex_subdivision(flat, *fpos);
+	const CMap3 level = extract_level(m, 1);
+	EXPECT_EQ(f_vector(level), f_vector(flat));
+	EXPECT_LT(distance(vertex_positions(level), vertex_positions(flat)), 1e-9);
+	// info and render read its levels
+	r = run_tool("info --json " + h, dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	EXPECT_EQ(j["map"], "MRMap3");
+	EXPECT_EQ(j["max_level"], 1);
+	ASSERT_EQ(j["levels"].size(), 2u);
+	EXPECT_EQ(j["levels"][0]["f_vector"][3], 624);
+	EXPECT_EQ(j["levels"][1]["f_vector"][3], 8 * 624);
+	const auto render = [&](const std::string& in, const std::string& png, const std::string& more) {
+		const ToolRun x = run_tool("render " + in + " " + quoted(dir.file(png)) + " --size 160x120" + more, dir);
+		EXPECT_EQ(x.status, 0) << x.err;
+		return io_test::read_text(dir.file(png));
+	};
+	EXPECT_EQ(render(h, "l0.png", " --level 0"), render(quoted(liver), "liver.png", ""));
+	EXPECT_NE(render(h, "l1.png", " --level 1"), render(h, "l0b.png", " --level 0"));
 }
 
 } // namespace cgogn_test_tool_subdivide
