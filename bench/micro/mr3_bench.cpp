@@ -10,7 +10,9 @@
 // - phi1 at level l, for L - l = 0 ... 2: every face of the level walked,
 //   next to the same walk on the level's extract_level copy;
 // - add_level (positions by the attribute rules: the hexahedral scheme's),
-//   next to one hex_subdivision step of the flat level 1.
+//   next to one hex_subdivision step of the flat level 1;
+// - adaptive refinement: the 4,096 hexahedra of a 16^3 grid subdivided one
+//   by one with subdivide_volume (the rate in hexahedra per second).
 #include <cgogn/cgogn.h>
 
 #include "mr_bench_workloads.h"
@@ -180,5 +182,24 @@ void BM_HexSubdivisionStepFlat(benchmark::State& state)
 	}
 }
 BENCHMARK(BM_HexSubdivisionStepFlat)->Unit(benchmark::kMillisecond);
+
+void BM_AdaptiveRefinement3(benchmark::State& state)
+{
+	uint32 volumes = 0;
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		MRMap3 m(hex_grid(16));
+		std::vector<MRMap3::Volume> all;
+		foreach_cell(m, [&](MRMap3::Volume w) { all.push_back(w); });
+		volumes = uint32(all.size());
+		state.ResumeTiming();
+		for (MRMap3::Volume w : all)
+			subdivide_volume(m, w);
+	}
+	state.counters["hexahedra_per_s"] =
+		benchmark::Counter(double(volumes), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_AdaptiveRefinement3)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 } // namespace

@@ -75,6 +75,8 @@ py::object map_from_bytes(std::string_view bytes, const std::string& name)
 		return wrap_graph(map_file_loaded<Graph>(bytes, name));
 	if (h.map_type == io::map_type_name<MRMap2>())
 		return mrmap2_from_bytes(bytes, name);
+	if (h.map_type == io::map_type_name<MRMap3>())
+		return mrmap3_from_bytes(bytes, name);
 	py::object r;
 	[&]<uint32... D>(std::integer_sequence<uint32, D...>)
 	{
@@ -112,7 +114,8 @@ void bind_map_files(py::module_& mod)
 		},
 		py::arg("data"),
 		"The map of .cgmap bytes (to_bytes(), or a file's content) as an instance of its class (CMap2, CMap3, "
-		"GMap2, GMap3, Graph, CMapN1 ... GMapN4, MRMap2). pickle and copy.deepcopy go through it. Raises cgogn.IOError "
+		"GMap2, GMap3, Graph, CMapN1 ... GMapN4, MRMap2, MRMap3). pickle and copy.deepcopy go through it. Raises "
+		"cgogn.IOError "
 		"for bytes that are not a valid map.");
 }
 

@@ -866,7 +866,8 @@ void bind_maps(py::module_& mod)
 		"a mesh that "
 		"cannot be oriented whole. A .nmap file gives the map of any dimension it holds (CMapN1 ... CMapN4, "
 		"GMapN1 ... GMapN4; with gmap=True a GMapN also for a CMapN file). A .cgmap file gives the map it "
-		"holds, exactly as saved (CMap2, CMap3, GMap2, GMap3, Graph, CMapN, GMapN, MRMap2). Raises cgogn.IOError "
+		"holds, exactly as saved (CMap2, CMap3, GMap2, GMap3, Graph, CMapN, GMapN, MRMap2, MRMap3). Raises "
+		"cgogn.IOError "
 		"naming the file, line and problem on bad input.");
 }
 

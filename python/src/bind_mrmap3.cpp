@@ -28,7 +28,10 @@ struct PyMRMap3
 	MRMap3 m;
 	std::shared_ptr<AttributeArray<Vec3>> pos;
 
-	explicit PyMRMap3(CMap3&& base) : m(std::move(base))
+	explicit PyMRMap3(CMap3&& base) : PyMRMap3(MRMap3(std::move(base)))
+	{
+	}
+	explicit PyMRMap3(MRMap3&& h) : m(std::move(h))
 	{
 		pos = get_attribute<Vec3, MRVertex3>(m, "position");
 		if (!pos)
@@ -77,6 +80,13 @@ struct PyMRMap3
 };
 
 } // namespace
+
+py::object mrmap3_from_bytes(std::string_view bytes, const std::string& name)
+{
+	MRMap3 h{CMap3()};
+	io::load_map_from_bytes(h, bytes, name);
+	return py::cast(std::make_unique<PyMRMap3>(std::move(h)));
+}
 
 void bind_mrmap3(py::module_& mod)
 {
@@ -249,6 +259,21 @@ void bind_mrmap3(py::module_& mod)
 		.def(
 			"check_integrity", [](const W& w) { return integrity_report(check_integrity(w.m)); },
 			"Checks every invariant at every level; returns {'ok': bool, 'nb_errors': int, 'messages': [str]}.")
+		.def(
+			"save",
+			[](const W& w, const std::string& path) {
+				if (!has_map_file_extension(path))
+					throw py::value_error(path + ": a multiresolution map is saved to a .cgmap file");
+				py::gil_scoped_release release;
+				io::save_map(w.m, path);
+			},
+			py::arg("path"),
+			"Writes the whole hierarchy to a .cgmap file (every level, the current level, every attribute), "
+			"which cgogn.load reads back. O(size of the finest map).")
+		.def(
+			"to_bytes", [](const W& w) { return py::bytes(io::save_map_to_bytes(w.m)); },
+			"The whole hierarchy as .cgmap bytes; pickle and copy.deepcopy use them. O(size of the finest map).")
+		.def("__reduce__", [](const W& w) { return map_file_reduce(io::save_map_to_bytes(w.m)); })
 		.def("__repr__", [](const W& w) {
 			return "<cgogn.MRMap3 levels=0.." + std::to_string(max_level(w.m)) +
 				   " current=" + std::to_string(current_level(w.m)) + ">";

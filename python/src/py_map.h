@@ -174,5 +174,8 @@ py::object wrap_graph(Graph&& g);
 /// The cgogn.MRMap2 of .cgmap bytes holding an MRMap2 (bind_mrmap.cpp);
 /// io::Error for bad bytes. `name` stands for the file.
 py::object mrmap2_from_bytes(std::string_view bytes, const std::string& name);
+/// The cgogn.MRMap3 of .cgmap bytes holding an MRMap3 (bind_mrmap3.cpp);
+/// io::Error for bad bytes. `name` stands for the file.
+py::object mrmap3_from_bytes(std::string_view bytes, const std::string& name);
 
 } // namespace cgogn::python

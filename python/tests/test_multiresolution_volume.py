@@ -115,3 +115,24 @@ def test_adaptive_refinement_and_coarsening():
         assert done > 0
     assert m.max_level == 0 and m.counts(0) == [27, 54, 36, 8]
     assert m.check_integrity()["ok"]
+
+
+def test_files_and_pickling(tmp_path):
+    import pickle
+
+    m = cgogn.MRMap3(unit_cube())
+    m.add_level()
+    m.subdivide_volumes(1, [0])
+    m.current_level = 1
+    path = str(tmp_path / "h.cgmap")
+    m.save(path)
+    for r in (cgogn.load(path), pickle.loads(pickle.dumps(m)), cgogn.map_from_bytes(m.to_bytes())):
+        assert isinstance(r, cgogn.MRMap3)
+        assert r.max_level == 2 and r.current_level == 1
+        for k in range(3):
+            assert r.counts(k) == m.counts(k)
+            assert np.array_equal(r.positions(k), m.positions(k))
+            assert np.array_equal(r.hexahedra(k), m.hexahedra(k))
+        assert r.to_bytes() == m.to_bytes()
+    with pytest.raises(ValueError):
+        m.save(str(tmp_path / "h.off"))

@@ -218,7 +218,7 @@ void subdivide_leaf(MRState3& s, Dart d, uint32 k, bool balance)
 	if (k >= 254)
 		throw std::invalid_argument("subdivide_volume: 255 levels at most");
 	check_subdividable(s, d, k);
-	while (balance)
+	while (balance && k > 0) // no volume is made before level 0
 	{
 		// a volume sharing an edge, made before level k, would be two levels
 		// coarser than the children

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cgogn/core.h>
+#include <cgogn/geometry/types/vector_traits.h>
 
 #include <ostream>
 
@@ -68,6 +69,20 @@ inline VolumeSoup mixed_volume_soup()
 		s.cell_vertices.push_back(v);
 	s.nb_vertices = base + 4;
 	return s;
+}
+
+/// The hexahedral grid of a x b x c unit hexahedra (hex_grid_soup) as a
+/// CMap3, with a "position" vertex attribute scaled by `scale`.
+inline CMap3 hex_grid_with_positions(uint32 a, uint32 b, uint32 c, double scale = 1.0)
+{
+	const VolumeSoup soup = hex_grid_soup(a, b, c);
+	CMap3 m;
+	const BuildReport r = build_volume(m, soup);
+	auto pos = add_attribute<Vec3, CMap3::Vertex>(m, "position");
+	for (uint32 i = 0; i < soup.nb_vertices; ++i)
+		(*pos)[r.vertex_offset + i] =
+			scale * Vec3(soup.positions[i][0], soup.positions[i][1], soup.positions[i][2]); // soup vertex i
+	return m;
 }
 
 } // namespace cgogn::test

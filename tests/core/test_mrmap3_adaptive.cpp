@@ -4,6 +4,8 @@
 #include <cgogn/core.h>
 #include <cgogn/geometry/types/vector_traits.h>
 
+#include "volume_test_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,13 +23,7 @@ namespace
 /// The hexahedral grid of a x b x c unit cells, with its positions.
 MRMap3 adaptive_grid(uint32 a, uint32 b, uint32 c)
 {
-	const VolumeSoup soup = hex_grid_soup(a, b, c);
-	CMap3 base;
-	build_volume(base, soup);
-	auto pos = add_attribute<Vec3, CMap3::Vertex>(base, "position");
-	for (uint32 i = 0; i < soup.nb_vertices; ++i)
-		(*pos)[i] = Vec3(soup.positions[i][0], soup.positions[i][1], soup.positions[i][2]); // vertex i is line i
-	return MRMap3(std::move(base));
+	return MRMap3(test::hex_grid_with_positions(a, b, c));
 }
 
 void expect_mr3_valid(const MRMap3& m)

@@ -7,6 +7,7 @@
 #include <cgogn/io.h>
 
 #include "io_test_utils.h"
+#include "volume_test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -21,13 +22,7 @@ namespace
 
 MRMap3 grid_hierarchy(uint32 a, uint32 b, uint32 c)
 {
-	const VolumeSoup soup = hex_grid_soup(a, b, c);
-	CMap3 base;
-	build_volume(base, soup);
-	auto pos = add_attribute<Vec3, CMap3::Vertex>(base, "position");
-	for (uint32 i = 0; i < soup.nb_vertices; ++i)
-		(*pos)[i] = Vec3(soup.positions[i][0], soup.positions[i][1], soup.positions[i][2]); // vertex i is line i
-	MRMap3 m(std::move(base));
+	MRMap3 m(test::hex_grid_with_positions(a, b, c));
 	add_attribute<int32, MRMap3::Volume>(m, "tag");
 	return m;
 }

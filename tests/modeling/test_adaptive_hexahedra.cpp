@@ -5,6 +5,8 @@
 #include <cgogn/modeling/adaptive_hexahedra.h>
 #include <cgogn/modeling/subdivision.h>
 
+#include "volume_test_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,16 +19,10 @@ using namespace cgogn;
 namespace
 {
 
-/// The hexahedral grid of n^3 unit cells scaled to [0, 1]^3, with positions.
+/// The hexahedral grid of n^3 cells scaled to [0, 1]^3, with positions.
 MRMap3 unit_grid(uint32 n)
 {
-	const VolumeSoup soup = hex_grid_soup(n, n, n);
-	CMap3 base;
-	build_volume(base, soup);
-	auto pos = add_attribute<Vec3, CMap3::Vertex>(base, "position");
-	for (uint32 i = 0; i < soup.nb_vertices; ++i)
-		(*pos)[i] = Vec3(soup.positions[i][0], soup.positions[i][1], soup.positions[i][2]) / double(n);
-	return MRMap3(std::move(base));
+	return MRMap3(test::hex_grid_with_positions(n, n, n, 1.0 / double(n)));
 }
 
 /// The bounding box of volume w at the level of v.
@@ -99,12 +95,8 @@ TEST(AdaptiveHexahedra, RefiningEverythingGivesTheHexahedralSubdivision)
 			  8u + 64u);
 	EXPECT_EQ(pos->rule(), AttributeRule::Copy);
 	// the flat hexahedral subdivision of the same grid, twice
-	const VolumeSoup soup = hex_grid_soup(2, 2, 2);
-	CMap3 flat;
-	build_volume(flat, soup);
-	auto fpos = add_attribute<Vec3, CMap3::Vertex>(flat, "position");
-	for (uint32 i = 0; i < soup.nb_vertices; ++i)
-		(*fpos)[i] = Vec3(soup.positions[i][0], soup.positions[i][1], soup.positions[i][2]) / 2.0;
+	CMap3 flat = test::hex_grid_with_positions(2, 2, 2, 0.5);
+	auto fpos = get_attribute<Vec3, CMap3::Vertex>(flat, "position");
 	modeling::hex_subdivision(flat, *fpos);
 	modeling::hex_subdivision(flat, *fpos);
 	const MRLevelView3 finest = level_view(m, 2);

@@ -269,7 +269,7 @@ TEST(ToolSubdivide, KeepLevelsRefusals)
 	refused(quoted(spot) + " " + out + " --scheme tet --keep-levels",
 			"--keep-levels: the scheme tet makes no multiresolution levels");
 	refused(quoted(spot) + " " + quoted(dir.file("out.off")) + " --keep-levels", "the output must be a .cgmap file");
-	refused(quoted(spot) + " " + out + " --scheme hex --keep-levels", "no volume cells");
+	refused(quoted(spot) + " " + out + " --scheme hex --keep-levels", "not a volume format");
 	refused(quoted(std::string(CGOGN_DATA_DIR) + "/volume/armadillo_tet_4k.mesh") + " " + out +
 				" --scheme hex --keep-levels",
 			"not a hexahedron");
