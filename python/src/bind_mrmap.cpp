@@ -124,16 +124,17 @@ py::object mrmap2_from_bytes(std::string_view bytes, const std::string& name)
 void bind_mrmap(py::module_& mod)
 {
 	using W = PyMRMap2;
-	py::class_<W>(mod, "MRMap2",
-				  "A multiresolution surface: level 0 and its refinements, stored as the finest map with a level "
-				  "and an edge id per dart. Vertices have a position at every level; arrays of a level list its "
-				  "vertices in the order of positions(level).")
-		.def(py::init([](const Surface& s) {
-				 CMap2 copy;
-				 merge(copy, s.m);
-				 return std::make_unique<W>(std::move(copy));
-			 }),
-			 py::arg("surface"), "The hierarchy whose level 0 is a copy of `surface` (its attributes included).")
+	py::class_<W> cls(mod, "MRMap2",
+					  "A multiresolution surface: level 0 and its refinements, stored as the finest map with a level "
+					  "and an edge id per dart. Vertices have a position at every level; arrays of a level list its "
+					  "vertices in the order of positions(level).");
+	bind_hierarchy_file_methods(cls);
+	cls.def(py::init([](const Surface& s) {
+				CMap2 copy;
+				merge(copy, s.m);
+				return std::make_unique<W>(std::move(copy));
+			}),
+			py::arg("surface"), "The hierarchy whose level 0 is a copy of `surface` (its attributes included).")
 		.def_property_readonly(
 			"max_level", [](const W& w) { return max_level(w.m); }, "The finest level.")
 		.def_property(
@@ -285,21 +286,6 @@ void bind_mrmap(py::module_& mod)
 		.def(
 			"check_integrity", [](const W& w) { return integrity_report(check_integrity(w.m)); },
 			"Checks every invariant at every level; returns {'ok': bool, 'nb_errors': int, 'messages': [str]}.")
-		.def(
-			"save",
-			[](const W& w, const std::string& path) {
-				if (!has_map_file_extension(path))
-					throw py::value_error(path + ": a multiresolution map is saved to a .cgmap file");
-				py::gil_scoped_release release;
-				io::save_map(w.m, path);
-			},
-			py::arg("path"),
-			"Writes the whole hierarchy to a .cgmap file (every level, the current level, every attribute), "
-			"which cgogn.load reads back. O(size of the finest map).")
-		.def(
-			"to_bytes", [](const W& w) { return py::bytes(io::save_map_to_bytes(w.m)); },
-			"The whole hierarchy as .cgmap bytes; pickle and copy.deepcopy use them. O(size of the finest map).")
-		.def("__reduce__", [](const W& w) { return map_file_reduce(io::save_map_to_bytes(w.m)); })
 		.def("__repr__", [](const W& w) {
 			return "<cgogn.MRMap2 levels=0.." + std::to_string(max_level(w.m)) +
 				   " current=" + std::to_string(current_level(w.m)) + ">";

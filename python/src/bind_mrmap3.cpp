@@ -91,19 +91,20 @@ py::object mrmap3_from_bytes(std::string_view bytes, const std::string& name)
 void bind_mrmap3(py::module_& mod)
 {
 	using W = PyMRMap3;
-	py::class_<W>(mod, "MRMap3",
-				  "A multiresolution hexahedral mesh: level 0 and its hexahedral refinements, stored as the finest "
-				  "map with a level, an edge id and a face id per dart. Vertices have a position at every level "
-				  "(a new vertex starts at the centroid of the edge, face or hexahedron it is the middle of); "
-				  "arrays of a level list its vertices in the order of positions(level).")
-		.def(py::init([](const VolumeMesh& s) {
-				 CMap3 copy;
-				 io::load_map_from_bytes(copy, io::save_map_to_bytes(s.m));
-				 return std::make_unique<W>(std::move(copy));
-			 }),
-			 py::arg("volume"),
-			 "The hierarchy whose level 0 is a copy of `volume` (its attributes included). ValueError when "
-			 "the mesh has attributes on the cells of one volume.")
+	py::class_<W> cls(mod, "MRMap3",
+					  "A multiresolution hexahedral mesh: level 0 and its hexahedral refinements, stored as the finest "
+					  "map with a level, an edge id and a face id per dart. Vertices have a position at every level "
+					  "(a new vertex starts at the centroid of the edge, face or hexahedron it is the middle of); "
+					  "arrays of a level list its vertices in the order of positions(level).");
+	bind_hierarchy_file_methods(cls);
+	cls.def(py::init([](const VolumeMesh& s) {
+				CMap3 copy;
+				io::load_map_from_bytes(copy, io::save_map_to_bytes(s.m));
+				return std::make_unique<W>(std::move(copy));
+			}),
+			py::arg("volume"),
+			"The hierarchy whose level 0 is a copy of `volume` (its attributes included). ValueError when "
+			"the mesh has attributes on the cells of one volume.")
 		.def_property_readonly(
 			"max_level", [](const W& w) { return max_level(w.m); }, "The finest level.")
 		.def_property(
@@ -259,21 +260,6 @@ void bind_mrmap3(py::module_& mod)
 		.def(
 			"check_integrity", [](const W& w) { return integrity_report(check_integrity(w.m)); },
 			"Checks every invariant at every level; returns {'ok': bool, 'nb_errors': int, 'messages': [str]}.")
-		.def(
-			"save",
-			[](const W& w, const std::string& path) {
-				if (!has_map_file_extension(path))
-					throw py::value_error(path + ": a multiresolution map is saved to a .cgmap file");
-				py::gil_scoped_release release;
-				io::save_map(w.m, path);
-			},
-			py::arg("path"),
-			"Writes the whole hierarchy to a .cgmap file (every level, the current level, every attribute), "
-			"which cgogn.load reads back. O(size of the finest map).")
-		.def(
-			"to_bytes", [](const W& w) { return py::bytes(io::save_map_to_bytes(w.m)); },
-			"The whole hierarchy as .cgmap bytes; pickle and copy.deepcopy use them. O(size of the finest map).")
-		.def("__reduce__", [](const W& w) { return map_file_reduce(io::save_map_to_bytes(w.m)); })
 		.def("__repr__", [](const W& w) {
 			return "<cgogn.MRMap3 levels=0.." + std::to_string(max_level(w.m)) +
 				   " current=" + std::to_string(current_level(w.m)) + ">";

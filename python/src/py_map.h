@@ -169,6 +169,28 @@ py::object map_from_bytes(std::string_view bytes, const std::string& name);
 /// What a map's __reduce__ returns: cgogn._from_bytes and the map's .cgmap
 /// bytes (bind_map_files.cpp).
 py::tuple map_file_reduce(std::string bytes);
+
+/// Adds save, to_bytes and __reduce__ (the whole hierarchy as a .cgmap
+/// file) to the class of a multiresolution map wrapper W (its map in W::m).
+template <typename W>
+void bind_hierarchy_file_methods(py::class_<W>& c)
+{
+	c.def(
+		 "save",
+		 [](const W& w, const std::string& path) {
+			 if (!has_map_file_extension(path))
+				 throw py::value_error(path + ": a multiresolution map is saved to a .cgmap file");
+			 py::gil_scoped_release release;
+			 io::save_map(w.m, path);
+		 },
+		 py::arg("path"),
+		 "Writes the whole hierarchy to a .cgmap file (every level, the current level, every attribute), "
+		 "which cgogn.load reads back. O(size of the finest map).")
+		.def(
+			"to_bytes", [](const W& w) { return py::bytes(io::save_map_to_bytes(w.m)); },
+			"The whole hierarchy as .cgmap bytes; pickle and copy.deepcopy use them. O(size of the finest map).")
+		.def("__reduce__", [](const W& w) { return map_file_reduce(io::save_map_to_bytes(w.m)); });
+}
 /// A graph moved into an instance of cgogn.Graph (bind_graph.cpp).
 py::object wrap_graph(Graph&& g);
 /// The cgogn.MRMap2 of .cgmap bytes holding an MRMap2 (bind_mrmap.cpp);
