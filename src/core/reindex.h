@@ -16,6 +16,14 @@
 namespace cgogn::detail
 {
 
+// The parts of RegionReindexer that depend neither on the map nor on the
+// orbit, compiled once (reindex.cpp) rather than in every (map, orbit) pair:
+/// Sorts `lines`, drops their repeats and those no longer live in `cells`.
+void keep_live_lines_once(std::vector<uint32>& lines, const AttributeContainer& cells);
+/// Releases the lines of `olds` that are not in `claimed`.
+void release_unclaimed_lines(AttributeContainer& cells, const std::vector<uint32>& olds,
+							 const std::unordered_set<uint32>& claimed);
+
 /// Indexing of a region changed by an operator, for every indexed orbit at
 /// once: record() the darts of the region before the change (their lines),
 /// apply() the darts of the region after it (surviving and new darts, at least
@@ -74,9 +82,7 @@ private:
 				return;
 			AttributeContainer& cells = *detail::state_of(m).cells[orbit_index(O)];
 			auto& olds = old_[orbit_index(O)];
-			std::sort(olds.begin(), olds.end());
-			olds.erase(std::unique(olds.begin(), olds.end()), olds.end());
-			std::erase_if(olds, [&](uint32 l) { return !cells.is_live(l); });
+			keep_live_lines_once(olds, cells);
 			// connected components of a 3-map or a G-map: never walked whole
 			// (BETA0_BETA1_BETA2 is the component of a 2-G-map, a volume of a 3-G-map)
 			constexpr bool component = O == Orbit::PHI1_PHI2_PHI3 || O == Orbit::BETA0_BETA1_BETA2_BETA3 ||
@@ -126,9 +132,7 @@ private:
 				write_index(m, CELL(d), line);
 			}
 			count_reindexed_darts(walked);
-			for (uint32 l : olds)
-				if (!claimed.count(l))
-					cells.release_line(l);
+			release_unclaimed_lines(cells, olds, claimed);
 		}
 	}
 

@@ -143,36 +143,45 @@ std::shared_ptr<AttributeArray<T>> get_or_add(MAP& m, const std::string& name, c
 	return a;
 }
 
-// Writes column c (element i) into line `line` of attribute of CELL.
-template <typename CELL, typename MAP, typename LINES>
-void fill_column(MAP& m, const Column& c, const LINES& lines, const std::string& path)
+// (line, row) pairs: the line of a cell in its container, and the row of
+// the file's data that goes there.
+using Rows = std::vector<std::pair<uint32, std::size_t>>;
+
+// The attribute of CELL that holds column c (see get_or_add), of the
+// column's type.
+template <typename CELL, typename MAP>
+std::shared_ptr<AttributeBase> column_attribute(MAP& m, const Column& c, const std::string& path)
+{
+	std::shared_ptr<AttributeBase> a;
+	visit_attribute_type(c, [&]<typename T>() { a = get_or_add<T, CELL>(m, c.name, path); });
+	return a;
+}
+
+// Writes column c into attribute a, of the column's type: row `row` into
+// line `line` for each (line, row) of `rows`. Depends on neither the map
+// nor the cell: its loops are compiled once per value type.
+void write_column(AttributeBase& a, const Column& c, const Rows& rows)
 {
 	visit_attribute_type(c, [&]<typename T>() {
-		auto a = get_or_add<T, CELL>(m, c.name, path);
-		lines([&](uint32 line, std::size_t i) {
-			const double* v = &c.values[i * c.dim];
+		auto& values = static_cast<AttributeArray<T>&>(a);
+		for (const auto& [line, row] : rows)
+		{
+			const double* v = &c.values[row * c.dim];
 			if constexpr (std::is_same_v<T, Vec2>)
-				(*a)[line] = Vec2(v[0], v[1]);
+				values[line] = Vec2(v[0], v[1]);
 			else if constexpr (std::is_same_v<T, Vec3>)
-				(*a)[line] = Vec3(v[0], v[1], v[2]);
+				values[line] = Vec3(v[0], v[1], v[2]);
 			else
-				(*a)[line] = T(v[0]); // exact: see Column
-		});
+				values[line] = T(v[0]); // exact: see Column
+		}
 	});
 }
 
-// Writes column c into the attribute of CELL: row `row` into line `line`
-// for each (line, row) of `rows`.
-template <typename CELL, typename MAP, typename ROWS>
-void fill_rows(MAP& m, const Column& c, const ROWS& rows, const std::string& path)
+// Writes column c into the attribute of CELL (see write_column).
+template <typename CELL, typename MAP>
+void fill_rows(MAP& m, const Column& c, const Rows& rows, const std::string& path)
 {
-	fill_column<CELL>(
-		m, c,
-		[&](const auto& put) {
-			for (const auto& [line, row] : rows)
-				put(line, std::size_t(row));
-		},
-		path);
+	write_column(*column_attribute<CELL>(m, c, path), c, rows);
 }
 
 // Whether a column of `columns` becomes an attribute.
@@ -243,8 +252,8 @@ BuildReport build_polyhedra_of(MAP& m, const MeshData& d)
 // attribute `gmsh:physical` has a name of dimension `dim` in
 // d.physical_names that name, in the string attribute `gmsh:physical_name`.
 // O(rows).
-template <typename CELL, typename MAP, typename ROWS>
-void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const ROWS& rows, const std::string& path)
+template <typename CELL, typename MAP>
+void name_physical_groups(MAP& m, const MeshData& d, int32 dim, const Rows& rows, const std::string& path)
 {
 	std::unordered_map<int32, const std::string*> name_of;
 	for (const auto& p : d.physical_names)
@@ -296,7 +305,7 @@ void fill_corners(MAP& m, const MeshData& d, const std::vector<std::pair<Dart, u
 	std::vector<std::size_t> first_corner(d.nb_cells() + 1, 0);
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
 		first_corner[c + 1] = first_corner[c] + d.cell_sizes[c];
-	std::vector<std::pair<uint32, std::size_t>> rows; // (dart, corner)
+	Rows rows; // (dart, corner)
 	for (const auto& first : firsts)
 	{
 		const uint32 cell = first.second; // not a structured binding: a lambda captures it
@@ -370,7 +379,7 @@ void fill_listed_faces(MAP& m, const MeshData& d, const BuildReport& br, const s
 	const ListedFaces listed(d);
 	std::vector<uint32> ids;
 	const FileVertexIds file_id(br, d.nb_vertices());
-	std::vector<std::pair<uint32, uint32>> found; // (face line, listed face)
+	Rows found; // (face line, listed face)
 	std::vector<uint8> matched(d.nb_faces(), 0);
 	index_cells<Face>(m);
 	foreach_cell(m, [&](Face f) {
@@ -417,7 +426,7 @@ void fill_listed_edges(MAP& m, const MeshData& d, const BuildReport& br, const s
 	for (uint32 e = 0; e < uint32(d.segments.size()); ++e)
 		nb_repeated += !listed.try_emplace(key(d.segments[e].first, d.segments[e].second), e).second;
 	const FileVertexIds file_id(br, d.nb_vertices());
-	std::vector<std::pair<uint32, uint32>> found; // (edge line, listed edge)
+	Rows found; // (edge line, listed edge)
 	std::vector<uint8> matched(d.segments.size(), 0);
 	index_cells<Edge>(m);
 	std::vector<uint32> ends; // the file ids of the edge's two vertices
@@ -527,9 +536,14 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 		auto orig = get_or_add<uint32, Vertex>(m, "original_vertex", path);
 		vertex_lines([&](uint32 line, std::size_t i) { (*orig)[line] = uint32(i); });
 	}
-	for (const auto& c : d.vertex_columns)
-		if (usable(c))
-			fill_column<Vertex>(m, c, vertex_lines, path);
+	if (any_usable(d.vertex_columns))
+	{
+		Rows rows;
+		vertex_lines([&](uint32 line, std::size_t i) { rows.emplace_back(line, i); });
+		for (const auto& c : d.vertex_columns)
+			if (usable(c))
+				fill_rows<Vertex>(m, c, rows, path);
+	}
 
 	// 4. cell data: cell c's first dart is predictable from the dart container's state
 	const bool any_cell_column = any_usable(d.cell_columns), any_corner_column = any_usable(d.corner_columns);
@@ -550,7 +564,7 @@ LoadReport build(MAP& m, const MeshData& d, const std::string& path)
 	if (any_cell_column)
 	{
 		index_cells<Top>(m);
-		std::vector<std::pair<uint32, uint32>> rows; // (line, cell) of the built cells
+		Rows rows; // (line, cell) of the built cells
 		rows.reserve(firsts.size());
 		for (const auto& [dart, cell] : firsts)
 		{
@@ -625,7 +639,7 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 	std::vector<Vertex> vertex(d.nb_vertices());
 	for (uint32 i = 0; i < d.nb_vertices(); ++i)
 		vertex[i] = add_vertex(ig);
-	std::vector<std::pair<uint32, uint32>> faces; // (face line, cell) when faces are indexed
+	Rows faces; // (face line, cell) when faces are indexed
 	std::vector<Vertex> fv, sorted;
 	std::size_t k = 0;
 	for (uint32 c = 0; c < d.nb_cells(); ++c)
@@ -656,9 +670,14 @@ LoadReport build_complex(IncidenceGraph& ig, const MeshData& d, const std::strin
 	vertex_lines([&](uint32 line, std::size_t i) {
 		(*pos)[line] = Vec3(d.positions[3 * i], d.positions[3 * i + 1], d.positions[3 * i + 2]);
 	});
-	for (const auto& c : d.vertex_columns)
-		if (usable(c))
-			fill_column<Vertex>(ig, c, vertex_lines, path);
+	if (any_usable(d.vertex_columns))
+	{
+		Rows rows;
+		vertex_lines([&](uint32 line, std::size_t i) { rows.emplace_back(line, i); });
+		for (const auto& c : d.vertex_columns)
+			if (usable(c))
+				fill_rows<Vertex>(ig, c, rows, path);
+	}
 	for (const auto& c : d.cell_columns)
 		if (usable(c))
 			fill_rows<Face>(ig, c, faces, path);

@@ -14,24 +14,23 @@ namespace cgogn::io::detail
 {
 
 // Adds to `c` (the container of orbit o) an attribute of type T typed by o,
-// with its type's default rule, as add_attribute<T, Cell<o>> would.
+// with its type's default rule, as add_attribute<T, Cell<o>> would. One
+// call through a table of the classes' factories, not a call per orbit
+// (each of which would compile add_attribute for its class).
 template <typename T>
 std::shared_ptr<AttributeBase> add_attribute_of_orbit(AttributeContainer& c, Orbit o, const std::string& name,
 													  const T& default_value)
 {
-	std::shared_ptr<AttributeBase> a;
-	[&]<std::size_t... I>(std::index_sequence<I...>)
+	static constexpr std::array<AttributeContainer::Factory<T>, NB_ORBITS> factories =
+		[]<std::size_t... I>(std::index_sequence<I...>)
 	{
-		(
-			[&] {
-				constexpr Orbit X = Orbit(I);
-				if constexpr (!is_direct_orbit(X))
-					if (o == X)
-						a = c.add_attribute<T, CellAttribute<T, X>>(name, default_value);
-			}(),
-			...);
+		return std::array<AttributeContainer::Factory<T>, NB_ORBITS>{
+			cgogn::detail::cell_attribute_factory<T, Orbit(I)>()...};
 	}
-	(std::make_index_sequence<uint32(Orbit::NB_ORBITS)>{});
+	(std::make_index_sequence<NB_ORBITS>{});
+	if (orbit_index(o) >= NB_ORBITS || is_direct_orbit(o))
+		return nullptr;
+	std::shared_ptr<AttributeBase> a = c.add_attribute_made_by<T>(factories[orbit_index(o)], name, default_value);
 	if (a)
 		c.set_default_rule<T>(*a);
 	return a;

@@ -47,8 +47,77 @@ void append_list(std::string& s, const char* type, const char* name, const std::
 	s += "</DataArray>\n";
 }
 
+// The coordinates of the point of each line of `vertices` (the vertex
+// container of a map of any dimension), from its PointD attribute
+// `position`, and their number per point; 0 when it has none.
+std::pair<std::vector<double>, uint32> vertex_coordinates(const AttributeContainer& vertices)
+{
+	std::vector<double> coordinates;
+	uint32 nb_coordinates = 0;
+	[&]<std::size_t... K>(std::index_sequence<K...>)
+	{
+		(
+			[&] {
+				const auto p = vertices.get_attribute<PointD<K + 1>>("position");
+				if (!p || nb_coordinates != 0)
+					return;
+				nb_coordinates = K + 1;
+				coordinates.resize(std::size_t(vertices.end_index()) * nb_coordinates);
+				for (uint32 l = 0; l < vertices.end_index(); ++l)
+					if (vertices.is_live(l))
+						std::copy_n((*p)[l].begin(), K + 1, coordinates.begin() + std::size_t(l) * nb_coordinates);
+			}(),
+			...);
+	}
+	(std::make_index_sequence<MAX_DIMENSION + 1>{});
+	return {std::move(coordinates), nb_coordinates};
+}
+
+// The cells of a .vtu file, as save_vtu gathers them.
+struct VtuCells
+{
+	std::vector<int64> connectivity, offsets, faces, face_offsets;
+	std::vector<uint8> types, cell_dimension;
+	bool polyhedra = false;
+
+	// Ends a cell of the given VTK type and dimension k.
+	void end_cell(uint8 type, uint32 k)
+	{
+		offsets.push_back(int64(connectivity.size()));
+		types.push_back(type);
+		cell_dimension.push_back(uint8(k));
+		// the end of the cell's face stream, -1 for a cell that is not a polyhedron
+		face_offsets.push_back(type == VTK_POLYHEDRON ? int64(faces.size()) : -1);
+	}
+};
+
+// The file: the points (written, a line of 3 coordinates each) and the cells.
+void write_vtu(const std::string& path, const std::string& points, int64 nb_points, const VtuCells& c)
+{
+	std::string s =
+		"<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+		"byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"" +
+		std::to_string(nb_points) + "\" NumberOfCells=\"" + std::to_string(c.types.size()) + "\">\n";
+	s += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n" + points +
+		 "</DataArray>\n</Points>\n<Cells>\n";
+	append_list(s, "Int64", "connectivity", c.connectivity);
+	append_list(s, "Int64", "offsets", c.offsets);
+	append_list(s, "UInt8", "types", c.types);
+	if (c.polyhedra)
+	{
+		append_list(s, "Int64", "faces", c.faces);
+		append_list(s, "Int64", "faceoffsets", c.face_offsets);
+	}
+	s += "</Cells>\n<CellData Scalars=\"dimension\">\n";
+	append_list(s, "UInt8", "dimension", c.cell_dimension);
+	s += "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+	detail::write_file(path, s);
+}
+
 } // namespace
 
+// Only the walk over the cells depends on the map type: the rest is in the
+// functions above, compiled once for the 14 map types.
 template <typename MAP>
 requires is_nmap_v<MAP>
 void save_vtu(const MAP& m, const std::string& path, const std::vector<uint32>& dimensions,
@@ -56,25 +125,8 @@ void save_vtu(const MAP& m, const std::string& path, const std::vector<uint32>& 
 {
 	constexpr uint32 D = MAP::dimension;
 	// the coordinates of the point of each vertex line
-	std::vector<double> coordinates;
-	uint32 nb_coordinates = 0;
-	[&]<std::size_t... K>(std::index_sequence<K...>)
-	{
-		(
-			[&] {
-				const auto p = get_attribute<PointD<K + 1>, CellD<0>>(m, "position");
-				if (!p || nb_coordinates != 0)
-					return;
-				nb_coordinates = K + 1;
-				const AttributeContainer& c = container_of<Orbit::CELL0>(m);
-				coordinates.resize(std::size_t(c.end_index()) * nb_coordinates);
-				for (uint32 l = 0; l < c.end_index(); ++l)
-					if (c.is_live(l))
-						std::copy_n((*p)[l].begin(), K + 1, coordinates.begin() + std::size_t(l) * nb_coordinates);
-			}(),
-			...);
-	}
-	(std::make_index_sequence<MAX_DIMENSION + 1>{});
+	const AttributeContainer& vertices = container_of<Orbit::CELL0>(m);
+	const auto [coordinates, nb_coordinates] = vertex_coordinates(vertices);
 	if (nb_coordinates == 0)
 		throw Error(path, "save_vtu: the map has no vertex attribute position (a PointD)");
 	for (uint32 k : dimensions)
@@ -82,7 +134,6 @@ void save_vtu(const MAP& m, const std::string& path, const std::vector<uint32>& 
 			throw Error(path, "save_vtu: cells of dimension " + std::to_string(k) +
 								  " cannot be written (dimensions 0 to 3, at most the map's)");
 	// the points: one per vertex line
-	const AttributeContainer& vertices = container_of<Orbit::CELL0>(m);
 	std::vector<int64> point_of_line(vertices.end_index(), -1);
 	std::string points;
 	int64 nb_points = 0;
@@ -104,42 +155,33 @@ void save_vtu(const MAP& m, const std::string& path, const std::vector<uint32>& 
 			}
 		}
 	auto point = [&](CellD<0> v) { return point_of_line[index_of(m, v)]; };
-	std::vector<int64> connectivity, offsets, faces, face_offsets;
-	std::vector<uint8> types, cell_dimension;
-	bool polyhedra = false;
-	auto end_cell = [&](uint8 type, uint32 k) {
-		offsets.push_back(int64(connectivity.size()));
-		types.push_back(type);
-		cell_dimension.push_back(uint8(k));
-		// the end of the cell's face stream, -1 for a cell that is not a polyhedron
-		face_offsets.push_back(type == VTK_POLYHEDRON ? int64(faces.size()) : -1);
-	};
+	VtuCells cells;
 	auto write_cells = [&]<uint32 K>() {
 		if constexpr (K <= D)
 			foreach_cell(m, [&](CellD<K> c) {
 				if constexpr (K == 0)
 				{
-					connectivity.push_back(point(c));
-					end_cell(VTK_VERTEX, 0);
+					cells.connectivity.push_back(point(c));
+					cells.end_cell(VTK_VERTEX, 0);
 				}
 				else if constexpr (K == 1)
 				{
-					connectivity.push_back(point(CellD<0>(c.dart)));
+					cells.connectivity.push_back(point(CellD<0>(c.dart)));
 					if constexpr (is_gmap_v<MAP>)
-						connectivity.push_back(point(CellD<0>(beta<0>(m, c.dart))));
+						cells.connectivity.push_back(point(CellD<0>(beta<0>(m, c.dart))));
 					else
-						connectivity.push_back(point(CellD<0>(phi<1>(m, c.dart))));
-					end_cell(VTK_LINE, 1);
+						cells.connectivity.push_back(point(CellD<0>(phi<1>(m, c.dart))));
+					cells.end_cell(VTK_LINE, 1);
 				}
 				else if constexpr (K == 2)
 				{
 					for (CellD<0> v : corners_of(m, c.dart))
-						connectivity.push_back(point(v));
-					end_cell(VTK_POLYGON, 2);
+						cells.connectivity.push_back(point(v));
+					cells.end_cell(VTK_POLYGON, 2);
 				}
 				else
 				{
-					polyhedra = true;
+					cells.polyhedra = true;
 					std::vector<int64> ids;
 					std::vector<int64> cell_faces;
 					uint32 nb_faces = 0;
@@ -155,10 +197,10 @@ void save_vtu(const MAP& m, const std::string& path, const std::vector<uint32>& 
 						}
 						++nb_faces;
 					});
-					connectivity.insert(connectivity.end(), ids.begin(), ids.end());
-					faces.push_back(nb_faces);
-					faces.insert(faces.end(), cell_faces.begin(), cell_faces.end());
-					end_cell(VTK_POLYHEDRON, 3);
+					cells.connectivity.insert(cells.connectivity.end(), ids.begin(), ids.end());
+					cells.faces.push_back(nb_faces);
+					cells.faces.insert(cells.faces.end(), cell_faces.begin(), cell_faces.end());
+					cells.end_cell(VTK_POLYHEDRON, 3);
 				}
 			});
 	};
@@ -173,24 +215,7 @@ void save_vtu(const MAP& m, const std::string& path, const std::vector<uint32>& 
 		else
 			write_cells.template operator()<3>();
 	}
-	std::string s =
-		"<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-		"byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"" +
-		std::to_string(nb_points) + "\" NumberOfCells=\"" + std::to_string(types.size()) + "\">\n";
-	s += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n" + points +
-		 "</DataArray>\n</Points>\n<Cells>\n";
-	append_list(s, "Int64", "connectivity", connectivity);
-	append_list(s, "Int64", "offsets", offsets);
-	append_list(s, "UInt8", "types", types);
-	if (polyhedra)
-	{
-		append_list(s, "Int64", "faces", faces);
-		append_list(s, "Int64", "faceoffsets", face_offsets);
-	}
-	s += "</Cells>\n<CellData Scalars=\"dimension\">\n";
-	append_list(s, "UInt8", "dimension", cell_dimension);
-	s += "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-	detail::write_file(path, s);
+	write_vtu(path, points, nb_points, cells);
 }
 
 #define CGOGN_NMAP_VTU(MAP)                                                                                            \

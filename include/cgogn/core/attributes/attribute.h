@@ -126,6 +126,14 @@ public:
 	{
 	}
 
+	/// A new attribute of this class, owned by a std::shared_ptr, with no line
+	/// yet (AttributeContainer::add_attribute allocates them). Each attribute
+	/// class has its own: defined with AttributeContainer, out of the class,
+	/// so that the library compiles it once for the common value types (see
+	/// attribute_instances.h).
+	static std::shared_ptr<AttributeBase> make(AttributeContainer* container, std::string name, T default_value,
+											   uint64 contiguous_lines);
+
 	/// The value of line i, live or not; i must be below the container's
 	/// capacity() (asserted). O(1): a compare and an add (one more load for a
 	/// line beyond the reserved range, see LineStorage).
@@ -304,6 +312,11 @@ protected:
 	/// The line of cell c in the attribute's container (defined with AttributeContainer).
 	template <Orbit O>
 	uint32 line_of(Cell<O> c) const;
+	/// Gives `clone` (nullptr, or an attribute of type T in container `to`)
+	/// this attribute's rule and rule callback, and returns it: the part of
+	/// clone_empty common to every orbit (defined with AttributeContainer).
+	std::shared_ptr<AttributeBase> with_rule_of_this(std::shared_ptr<AttributeBase> clone,
+													 AttributeContainer& to) const;
 
 private:
 	LineStorage<T, CHUNK_SHIFT> values_;
@@ -323,6 +336,10 @@ public:
 	static constexpr Orbit ORBIT = O; ///< The orbit of the cells that own the lines.
 
 	using AttributeArray<T>::AttributeArray;
+
+	/// A new attribute of this class (see AttributeArray::make).
+	static std::shared_ptr<AttributeBase> make(AttributeContainer* container, std::string name, T default_value,
+											   uint64 contiguous_lines);
 
 	/// The value of line i (see AttributeArray::operator[](uint32)). O(1).
 	CGOGN_INLINE T& operator[](uint32 i)

@@ -50,14 +50,27 @@ public:
 	std::shared_ptr<A> add_attribute(const std::string& name, T default_value = T())
 	{
 		static_assert(std::is_base_of_v<AttributeArray<T>, A>);
+		return std::static_pointer_cast<A>(add_attribute_made_by<T>(&A::make, name, std::move(default_value)));
+	}
+
+	/// The factory of an attribute class of values of type T (its static
+	/// `make`, see AttributeArray::make).
+	template <typename T>
+	using Factory = std::shared_ptr<AttributeBase> (*)(AttributeContainer*, std::string, T, uint64);
+
+	/// add_attribute for the class whose factory is `make`: for callers that
+	/// choose the class at run time (the orbit of a clone, or of an attribute
+	/// read from a file) with one call instead of a call per class.
+	/// O(attributes + capacity()).
+	template <typename T>
+	std::shared_ptr<AttributeBase> add_attribute_made_by(Factory<T> make, const std::string& name, T default_value)
+	{
 		if (find(name) != nullptr)
 			return nullptr;
-		auto a =
-			std::make_shared<A>(this, name, std::move(default_value),
-								std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
-		a->set_nb_chunks(nb_chunks_);
-		static_cast<AttributeBase&>(*a).cell_index_ = cell_index_;
-		attributes_.push_back(a);
+		std::shared_ptr<AttributeBase> a =
+			make(this, name, std::move(default_value),
+				 std::min(max_contiguous_lines_, LineStorage<T, CHUNK_SHIFT>::default_contiguous()));
+		adopt(a);
 		return a;
 	}
 
@@ -73,12 +86,7 @@ public:
 
 	/// The attribute of this name, whatever its type; nullptr when absent.
 	/// O(number of attributes).
-	std::shared_ptr<AttributeBase> find(const std::string& name) const
-	{
-		auto it =
-			std::find_if(attributes_.begin(), attributes_.end(), [&](const auto& a) { return a->name() == name; });
-		return it == attributes_.end() ? nullptr : *it;
-	}
+	std::shared_ptr<AttributeBase> find(const std::string& name) const;
 
 	/// Removes the attribute (not the key); returns false when it is not here.
 	bool remove_attribute(const AttributeBase* attr)
@@ -500,6 +508,11 @@ public:
 	}
 
 private:
+	/// Gives a, a new attribute of this container, the container's lines and
+	/// cell index, and lists it: the part of add_attribute that does not
+	/// depend on the attribute's class. O(attributes + capacity()).
+	void adopt(const std::shared_ptr<AttributeBase>& a);
+
 	std::unique_ptr<MarkAttribute> new_mark() const
 	{
 		return std::make_unique<MarkAttribute>(
@@ -572,86 +585,114 @@ private:
 	MarkAttribute* mark_;
 };
 
+// One owner type for every attribute class (std::make_shared would compile a
+// control block per class: per value type and orbit).
+template <typename T>
+std::shared_ptr<AttributeBase> AttributeArray<T>::make(AttributeContainer* container, std::string name, T default_value,
+													   uint64 contiguous_lines)
+{
+	return std::shared_ptr<AttributeBase>(static_cast<AttributeBase*>(
+		new AttributeArray<T>(container, std::move(name), std::move(default_value), contiguous_lines)));
+}
+
+template <typename T, Orbit O>
+std::shared_ptr<AttributeBase> CellAttribute<T, O>::make(AttributeContainer* container, std::string name,
+														 T default_value, uint64 contiguous_lines)
+{
+	return std::shared_ptr<AttributeBase>(static_cast<AttributeBase*>(
+		new CellAttribute<T, O>(container, std::move(name), std::move(default_value), contiguous_lines)));
+}
+
+template <typename T>
+std::shared_ptr<AttributeBase> AttributeArray<T>::with_rule_of_this(std::shared_ptr<AttributeBase> clone,
+																	AttributeContainer& to) const
+{
+	if (clone)
+	{
+		static_cast<AttributeArray<T>&>(*clone).set_rule_callback(callback_);
+		to.set_rule(*clone, rule_);
+	}
+	return clone;
+}
+
 template <typename T>
 std::shared_ptr<AttributeBase> AttributeArray<T>::clone_empty(AttributeContainer& to) const
 {
-	auto a = to.add_attribute<T>(name_, default_value_);
-	if (a)
-	{
-		a->set_rule_callback(callback_);
-		to.set_rule(*a, rule_);
-	}
-	return a;
+	return with_rule_of_this(to.add_attribute<T>(name_, default_value_), to);
 }
 
 template <typename T, Orbit O>
 std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_empty(AttributeContainer& to) const
 {
-	auto a = clone_of_kind(to);
-	if (a)
-	{
-		static_cast<AttributeArray<T>&>(*a).set_rule_callback(this->rule_callback());
-		to.set_rule(*a, this->rule());
-	}
-	return a;
+	return this->with_rule_of_this(clone_of_kind(to), to);
 }
+
+namespace detail
+{
+
+/// The orbits of the containers a CellAttribute<T, O> clones into, first
+/// match first, padded with NB_ORBITS; O itself last. A container of the
+/// same cell kind in the other model of surfaces (the CMap2 <-> GMap2
+/// conversions); a graph's vertices and edges, from the vertices and edges
+/// of any map (to_graph: its 1-skeleton), and an incidence graph's vertices
+/// and edges, from and to those of a 2-map (to_incidence_graph, to_cmap2);
+/// then the cells of the same dimension in a map of any dimension, or in a
+/// map of dimension 2 or 3 (to_nmap, to_fixed_map).
+constexpr std::array<Orbit, 9> clone_orbits(Orbit o)
+{
+	std::array<Orbit, 9> r{};
+	r.fill(Orbit::NB_ORBITS);
+	std::size_t n = 0;
+	if (surface_counterpart(o) != o)
+		r[n++] = surface_counterpart(o);
+	const Orbit k = is_dimension_orbit(o)   ? o
+					: o == Orbit::IG_VERTEX ? Orbit::CELL0
+					: o == Orbit::IG_EDGE   ? Orbit::CELL1
+											: dimension_counterpart(o);
+	if (k == Orbit::CELL0)
+		for (Orbit x : {Orbit::ALPHA1, Orbit::IG_VERTEX, Orbit::PHI21})
+			r[n++] = x;
+	if (k == Orbit::CELL1)
+		for (Orbit x : {Orbit::ALPHA0, Orbit::IG_EDGE, Orbit::PHI2})
+			r[n++] = x;
+	for (Orbit x : same_dimension_orbits(o))
+		if (x != Orbit::NB_ORBITS)
+			r[n++] = x;
+	r[n] = o;
+	return r;
+}
+
+/// The factory of CellAttribute<T, X>; nullptr for NB_ORBITS.
+template <typename T, Orbit X>
+constexpr AttributeContainer::Factory<T> cell_attribute_factory()
+{
+	if constexpr (X == Orbit::NB_ORBITS)
+		return nullptr;
+	else
+		return &CellAttribute<T, X>::make;
+}
+
+} // namespace detail
 
 template <typename T, Orbit O>
 std::shared_ptr<AttributeBase> CellAttribute<T, O>::clone_of_kind(AttributeContainer& to) const
 {
-	// a container of the same cell kind in the other model of surfaces (the
-	// CMap2 <-> GMap2 conversions) gets an attribute typed by its own orbit
-	constexpr Orbit P = surface_counterpart(O);
-	if constexpr (P != O)
-		if (to.orbit() == P)
-			return to.add_attribute<T, CellAttribute<T, P>>(this->name(), this->default_value());
-	// and so do a graph's vertices and edges, from the vertices and edges of
-	// any map (to_graph: its 1-skeleton), and an incidence graph's vertices
-	// and edges, from and to those of a 2-map (to_incidence_graph, to_cmap2)
-	constexpr Orbit K = is_dimension_orbit(O)   ? O
-						: O == Orbit::IG_VERTEX ? Orbit::CELL0
-						: O == Orbit::IG_EDGE   ? Orbit::CELL1
-												: dimension_counterpart(O);
-	if constexpr (K == Orbit::CELL0)
+	// the factories of the candidate classes, then one call: a call per
+	// candidate would compile the whole of add_attribute each time, in every
+	// attribute class
+	constexpr std::array<Orbit, 9> orbits = detail::clone_orbits(O);
+	static constexpr std::array<AttributeContainer::Factory<T>, 9> factories =
+		[]<std::size_t... I>(std::index_sequence<I...>)
 	{
-		if (to.orbit() == Orbit::ALPHA1)
-			return to.add_attribute<T, CellAttribute<T, Orbit::ALPHA1>>(this->name(), this->default_value());
-		if (to.orbit() == Orbit::IG_VERTEX)
-			return to.add_attribute<T, CellAttribute<T, Orbit::IG_VERTEX>>(this->name(), this->default_value());
-		if (to.orbit() == Orbit::PHI21)
-			return to.add_attribute<T, CellAttribute<T, Orbit::PHI21>>(this->name(), this->default_value());
+		return std::array<AttributeContainer::Factory<T>, 9>{
+			detail::cell_attribute_factory<T, detail::clone_orbits(O)[I]>()...};
 	}
-	if constexpr (K == Orbit::CELL1)
-	{
-		if (to.orbit() == Orbit::ALPHA0)
-			return to.add_attribute<T, CellAttribute<T, Orbit::ALPHA0>>(this->name(), this->default_value());
-		if (to.orbit() == Orbit::IG_EDGE)
-			return to.add_attribute<T, CellAttribute<T, Orbit::IG_EDGE>>(this->name(), this->default_value());
-		if (to.orbit() == Orbit::PHI2)
-			return to.add_attribute<T, CellAttribute<T, Orbit::PHI2>>(this->name(), this->default_value());
-	}
-	// and a container of the cells of the same dimension in a map of any
-	// dimension, or in a map of dimension 2 or 3 (to_nmap, to_fixed_map)
-	// (a fold over the few orbits concerned: one over every orbit would
-	// instantiate a lambda per orbit in every attribute class)
-	constexpr std::array<Orbit, 4> same_kind = same_dimension_orbits(O);
-	std::shared_ptr<AttributeBase> same_dimension;
-	[&]<std::size_t... I>(std::index_sequence<I...>)
-	{
-		(
-			[&] {
-				constexpr Orbit X = same_kind[I];
-				if constexpr (X != Orbit::NB_ORBITS)
-					if (to.orbit() == X)
-						same_dimension = to.add_attribute<T, CellAttribute<T, X>>(this->name(), this->default_value());
-			}(),
-			...);
-	}
-	(std::make_index_sequence<same_kind.size()>{});
-	if (same_dimension)
-		return same_dimension;
-	assert(to.orbit() == O && "clone into a container of another orbit");
-	return to.add_attribute<T, CellAttribute<T, O>>(this->name(), this->default_value());
+	(std::make_index_sequence<9>{});
+	for (std::size_t i = 0; i < orbits.size(); ++i)
+		if (to.orbit() == orbits[i])
+			return to.add_attribute_made_by<T>(factories[i], this->name(), this->default_value());
+	assert(false && "clone into a container of another orbit");
+	return to.add_attribute_made_by<T>(&CellAttribute<T, O>::make, this->name(), this->default_value());
 }
 
 template <typename T>
@@ -818,26 +859,30 @@ private:
 	Value* run_end_ = nullptr;
 };
 
-// A removed attribute (no container) iterates over nothing.
+// A removed attribute (no container) iterates over nothing. Inline, so that
+// the extern template declarations of attribute_instances.h, which keep the
+// other members out of line, leave range-for loops inlined.
 template <typename T>
-typename AttributeArray<T>::iterator AttributeArray<T>::begin()
+inline typename AttributeArray<T>::iterator AttributeArray<T>::begin()
 {
 	return container_ ? iterator(this, container_->first_index(), container_->end_index()) : iterator();
 }
 template <typename T>
-typename AttributeArray<T>::iterator AttributeArray<T>::end()
+inline typename AttributeArray<T>::iterator AttributeArray<T>::end()
 {
 	return container_ ? iterator(this, container_->end_index(), container_->end_index()) : iterator();
 }
 template <typename T>
-typename AttributeArray<T>::const_iterator AttributeArray<T>::begin() const
+inline typename AttributeArray<T>::const_iterator AttributeArray<T>::begin() const
 {
 	return container_ ? const_iterator(this, container_->first_index(), container_->end_index()) : const_iterator();
 }
 template <typename T>
-typename AttributeArray<T>::const_iterator AttributeArray<T>::end() const
+inline typename AttributeArray<T>::const_iterator AttributeArray<T>::end() const
 {
 	return container_ ? const_iterator(this, container_->end_index(), container_->end_index()) : const_iterator();
 }
 
 } // namespace cgogn
+
+#include <cgogn/core/attributes/attribute_instances.h>

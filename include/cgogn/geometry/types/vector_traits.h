@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cgogn/core/attributes/attribute_container.h>
+
 #include <Eigen/Core>
 
 namespace cgogn
@@ -24,3 +26,9 @@ using cgogn::Vec4;
 } // namespace geometry
 
 } // namespace cgogn
+
+// their attribute classes are compiled in the geometry library
+// (src/geometry/vector_attributes.cpp, see attribute_instances.h)
+CGOGN_ATTRIBUTE_CLASSES(extern, cgogn::Vec2)
+CGOGN_ATTRIBUTE_CLASSES(extern, cgogn::Vec3)
+CGOGN_ATTRIBUTE_CLASSES(extern, cgogn::Vec4)
