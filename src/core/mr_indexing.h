@@ -14,6 +14,25 @@
 namespace cgogn::detail
 {
 
+/// The level at which dart d was made. O(1).
+template <typename S>
+uint32 mr_dart_level(const S& s, Dart d)
+{
+	return (*s.level)[d.index];
+}
+/// Whether the cells of slot `slot` have lines. O(1).
+template <typename S>
+bool mr_indexed(const S& s, uint32 slot)
+{
+	return s.cells[slot].index != nullptr;
+}
+/// The per-dart line index of slot `slot` (which must be indexed). O(1).
+template <typename S>
+AttributeArray<uint32>& mr_index(S& s, uint32 slot)
+{
+	return *s.cells[slot].index;
+}
+
 /// The cells of a slot at level l, found from the darts (not from the
 /// lines): f(first dart) once per cell, boundary cells skipped. O(number of
 /// darts of level <= l x cost of a level step).

@@ -24,21 +24,9 @@ using Face = MRMap2::Face;
 using Edge = MRMap2::Edge;
 using Vertex = MRMap2::Vertex;
 
-uint32 level_of(const MRState2& s, Dart d)
-{
-	return (*s.level)[d.index];
-}
 uint8 id_of(const MRState2& s, Dart d)
 {
 	return (*s.edge_id)[d.index];
-}
-bool indexed(const MRState2& s, uint32 slot)
-{
-	return s.cells[slot].index != nullptr;
-}
-AttributeArray<uint32>& index(MRState2& s, uint32 slot)
-{
-	return *s.cells[slot].index;
 }
 
 /// A dart of face f, read at the level of v, made at or before level k.
@@ -46,7 +34,7 @@ Dart dart_up_to(const MRLevelView2& v, Dart f, uint32 k)
 {
 	Dart r;
 	foreach_dart_of_orbit(v, Face(f), [&](Dart d) {
-		if (level_of(v.state(), d) > k)
+		if (detail::mr_dart_level(v.state(), d) > k)
 			return true;
 		r = d;
 		return false;
@@ -67,7 +55,7 @@ std::vector<Dart> face_darts(const MRState2& s, uint32 l, Dart f)
 Dart piece_after_midpoint(const MRState2& s, uint32 l, Dart x)
 {
 	Dart it = detail::mr_phi1(s, l + 1, x);
-	while (id_of(s, it) != id_of(s, x) || level_of(s, it) != l + 1)
+	while (id_of(s, it) != id_of(s, x) || detail::mr_dart_level(s, it) != l + 1)
 		it = detail::mr_phi1(s, l + 1, detail::mr_phi2(s, l + 1, it));
 	return it;
 }
@@ -84,9 +72,9 @@ struct Cut
 void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, const std::vector<Cut>& cuts,
 					   const std::vector<Dart>& created, uint32 face_line)
 {
-	if (indexed(s, 0))
+	if (detail::mr_indexed(s, 0))
 	{
-		AttributeArray<uint32>& idx = index(s, 0);
+		AttributeArray<uint32>& idx = detail::mr_index(s, 0);
 		for (Dart x : corners)
 			detail::mr_ensure_vertex_line(s, x, l);
 		std::vector<double> weights;
@@ -115,9 +103,9 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 			detail::mr_write_line(s, 0, y, line);
 		}
 	}
-	if (indexed(s, 1))
+	if (detail::mr_indexed(s, 1))
 	{
-		AttributeArray<uint32>& idx = index(s, 1);
+		AttributeArray<uint32>& idx = detail::mr_index(s, 1);
 		for (const Cut& cut : cuts)
 		{
 			detail::mr_write_line(s, 1, cut.x, detail::mr_add_line(s, 1, l, cut.x, cut.parent));
@@ -127,9 +115,9 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 			if (idx[y.index] == INVALID_INDEX) // an inner edge
 				detail::mr_write_line(s, 1, y, detail::mr_add_line(s, 1, l, y, INVALID_INDEX));
 	}
-	if (indexed(s, 2))
+	if (detail::mr_indexed(s, 2))
 	{
-		AttributeArray<uint32>& idx = index(s, 2);
+		AttributeArray<uint32>& idx = detail::mr_index(s, 2);
 		// the new darts on the neighbours' side read their faces' lines
 		for (const Cut& cut : cuts)
 		{
@@ -148,12 +136,12 @@ void index_subdivision(MRState2& s, uint32 l, const std::vector<Dart>& corners, 
 		for (Dart x : corners)
 			child(x);
 		for (Dart y : created)
-			if (level_of(s, detail::mr_phi2(s, l, y)) == l)
+			if (detail::mr_dart_level(s, detail::mr_phi2(s, l, y)) == l)
 				child(y);
 	}
-	if (indexed(s, 3))
+	if (detail::mr_indexed(s, 3))
 	{
-		AttributeArray<uint32>& idx = index(s, 3);
+		AttributeArray<uint32>& idx = detail::mr_index(s, 3);
 		for (Dart y : created)
 			idx[y.index] = idx[corners.front().index];
 	}
@@ -189,15 +177,15 @@ void subdivide_leaf(MRState2& s, Dart d, uint32 k, Refinement r, bool balance)
 	if (l >= s.darts_per_level.size())
 		s.darts_per_level.push_back(0);
 	const std::vector<Dart> corners = face_darts(s, k, d);
-	const uint32 face_line = indexed(s, 2) ? detail::mr_line_of(s, k, 2, d) : INVALID_INDEX;
+	const uint32 face_line = detail::mr_indexed(s, 2) ? detail::mr_line_of(s, k, 2, d) : INVALID_INDEX;
 	detail::MRNewDarts labels(s, uint8(l), true);
 	std::vector<Cut> cuts;
 	for (Dart x : corners)
 	{
 		const Dart y = detail::mr_phi1(s, l, x);
-		if (level_of(s, y) == l && id_of(s, y) == id_of(s, x))
+		if (detail::mr_dart_level(s, y) == l && id_of(s, y) == id_of(s, x))
 			continue; // a neighbour cut it already
-		const uint32 parent = indexed(s, 1) ? detail::mr_line_of(s, k, 1, x) : INVALID_INDEX;
+		const uint32 parent = detail::mr_indexed(s, 1) ? detail::mr_line_of(s, k, 1, x) : INVALID_INDEX;
 		const Dart n1 = cut_edge(s.map, CMap2::Edge(x), false).dart;
 		labels.label(n1, id_of(s, x));
 		labels.label(phi2(s.map, x), id_of(s, x));
@@ -219,14 +207,14 @@ void subdivide_leaf(MRState2& s, Dart d, uint32 k, Refinement r, bool balance)
 uint32 edge_level(const MRLevelView2& v, MRMap2::Edge e)
 {
 	const MRState2& s = v.state();
-	return std::max(level_of(s, e.dart), level_of(s, detail::mr_phi2(s, v.level(), e.dart)));
+	return std::max(detail::mr_dart_level(s, e.dart), detail::mr_dart_level(s, detail::mr_phi2(s, v.level(), e.dart)));
 }
 
 uint32 face_level(const MRLevelView2& v, MRMap2::Face f)
 {
 	uint32 a = 255, b = 255; // the two smallest levels
 	foreach_dart_of_orbit(v, f, [&](Dart d) {
-		const uint32 x = level_of(v.state(), d);
+		const uint32 x = detail::mr_dart_level(v.state(), d);
 		if (x < a)
 		{
 			b = a;
@@ -255,7 +243,7 @@ bool face_is_subdivided(const MRLevelView2& v, MRMap2::Face f)
 	if (detail::mr_is_finest(s, l) || face_level(v, f) < l)
 		return false;
 	const Dart x = detail::mr_phi1(s, l + 1, f.dart);
-	return level_of(s, x) == l + 1 && id_of(s, x) != id_of(s, f.dart);
+	return detail::mr_dart_level(s, x) == l + 1 && id_of(s, x) != id_of(s, f.dart);
 }
 
 void subdivide_face(MRMap2& m, MRMap2::Face f, Refinement r, bool balance)
@@ -328,33 +316,34 @@ void coarsen_face(MRMap2& m, MRMap2::Face f)
 	// the lines of what goes, read while its darts are there
 	std::vector<uint32> vertex_lines, edge_lines, face_lines;
 	uint32 face_line = INVALID_INDEX;
-	if (indexed(s, 2))
+	if (detail::mr_indexed(s, 2))
 	{
 		for (Dart x : corners)
-			face_lines.push_back(index(s, 2)[x.index]);
+			face_lines.push_back(detail::mr_index(s, 2)[x.index]);
 		if (triangles)
-			face_lines.push_back(index(s, 2)[phi2(s.map, inner[0]).index]);
+			face_lines.push_back(detail::mr_index(s, 2)[phi2(s.map, inner[0]).index]);
 		face_line = (*s.cells[2].down)[face_lines.front()];
 	}
-	if (indexed(s, 1))
+	if (detail::mr_indexed(s, 1))
 	{
 		if (triangles)
 			for (Dart y : inner)
-				edge_lines.push_back(index(s, 1)[y.index]);
+				edge_lines.push_back(detail::mr_index(s, 1)[y.index]);
 		else // every inner edge touches the centre
 			foreach_dart_of_orbit(s.map, CMap2::Vertex(centre),
-								  [&](Dart y) { edge_lines.push_back(index(s, 1)[y.index]); });
+								  [&](Dart y) { edge_lines.push_back(detail::mr_index(s, 1)[y.index]); });
 		for (const Mid& mid : mids)
 			if (mid.removed)
-				edge_lines.insert(edge_lines.end(), {index(s, 1)[mid.x.index], index(s, 1)[mid.piece.index]});
+				edge_lines.insert(edge_lines.end(),
+								  {detail::mr_index(s, 1)[mid.x.index], detail::mr_index(s, 1)[mid.piece.index]});
 	}
-	if (indexed(s, 0))
+	if (detail::mr_indexed(s, 0))
 	{
 		if (!triangles)
-			vertex_lines.push_back(index(s, 0)[centre.index]);
+			vertex_lines.push_back(detail::mr_index(s, 0)[centre.index]);
 		for (const Mid& mid : mids)
 			if (mid.removed)
-				vertex_lines.push_back(index(s, 0)[mid.piece.index]);
+				vertex_lines.push_back(detail::mr_index(s, 0)[mid.piece.index]);
 	}
 
 	// the topology
@@ -382,24 +371,24 @@ void coarsen_face(MRMap2& m, MRMap2::Face f)
 		for (uint32 i : lines)
 			detail::state_of(s.map).cells[orbit_index(o)]->release_line(i);
 	};
-	if (indexed(s, 2))
+	if (detail::mr_indexed(s, 2))
 	{
 		(*s.cells[2].replaced)[face_line] = detail::MR_NOT_REPLACED;
 		detail::mr_write_line(s, 2, corners[0], face_line);
 		release(Orbit::PHI1, face_lines);
 	}
-	if (indexed(s, 1))
+	if (detail::mr_indexed(s, 1))
 	{
 		for (const Mid& mid : mids)
 			if (mid.removed)
 			{
-				const uint32 parent = (*s.cells[1].down)[index(s, 1)[mid.x.index]];
+				const uint32 parent = (*s.cells[1].down)[detail::mr_index(s, 1)[mid.x.index]];
 				(*s.cells[1].replaced)[parent] = detail::MR_NOT_REPLACED;
 				detail::mr_write_line(s, 1, mid.x, parent);
 			}
 		release(Orbit::PHI2, edge_lines);
 	}
-	if (indexed(s, 0))
+	if (detail::mr_indexed(s, 0))
 	{
 		release(Orbit::PHI21, vertex_lines);
 		// a corner keeps a line at level l while a face of level l touches it

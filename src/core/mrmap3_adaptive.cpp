@@ -30,23 +30,11 @@ using Volume = MRMap3::Volume;
 
 constexpr uint32 vertex_slot = 0, edge_slot = 1, face_slot = 2, volume_slot = 3, component_slot = 4;
 
-uint32 level_of(const MRState3& s, Dart d)
-{
-	return (*s.level)[d.index];
-}
-bool indexed(const MRState3& s, uint32 slot)
-{
-	return s.cells[slot].index != nullptr;
-}
-AttributeArray<uint32>& index(MRState3& s, uint32 slot)
-{
-	return *s.cells[slot].index;
-}
 /// The line of the cell of d in slot `slot` at level l, or INVALID_INDEX when
 /// the slot is not indexed.
 uint32 line_or_none(const MRState3& s, uint32 l, uint32 slot, Dart d)
 {
-	return indexed(s, slot) ? detail::mr_line_of(s, l, slot, d) : INVALID_INDEX;
+	return detail::mr_indexed(s, slot) ? detail::mr_line_of(s, l, slot, d) : INVALID_INDEX;
 }
 
 /// The k-th smallest level (k >= 1) of the darts f gives to its callback.
@@ -55,7 +43,7 @@ uint32 kth_smallest_level(const MRState3& s, uint32 k, const FOREACH& foreach)
 {
 	std::array<uint32, 4> smallest{255, 255, 255, 255};
 	foreach ([&](Dart d) {
-		uint32 x = level_of(s, d);
+		uint32 x = detail::mr_dart_level(s, d);
 		for (uint32 i = 0; i < k; ++i)
 			if (x < smallest[i])
 				std::swap(x, smallest[i]);
@@ -69,7 +57,7 @@ Dart dart_up_to(const MRLevelView3& v, Dart w, uint32 k)
 {
 	Dart r;
 	foreach_dart_of_orbit(v, Volume(w), [&](Dart d) {
-		if (level_of(v.state(), d) > k)
+		if (detail::mr_dart_level(v.state(), d) > k)
 			return true;
 		r = d;
 		return false;
@@ -95,7 +83,7 @@ void check_subdividable(const MRState3& s, Dart d, uint32 k)
 		throw std::invalid_argument("subdivide_volume: the volume is not a hexahedron");
 	bool regular = true;
 	foreach_dart_of_orbit(s.map, CMap3::Volume(d), [&](Dart x) {
-		regular = level_of(s, x) <= k + 1;
+		regular = detail::mr_dart_level(s, x) <= k + 1;
 		return regular;
 	});
 	if (!regular)
@@ -140,7 +128,7 @@ struct Subdivision
 /// the cell.
 void give_line(MRState3& s, uint32 slot, uint32 l, Dart y)
 {
-	if (index(s, slot)[y.index] != INVALID_INDEX)
+	if (detail::mr_index(s, slot)[y.index] != INVALID_INDEX)
 		return;
 	uint32 line = line_held(s, slot, y);
 	if (line == INVALID_INDEX)
@@ -152,7 +140,7 @@ void give_line(MRState3& s, uint32 slot, uint32 l, Dart y)
 /// subdivide_volume).
 void index_subdivision(MRState3& s, uint32 l, const Subdivision& sub, const std::vector<Dart>& created)
 {
-	if (indexed(s, vertex_slot))
+	if (detail::mr_indexed(s, vertex_slot))
 	{
 		for (Dart c : sub.corners)
 			detail::mr_ensure_vertex_line(s, c, l);
@@ -160,7 +148,7 @@ void index_subdivision(MRState3& s, uint32 l, const Subdivision& sub, const std:
 		std::vector<double> weights;
 		for (Dart y : created)
 		{
-			if (index(s, vertex_slot)[y.index] != INVALID_INDEX)
+			if (detail::mr_index(s, vertex_slot)[y.index] != INVALID_INDEX)
 				continue;
 			uint32 line = line_held(s, vertex_slot, y);
 			if (line == INVALID_INDEX)
@@ -177,7 +165,7 @@ void index_subdivision(MRState3& s, uint32 l, const Subdivision& sub, const std:
 			detail::mr_write_line(s, vertex_slot, y, line);
 		}
 	}
-	if (indexed(s, edge_slot))
+	if (detail::mr_indexed(s, edge_slot))
 	{
 		for (const Subdivision::Cut& cut : sub.cuts)
 		{
@@ -187,7 +175,7 @@ void index_subdivision(MRState3& s, uint32 l, const Subdivision& sub, const std:
 		for (Dart y : created)
 			give_line(s, edge_slot, l, y);
 	}
-	if (indexed(s, face_slot))
+	if (detail::mr_indexed(s, face_slot))
 	{
 		for (const Subdivision::Split& split : sub.splits)
 			for (Dart c : split.corners)
@@ -195,20 +183,21 @@ void index_subdivision(MRState3& s, uint32 l, const Subdivision& sub, const std:
 		for (Dart y : created)
 			give_line(s, face_slot, l, y);
 	}
-	if (indexed(s, volume_slot))
+	if (detail::mr_indexed(s, volume_slot))
 	{
 		// the 8 children refine the hexahedron's line; new darts of the
 		// volumes around read theirs
 		for (Dart a : sub.volume_darts)
-			if (index(s, volume_slot)[a.index] == sub.volume_line)
+			if (detail::mr_index(s, volume_slot)[a.index] == sub.volume_line)
 				detail::mr_write_line(s, volume_slot, a, detail::mr_add_line(s, volume_slot, l, a, sub.volume_line));
 		for (Dart y : created)
 			if (!is_boundary(s.map, y))
 				give_line(s, volume_slot, l, y);
 	}
-	if (indexed(s, component_slot))
+	if (detail::mr_indexed(s, component_slot))
 		for (Dart y : created)
-			index(s, component_slot)[y.index] = index(s, component_slot)[sub.volume_darts.front().index];
+			detail::mr_index(s, component_slot)[y.index] =
+				detail::mr_index(s, component_slot)[sub.volume_darts.front().index];
 }
 
 /// Subdivides the leaf hexahedron of dart d (made at or before k, the
@@ -356,7 +345,7 @@ bool can_coarsen_volume(const MRMap3& m, MRMap3::Volume w)
 	bool ok = true;
 	foreach_dart_of_orbit(v, w, [&](Dart a) {
 		foreach_dart_of_orbit(s.map, CMap3::Volume(a), [&](Dart x) {
-			ok = level_of(s, x) <= l;
+			ok = detail::mr_dart_level(s, x) <= l;
 			return ok;
 		});
 		return ok;
@@ -434,14 +423,14 @@ void coarsen_volume(MRMap3& m, MRMap3::Volume w)
 			}
 		});
 	});
-	assert(std::all_of(c.removed.begin(), c.removed.end(), [&](Dart x) { return level_of(s, x) == l; }));
+	assert(std::all_of(c.removed.begin(), c.removed.end(), [&](Dart x) { return detail::mr_dart_level(s, x) == l; }));
 
 	// the lines of what goes, read while its darts are there
 	for (uint32 slot = vertex_slot; slot <= volume_slot; ++slot)
 	{
-		if (!indexed(s, slot))
+		if (!detail::mr_indexed(s, slot))
 			continue;
-		const AttributeArray<uint32>& idx = index(s, slot);
+		const AttributeArray<uint32>& idx = detail::mr_index(s, slot);
 		const auto release = [&](uint32 i) {
 			std::vector<uint32>& r = c.released[slot];
 			if (i != INVALID_INDEX && std::find(r.begin(), r.end(), i) == r.end())
@@ -508,7 +497,7 @@ void coarsen_volume(MRMap3& m, MRMap3::Volume w)
 		(*s.cells[r.slot].replaced)[r.line] = detail::MR_NOT_REPLACED;
 		detail::mr_write_line(s, r.slot, r.d, r.line);
 	}
-	if (indexed(s, vertex_slot))
+	if (detail::mr_indexed(s, vertex_slot))
 	{
 		// a corner keeps a line at level l while a volume of level l touches it
 		std::vector<Dart> corners;
@@ -533,7 +522,7 @@ void coarsen_volume(MRMap3& m, MRMap3::Volume w)
 uint32 edge_level(const MRLevelView3& v, MRMap3::Edge e)
 {
 	const MRState3& s = v.state();
-	return std::max(level_of(s, e.dart), level_of(s, detail::mr_phi2(s, v.level(), e.dart)));
+	return std::max(detail::mr_dart_level(s, e.dart), detail::mr_dart_level(s, detail::mr_phi2(s, v.level(), e.dart)));
 }
 
 uint32 face_level(const MRLevelView3& v, MRMap3::Face f)
@@ -564,7 +553,7 @@ bool face_is_subdivided(const MRLevelView3& v, MRMap3::Face f)
 		return false;
 	// at the midpoint of f.dart's edge, phi1 of level l + 1 turns into the face
 	const Dart x = detail::mr_phi1(s, l + 1, f.dart);
-	return level_of(s, x) == l + 1 && (*s.edge_id)[x.index] != (*s.edge_id)[f.dart.index];
+	return detail::mr_dart_level(s, x) == l + 1 && (*s.edge_id)[x.index] != (*s.edge_id)[f.dart.index];
 }
 
 bool volume_is_subdivided(const MRLevelView3& v, MRMap3::Volume w)
