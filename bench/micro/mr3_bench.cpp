@@ -11,6 +11,9 @@
 //   next to the same walk on the level's extract_level copy;
 // - add_level (positions by the attribute rules: the hexahedral scheme's),
 //   next to one hex_subdivision step of the flat level 1;
+// - a TetraOcta add_level on a grid of 12 x 12 x 12 cubes cut in 6
+//   tetrahedra each (10,368 tetrahedra), next to one tet_subdivision step
+//   of the same mesh (which also cuts each inner octahedron in 4);
 // - adaptive refinement: the 4,096 hexahedra of a 16^3 grid subdivided one
 //   by one with subdivide_volume (the rate in hexahedra per second).
 #include <cgogn/cgogn.h>
@@ -182,6 +185,46 @@ void BM_HexSubdivisionStepFlat(benchmark::State& state)
 	}
 }
 BENCHMARK(BM_HexSubdivisionStepFlat)->Unit(benchmark::kMillisecond);
+
+CMap3 tet_grid(uint32 n)
+{
+	CMap3 m;
+	const VolumeSoup s = tet_grid_soup(n, n, n);
+	const BuildReport r = build_volume(m, s);
+	auto pos = add_attribute<Vec3, CMap3::Vertex>(m, "position");
+	for (uint32 i = 0; i < s.nb_vertices; ++i)
+		(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+	return m;
+}
+
+void BM_AddLevelTetraOctaMR(benchmark::State& state)
+{
+	// level 1 made again from level 0, its positions included
+	static MRMap3 m(tet_grid(12));
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		if (max_level(m) > 0)
+			remove_finest_level(m);
+		state.ResumeTiming();
+		add_level(m, Refinement::TetraOcta);
+	}
+	state.counters["tetrahedra"] = double(nb_cells<MRMap3::Volume>(level_view(m, 0)));
+}
+BENCHMARK(BM_AddLevelTetraOctaMR)->Unit(benchmark::kMillisecond);
+
+void BM_TetSubdivisionStepFlat(benchmark::State& state)
+{
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		CMap3 m = tet_grid(12);
+		auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+		state.ResumeTiming();
+		modeling::tet_subdivision(m, *pos);
+	}
+}
+BENCHMARK(BM_TetSubdivisionStepFlat)->Unit(benchmark::kMillisecond);
 
 void BM_AdaptiveRefinement3(benchmark::State& state)
 {

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The multiresolution 3-map: hexahedral levels, the positions, faces and
-// hexahedra of a level as NumPy arrays (rows in the level's vertex order),
-// adaptive refinement and coarsening of chosen hexahedra, extraction of a
-// level as a CMap3.
+// The multiresolution 3-map: hexahedral and tetrahedral-octahedral levels,
+// the positions and cells of a level as NumPy arrays (rows in the level's
+// vertex order), adaptive refinement and coarsening of chosen hexahedra,
+// extraction of a level as a CMap3.
 #include <cgogn/io/map_file.h>
 
 #include "py_map.h"
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -64,6 +65,51 @@ struct PyMRMap3
 		foreach_cell(level(l), [&](MRMap3::Volume x) { r.push_back(x); });
 		return r;
 	}
+	/// The (n, k) array of the vertex rows of the volumes of level l with k
+	/// corners (4: tetrahedra, 6: octahedra), oriented by the positions: a
+	/// tetrahedron's fourth corner on the side of the normal of its first
+	/// three; an octahedron's first three corners counterclockwise seen from
+	/// outside, column j + 3 opposite to column j.
+	py::array_t<uint32> corner_rows(uint32 l, uint32 k) const
+	{
+		const MRLevelView3 v = level(l);
+		const std::vector<uint32> row = vertices(l).second;
+		std::vector<std::array<uint32, 6>> cells;
+		for (MRMap3::Volume w : volumes(l))
+		{
+			uint32 faces = 0;
+			foreach_incident_face(v, w, [&](MRMap3::Face) { ++faces; });
+			if (faces != 2 * k - 4)
+				continue;
+			const Dart d = w.dart;
+			const auto opposite = [&](Dart x) { return phi_1(v, phi2(v, x)); };
+			std::array<Dart, 6> c{d, phi1(v, d), phi_1(v, d)};
+			if (k == 4)
+				c[3] = opposite(d);
+			else
+				c = {c[0], c[1], c[2], opposite(c[1]), opposite(c[2]), opposite(c[0])};
+			const auto p = [&](Dart x) { return value<Vec3>(v, *pos, MRVertex3(x)); };
+			const Vec3 normal = (p(c[1]) - p(c[0])).cross(p(c[2]) - p(c[0]));
+			// > 0: the fourth corner on the normal's side; the normal outwards
+			const double side = k == 4 ? normal.dot(p(c[3]) - p(c[0]))
+									   : -normal.dot(p(c[3]) + p(c[4]) + p(c[5]) - p(c[0]) - p(c[1]) - p(c[2]));
+			if (side < 0)
+			{
+				std::swap(c[1], c[2]);
+				std::swap(c[4], c[5]);
+			}
+			std::array<uint32, 6> r{};
+			for (uint32 j = 0; j < k; ++j)
+				r[j] = row[index_of(v, MRVertex3(c[j]))];
+			cells.push_back(r);
+		}
+		py::array_t<uint32> out({py::ssize_t(cells.size()), py::ssize_t(k)});
+		auto a = out.mutable_unchecked<2>();
+		for (std::size_t i = 0; i < cells.size(); ++i)
+			for (uint32 j = 0; j < k; ++j)
+				a(py::ssize_t(i), py::ssize_t(j)) = cells[i][j];
+		return out;
+	}
 	/// The volumes of level l of the given rows; IndexError for a row out of range.
 	std::vector<MRMap3::Volume> chosen(uint32 l, const std::vector<uint32>& rows) const
 	{
@@ -91,11 +137,13 @@ py::object mrmap3_from_bytes(std::string_view bytes, const std::string& name)
 void bind_mrmap3(py::module_& mod)
 {
 	using W = PyMRMap3;
-	py::class_<W> cls(mod, "MRMap3",
-					  "A multiresolution hexahedral mesh: level 0 and its hexahedral refinements, stored as the finest "
-					  "map with a level, an edge id and a face id per dart. Vertices have a position at every level "
-					  "(a new vertex starts at the centroid of the edge, face or hexahedron it is the middle of); "
-					  "arrays of a level list its vertices in the order of positions(level).");
+	py::class_<W> cls(
+		mod, "MRMap3",
+		"A multiresolution volume mesh: level 0 and its hexahedral or tetrahedral-octahedral refinements, "
+		"stored as the finest map with a level, an edge id and a face id per dart. Vertices have a "
+		"position at every level (a new vertex starts at the centroid of the edge, face or volume it "
+		"is the middle of); "
+		"arrays of a level list its vertices in the order of positions(level).");
 	bind_hierarchy_file_methods(cls);
 	cls.def(py::init([](const VolumeMesh& s) {
 				CMap3 copy;
@@ -117,13 +165,21 @@ void bind_mrmap3(py::module_& mod)
 		.def(
 			"add_level",
 			[](W& w, const std::string& r) {
-				if (r != "hexahedral")
-					throw py::value_error("refinement must be 'hexahedral', not '" + r + "'");
-				add_level(w.m, Refinement::Hexahedral);
+				if (r != "hexahedral" && r != "tetra-octa")
+					throw py::value_error("refinement must be 'hexahedral' or 'tetra-octa', not '" + r + "'");
+				try
+				{
+					add_level(w.m, r == "hexahedral" ? Refinement::Hexahedral : Refinement::TetraOcta);
+				}
+				catch (const std::invalid_argument& e)
+				{
+					throw py::value_error(e.what());
+				}
 			},
 			py::arg("refinement") = "hexahedral",
-			"Cuts every hexahedron of the finest level into 8 ('hexahedral'); ValueError when a volume is not "
-			"a hexahedron. O(darts).")
+			"Refines every volume of the finest level: 'hexahedral' cuts every hexahedron into 8; 'tetra-octa' "
+			"cuts every tetrahedron into 4 tetrahedra and an octahedron and every octahedron into 6 octahedra "
+			"and 8 tetrahedra. ValueError, the map unchanged, when a volume does not fit the pattern. O(darts).")
 		.def(
 			"remove_finest_level", [](W& w) { remove_finest_level(w.m); }, "Undoes the last level. O(darts).")
 		.def(
@@ -182,6 +238,12 @@ void bind_mrmap3(py::module_& mod)
 						d = x;
 						return dart_level(w.m, x) > k;
 					});
+					uint32 nb = 0;
+					foreach_dart_of_orbit(vk, MRMap3::Volume(d), [&](Dart) { ++nb; });
+					if (nb != 24 || codegree(vk, MRMap3::Face(d)) != 4)
+						throw py::value_error("the volume of row " + std::to_string(i) + " of level " +
+											  std::to_string(l) +
+											  " is not a hexahedron (see tetrahedra() and octahedra())");
 					for (py::ssize_t j = 0; j < 4; ++j, d = phi1(vk, d))
 					{
 						const Dart up = phi1(vk, phi1(vk, phi2(vk, d)));
@@ -194,7 +256,17 @@ void bind_mrmap3(py::module_& mod)
 			py::arg("level"),
 			"(W, 8) uint32 array of the vertex rows of the hexahedra of a level: the corners of one face in "
 			"order, then the opposite corners, column j + 4 joined to column j by an edge. A hexahedron of a "
-			"coarser level (adaptive refinement) gives its own 8 corners.")
+			"coarser level (adaptive refinement) gives its own 8 corners. ValueError when a volume of the level "
+			"is not a hexahedron.")
+		.def(
+			"tetrahedra", [](const W& w, uint32 l) { return w.corner_rows(l, 4); }, py::arg("level"),
+			"(T, 4) uint32 array of the vertex rows of the tetrahedra of a level, in traversal order, the fourth "
+			"corner on the side of the normal of the first three (positively oriented).")
+		.def(
+			"octahedra", [](const W& w, uint32 l) { return w.corner_rows(l, 6); }, py::arg("level"),
+			"(O, 6) uint32 array of the vertex rows of the octahedra of a level, in traversal order: the "
+			"corners of one face counterclockwise seen from outside, then the opposite corners, column j + 3 "
+			"opposite to column j.")
 		.def(
 			"volume_levels",
 			[](const W& w, uint32 l) {

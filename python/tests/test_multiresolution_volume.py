@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
-"""Multiresolution hexahedral meshes from Python: levels and their counts,
-positions and hexahedra of a level as arrays, extraction."""
+"""Multiresolution volume meshes from Python: hexahedral and
+tetrahedral-octahedral levels and their counts, positions and cells of a
+level as arrays, extraction, adaptive refinement, files."""
 import itertools
 
 import numpy as np
@@ -136,3 +137,37 @@ def test_files_and_pickling(tmp_path):
         assert r.to_bytes() == m.to_bytes()
     with pytest.raises(ValueError):
         m.save(str(tmp_path / "h.off"))
+
+
+def test_tetra_octa_levels():
+    # a regular tetrahedron: every level is made of regular tetrahedra and
+    # octahedra with edges half as long as the level before
+    points = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float)
+    m = cgogn.MRMap3(cgogn.CMap3.from_arrays(points, np.array([[0, 1, 2, 3]])))
+    m.add_level("tetra-octa")
+    m.add_level("tetra-octa")
+    assert m.check_integrity()["ok"]
+    assert [m.counts(k) for k in range(3)] == [[4, 6, 4, 1], [10, 24, 20, 5], [35, 120, 120, 34]]
+    for k, (nb_tets, nb_octas) in enumerate([(1, 0), (4, 1), (24, 10)]):
+        p = m.positions(k)
+        edge = 2 * np.sqrt(2) / 2**k
+        tets, octas = m.tetrahedra(k), m.octahedra(k)
+        assert tets.shape == (nb_tets, 4) and octas.shape == (nb_octas, 6)
+        for row in tets:
+            a, b, c, d = p[row]
+            assert np.allclose([np.linalg.norm(x - y) for x, y in itertools.combinations(p[row], 2)], edge)
+            assert np.linalg.det(np.array([b - a, c - a, d - a])) > 0
+        for row in octas:
+            q = p[row]
+            # opposite corners a diagonal apart, the others an edge apart
+            for i, j in itertools.combinations(range(6), 2):
+                expected = edge * np.sqrt(2) if j == i + 3 else edge
+                assert np.isclose(np.linalg.norm(q[i] - q[j]), expected)
+            outward = np.cross(q[1] - q[0], q[2] - q[0])
+            assert np.dot(outward, q[:3].mean(axis=0) - q.mean(axis=0)) > 0
+    with pytest.raises(ValueError):
+        m.hexahedra(1)
+    cube = cgogn.MRMap3(unit_cube())
+    with pytest.raises(ValueError):
+        cube.add_level("tetra-octa")
+    assert cube.max_level == 0 and cube.check_integrity()["ok"]

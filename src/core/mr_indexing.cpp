@@ -56,6 +56,50 @@ Dart old_dart_of_sibling(const MRState2& s, uint32 l, Dart d)
 	return Dart();
 }
 
+/// For a face or volume of level l without a dart of level l - 1 (the middle
+/// triangle of a triangle cut in 4, the middle octahedron of a tetrahedron,
+/// a face tetrahedron of an octahedron): a dart of level l - 1 of a cell of
+/// level l next to it in the same cell of level l - 1. A face's neighbours
+/// are the pieces of its face across its edges (the faces around an edge
+/// with its face id, see mr_phi2_in_face); a volume's are the volumes across
+/// its faces (a middle cell touches only middle cells across the faces of
+/// its parent, and its siblings across the others). INVALID when none.
+/// O(size of the cell x size of a neighbour).
+Dart old_dart_of_sibling(const MRState3& s, uint32 slot, uint32 l, Dart d)
+{
+	using D = MRDim<MRState3>;
+	const MRLevelView3 v(s, l);
+	const auto level = s.level->view();
+	const auto face_id = s.face_id->view();
+	const auto old_of = [&](auto cell) {
+		Dart found;
+		foreach_dart_of_orbit(v, cell, [&](Dart x) {
+			if (level[x.index] < l)
+				found = x;
+			return !found.is_valid();
+		});
+		return found;
+	};
+	Dart found;
+	if (slot == D::face_slot)
+		foreach_dart_of_orbit(v, MRMap3::Face2(d), [&](Dart x) {
+			Dart y = mr_phi2(s, l, x);
+			for (uint32 steps = 0; face_id[y.index] != face_id[x.index] && steps < 256; ++steps)
+				y = mr_phi2(s, l, mr_phi3(s, l, y));
+			if (face_id[y.index] == face_id[x.index])
+				found = old_of(MRMap3::Face2(y));
+			return !found.is_valid();
+		});
+	else if (slot == D::volume_slot)
+		foreach_dart_of_orbit(v, MRMap3::Volume(d), [&](Dart x) {
+			const Dart y = mr_phi3(s, l, x);
+			if (!is_boundary(s.map, y))
+				found = old_of(MRMap3::Volume(y));
+			return !found.is_valid();
+		});
+	return found;
+}
+
 } // namespace
 
 std::vector<uint32> mr_vertex_parents(const MRState2& s, uint32 l, Dart v)
@@ -149,9 +193,14 @@ std::vector<uint32> mr_vertex_parents(const MRState3& s, uint32 l, Dart v)
 		corners_of(MRMap3::Face(old));
 		return parents;
 	}
-	foreach_dart_of_orbit(here, MRMap3::Volume(v), [&](Dart x) {
-		if (level[x.index] < l)
-			old = x;
+	// a volume around v holding an old corner (an octahedron's centre is
+	// also a corner of tetrahedra made of new darts only)
+	foreach_dart_of_orbit(here, MRMap3::Vertex(v), [&](Dart d) {
+		foreach_dart_of_orbit(here, MRMap3::Volume(d), [&](Dart x) {
+			if (level[x.index] < l)
+				old = x;
+			return !old.is_valid();
+		});
 		return !old.is_valid();
 	});
 	if (old.is_valid())
@@ -210,8 +259,12 @@ void mr_index_cells_at(S& s, uint32 slot, uint32 l)
 		else
 		{
 			if constexpr (std::is_same_v<S, MRState2>)
+			{
 				if (slot == D::face_slot && !old.is_valid())
 					old = old_dart_of_sibling(s, l, d);
+			}
+			else if (l > 0 && !old.is_valid() && (slot == D::face_slot || slot == D::volume_slot))
+				old = old_dart_of_sibling(s, slot, l, d);
 			const uint32 below = old.is_valid() ? mr_line_of(s, l - 1, slot, old) : INVALID_INDEX;
 			uint32 nb_below = 0;
 			if (old.is_valid())

@@ -9,6 +9,7 @@
 
 #include "mr_indexing.h"
 #include "mrmap3_refine.h"
+#include "mrmap3_tetra_octa.h"
 
 #include <algorithm>
 #include <array>
@@ -93,7 +94,7 @@ void refine_every_hexahedron(detail::MRState3& s)
 	std::vector<Dart> edges;
 	foreach_cell(map, [&](CMap3::Edge e) { edges.push_back(e.dart); });
 
-	detail::MRHexRefinement refinement(s);
+	detail::MRVolumeRefinement refinement(s);
 	for (Dart d : edges)
 		refinement.cut_edge(d);
 	for (Dart f : faces)
@@ -105,17 +106,56 @@ void refine_every_hexahedron(detail::MRState3& s)
 	s.current_level = finest + 1;
 }
 
+/// Refines every tetrahedron and octahedron of the finest map: all edges
+/// cut, all faces cut into 4 triangles, every volume split; the new darts
+/// get a new level. Throws std::invalid_argument before any change when a
+/// volume is neither a tetrahedron nor an octahedron.
+void refine_every_tetra_octa(detail::MRState3& s)
+{
+	CMap3& map = s.map;
+	const uint32 finest = uint32(s.darts_per_level.size() - 1);
+	std::vector<detail::MRTetraOctaCell> cells;
+	foreach_cell(map, [&](CMap3::Volume w) {
+		auto c = detail::mr_read_tetra_octa(map, w.dart);
+		if (!c)
+			throw std::invalid_argument("add_level: TetraOcta refinement of a volume that is neither a tetrahedron "
+										"nor an octahedron (dart " +
+										std::to_string(w.dart.index) + ")");
+		cells.push_back(std::move(*c));
+	});
+	std::vector<Dart> faces;
+	foreach_cell(map, [&](CMap3::Face f) { faces.push_back(f.dart); });
+	std::vector<Dart> edges;
+	foreach_cell(map, [&](CMap3::Edge e) { edges.push_back(e.dart); });
+
+	detail::MRVolumeRefinement refinement(s);
+	for (Dart d : edges)
+		refinement.cut_edge(d);
+	for (Dart f : faces)
+		refinement.triangulate(f);
+	for (const auto& c : cells)
+		detail::mr_split_tetra_octa(refinement, c);
+	s.darts_per_level.push_back(0);
+	refinement.label_created(finest + 1);
+	s.current_level = finest + 1;
+}
+
 } // namespace
 
 void add_level(MRMap3& m, Refinement r)
 {
-	if (r != Refinement::Hexahedral)
-		throw std::invalid_argument("add_level: a multiresolution 3-map is refined by Hexahedral levels");
+	if (r != Refinement::Hexahedral && r != Refinement::TetraOcta)
+		throw std::invalid_argument("add_level: a multiresolution 3-map is refined by Hexahedral or TetraOcta levels");
 	detail::MRState3& s = detail::mr_state_of(m);
 	if (max_level(m) >= 254)
 		throw std::invalid_argument("add_level: 255 levels at most");
-	check_hexahedra(s.map);
-	refine_every_hexahedron(s);
+	if (r == Refinement::Hexahedral)
+	{
+		check_hexahedra(s.map);
+		refine_every_hexahedron(s);
+	}
+	else
+		refine_every_tetra_octa(s);
 	for (uint32 slot = 0; slot < s.cells.size(); ++slot)
 		if (s.cells[slot].index != nullptr)
 			detail::mr_index_cells_at(s, slot, max_level(m));

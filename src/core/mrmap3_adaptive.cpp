@@ -26,6 +26,7 @@ using Vertex = MRMap3::Vertex;
 using Edge = MRMap3::Edge;
 using Face = MRMap3::Face;
 using Face2 = MRMap3::Face2;
+using Vertex2 = MRMap3::Vertex2;
 using Volume = MRMap3::Volume;
 
 constexpr uint32 vertex_slot = 0, edge_slot = 1, face_slot = 2, volume_slot = 3, component_slot = 4;
@@ -253,7 +254,7 @@ void subdivide_leaf(MRState3& s, Dart d, uint32 k, bool balance)
 	sub.volume_line = line_or_none(s, k, volume_slot, d);
 	const std::array<Dart, 4> hexahedron = detail::mr_hexahedron_corners(s, k, d);
 
-	detail::MRHexRefinement refinement(s);
+	detail::MRVolumeRefinement refinement(s);
 	for (Subdivision::Cut& cut : sub.cuts)
 		cut.n1 = refinement.cut_edge(cut.x);
 	for (const Subdivision::Split& split : sub.splits)
@@ -532,7 +533,23 @@ uint32 face_level(const MRLevelView3& v, MRMap3::Face f)
 
 uint32 volume_level(const MRLevelView3& v, MRMap3::Volume w)
 {
-	return kth_smallest_level(v.state(), 4, [&](const auto& g) { foreach_dart_of_orbit(v, Volume(w.dart), g); });
+	// a child keeps the darts of its parent at one corner (3 for a
+	// hexahedron or tetrahedron, 4 for an octahedron); every other dart of
+	// it is of its own level or finer
+	const MRState3& s = v.state();
+	Dart oldest = w.dart;
+	foreach_dart_of_orbit(v, Volume(w.dart), [&](Dart d) {
+		if (detail::mr_dart_level(s, d) < detail::mr_dart_level(s, oldest))
+			oldest = d;
+	});
+	std::vector<Dart> corner;
+	foreach_dart_of_orbit(v, Vertex2(oldest), [&](Dart d) { corner.push_back(d); });
+	uint32 l = 255;
+	foreach_dart_of_orbit(v, Volume(w.dart), [&](Dart d) {
+		if (std::find(corner.begin(), corner.end(), d) == corner.end())
+			l = std::min(l, detail::mr_dart_level(s, d));
+	});
+	return l;
 }
 
 bool edge_is_subdivided(const MRLevelView3& v, MRMap3::Edge e)

@@ -5,23 +5,19 @@
 #include <cgogn/core/operators/cmap3.h>
 #include <cgogn/core/traversals/local_cmap3.h>
 
+#include <array>
 #include <stdexcept>
 #include <utility>
 
 namespace cgogn::detail
 {
 
-void MRHexRefinement::set_edge_id(Dart d, uint8 id)
+void MRVolumeRefinement::set_edge_id(Dart d, uint8 id)
 {
 	foreach_dart_of_orbit(map_, CMap3::Edge(d), [&](Dart x) { (*s_.edge_id)[x.index] = id; });
 }
 
-void MRHexRefinement::set_face_id_of_edge(Dart d, uint8 id)
-{
-	foreach_dart_of_orbit(map_, CMap3::Edge(d), [&](Dart x) { (*s_.face_id)[x.index] = id; });
-}
-
-Dart MRHexRefinement::cut_edge(Dart d)
+Dart MRVolumeRefinement::cut_edge(Dart d)
 {
 	std::vector<Dart> ring;
 	foreach_dart_of_orbit(map_, CMap3::Edge(d), [&](Dart x) { ring.push_back(x); });
@@ -36,9 +32,7 @@ Dart MRHexRefinement::cut_edge(Dart d)
 	return phi1(map_, d);
 }
 
-/// Cuts the face of d and e by a new edge from origin(d) to origin(e), of
-/// the face's face id and edge id `id`. Returns its dart from origin(d).
-Dart MRHexRefinement::cut_face(Dart d, Dart e, uint8 id)
+Dart MRVolumeRefinement::cut_face(Dart d, Dart e, uint8 id)
 {
 	const Dart y = cgogn::cut_face(map_, d, e, false).dart;
 	foreach_dart_of_orbit(map_, CMap3::Edge(y), [&](Dart x) {
@@ -60,7 +54,7 @@ uint8 inner_edge_id(uint8 a)
 }
 } // namespace
 
-void MRHexRefinement::quadrangulate(Dart f)
+void MRVolumeRefinement::quadrangulate(Dart f)
 {
 	std::vector<Dart> c; // the darts leaving the midpoints, in phi1 order
 	Dart it = f;
@@ -81,26 +75,35 @@ void MRHexRefinement::quadrangulate(Dart f)
 		from_centre = cut_face(from_centre, c[i], inner_id(c[i]));
 }
 
+void MRVolumeRefinement::triangulate(Dart f)
+{
+	// c[i]: the dart leaving the midpoint of the i-th edge, toward its end
+	const std::array<Dart, 3> c{phi1(map_, f), phi1(map_, phi1(map_, phi1(map_, f))), phi_1(map_, f)};
+	const auto joining = [&](Dart a, Dart b) {
+		uint8 id = 0;
+		while (id == edge_id(a) || id == edge_id(b))
+			++id;
+		return id;
+	};
+	// the corner of the first, second and third edge's origin, in turn; the
+	// last cut leaves the middle triangle
+	const Dart y = cut_face(c[2], c[0], joining(c[2], c[0])); // midpoint 2 -> midpoint 0
+	cut_face(c[0], c[1], joining(c[0], c[1]));
+	cut_face(c[1], y, joining(c[1], c[2]));
+}
+
 /// Goes straight on across a vertex of 4 edges on the surface of d's finest
 /// volume: the dart leaving the end of d opposite to d.
-Dart MRHexRefinement::straight(Dart d) const
+Dart MRVolumeRefinement::straight(Dart d) const
 {
 	return phi1(map_, phi2(map_, phi1(map_, d)));
 }
 
-/// Cuts the volume of `start` along the closed path of k darts that goes
-/// straight on from it; the new face takes the smallest face id not used
-/// around the path's edges, its darts the edge ids of the path's. Returns
-/// the new face's dart on the path side, from the end of start to its
-/// origin.
-Dart MRHexRefinement::cut_volume_straight(Dart start, uint32 k)
+Dart MRVolumeRefinement::cut_volume_along(const std::vector<Dart>& path)
 {
-	std::vector<Dart> path{start};
-	while (path.size() < k)
-		path.push_back(straight(path.back()));
-	if (straight(path.back()) != start || !can_cut_volume(map_, path))
-		throw std::logic_error("hexahedral refinement: a hexahedron's inner path is not closed");
-	std::vector<bool> used(256, false);
+	if (!can_cut_volume(map_, path))
+		throw std::logic_error("volume refinement: an inner path of a volume is not closed");
+	std::array<bool, 256> used{};
 	for (Dart p : path)
 		foreach_dart_of_orbit(map_, CMap3::Edge(p), [&](Dart x) { used[face_id(x)] = true; });
 	uint8 id = 0;
@@ -117,7 +120,19 @@ Dart MRHexRefinement::cut_volume_straight(Dart start, uint32 k)
 	return f;
 }
 
-void MRHexRefinement::split_hexahedron(const std::array<Dart, 4>& h)
+/// Cuts the volume of `start` along the closed path of k darts that goes
+/// straight on from it (see cut_volume_along).
+Dart MRVolumeRefinement::cut_volume_straight(Dart start, uint32 k)
+{
+	std::vector<Dart> path{start};
+	while (path.size() < k)
+		path.push_back(straight(path.back()));
+	if (straight(path.back()) != start)
+		throw std::logic_error("hexahedral refinement: a hexahedron's inner path is not closed");
+	return cut_volume_along(path);
+}
+
+void MRVolumeRefinement::split_hexahedron(const std::array<Dart, 4>& h)
 {
 	const Dart a = h[0], a2 = h[1], t = h[2], t2 = h[3];
 	// the middle section, parallel to B and T, through the midpoints of the
@@ -144,7 +159,7 @@ void MRHexRefinement::split_hexahedron(const std::array<Dart, 4>& h)
 	}
 }
 
-void MRHexRefinement::label_created(uint32 l)
+void MRVolumeRefinement::label_created(uint32 l)
 {
 	for (Dart d : created_)
 		(*s_.level)[d.index] = uint8(l);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The hexahedral refinement of the finest map of a multiresolution 3-map,
-// one piece at a time (add_level and subdivide_volume).
+// The cuts of the volume refinements of the finest map of a multiresolution
+// 3-map, one piece at a time: hexahedral (add_level and subdivide_volume)
+// and tetrahedral-octahedral (add_level, see mrmap3_tetra_octa.h).
 #pragma once
 
 #include <cgogn/core/map/mrmap3.h>
@@ -11,14 +12,14 @@
 namespace cgogn::detail
 {
 
-/// The cuts of the hexahedral refinement, on the finest map of s with its
+/// The cuts of the volume refinements, on the finest map of s with its
 /// operators (without indices). Every new dart gets the edge and face ids
 /// of the rules of MRState3 and is recorded (created()); its level is left
 /// to the caller (label_created).
-class MRHexRefinement
+class MRVolumeRefinement
 {
 public:
-	explicit MRHexRefinement(MRState3& s) : s_(s), map_(s.map)
+	explicit MRVolumeRefinement(MRState3& s) : s_(s), map_(s.map)
 	{
 	}
 
@@ -32,12 +33,37 @@ public:
 	/// k quads. O(k).
 	void quadrangulate(Dart f);
 
+	/// Joins the midpoints of the cut edges of finest triangle f (f: a dart
+	/// leaving a corner; corners and midpoints alternate) by 3 inner edges:
+	/// 4 triangles. An inner edge takes the smallest edge id different from
+	/// the ids of the two edges whose midpoints it joins. O(1).
+	void triangulate(Dart f);
+
+	/// Cuts the face of d and e by a new edge from origin(d) to origin(e), of
+	/// the face's face id and edge id `id`. Returns its dart from origin(d),
+	/// in the part of the face that holds e. O(degree of the face).
+	Dart cut_face(Dart d, Dart e, uint8 id);
+
+	/// Cuts the finest volume of `path` along the closed path (see
+	/// can_cut_volume); the new face takes the smallest face id not used
+	/// around the path's edges, its darts the edge ids of the path's.
+	/// Returns the new face's dart on the path side, from the end of path[0]
+	/// to its origin. Throws std::logic_error when the path is not closed.
+	/// O(size of the path x degree of its edges).
+	Dart cut_volume_along(const std::vector<Dart>& path);
+
 	/// Cuts a hexahedron whose edges are cut and faces quadrangulated (and
 	/// nothing finer on its surface) into 8: h holds a corner dart a of a
 	/// face B, the corner dart two corners on in B, a corner dart t of the
 	/// face opposite to B and the corner dart two corners on from t.
 	/// Throws std::logic_error when an inner path does not close. O(1).
 	void split_hexahedron(const std::array<Dart, 4>& h);
+
+	/// The finest map being refined.
+	CMap3& map()
+	{
+		return map_;
+	}
 
 	/// The darts created so far.
 	const std::vector<Dart>& created() const
@@ -59,8 +85,6 @@ private:
 		return (*s_.face_id)[d.index];
 	}
 	void set_edge_id(Dart d, uint8 id);
-	void set_face_id_of_edge(Dart d, uint8 id);
-	Dart cut_face(Dart d, Dart e, uint8 id);
 	Dart straight(Dart d) const;
 	Dart cut_volume_straight(Dart start, uint32 k);
 

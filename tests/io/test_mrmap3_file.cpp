@@ -6,10 +6,14 @@
 #include <cgogn/geometry/types/vector_traits.h>
 #include <cgogn/io.h>
 
+#include "cgogn_test_data.h"
 #include "io_test_utils.h"
 #include "volume_test_meshes.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace cgogn_test_mrmap3_file
 {
@@ -134,7 +138,51 @@ std::size_t label_values(const std::string& bytes, const std::string& name)
 	return type_at + 4 + uint32(uint8(bytes[type_at])) + 8 + 1;
 }
 
+/// The sum of the volumes of the cells of a map of triangles, each from its
+/// triangles (divergence): the volume of the mesh when the cells neither
+/// overlap nor turn over.
+double sum_of_cell_volumes(const CMap3& m)
+{
+	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	double sum = 0;
+	foreach_cell(m, [&](CMap3::Volume w) {
+		double sixfold = 0;
+		foreach_dart_of_orbit(m, w, [&](Dart x) {
+			const Vec3& a = value<Vec3>(m, *pos, CMap3::Vertex(x));
+			const Vec3& b = value<Vec3>(m, *pos, CMap3::Vertex(phi1(m, x)));
+			const Vec3& c = value<Vec3>(m, *pos, CMap3::Vertex(phi_1(m, x)));
+			sixfold += a.dot(b.cross(c)) / 3; // each triangle is met from its 3 darts
+		});
+		sum += std::abs(sixfold) / 6;
+	});
+	return sum;
+}
+
 } // namespace
+
+TEST(MRMap3File, TetraOctaLevelOfATetrahedralMeshRoundTrips)
+{
+	CMap3 base;
+	io::load_volume(base, cgogn_test_data::path("volume/armadillo_tet_4k.mesh"));
+	MRMap3 m(std::move(base));
+	add_attribute<int32, MRMap3::Volume>(m, "tag");
+	const std::vector<uint32> c0 = f_vector(m);
+	add_level(m, Refinement::TetraOcta);
+	add_attribute<double, MRMap3::Edge>(m, "weight");
+	write_values(m);
+	const IntegrityReport r = check_integrity(m);
+	ASSERT_TRUE(r.ok()) << r.to_string();
+	// every edge cut, every triangle cut in 4, every tetrahedron into 4
+	// tetrahedra and an octahedron (4 inner triangles)
+	EXPECT_EQ(f_vector(m),
+			  (std::vector<uint32>{c0[0] + c0[1], 2 * c0[1] + 3 * c0[2], 4 * c0[2] + 4 * c0[3], 5 * c0[3]}));
+	// the cells of level 1 fill the mesh without overlapping
+	const double v0 = sum_of_cell_volumes(extract_level(m, 0)), v1 = sum_of_cell_volumes(extract_level(m, 1));
+	EXPECT_NEAR(v1, v0, 1e-12 * v0);
+	MRMap3 back{CMap3()};
+	io::load_map_from_bytes(back, io::save_map_to_bytes(m));
+	expect_same_hierarchy(m, back);
+}
 
 TEST(MRMap3File, RegularAndAdaptiveHierarchiesRoundTripAtEveryLevel)
 {

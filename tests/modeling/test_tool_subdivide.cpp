@@ -264,8 +264,9 @@ TEST(ToolSubdivide, KeepLevelsRefusals)
 		EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
 	};
 	const std::string out = quoted(dir.file("out.cgmap"));
-	refused(quoted(spot) + " " + out + " --scheme sqrt3 --keep-levels",
-			"--keep-levels: the scheme sqrt3 makes no multiresolution levels (loop, catmull-clark and hex do)");
+	refused(
+		quoted(spot) + " " + out + " --scheme sqrt3 --keep-levels",
+		"--keep-levels: the scheme sqrt3 makes no multiresolution levels (loop, catmull-clark, hex and tetra-octa do)");
 	refused(quoted(spot) + " " + out + " --scheme tet --keep-levels",
 			"--keep-levels: the scheme tet makes no multiresolution levels");
 	refused(quoted(spot) + " " + quoted(dir.file("out.off")) + " --keep-levels", "the output must be a .cgmap file");
@@ -406,6 +407,55 @@ TEST(ToolSubdivide, HexKeepLevelsWritesAHexahedralHierarchy)
 	};
 	EXPECT_EQ(render(h, "l0.png", " --level 0"), render(quoted(liver), "liver.png", ""));
 	EXPECT_NE(render(h, "l1.png", " --level 1"), render(h, "l0b.png", " --level 0"));
+}
+
+TEST(ToolSubdivide, TetraOctaLevelsOfATetrahedralMesh)
+{
+	TempDir dir;
+	// the 48 tetrahedra of a 2 x 2 x 2 grid of cubes
+	{
+		const VolumeSoup s = tet_grid_soup(2, 2, 2);
+		CMap3 grid;
+		const BuildReport b = build_volume(grid, s);
+		auto pos = add_attribute<Vec3, CMap3::Vertex>(grid, "position");
+		for (uint32 i = 0; i < s.nb_vertices; ++i)
+			(*pos)[b.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
+		io::save_volume(grid, dir.file("grid.mesh"));
+	}
+	const std::string grid = quoted(dir.file("grid.mesh")), h = quoted(dir.file("grid.cgmap"));
+	ToolRun r = run_tool("subdivide " + grid + " " + h + " --scheme tetra-octa -n 2 --keep-levels", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	MRMap3 m{CMap3()};
+	io::load_map(m, dir.file("grid.cgmap"));
+	ASSERT_EQ(max_level(m), 2u);
+	EXPECT_TRUE(check_integrity(m).ok());
+	r = run_tool("info --json " + h, dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	const nlohmann::json j = nlohmann::json::parse(r.out);
+	ASSERT_EQ(j["levels"].size(), 3u);
+	// 48 tetrahedra; 4 x 48 and 48 octahedra; 24 x 48 and 10 x 48
+	EXPECT_EQ(j["levels"][0]["f_vector"][3], 48);
+	EXPECT_EQ(j["levels"][1]["f_vector"][3], 5 * 48);
+	EXPECT_EQ(j["levels"][2]["f_vector"][3], 34 * 48);
+
+	// without levels: the finest level, its octahedra as polyhedra
+	r = run_tool("subdivide " + grid + " " + quoted(dir.file("out.vtu")) + " --scheme tetra-octa", dir);
+	ASSERT_EQ(r.status, 0) << r.err;
+	CMap3 flat;
+	io::load_volume(flat, dir.file("out.vtu"));
+	EXPECT_TRUE(check_integrity(flat).ok());
+	const CMap3 level = extract_level(m, 1);
+	EXPECT_EQ(f_vector(flat), f_vector(level));
+	EXPECT_LT(distance(vertex_positions(flat), vertex_positions(level)), 1e-9);
+	// octahedra do not fit a MEDIT file; hexahedra are not refined so
+	r = run_tool("subdivide " + grid + " " + quoted(dir.file("out.mesh")) + " --scheme tetra-octa", dir);
+	EXPECT_EQ(r.status, 2);
+	const std::string liver = std::string(CGOGN_DATA_DIR) + "/volume/liver_hex_624.mesh";
+	r = run_tool(
+		"subdivide " + quoted(liver) + " " + quoted(dir.file("l.cgmap")) + " --scheme tetra-octa --keep-levels", dir);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_NE(r.err.find("neither a tetrahedron nor an octahedron"), std::string::npos) << r.err;
+	EXPECT_FALSE(std::filesystem::exists(dir.file("l.cgmap")));
 }
 
 } // namespace cgogn_test_tool_subdivide

@@ -486,6 +486,7 @@ struct MRDim<MRState3>
 	static constexpr uint32 vertex_slot = 0;    ///< The slot of the vertices.
 	static constexpr uint32 edge_slot = 1;      ///< The slot of the edges.
 	static constexpr uint32 face_slot = 2;      ///< The slot of the faces.
+	static constexpr uint32 volume_slot = 3;    ///< The slot of the volumes.
 	static constexpr uint32 component_slot = 4; ///< The slot of the connected components.
 	/// The slot of orbit o (5 for an orbit without one).
 	static constexpr uint32 slot(Orbit o)

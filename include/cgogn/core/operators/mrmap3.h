@@ -9,15 +9,25 @@ namespace cgogn
 /// Adds a level above the finest one by refining every volume of the finest
 /// level with pattern r. Hexahedral: every edge is cut at its middle, every
 /// face into quads around a centre, every hexahedron into 8 around a centre
-/// by 12 inner quads. The new darts get the new level; the pieces of a cut
+/// by 12 inner quads. TetraOcta: every edge is cut at its middle, every
+/// triangle into 4, every tetrahedron into 4 tetrahedra at its corners and
+/// an octahedron, every octahedron into 6 octahedra at its corners and 8
+/// tetrahedra at its faces around a new centre (the inner faces are the 24
+/// triangles of the 4 hexagons through its centre parallel to its faces; an
+/// inner edge of a triangle takes an edge id different from both edges whose
+/// midpoints it joins). The new darts get the new level; the pieces of a cut
 /// edge (face) keep its edge (face) id; a new inner edge of a face takes an
 /// edge id different from the edges whose midpoints it leaves, and a new
 /// inner face the smallest face id not used around its edges (see MRState3).
 /// The cells of the new level get lines by the rules of the attributes (see
-/// mrmap3_attributes.h). The current level becomes the new finest level. Throws
-/// std::invalid_argument, leaving m unchanged, when r is not Hexahedral or a
-/// volume of the finest level is not a hexahedron (6 quads, 3 edges at each
-/// corner). O(number of darts).
+/// mrmap3_attributes.h); the children of a face or a volume without a dart of
+/// their parent (a middle triangle, a middle octahedron, a face tetrahedron)
+/// refine their parent's line as the others do. The current level becomes the
+/// new finest level. Throws std::invalid_argument, leaving m unchanged, when r
+/// is a 2-D pattern, or a volume of the finest level is not a hexahedron (6
+/// quads, 3 edges at each corner) for Hexahedral, neither a tetrahedron nor an
+/// octahedron (8 triangles, 4 edges at each corner) for TetraOcta. O(number
+/// of darts).
 void add_level(MRMap3& m, Refinement r);
 
 /// Removes the finest level: every dart of that level goes, and the darts
@@ -35,9 +45,10 @@ uint32 edge_level(const MRLevelView3& v, MRMap3::Edge e);
 /// The level at which face f, read at the level of v, was made (the second
 /// smallest level of the darts of one of its sides). O(codegree).
 uint32 face_level(const MRLevelView3& v, MRMap3::Face f);
-/// The level at which volume w, read at the level of v, was made (the fourth
-/// smallest level of its darts: a child of a hexahedron keeps the three
-/// darts of its parent's corner). O(number of darts of w).
+/// The level at which volume w, read at the level of v, was made: the
+/// smallest level of its darts but those at the corner of its oldest dart (a
+/// child keeps the darts of its parent at one corner). O(number of darts of
+/// w).
 uint32 volume_level(const MRLevelView3& v, MRMap3::Volume w);
 /// Whether edge e, read at the level l of v, is cut at level l + 1. O(1
 /// level step).
