@@ -5,6 +5,7 @@
 
 #include <cgogn/core/map/indexing.h>
 
+#include <algorithm>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -176,9 +177,14 @@ std::vector<uint32> mr_vertex_parents(const MRState3& s, uint32 l, Dart v)
 		return {mr_line_of(s, l - 1, vertex, old), mr_line_of(s, l - 1, vertex, mr_phi2(s, l - 1, old))};
 	// the centre of a face, then of a volume: a cell of level l around v
 	// holding an old corner, whose cell of level l - 1 gives the corners
+	// the lines of the corners of a cell of level l - 1, each once, in the
+	// order its darts meet them (without walking the corners' vertices)
 	const auto corners_of = [&](auto cell_below) {
-		foreach_incident_vertex(below, cell_below,
-								[&](MRMap3::Vertex c) { parents.push_back(mr_line_of(s, l - 1, vertex, c.dart)); });
+		foreach_dart_of_orbit(below, cell_below, [&](Dart x) {
+			const uint32 line = mr_line_of(s, l - 1, vertex, x);
+			if (std::find(parents.begin(), parents.end(), line) == parents.end())
+				parents.push_back(line);
+		});
 	};
 	foreach_dart_of_orbit(here, MRMap3::Vertex(v), [&](Dart d) {
 		foreach_dart_of_orbit(here, MRMap3::Face2(d), [&](Dart x) {
@@ -190,7 +196,7 @@ std::vector<uint32> mr_vertex_parents(const MRState3& s, uint32 l, Dart v)
 	});
 	if (old.is_valid())
 	{
-		corners_of(MRMap3::Face(old));
+		corners_of(MRMap3::Face2(old));
 		return parents;
 	}
 	// a volume around v holding an old corner (an octahedron's centre is
