@@ -30,15 +30,20 @@ namespace
 
 constexpr uint32 LEVELS3 = 2;
 
-CMap3 hex_grid(uint32 n)
+/// The cells of soup s as a CMap3 with a "position" vertex attribute.
+CMap3 with_positions(const VolumeSoup& s)
 {
 	CMap3 m;
-	const VolumeSoup s = hex_grid_soup(n, n, n);
 	const BuildReport r = build_volume(m, s);
 	auto pos = add_attribute<Vec3, CMap3::Vertex>(m, "position");
 	for (uint32 i = 0; i < s.nb_vertices; ++i)
 		(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
 	return m;
+}
+
+CMap3 hex_grid(uint32 n)
+{
+	return with_positions(hex_grid_soup(n, n, n));
 }
 
 struct Hierarchy3
@@ -188,13 +193,7 @@ BENCHMARK(BM_HexSubdivisionStepFlat)->Unit(benchmark::kMillisecond);
 
 CMap3 tet_grid(uint32 n)
 {
-	CMap3 m;
-	const VolumeSoup s = tet_grid_soup(n, n, n);
-	const BuildReport r = build_volume(m, s);
-	auto pos = add_attribute<Vec3, CMap3::Vertex>(m, "position");
-	for (uint32 i = 0; i < s.nb_vertices; ++i)
-		(*pos)[r.vertex_offset + i] = Vec3(s.positions[i][0], s.positions[i][1], s.positions[i][2]);
-	return m;
+	return with_positions(tet_grid_soup(n, n, n));
 }
 
 void BM_AddLevelTetraOctaMR(benchmark::State& state)

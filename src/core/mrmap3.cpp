@@ -80,15 +80,16 @@ void check_hexahedra(const CMap3& map)
 	});
 }
 
-/// Refines every hexahedron of the finest map: all edges cut, all faces
-/// quadrangulated, every hexahedron split; the new darts get a new level.
-void refine_every_hexahedron(detail::MRState3& s)
+/// Refines every volume of the finest map: `read(d)` reads the volume of
+/// dart d before any cut, then every edge is cut at its middle, every face
+/// refined by `refine_face(refinement, f)` and every volume read split by
+/// `split(refinement, cell)`; the new darts get a new level.
+template <typename READ, typename REFINE_FACE, typename SPLIT>
+void refine_every_volume(detail::MRState3& s, const READ& read, const REFINE_FACE& refine_face, const SPLIT& split)
 {
 	CMap3& map = s.map;
-	const uint32 finest = uint32(s.darts_per_level.size() - 1);
-	// the corners are old darts, which keep their origin through the cuts
-	std::vector<std::array<Dart, 4>> hexes;
-	foreach_cell(map, [&](CMap3::Volume w) { hexes.push_back(detail::mr_hexahedron_corners(s, finest, w.dart)); });
+	std::vector<decltype(read(Dart()))> cells;
+	foreach_cell(map, [&](CMap3::Volume w) { cells.push_back(read(w.dart)); });
 	std::vector<Dart> faces;
 	foreach_cell(map, [&](CMap3::Face f) { faces.push_back(f.dart); });
 	std::vector<Dart> edges;
@@ -98,46 +99,44 @@ void refine_every_hexahedron(detail::MRState3& s)
 	for (Dart d : edges)
 		refinement.cut_edge(d);
 	for (Dart f : faces)
-		refinement.quadrangulate(f);
-	for (const auto& h : hexes)
-		refinement.split_hexahedron(h);
+		refine_face(refinement, f);
+	for (const auto& c : cells)
+		split(refinement, c);
+	const uint32 level = uint32(s.darts_per_level.size());
 	s.darts_per_level.push_back(0);
-	refinement.label_created(finest + 1);
-	s.current_level = finest + 1;
+	refinement.label_created(level);
+	s.current_level = level;
 }
 
-/// Refines every tetrahedron and octahedron of the finest map: all edges
-/// cut, all faces cut into 4 triangles, every volume split; the new darts
-/// get a new level. Throws std::invalid_argument before any change when a
-/// volume is neither a tetrahedron nor an octahedron.
+/// Hexahedral: all faces quadrangulated, every hexahedron into 8.
+void refine_every_hexahedron(detail::MRState3& s)
+{
+	const uint32 finest = uint32(s.darts_per_level.size() - 1);
+	refine_every_volume(
+		s,
+		// the corners are old darts, which keep their origin through the cuts
+		[&](Dart d) { return detail::mr_hexahedron_corners(s, finest, d); },
+		[](detail::MRVolumeRefinement& r, Dart f) { r.quadrangulate(f); },
+		[](detail::MRVolumeRefinement& r, const std::array<Dart, 4>& h) { r.split_hexahedron(h); });
+}
+
+/// TetraOcta: all faces into 4 triangles, every tetrahedron and octahedron
+/// split. Throws std::invalid_argument before any change when a volume is
+/// neither a tetrahedron nor an octahedron.
 void refine_every_tetra_octa(detail::MRState3& s)
 {
-	CMap3& map = s.map;
-	const uint32 finest = uint32(s.darts_per_level.size() - 1);
-	std::vector<detail::MRTetraOctaCell> cells;
-	foreach_cell(map, [&](CMap3::Volume w) {
-		auto c = detail::mr_read_tetra_octa(map, w.dart);
-		if (!c)
-			throw std::invalid_argument("add_level: TetraOcta refinement of a volume that is neither a tetrahedron "
-										"nor an octahedron (dart " +
-										std::to_string(w.dart.index) + ")");
-		cells.push_back(std::move(*c));
-	});
-	std::vector<Dart> faces;
-	foreach_cell(map, [&](CMap3::Face f) { faces.push_back(f.dart); });
-	std::vector<Dart> edges;
-	foreach_cell(map, [&](CMap3::Edge e) { edges.push_back(e.dart); });
-
-	detail::MRVolumeRefinement refinement(s);
-	for (Dart d : edges)
-		refinement.cut_edge(d);
-	for (Dart f : faces)
-		refinement.triangulate(f);
-	for (const auto& c : cells)
-		detail::mr_split_tetra_octa(refinement, c);
-	s.darts_per_level.push_back(0);
-	refinement.label_created(finest + 1);
-	s.current_level = finest + 1;
+	refine_every_volume(
+		s,
+		[&](Dart d) {
+			auto c = detail::mr_read_tetra_octa(s.map, d);
+			if (!c)
+				throw std::invalid_argument("add_level: TetraOcta refinement of a volume that is neither a "
+											"tetrahedron nor an octahedron (dart " +
+											std::to_string(d.index) + ")");
+			return std::move(*c);
+		},
+		[](detail::MRVolumeRefinement& r, Dart f) { r.triangulate(f); },
+		[](detail::MRVolumeRefinement& r, const detail::MRTetraOctaCell& c) { detail::mr_split_tetra_octa(r, c); });
 }
 
 } // namespace
