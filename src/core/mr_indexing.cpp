@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <string>
-#include <type_traits>
 #include <utility>
 
 namespace cgogn::detail
@@ -27,9 +26,12 @@ void copy_values(AttributeContainer& c, uint32 dst, uint32 src)
 
 /// For a face of level l without a dart of level l - 1 (the middle triangle
 /// of a triangle cut in 4): a dart of level l - 1 of a face that shares its
-/// parent, reached across the new edges of level l. INVALID when none.
-Dart old_dart_of_sibling(const MRState2& s, uint32 l, Dart d)
+/// parent, reached across the new edges of level l. INVALID when none, or
+/// for another slot than the faces'.
+Dart old_dart_of_sibling(const MRState2& s, uint32 slot, uint32 l, Dart d)
 {
+	if (slot != MRDim<MRState2>::face_slot)
+		return Dart();
 	const auto level = s.level->view();
 	std::vector<Dart> work{d};
 	DartMarkerStore<CMap2> seen(s.map);
@@ -176,9 +178,8 @@ std::vector<uint32> mr_vertex_parents(const MRState3& s, uint32 l, Dart v)
 	if (old.is_valid())
 		return {mr_line_of(s, l - 1, vertex, old), mr_line_of(s, l - 1, vertex, mr_phi2(s, l - 1, old))};
 	// the centre of a face, then of a volume: a cell of level l around v
-	// holding an old corner, whose cell of level l - 1 gives the corners
-	// the lines of the corners of a cell of level l - 1, each once, in the
-	// order its darts meet them (without walking the corners' vertices)
+	// holding an old corner, whose cell of level l - 1 gives the lines of
+	// the corners, each once, in the order its darts meet them
 	const auto corners_of = [&](auto cell_below) {
 		foreach_dart_of_orbit(below, cell_below, [&](Dart x) {
 			const uint32 line = mr_line_of(s, l - 1, vertex, x);
@@ -264,12 +265,8 @@ void mr_index_cells_at(S& s, uint32 slot, uint32 l)
 		}
 		else
 		{
-			if constexpr (std::is_same_v<S, MRState2>)
-			{
-				if (slot == D::face_slot && !old.is_valid())
-					old = old_dart_of_sibling(s, l, d);
-			}
-			else if (l > 0 && !old.is_valid() && (slot == D::face_slot || slot == D::volume_slot))
+			// a child without a dart of its parent reads it through a sibling
+			if (!old.is_valid())
 				old = old_dart_of_sibling(s, slot, l, d);
 			const uint32 below = old.is_valid() ? mr_line_of(s, l - 1, slot, old) : INVALID_INDEX;
 			uint32 nb_below = 0;

@@ -125,6 +125,7 @@ void refine_every_hexahedron(detail::MRState3& s)
 /// neither a tetrahedron nor an octahedron.
 void refine_every_tetra_octa(detail::MRState3& s)
 {
+	detail::MRTetraOctaScratch scratch;
 	refine_every_volume(
 		s,
 		[&](Dart d) {
@@ -136,7 +137,9 @@ void refine_every_tetra_octa(detail::MRState3& s)
 			return std::move(*c);
 		},
 		[](detail::MRVolumeRefinement& r, Dart f) { r.triangulate(f); },
-		[](detail::MRVolumeRefinement& r, const detail::MRTetraOctaCell& c) { detail::mr_split_tetra_octa(r, c); });
+		[&](detail::MRVolumeRefinement& r, const detail::MRTetraOctaCell& c) {
+			detail::mr_split_tetra_octa(r, c, scratch);
+		});
 }
 
 } // namespace

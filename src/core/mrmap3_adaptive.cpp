@@ -29,7 +29,9 @@ using Face2 = MRMap3::Face2;
 using Vertex2 = MRMap3::Vertex2;
 using Volume = MRMap3::Volume;
 
-constexpr uint32 vertex_slot = 0, edge_slot = 1, face_slot = 2, volume_slot = 3, component_slot = 4;
+using Slots = detail::MRDim<MRState3>;
+constexpr uint32 vertex_slot = Slots::vertex_slot, edge_slot = Slots::edge_slot, face_slot = Slots::face_slot,
+				 volume_slot = Slots::volume_slot, component_slot = Slots::component_slot;
 
 /// The line of the cell of d in slot `slot` at level l, or INVALID_INDEX when
 /// the slot is not indexed.
@@ -534,22 +536,25 @@ uint32 face_level(const MRLevelView3& v, MRMap3::Face f)
 uint32 volume_level(const MRLevelView3& v, MRMap3::Volume w)
 {
 	// a child keeps the darts of its parent at one corner (3 for a
-	// hexahedron or tetrahedron, 4 for an octahedron); every other dart of
-	// it is of its own level or finer
+	// hexahedron or tetrahedron, 4 for an octahedron), older than every
+	// other dart of it: past the c darts of the oldest dart's corner, the
+	// next smallest level is the child's (a corner of more than 7 darts
+	// belongs to a volume of level 0, whose 8 smallest levels are 0)
 	const MRState3& s = v.state();
 	Dart oldest = w.dart;
+	std::array<uint32, 8> smallest;
+	smallest.fill(255);
 	foreach_dart_of_orbit(v, Volume(w.dart), [&](Dart d) {
-		if (detail::mr_dart_level(s, d) < detail::mr_dart_level(s, oldest))
+		uint32 x = detail::mr_dart_level(s, d);
+		if (x < detail::mr_dart_level(s, oldest))
 			oldest = d;
+		for (uint32& y : smallest)
+			if (x < y)
+				std::swap(x, y);
 	});
-	std::vector<Dart> corner;
-	foreach_dart_of_orbit(v, Vertex2(oldest), [&](Dart d) { corner.push_back(d); });
-	uint32 l = 255;
-	foreach_dart_of_orbit(v, Volume(w.dart), [&](Dart d) {
-		if (std::find(corner.begin(), corner.end(), d) == corner.end())
-			l = std::min(l, detail::mr_dart_level(s, d));
-	});
-	return l;
+	uint32 corner = 0;
+	foreach_dart_of_orbit(v, Vertex2(oldest), [&](Dart) { ++corner; });
+	return smallest[std::min<uint32>(corner, uint32(smallest.size() - 1))];
 }
 
 bool edge_is_subdivided(const MRLevelView3& v, MRMap3::Edge e)

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace cgogn::detail
 {
@@ -38,22 +37,36 @@ struct Plane
 constexpr std::array<Plane, 4> tetra_planes{{{{1, 1, 1}, 2}, {{1, -1, -1}, 2}, {{-1, 1, -1}, 2}, {{-1, -1, 1}, 2}}};
 constexpr std::array<Plane, 4> octa_planes{{{{1, 1, 1}, 0}, {{1, -1, -1}, 0}, {{-1, 1, -1}, 0}, {{-1, -1, 1}, 0}}};
 
+/// A point's code (0 ... 124; its coordinates are in [-2, 2]) and back.
+constexpr uint8 unknown_point = 255;
+uint8 encode(const Point& p)
+{
+	return uint8((p[0] + 2) * 25 + (p[1] + 2) * 5 + (p[2] + 2));
+}
+Point decode(uint8 c)
+{
+	return {c / 25 - 2, c / 5 % 5 - 2, c % 5 - 2};
+}
+
 /// Cuts one cell along the planes of its shape, one piece at a time. Every
 /// dart of the pieces knows the point of the shape its origin is.
 class PlaneSplit
 {
 public:
-	PlaneSplit(MRVolumeRefinement& r) : r_(r), map_(r.map())
+	PlaneSplit(MRVolumeRefinement& r, MRTetraOctaScratch& scratch) : r_(r), map_(r.map()), s_(scratch)
 	{
 	}
 
-	/// Gives point p to the darts leaving the origin of d in d's volume.
+	/// Gives point p to the darts leaving the origin of d in d's volume
+	/// (nothing to do when d has it: a corner is met from each of its darts).
 	void name_vertex(Dart d, const Point& p)
 	{
+		if (at_or_unknown(d) == encode(p))
+			return;
 		Dart x = d;
 		do
 		{
-			at_[x.index] = p;
+			set(x, p);
 			x = phi2(map_, phi_1(map_, x));
 		} while (x != d);
 	}
@@ -63,20 +76,30 @@ public:
 	template <std::size_t N>
 	void run(Dart d, const std::array<Plane, N>& planes)
 	{
-		pieces_ = {d};
+		s_.pieces.assign(1, d);
 		for (const Plane& p : planes)
-			for (std::size_t i = 0, end = pieces_.size(); i < end; ++i)
+			for (std::size_t i = 0, end = s_.pieces.size(); i < end; ++i)
 				cut(i, p);
 	}
 
 private:
-	const Point& at(Dart d) const
+	uint8 at_or_unknown(Dart d) const
 	{
-		return at_.at(d.index);
+		return d.index < s_.point.size() ? s_.point[d.index] : unknown_point;
+	}
+	Point at(Dart d) const
+	{
+		return decode(s_.point[d.index]);
+	}
+	void set(Dart d, const Point& p)
+	{
+		if (d.index >= s_.point.size())
+			s_.point.resize(std::max<std::size_t>(d.index + 1, 2 * s_.point.size()), unknown_point);
+		s_.point[d.index] = encode(p);
 	}
 	int value(const Plane& p, Dart d) const
 	{
-		const Point& q = at(d);
+		const Point q = at(d);
 		return p.normal[0] * q[0] + p.normal[1] * q[1] + p.normal[2] * q[2] - p.offset;
 	}
 	/// The side of p on which the face of d lies, d's edge being in p.
@@ -95,27 +118,33 @@ private:
 		const Point from = at(d), to = at(e);
 		const Dart y = r_.cut_face(d, e, 0);
 		const Dart y3 = phi3(map_, y);
-		at_[y.index] = from;
-		at_[phi2(map_, y).index] = to;
-		at_[y3.index] = to;
-		at_[phi2(map_, y3).index] = from;
+		set(y, from);
+		set(phi2(map_, y), to);
+		set(y3, to);
+		set(phi2(map_, y3), from);
 		return y;
+	}
+
+	/// The darts of the face of d in phi1 order, from d, in s_.polygon.
+	void read_polygon(Dart d)
+	{
+		s_.polygon.clear();
+		Dart it = d;
+		do
+		{
+			s_.polygon.push_back(it);
+			it = phi1(map_, it);
+		} while (it != d);
 	}
 
 	/// Cuts the polygon of `from_centre` (a dart leaving the centre) into
 	/// triangles around the centre.
 	void fan(Dart from_centre)
 	{
-		std::vector<Dart> polygon;
-		Dart it = from_centre;
-		do
-		{
-			polygon.push_back(it);
-			it = phi1(map_, it);
-		} while (it != from_centre);
+		read_polygon(from_centre);
 		Dart y = from_centre;
-		for (std::size_t i = 2; i + 1 < polygon.size(); ++i)
-			y = cut_face(y, polygon[i]);
+		for (std::size_t i = 2; i + 1 < s_.polygon.size(); ++i)
+			y = cut_face(y, s_.polygon[i]);
 	}
 
 	/// Cuts new face f into triangles around the cell's centre, which is
@@ -123,21 +152,16 @@ private:
 	/// when f is the first section through it.
 	void triangulate_section(Dart f)
 	{
-		std::vector<Dart> polygon;
-		Dart it = f;
-		do
-		{
-			if (at(it) == centre)
-				return fan(it);
-			polygon.push_back(it);
-			it = phi1(map_, it);
-		} while (it != f);
-		const Dart chord = cut_face(polygon[0], polygon[polygon.size() / 2]);
-		std::vector<Dart> ring;
-		foreach_dart_of_orbit(map_, CMap3::Edge(chord), [&](Dart x) { ring.push_back(x); });
+		read_polygon(f);
+		for (Dart x : s_.polygon)
+			if (at(x) == centre)
+				return fan(x);
+		const Dart chord = cut_face(s_.polygon[0], s_.polygon[s_.polygon.size() / 2]);
+		// the darts of the chord, each followed by the new centre's dart
+		const std::array<Dart, 4> ring{chord, phi2(map_, chord), phi3(map_, chord), phi2(map_, phi3(map_, chord))};
 		r_.cut_edge(chord);
 		for (Dart x : ring)
-			at_[phi1(map_, x).index] = centre;
+			set(phi1(map_, x), centre);
 		const Dart from_centre = phi1(map_, chord);
 		fan(from_centre);
 		fan(phi1(map_, phi2(map_, from_centre)));
@@ -148,9 +172,10 @@ private:
 	/// positive side, make the path.
 	void cut(std::size_t i, const Plane& p)
 	{
-		std::vector<Dart> on;
+		std::vector<Dart>& on = s_.on_plane;
+		on.clear();
 		bool positive = false, negative = false;
-		foreach_dart_of_orbit(map_, CMap3::Volume(pieces_[i]), [&](Dart x) {
+		foreach_dart_of_orbit(map_, CMap3::Volume(s_.pieces[i]), [&](Dart x) {
 			const int v = value(p, x);
 			positive = positive || v > 0;
 			negative = negative || v < 0;
@@ -159,10 +184,11 @@ private:
 		});
 		if (!positive || !negative)
 			return;
-		std::vector<Dart> path{on.front()};
+		std::vector<Dart>& path = s_.path;
+		path.assign(1, on.front());
 		while (path.size() < on.size())
 		{
-			const Point& end = at(phi1(map_, path.back()));
+			const Point end = at(phi1(map_, path.back()));
 			const auto next = std::find_if(on.begin(), on.end(), [&](Dart x) { return at(x) == end; });
 			if (next == on.end())
 				throw std::logic_error("tetrahedral-octahedral refinement: a section of a volume is not a polygon");
@@ -172,48 +198,57 @@ private:
 		for (Dart x : path)
 		{
 			const Dart y = phi2(map_, x);
-			at_[y.index] = at(phi1(map_, x));
-			at_[phi3(map_, y).index] = at(x);
+			set(y, at(phi1(map_, x)));
+			set(phi3(map_, y), at(x));
 		}
-		pieces_[i] = path.front();
-		pieces_.push_back(phi3(map_, f));
+		s_.pieces[i] = path.front();
+		s_.pieces.push_back(phi3(map_, f));
 		if (path.size() > 3)
 			triangulate_section(f);
 	}
 
 	MRVolumeRefinement& r_;
 	CMap3& map_;
-	std::unordered_map<uint32, Point> at_;
-	std::vector<Dart> pieces_;
+	MRTetraOctaScratch& s_;
 };
 
 } // namespace
 
 std::optional<MRTetraOctaCell> mr_read_tetra_octa(const CMap3& map, Dart w)
 {
-	std::vector<Dart> darts;
+	std::array<Dart, 25> darts;
+	uint32 nb = 0;
 	foreach_dart_of_orbit(map, CMap3::Volume(w), [&](Dart x) {
-		darts.push_back(x);
-		return darts.size() <= 24;
+		darts[nb++] = x;
+		return nb < darts.size();
 	});
-	if (darts.size() != 12 && darts.size() != 24)
+	if (nb != 12 && nb != 24)
 		return std::nullopt;
-	for (Dart x : darts)
-		if (phi1(map, phi1(map, phi1(map, x))) != x)
+	for (uint32 i = 0; i < nb; ++i)
+		if (phi1(map, phi1(map, phi1(map, darts[i]))) != darts[i])
 			return std::nullopt;
 	MRTetraOctaCell c;
-	c.octahedron = darts.size() == 24;
+	c.octahedron = nb == 24;
+	c.nb_darts = nb;
 	const uint32 degree = c.octahedron ? 4 : 3;
+	// the corner number of each dart (position i in darts)
+	constexpr uint8 none = 255;
+	std::array<uint8, 24> corner;
+	corner.fill(none);
+	const auto position = [&](Dart x) {
+		return uint32(std::find(darts.begin(), darts.begin() + nb, x) - darts.begin());
+	};
 	// numbers the corner of d; false when it has another number already or
 	// has not `degree` edges
-	std::unordered_map<uint32, uint8> corner;
 	const auto number = [&](Dart d, uint8 n) {
 		Dart x = d;
 		uint32 edges = 0;
 		do
 		{
-			if (corner.try_emplace(x.index, n).first->second != n || ++edges > degree)
+			uint8& at = corner[position(x)];
+			if ((at != none && at != n) || ++edges > degree)
 				return false;
+			at = n;
 			x = phi2(map, phi_1(map, x));
 		} while (x != d);
 		return edges == degree;
@@ -228,36 +263,38 @@ std::optional<MRTetraOctaCell> mr_read_tetra_octa(const CMap3& map, Dart w)
 		ok = ok && number(across(b), 3) && number(across(c3), 4) && number(across(a), 5);
 	else
 		ok = ok && number(across(a), 3);
-	if (!ok || corner.size() != darts.size())
+	if (!ok || std::find(corner.begin(), corner.begin() + nb, none) != corner.begin() + nb)
 		return std::nullopt;
-	for (Dart x : darts)
+	// the corners of a face are distinct; an octahedron's face has one
+	// corner on each axis
+	const uint8 axes = c.octahedron ? 3 : 4;
+	for (uint32 i = 0; i < nb; ++i)
 	{
-		const uint8 u = corner.at(x.index), v = corner.at(phi1(map, x).index), t = corner.at(phi_1(map, x).index);
-		// the corners of a face are distinct; an octahedron's face has one
-		// corner on each axis
-		const uint8 axes = c.octahedron ? 3 : 4;
+		const Dart x = darts[i];
+		const uint8 u = corner[i], v = corner[position(phi1(map, x))], t = corner[position(phi_1(map, x))];
 		if (u % axes == v % axes || v % axes == t % axes || t % axes == u % axes)
 			return std::nullopt;
-		c.darts.push_back({x, {u, v}});
+		c.darts[i] = {x, {u, v}};
 	}
 	return c;
 }
 
-void mr_split_tetra_octa(MRVolumeRefinement& r, const MRTetraOctaCell& c)
+void mr_split_tetra_octa(MRVolumeRefinement& r, const MRTetraOctaCell& c, MRTetraOctaScratch& scratch)
 {
 	const CMap3& map = r.map();
-	PlaneSplit split(r);
-	for (const auto& [d, ends] : c.darts)
+	PlaneSplit split(r, scratch);
+	for (uint32 i = 0; i < c.nb_darts; ++i)
 	{
+		const auto& [d, ends] = c.darts[i];
 		const Point& u = c.octahedron ? octa_points[ends[0]] : tetra_points[ends[0]];
 		const Point& v = c.octahedron ? octa_points[ends[1]] : tetra_points[ends[1]];
 		split.name_vertex(d, u);
 		split.name_vertex(phi1(map, d), {(u[0] + v[0]) / 2, (u[1] + v[1]) / 2, (u[2] + v[2]) / 2});
 	}
 	if (c.octahedron)
-		split.run(c.darts.front().first, octa_planes);
+		split.run(c.darts[0].first, octa_planes);
 	else
-		split.run(c.darts.front().first, tetra_planes);
+		split.run(c.darts[0].first, tetra_planes);
 }
 
 } // namespace cgogn::detail

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace cgogn::detail
@@ -19,8 +20,20 @@ namespace cgogn::detail
 struct MRTetraOctaCell
 {
 	bool octahedron = false;
-	/// Every dart of the volume with the numbers of the corners it joins.
-	std::vector<std::pair<Dart, std::array<uint8, 2>>> darts;
+	/// Every dart of the volume (the first nb_darts) with the numbers of the
+	/// corners it joins.
+	std::array<std::pair<Dart, std::array<uint8, 2>>, 24> darts;
+	uint32 nb_darts = 0;
+};
+
+/// What the splits of successive cells reuse, so that splitting allocates
+/// nothing once the first cells are done: per dart index, the point of the
+/// cell's regular shape at the dart's origin (encoded), and the lists of a
+/// split.
+struct MRTetraOctaScratch
+{
+	std::vector<uint8> point;
+	std::vector<Dart> pieces, on_plane, path, polygon;
 };
 
 /// Reads volume w of the finest map as a tetrahedron (4 triangles, 3 edges
@@ -37,6 +50,6 @@ std::optional<MRTetraOctaCell> mr_read_tetra_octa(const CMap3& map, Dart w);
 /// through the centre parallel to opposite faces for an octahedron; each
 /// inner face is a triangle. Throws std::logic_error when an inner path
 /// does not close. O(1).
-void mr_split_tetra_octa(MRVolumeRefinement& r, const MRTetraOctaCell& c);
+void mr_split_tetra_octa(MRVolumeRefinement& r, const MRTetraOctaCell& c, MRTetraOctaScratch& scratch);
 
 } // namespace cgogn::detail
