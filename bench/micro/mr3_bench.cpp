@@ -6,7 +6,9 @@
 //   hierarchy (every level's lines included) and of the flat map of the
 //   finest level;
 // - at the finest level: a one-ring circulator (the mean of the neighbours'
-//   positions) and a Laplacian smoothing pass, on both;
+//   positions) and a Laplacian smoothing pass, on both, and on the flat map
+//   made by 2 hex_subdivision steps in place (its darts in the order the
+//   steps create them, as the hierarchy's);
 // - phi1 at level l, for L - l = 0 ... 2: every face of the level walked,
 //   next to the same walk on the level's extract_level copy;
 // - add_level (positions by the attribute rules: the hexahedral scheme's),
@@ -75,6 +77,20 @@ CMap3& flat_level3(uint32 l)
 	return *flats[l];
 }
 
+// The finest level made by LEVELS3 flat hex_subdivision steps of level 0, in
+// place: its darts in the order the steps create them, as in the hierarchy.
+CMap3& subdivided_flat3()
+{
+	static CMap3 m = [] {
+		CMap3 g = hex_grid(12);
+		auto pos = get_attribute<Vec3, CMap3::Vertex>(g, "position");
+		for (uint32 l = 0; l < LEVELS3; ++l)
+			modeling::hex_subdivision(g, *pos);
+		return g;
+	}();
+	return m;
+}
+
 void BM_Memory3(benchmark::State& state)
 {
 	double mr_bytes = 0, flat_bytes = 0;
@@ -110,6 +126,15 @@ void BM_Circulator3Flat(benchmark::State& state)
 }
 BENCHMARK(BM_Circulator3Flat)->Unit(benchmark::kMillisecond);
 
+void BM_Circulator3FlatSubdivided(benchmark::State& state)
+{
+	const CMap3& m = subdivided_flat3();
+	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	for (auto _ : state)
+		benchmark::DoNotOptimize(circulate(m, *pos));
+}
+BENCHMARK(BM_Circulator3FlatSubdivided)->Unit(benchmark::kMillisecond);
+
 void BM_Circulator3MR(benchmark::State& state)
 {
 	Hierarchy3& h = hierarchy3();
@@ -130,6 +155,18 @@ void BM_Smoothing3Flat(benchmark::State& state)
 		smooth(m, *pos, *out);
 }
 BENCHMARK(BM_Smoothing3Flat)->Unit(benchmark::kMillisecond);
+
+void BM_Smoothing3FlatSubdivided(benchmark::State& state)
+{
+	CMap3& m = subdivided_flat3();
+	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
+	auto out = get_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
+	if (!out)
+		out = add_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
+	for (auto _ : state)
+		smooth(m, *pos, *out);
+}
+BENCHMARK(BM_Smoothing3FlatSubdivided)->Unit(benchmark::kMillisecond);
 
 void BM_Smoothing3MR(benchmark::State& state)
 {

@@ -5,7 +5,10 @@
 // - memory: the labels' bytes per dart, and bytes per face of the hierarchy
 //   (every level's lines included) and of the flat map of the finest level;
 // - at the finest level: a one-ring circulator (the mean of the neighbours'
-//   positions) and a Laplacian smoothing pass, on both;
+//   positions) and a Laplacian smoothing pass, on both, and on the flat map
+//   made by 3 catmull_clark_subdivision steps in place (its darts in the
+//   order the steps create them, as the hierarchy's; the extract_level copy
+//   has them face by face, which its walks find closer in memory);
 // - phi1 at level l, for L - l = 0 ... 3: every face of the level walked,
 //   next to the same walk on the level's extract_level copy;
 // - add_level with the Catmull-Clark synthesis of the new level, next to one
@@ -68,6 +71,41 @@ CMap2& flat_level(uint32 l)
 		flats[l] = std::make_unique<CMap2>(extract_level(hierarchy().m, l));
 	return *flats[l];
 }
+
+// The finest level made by LEVELS flat Catmull-Clark steps of level 0, in
+// place: its darts in the order the steps create them, as in the hierarchy.
+CMap2& subdivided_flat()
+{
+	static CMap2 m = [] {
+		CMap2 t = torus(100, 64);
+		auto pos = get_attribute<Vec3, CMap2::Vertex>(t, "position");
+		for (uint32 l = 0; l < LEVELS; ++l)
+			catmull_clark_subdivision(t, *pos);
+		return t;
+	}();
+	return m;
+}
+
+void BM_CirculatorFlatSubdivided(benchmark::State& state)
+{
+	const CMap2& m = subdivided_flat();
+	const auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
+	for (auto _ : state)
+		benchmark::DoNotOptimize(circulate(m, *pos));
+}
+BENCHMARK(BM_CirculatorFlatSubdivided)->Unit(benchmark::kMillisecond);
+
+void BM_SmoothingFlatSubdivided(benchmark::State& state)
+{
+	CMap2& m = subdivided_flat();
+	const auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
+	auto out = get_attribute<Vec3, CMap2::Vertex>(m, "smoothed");
+	if (!out)
+		out = add_attribute<Vec3, CMap2::Vertex>(m, "smoothed");
+	for (auto _ : state)
+		smooth(m, *pos, *out);
+}
+BENCHMARK(BM_SmoothingFlatSubdivided)->Unit(benchmark::kMillisecond);
 
 void BM_Memory(benchmark::State& state)
 {
