@@ -34,6 +34,30 @@ option(CGOGN_UNITY_BUILD "Compile the tests, the tool and the Python module in b
 set(CGOGN_TEST_OPTIMIZATION "-Og" CACHE STRING
     "Optimization flag of the tests and examples in every build type but Debug (empty: the build type's)")
 
+# Some test files take long to compile and little to run: they instantiate a
+# traversal or check for every dimension and map type, on small meshes. Where
+# the tests are optimized for the sake of the randomized ones (the asan
+# preset), such files are compiled at CGOGN_QUICK_TEST_OPTIMIZATION instead
+# (the asan preset: -O0; empty: as the other tests). With the sanitizers, the
+# seven files named in tests/CMakeLists.txt take 398 s of compiler time at
+# -O1, each alone, and their tests run in under 8 s.
+set(CGOGN_QUICK_TEST_OPTIMIZATION "" CACHE STRING
+    "Optimization flag of the test files that are long to compile and quick to run (empty: the tests')")
+
+# cgogn_quick_test_files(target file...): the files of target, long to compile
+# and quick to run, are compiled at CGOGN_QUICK_TEST_OPTIMIZATION when it is
+# set. Each is then compiled alone, without the precompiled header (made at
+# the other tests' level, which a compiler refuses to mix).
+function(cgogn_quick_test_files target)
+  if(NOT CGOGN_QUICK_TEST_OPTIMIZATION)
+    return()
+  endif()
+  set_property(SOURCE ${ARGN} TARGET_DIRECTORY ${target} APPEND PROPERTY COMPILE_OPTIONS
+                                                        $<$<NOT:$<CONFIG:Debug>>:${CGOGN_QUICK_TEST_OPTIMIZATION}>)
+  set_property(SOURCE ${ARGN} TARGET_DIRECTORY ${target} PROPERTY SKIP_PRECOMPILE_HEADERS ON)
+  set_property(SOURCE ${ARGN} TARGET_DIRECTORY ${target} PROPERTY SKIP_UNITY_BUILD_INCLUSION ON)
+endfunction()
+
 set(_cgogn_pch_headers <cgogn/cgogn.h> <algorithm> <array> <cmath> <cstdint> <filesystem> <functional> <map>
                        <memory> <numeric> <random> <set> <string> <unordered_map> <utility> <vector>)
 

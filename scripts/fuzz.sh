@@ -2,8 +2,10 @@
 # Builds the libFuzzer targets of the io readers in the asan preset's build
 # (build/asan: clang, ASan + UBSan, the library at -O1 with assertions on and
 # libFuzzer's coverage instrumentation) and runs each for a
-# bounded time: FUZZ_SECONDS in total (default 300), split evenly over the
-# targets (one per reader, and fuzz_append, which loads any
+# bounded time: FUZZ_SECONDS of wall-clock time in total (default 300), with
+# FUZZ_JOBS targets at once (default 2, one per core), so that each target
+# gets FUZZ_SECONDS x FUZZ_JOBS / (number of targets) seconds. The targets are
+# one per reader, and fuzz_append, which loads any
 # format into a map that already holds a mesh and attributes, and
 # fuzz_graph, the graph readers, fuzz_incidence_graph, the .ig reader, and
 # fuzz_map_file, the .cgmap reader of whole maps).
@@ -25,7 +27,8 @@ formats=(off obj ply stl medit vtk vtu gmsh tetgen ovm)
 targets=()
 for f in "${formats[@]}"; do targets+=("$f"); done
 targets+=(append graph incidence_graph map_file)
-per=$(( total / ${#targets[@]} ))
+jobs=${FUZZ_JOBS:-2}
+per=$(( total * jobs / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
 build=build/asan
@@ -111,15 +114,34 @@ dict_of() {
   if [ "$1" = append ]; then echo "$build/append.dict"; else echo "fuzz/dict/$1.dict"; fi
 }
 
+# runs target $1; its exit status tells whether it found nothing
+fuzz_one() {
+  local t=$1 work=$build/corpus/$1
+  mkdir -p "$work" "fuzz/corpus/$t"
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$build/fuzz/fuzz_$t" "$work" "fuzz/corpus/$t" "$seeds/$t" -dict="$(dict_of "$t")" \
+    -max_total_time="$per" -max_len=65536 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix="$build/crash-$t-" 2>"$build/fuzz_$t.log"
+}
+
 status=0
+# FUZZ_JOBS targets at a time; their reports are printed in the targets' order
+pids=()
+for t in "${targets[@]}"; do
+  if [ "${#pids[@]}" -ge "$jobs" ]; then
+    wait -n || true
+    running=()
+    for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && running+=("$p"); done
+    pids=("${running[@]}")
+  fi
+  rm -f "$build/fuzz_$t.status"
+  (if fuzz_one "$t"; then echo 0; else echo 1; fi >"$build/fuzz_$t.status") &
+  pids+=("$!")
+done
+wait
 for t in "${targets[@]}"; do
   echo "== fuzz_$t (${per}s)"
-  work=$build/corpus/$t
-  mkdir -p "$work" "fuzz/corpus/$t"
-  if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    "$build/fuzz/fuzz_$t" "$work" "fuzz/corpus/$t" "$seeds/$t" -dict="$(dict_of "$t")" \
-      -max_total_time="$per" -max_len=65536 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-      -artifact_prefix="$build/crash-$t-" 2>"$build/fuzz_$t.log"; then
+  if [ "$(cat "$build/fuzz_$t.status" 2>/dev/null)" != 0 ]; then
     echo "fuzz_$t FAILED: see $build/fuzz_$t.log and $build/crash-$t-*" >&2
     tail -40 "$build/fuzz_$t.log" >&2
     status=1
