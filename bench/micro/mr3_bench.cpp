@@ -119,19 +119,13 @@ BENCHMARK(BM_Memory3)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_Circulator3Flat(benchmark::State& state)
 {
-	const CMap3& m = flat_level3(LEVELS3);
-	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
-	for (auto _ : state)
-		benchmark::DoNotOptimize(circulate(m, *pos));
+	time_flat_circulator(state, flat_level3(LEVELS3));
 }
 BENCHMARK(BM_Circulator3Flat)->Unit(benchmark::kMillisecond);
 
 void BM_Circulator3FlatSubdivided(benchmark::State& state)
 {
-	const CMap3& m = subdivided_flat3();
-	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
-	for (auto _ : state)
-		benchmark::DoNotOptimize(circulate(m, *pos));
+	time_flat_circulator(state, subdivided_flat3());
 }
 BENCHMARK(BM_Circulator3FlatSubdivided)->Unit(benchmark::kMillisecond);
 
@@ -146,25 +140,13 @@ BENCHMARK(BM_Circulator3MR)->Unit(benchmark::kMillisecond);
 
 void BM_Smoothing3Flat(benchmark::State& state)
 {
-	CMap3& m = flat_level3(LEVELS3);
-	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
-	auto out = get_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
-	if (!out)
-		out = add_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
-	for (auto _ : state)
-		smooth(m, *pos, *out);
+	time_flat_smoothing(state, flat_level3(LEVELS3));
 }
 BENCHMARK(BM_Smoothing3Flat)->Unit(benchmark::kMillisecond);
 
 void BM_Smoothing3FlatSubdivided(benchmark::State& state)
 {
-	CMap3& m = subdivided_flat3();
-	const auto pos = get_attribute<Vec3, CMap3::Vertex>(m, "position");
-	auto out = get_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
-	if (!out)
-		out = add_attribute<Vec3, CMap3::Vertex>(m, "smoothed");
-	for (auto _ : state)
-		smooth(m, *pos, *out);
+	time_flat_smoothing(state, subdivided_flat3());
 }
 BENCHMARK(BM_Smoothing3FlatSubdivided)->Unit(benchmark::kMillisecond);
 

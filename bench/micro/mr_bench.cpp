@@ -88,22 +88,13 @@ CMap2& subdivided_flat()
 
 void BM_CirculatorFlatSubdivided(benchmark::State& state)
 {
-	const CMap2& m = subdivided_flat();
-	const auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
-	for (auto _ : state)
-		benchmark::DoNotOptimize(circulate(m, *pos));
+	time_flat_circulator(state, subdivided_flat());
 }
 BENCHMARK(BM_CirculatorFlatSubdivided)->Unit(benchmark::kMillisecond);
 
 void BM_SmoothingFlatSubdivided(benchmark::State& state)
 {
-	CMap2& m = subdivided_flat();
-	const auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
-	auto out = get_attribute<Vec3, CMap2::Vertex>(m, "smoothed");
-	if (!out)
-		out = add_attribute<Vec3, CMap2::Vertex>(m, "smoothed");
-	for (auto _ : state)
-		smooth(m, *pos, *out);
+	time_flat_smoothing(state, subdivided_flat());
 }
 BENCHMARK(BM_SmoothingFlatSubdivided)->Unit(benchmark::kMillisecond);
 
@@ -135,10 +126,7 @@ BENCHMARK(BM_Memory)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_CirculatorFlat(benchmark::State& state)
 {
-	const CMap2& m = flat_level(LEVELS);
-	const auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
-	for (auto _ : state)
-		benchmark::DoNotOptimize(circulate(m, *pos));
+	time_flat_circulator(state, flat_level(LEVELS));
 }
 BENCHMARK(BM_CirculatorFlat)->Unit(benchmark::kMillisecond);
 
@@ -153,13 +141,7 @@ BENCHMARK(BM_CirculatorMR)->Unit(benchmark::kMillisecond);
 
 void BM_SmoothingFlat(benchmark::State& state)
 {
-	CMap2& m = flat_level(LEVELS);
-	const auto pos = get_attribute<Vec3, CMap2::Vertex>(m, "position");
-	auto out = get_attribute<Vec3, CMap2::Vertex>(m, "smoothed");
-	if (!out)
-		out = add_attribute<Vec3, CMap2::Vertex>(m, "smoothed");
-	for (auto _ : state)
-		smooth(m, *pos, *out);
+	time_flat_smoothing(state, flat_level(LEVELS));
 }
 BENCHMARK(BM_SmoothingFlat)->Unit(benchmark::kMillisecond);
 

@@ -6,6 +6,8 @@
 
 #include <cgogn/cgogn.h>
 
+#include <benchmark/benchmark.h>
+
 #include <malloc.h>
 
 // Internal to each file that includes it: with external linkage, the
@@ -55,6 +57,28 @@ void smooth(MESH& m, const AttributeArray<Vec3>& pos, AttributeArray<Vec3>& out)
 		});
 		out[index_of(m, v)] = 0.5 * pos[index_of(m, v)] + 0.5 * s / n;
 	});
+}
+
+/// Times circulate on a flat map by its "position" vertex attribute.
+template <typename MAP>
+void time_flat_circulator(benchmark::State& state, const MAP& m)
+{
+	const auto pos = get_attribute<Vec3, typename MAP::Vertex>(m, "position");
+	for (auto _ : state)
+		benchmark::DoNotOptimize(circulate(m, *pos));
+}
+
+/// Times smooth on a flat map, from "position" into "smoothed" (added once).
+template <typename MAP>
+void time_flat_smoothing(benchmark::State& state, MAP& m)
+{
+	using V = typename MAP::Vertex;
+	const auto pos = get_attribute<Vec3, V>(m, "position");
+	auto out = get_attribute<Vec3, V>(m, "smoothed");
+	if (!out)
+		out = add_attribute<Vec3, V>(m, "smoothed");
+	for (auto _ : state)
+		smooth(m, *pos, *out);
 }
 
 /// The darts of every face walked by phi1.
