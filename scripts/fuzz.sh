@@ -126,17 +126,10 @@ fuzz_one() {
 
 status=0
 # FUZZ_JOBS targets at a time; their reports are printed in the targets' order
-pids=()
 for t in "${targets[@]}"; do
-  if [ "${#pids[@]}" -ge "$jobs" ]; then
-    wait -n || true
-    running=()
-    for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && running+=("$p"); done
-    pids=("${running[@]}")
-  fi
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
   rm -f "$build/fuzz_$t.status"
   (if fuzz_one "$t"; then echo 0; else echo 1; fi >"$build/fuzz_$t.status") &
-  pids+=("$!")
 done
 wait
 for t in "${targets[@]}"; do
