@@ -32,6 +32,20 @@ struct MRDim<MRState2>
 	}
 };
 
+/// The line at level l below the finest of the cell whose finest line is i
+/// (not INVALID_INDEX): followed down the versions. Out of line, so that the
+/// finest level's reads (see mr_line_of) keep their registers. O(levels - l).
+template <typename S>
+[[gnu::noinline, gnu::cold]] uint32 mr_line_below(const S& s, uint32 l, uint32 slot, uint32 i)
+{
+	const MRCellIndex& ci = s.cells[slot];
+	const auto level = ci.level->view();
+	const auto down = ci.down->view();
+	while (level[i] > l)
+		i = down[i];
+	return i;
+}
+
 /// The line of the cell in slot `slot` holding dart d at level l: the line of
 /// d's finest cell, followed down to the level. INVALID_INDEX for a cell
 /// without a line (a boundary cell). O(1) at the finest level, O(levels - l)
@@ -39,15 +53,10 @@ struct MRDim<MRState2>
 template <typename S>
 CGOGN_INLINE uint32 mr_line_of(const S& s, uint32 l, uint32 slot, Dart d)
 {
-	const MRCellIndex& ci = s.cells[slot];
-	uint32 i = (*ci.index)[d.index];
-	if (mr_is_finest(s, l) || i == INVALID_INDEX)
+	const uint32 i = (*s.cells[slot].index)[d.index];
+	if (mr_is_finest(s, l) || i == INVALID_INDEX) [[likely]]
 		return i;
-	const auto level = ci.level->view();
-	const auto down = ci.down->view();
-	while (level[i] > l)
-		i = down[i];
-	return i;
+	return mr_line_below(s, l, slot, i);
 }
 
 /// The container of the cells of slot `slot` in the finest map. O(1).

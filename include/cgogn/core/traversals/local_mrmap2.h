@@ -155,10 +155,11 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	constexpr Orbit O = CELL::ORBIT;
 	const detail::MRState2& s = *state_;
 	const uint32 l = level_;
-	// f called at one place, whatever the way the cells are found (see
-	// MRRelations): the lines that hold at the level for an indexed orbit
+	// The cells are the lines that hold at the level for an indexed orbit
 	// (see MRCellIndex), the finest map's darts otherwise, each asked whether
-	// it starts a cell of the level.
+	// it starts a cell of the level. The finest level's lines have a loop of
+	// their own; every other way shares one place that calls f (see
+	// MRRelations).
 	using LabelView = decltype(std::declval<const AttributeArray<uint8>&>().view());
 	std::optional<LabelView> line_level, line_replaced;
 	if constexpr (detail::mr_walks_lines<O>())
@@ -184,16 +185,26 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	const auto dart_level = s.level->view();
 	const auto key = walked.key().view(); // a line's dart, or a dart's phi1: INVALID_INDEX on free lines
 	const uint32 end = walked.end_index();
+	if (indexed && finest)
+	{
+		// the common case in a loop of its own, which holds its views in
+		// registers (f is then called from two places and may stay out of
+		// line: once per cell, not per dart)
+		const LabelView replaced = *line_replaced;
+		for (uint32 j = 0; j < end; ++j)
+			if (replaced[j] > l && key[j] != INVALID_INDEX && !call_and_continue(f, CELL(Dart(key[j]))))
+				return;
+		return;
+	}
 	uint32 i = 0;
 	// the next cell from line or dart i on (INVALID at the end), each way of
 	// finding them with its own loop
 	auto next_cell = [&]() -> Dart {
 		if (indexed)
 		{
-			// at the finest level every line holds from its level on: only
-			// those not replaced
+			// below the finest level (the finest has its own loop above)
 			for (; i < end; ++i)
-				if ((*line_replaced)[i] > l && (finest || (*line_level)[i] <= l) && key[i] != INVALID_INDEX)
+				if ((*line_replaced)[i] > l && (*line_level)[i] <= l && key[i] != INVALID_INDEX)
 					return Dart(key[i++]);
 			return Dart();
 		}
@@ -357,7 +368,18 @@ template <MRMesh2 M, typename FUNC>
 CGOGN_INLINE void foreach_adjacent_vertex_through_edge(const M& m, MRMap2::Vertex v, const FUNC& f)
 {
 	const detail::MRRelations r = detail::mr_relations(m);
-	detail::mr_foreach_dart_of_orbit(r, v, [&](Dart d) { return call_and_continue(f, MRMap2::Vertex(r.phi2(d))); });
+	// the vertex walk written out: each step reads phi2 once, for the
+	// neighbour and for the next step, and tests the level once
+	held_callable_t<FUNC> fh = f;
+	const Dart d = v.dart;
+	Dart it = d;
+	do
+	{
+		const auto [e, next] = r.phi2_and_phi12(it);
+		if (!call_and_continue(fh, MRMap2::Vertex(e)))
+			return;
+		it = next;
+	} while (it != d);
 }
 
 /// Vertices sharing a face with v (v excluded): the edge neighbours in cyclic
