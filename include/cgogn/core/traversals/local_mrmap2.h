@@ -155,11 +155,10 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	constexpr Orbit O = CELL::ORBIT;
 	const detail::MRState2& s = *state_;
 	const uint32 l = level_;
-	// The cells are the lines that hold at the level for an indexed orbit
+	// f called at one place, whatever the way the cells are found (see
+	// MRRelations): the lines that hold at the level for an indexed orbit
 	// (see MRCellIndex), the finest map's darts otherwise, each asked whether
-	// it starts a cell of the level. The finest level's lines have a loop of
-	// their own; every other way shares one place that calls f (see
-	// MRRelations).
+	// it starts a cell of the level.
 	using LabelView = decltype(std::declval<const AttributeArray<uint8>&>().view());
 	std::optional<LabelView> line_level, line_replaced;
 	if constexpr (detail::mr_walks_lines<O>())
@@ -185,26 +184,24 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	const auto dart_level = s.level->view();
 	const auto key = walked.key().view(); // a line's dart, or a dart's phi1: INVALID_INDEX on free lines
 	const uint32 end = walked.end_index();
-	if (indexed && finest)
-	{
-		// the common case in a loop of its own, which holds its views in
-		// registers (f is then called from two places and may stay out of
-		// line: once per cell, not per dart)
-		const LabelView replaced = *line_replaced;
-		for (uint32 j = 0; j < end; ++j)
-			if (replaced[j] > l && key[j] != INVALID_INDEX && !call_and_continue(f, CELL(Dart(key[j]))))
-				return;
-		return;
-	}
+	const bool finest_lines = indexed && finest;
+	const LabelView replaced = indexed ? *line_replaced : dart_level; // unread when not indexed
 	uint32 i = 0;
 	// the next cell from line or dart i on (INVALID at the end), each way of
-	// finding them with its own loop
+	// finding them with its own loop; the finest level's lines first, the
+	// common case, with their views in registers
 	auto next_cell = [&]() -> Dart {
+		if (finest_lines) [[likely]]
+		{
+			for (; i < end; ++i)
+				if (replaced[i] > l && key[i] != INVALID_INDEX)
+					return Dart(key[i++]);
+			return Dart();
+		}
 		if (indexed)
 		{
-			// below the finest level (the finest has its own loop above)
 			for (; i < end; ++i)
-				if ((*line_replaced)[i] > l && (*line_level)[i] <= l && key[i] != INVALID_INDEX)
+				if (replaced[i] > l && (*line_level)[i] <= l && key[i] != INVALID_INDEX)
 					return Dart(key[i++]);
 			return Dart();
 		}
