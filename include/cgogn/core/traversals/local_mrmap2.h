@@ -71,18 +71,7 @@ CGOGN_INLINE bool mr_foreach_dart_of_orbit(const MRRelations& r, Cell<O> c, cons
 		{
 			if (!call_and_continue(f, it))
 				return false;
-			if (r.finest) [[likely]]
-			{
-				// the finest map's step, with its prefetches (see the 2-D
-				// vertex in foreach_dart_of_orbit on a CMap2)
-				const uint32 e = r.phi2_of[it.index];
-				CGOGN_PREFETCH(&r.phi2_of[e]);
-				if constexpr (requires { f.prefetch_line(e); })
-					f.prefetch_line(e);
-				it = Dart(r.phi1_of[e]);
-			}
-			else
-				it = mr_phi1(r.s, r.l, mr_phi2(r.s, r.l, it));
+			it = r.phi2_and_phi12(it).second;
 		} while (it != d);
 		return true;
 	}
@@ -159,15 +148,11 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	// MRRelations): the lines that hold at the level for an indexed orbit
 	// (see MRCellIndex), the finest map's darts otherwise, each asked whether
 	// it starts a cell of the level.
-	using LabelView = decltype(std::declval<const AttributeArray<uint8>&>().view());
-	std::optional<LabelView> line_level, line_replaced;
+	const detail::MRCellIndex* lines = nullptr;
 	if constexpr (detail::mr_walks_lines<O>())
-		if (const detail::MRCellIndex& ci = s.cells[detail::mr_slot(O)]; ci.index != nullptr)
-		{
-			line_level.emplace(ci.level->view());
-			line_replaced.emplace(ci.replaced->view());
-		}
-	const bool indexed = line_level.has_value();
+		if (s.cells[detail::mr_slot(O)].index != nullptr)
+			lines = &s.cells[detail::mr_slot(O)];
+	const bool indexed = lines != nullptr;
 	const AttributeContainer& walked =
 		indexed ? *detail::state_of(s.map).cells[orbit_index(O)] : *detail::state_of(s.map).darts;
 	// the finest level unindexed: the finest map's cells (which indexes none of
@@ -182,10 +167,12 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 	else if (O == Orbit::PHI1_PHI2 && !indexed)
 		seen.emplace(s.map);
 	const auto dart_level = s.level->view();
+	// the lines' levels, held in locals (the darts' levels in their place, unread, when not indexed)
+	const auto line_level = indexed ? lines->level->view() : dart_level;
+	const auto replaced = indexed ? lines->replaced->view() : dart_level;
 	const auto key = walked.key().view(); // a line's dart, or a dart's phi1: INVALID_INDEX on free lines
 	const uint32 end = walked.end_index();
 	const bool finest_lines = indexed && finest;
-	const LabelView replaced = indexed ? *line_replaced : dart_level; // unread when not indexed
 	uint32 i = 0;
 	// the next cell from line or dart i on (INVALID at the end), each way of
 	// finding them with its own loop; the finest level's lines first, the
@@ -201,7 +188,7 @@ void MRLevelView2::foreach_cell(const FUNC& func) const
 		if (indexed)
 		{
 			for (; i < end; ++i)
-				if (replaced[i] > l && (*line_level)[i] <= l && key[i] != INVALID_INDEX)
+				if (replaced[i] > l && line_level[i] <= l && key[i] != INVALID_INDEX)
 					return Dart(key[i++]);
 			return Dart();
 		}
